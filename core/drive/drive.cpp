@@ -1,0 +1,129 @@
+#include "drive/drive.h"
+
+// parameter validation arrives with the params layer
+
+#include <QDateTime>
+
+namespace dd {
+
+Drive::Drive(QObject *parent)
+    : QObject(parent)
+    , m_jogLease(this)
+{
+    qRegisterMetaType<dd::DriveStatus>();
+    m_jogLease.setSingleShot(true);
+    m_jogLease.setTimerType(Qt::PreciseTimer);
+    connect(&m_jogLease, &QTimer::timeout, this, &Drive::onJogLeaseTimeout);
+}
+
+Drive::~Drive() = default;
+
+void Drive::setDictionary(std::shared_ptr<const ParameterDictionary> dictionary)
+{
+    m_dictionary = std::move(dictionary);
+}
+
+QString Drive::unsupportedReason(Capability c) const
+{
+    if (capabilities().testFlag(c))
+        return {};
+    return tr("The %1 drive family has no \"%2\" operation.").arg(familyId(family()), capabilityId(c));
+}
+
+DriveReply *Drive::newReply()
+{
+    return new DriveReply(this);
+}
+
+DriveReply *Drive::finishedReply(const Error &error)
+{
+    DriveReply *r = newReply();
+    r->finish(error);
+    return r;
+}
+
+DriveReply *Drive::notSupported(Capability c)
+{
+    return finishedReply({ErrorCode::NotSupported, unsupportedReason(c)});
+}
+
+DriveReply *Drive::refreshIdentity()
+{
+    return finishedReply(Error::none());
+}
+
+DriveReply *Drive::readStatus()
+{
+    DriveReply *r = newReply();
+    r->setStatus(m_status);
+    r->finish();
+    return r;
+}
+
+DriveReply *Drive::readParameters(const QList<int> &) { return notSupported(Capability::ReadParameters); }
+DriveReply *Drive::writeParameters(const QList<ParameterWrite> &) { return notSupported(Capability::WriteParameters); }
+DriveReply *Drive::readChannels(const QStringList &) { return notSupported(Capability::Monitor); }
+DriveReply *Drive::readAlarm() { return notSupported(Capability::ReadAlarm); }
+DriveReply *Drive::clearAlarm() { return notSupported(Capability::ClearAlarm); }
+DriveReply *Drive::setEnabled(bool) { return notSupported(Capability::Enable); }
+DriveReply *Drive::moveRelative(qint64, qint32) { return notSupported(Capability::MoveRelative); }
+DriveReply *Drive::moveAbsolute(qint64, qint32) { return notSupported(Capability::MoveAbsolute); }
+DriveReply *Drive::home(bool) { return notSupported(Capability::Home); }
+DriveReply *Drive::setPosition(qint64) { return notSupported(Capability::SetPosition); }
+DriveReply *Drive::eeOperation(EeOperation) { return notSupported(Capability::EeOperations); }
+DriveReply *Drive::doJog(qint32) { return notSupported(Capability::Jog); }
+DriveReply *Drive::doStop(bool) { return notSupported(Capability::Stop); }
+
+DriveReply *Drive::jog(qint32 speed)
+{
+    if (!hasCapability(Capability::Jog))
+        return notSupported(Capability::Jog);
+    DriveReply *r = doJog(speed);
+    m_jogging = true;
+    m_jogLease.start(m_jogLeaseMs);
+    return r;
+}
+
+DriveReply *Drive::stop(bool emergency)
+{
+    endJogLease();
+    if (emergency && !hasCapability(Capability::EmergencyStop))
+        return doStop(false); // the strongest stop this family has
+    return doStop(emergency);
+}
+
+void Drive::renewJogLease()
+{
+    if (m_jogging)
+        m_jogLease.start(m_jogLeaseMs);
+}
+
+void Drive::endJogLease()
+{
+    m_jogging = false;
+    m_jogLease.stop();
+}
+
+void Drive::onJogLeaseTimeout()
+{
+    if (!m_jogging)
+        return;
+    DriveReply *r = stop(false);
+    connect(r, &DriveReply::finished, r, &QObject::deleteLater);
+    emit jogLeaseExpired();
+}
+
+void Drive::updateStatus(const DriveStatus &s)
+{
+    const DriveStatus old = m_status;
+    m_status = s;
+    m_status.updatedMs = QDateTime::currentMSecsSinceEpoch();
+    if (old.alarmCode != s.alarmCode)
+        emit alarmChanged(s.alarmCode);
+    if (old.online != s.online || old.running != s.running || old.enabled != s.enabled
+        || old.position != s.position || old.positionValid != s.positionValid
+        || old.alarmCode != s.alarmCode)
+        emit statusChanged(m_status);
+}
+
+} // namespace dd

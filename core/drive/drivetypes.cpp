@@ -1,0 +1,91 @@
+#include "drive/drivetypes.h"
+
+#include <QCoreApplication>
+
+namespace dd {
+
+QString capabilityId(Capability c)
+{
+    switch (c) {
+    case Capability::ReadParameters: return QStringLiteral("read-parameters");
+    case Capability::WriteParameters: return QStringLiteral("write-parameters");
+    case Capability::Monitor: return QStringLiteral("monitor");
+    case Capability::Jog: return QStringLiteral("jog");
+    case Capability::MoveRelative: return QStringLiteral("move-relative");
+    case Capability::MoveAbsolute: return QStringLiteral("move-absolute");
+    case Capability::Home: return QStringLiteral("home");
+    case Capability::Enable: return QStringLiteral("enable");
+    case Capability::Stop: return QStringLiteral("stop");
+    case Capability::EmergencyStop: return QStringLiteral("emergency-stop");
+    case Capability::ReadAlarm: return QStringLiteral("read-alarm");
+    case Capability::ClearAlarm: return QStringLiteral("clear-alarm");
+    case Capability::EeOperations: return QStringLiteral("ee-operations");
+    case Capability::SetPosition: return QStringLiteral("set-position");
+    }
+    return {};
+}
+
+QStringList capabilityIds(Capabilities caps)
+{
+    QStringList out;
+    for (quint32 bit = 1; bit != 0 && bit <= (1u << 13); bit <<= 1) {
+        if (caps.testFlag(static_cast<Capability>(bit)))
+            out << capabilityId(static_cast<Capability>(bit));
+    }
+    return out;
+}
+
+QString eeMnemonic(EeOperation op)
+{
+    switch (op) {
+    case EeOperation::Save: return QStringLiteral("EE-Set");
+    case EeOperation::Reload: return QStringLiteral("EE-rd");
+    case EeOperation::Backup: return QStringLiteral("EE-bA");
+    case EeOperation::RestoreBackup: return QStringLiteral("EE-rS");
+    case EeOperation::FactoryDefaults: return QStringLiteral("EE-dEF");
+    }
+    return {};
+}
+
+QString eeMeaning(EeOperation op)
+{
+    switch (op) {
+    case EeOperation::Save:
+        return QCoreApplication::translate("dd::Ee", "Store the current parameters to EEPROM");
+    case EeOperation::Reload:
+        return QCoreApplication::translate("dd::Ee", "Reload the parameters from EEPROM, discarding unsaved changes");
+    case EeOperation::Backup:
+        return QCoreApplication::translate("dd::Ee", "Copy the parameters to the drive's backup area");
+    case EeOperation::RestoreBackup:
+        return QCoreApplication::translate("dd::Ee", "Restore the parameters from the drive's backup area");
+    case EeOperation::FactoryDefaults:
+        return QCoreApplication::translate("dd::Ee", "Reset every parameter to its factory default");
+    }
+    return {};
+}
+
+bool eeIsDestructive(EeOperation op)
+{
+    return op == EeOperation::Reload || op == EeOperation::RestoreBackup
+        || op == EeOperation::FactoryDefaults;
+}
+
+std::optional<EeOperation> eeFromText(const QString &text)
+{
+    QString t = text.trimmed().toLower();
+    if (t.startsWith(QLatin1String("ee-")))
+        t = t.mid(3);
+    static const struct { const char *name; EeOperation op; } names[] = {
+        {"set", EeOperation::Save}, {"1", EeOperation::Save},
+        {"rd", EeOperation::Reload}, {"2", EeOperation::Reload},
+        {"ba", EeOperation::Backup}, {"3", EeOperation::Backup},
+        {"rs", EeOperation::RestoreBackup}, {"4", EeOperation::RestoreBackup},
+        {"def", EeOperation::FactoryDefaults}, {"5", EeOperation::FactoryDefaults},
+    };
+    for (const auto &n : names)
+        if (t == QLatin1String(n.name))
+            return n.op;
+    return std::nullopt;
+}
+
+} // namespace dd

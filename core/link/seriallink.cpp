@@ -1,0 +1,388 @@
+#include "link/seriallink.h"
+
+#include "link/traffictap.h"
+
+#include <QCoreApplication>
+#include <QLoggingCategory>
+#include <cmath>
+
+Q_LOGGING_CATEGORY(lcSerialLink, "drivedesk.link.serial")
+
+namespace dd {
+
+namespace {
+constexpr qsizetype kMaxRxBuffer = 4096;
+constexpr int kDefaultReplyBytes = 8;
+} // namespace
+
+SerialLink::SerialLink(QObject *parent)
+    : QObject(parent)
+    , m_responseTimer(this)
+    , m_gapTimer(this)
+{
+    m_responseTimer.setSingleShot(true);
+    m_responseTimer.setTimerType(Qt::PreciseTimer);
+    m_gapTimer.setSingleShot(true);
+    m_gapTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_responseTimer, &QTimer::timeout, this, &SerialLink::onResponseTimeout);
+    connect(&m_gapTimer, &QTimer::timeout, this, &SerialLink::onGapElapsed);
+    m_clock.start();
+}
+
+SerialLink::~SerialLink()
+{
+    failAll({ErrorCode::Cancelled, tr("The serial link was destroyed.")});
+}
+
+bool SerialLink::open(const SerialSettings &settings, Error *error)
+{
+    if (m_port)
+        close();
+    m_settings = settings;
+    auto *port = new QSerialPort(this);
+    port->setPortName(settings.portName);
+    port->setBaudRate(settings.baud);
+    port->setDataBits(settings.dataBits);
+    port->setParity(settings.parity);
+    port->setStopBits(settings.stopBits);
+    port->setFlowControl(QSerialPort::NoFlowControl);
+    if (!port->open(QIODevice::ReadWrite)) {
+        const Error e{ErrorCode::OpenFailed,
+                      tr("Cannot open serial port %1: %2. Check the device name, that no other "
+                         "program is using it, and that you may access it (dialout group).")
+                          .arg(settings.portName, port->errorString())};
+        delete port;
+        if (error)
+            *error = e;
+        return false;
+    }
+    port->clear();
+    m_port = port;
+    m_rx.clear();
+    m_quietUntilUs = 0;
+    connect(m_port, &QSerialPort::readyRead, this, &SerialLink::onReadyRead);
+    connect(m_port, &QSerialPort::errorOccurred, this, &SerialLink::onPortError);
+    qCDebug(lcSerialLink) << "opened" << settings.portName << settings.baud;
+    emit opened();
+    return true;
+}
+
+void SerialLink::close()
+{
+    if (!m_port)
+        return;
+    failAll({ErrorCode::Cancelled, tr("The serial port %1 was closed.").arg(m_settings.portName)});
+    m_port->disconnect(this);
+    m_port->close();
+    m_port->deleteLater();
+    m_port = nullptr;
+    emit closed(Error::none());
+}
+
+bool SerialLink::isOpen() const
+{
+    return m_port && m_port->isOpen();
+}
+
+bool SerialLink::setBaudRate(qint32 baud)
+{
+    if (!isIdle() || !m_port)
+        return false;
+    if (!m_port->setBaudRate(baud))
+        return false;
+    m_settings.baud = baud;
+    m_port->clear();
+    m_rx.clear();
+    return true;
+}
+
+qint64 SerialLink::wireTimeUs(qsizetype bytes) const
+{
+    const double baud = m_settings.baud > 0 ? m_settings.baud : 9600;
+    return static_cast<qint64>(std::ceil(bytes * m_settings.bitsPerChar * 1e6 / baud));
+}
+
+LinkReply *SerialLink::send(const SerialRequest &request)
+{
+    auto *reply = new LinkReply(this);
+    if (!isOpen()) {
+        reply->finishWithError({ErrorCode::LinkClosed, tr("The serial port is not open.")});
+        return reply;
+    }
+    m_queue.enqueue(Pending{request, reply, 0});
+    if (m_state == State::Idle)
+        scheduleNext();
+    return reply;
+}
+
+void SerialLink::cancelAll(const Error &why)
+{
+    failAll(why);
+}
+
+void SerialLink::failAll(const Error &why)
+{
+    m_responseTimer.stop();
+    m_gapTimer.stop();
+    if (m_current) {
+        if (m_current->reply)
+            m_current->reply->finishWithError(why);
+        m_current.reset();
+    }
+    while (!m_queue.isEmpty()) {
+        Pending p = m_queue.dequeue();
+        if (p.reply)
+            p.reply->finishWithError(why);
+    }
+    m_state = State::Idle;
+}
+
+void SerialLink::scheduleNext()
+{
+    if (m_current && m_state != State::Gap)
+        return;
+    if (!m_current) {
+        // Skip requests whose caller has already given up.
+        while (!m_queue.isEmpty() && !m_queue.head().reply)
+            m_queue.dequeue();
+        if (m_queue.isEmpty()) {
+            m_state = State::Idle;
+            emit idle();
+            return;
+        }
+    }
+    const qint64 now = m_clock.nsecsElapsed() / 1000;
+    if (now < m_quietUntilUs) {
+        m_state = State::Gap;
+        m_gapTimer.start(static_cast<int>((m_quietUntilUs - now + 999) / 1000));
+        return;
+    }
+    if (!m_current)
+        m_current = m_queue.dequeue();
+    transmit();
+}
+
+void SerialLink::onGapElapsed()
+{
+    scheduleNext();
+}
+
+void SerialLink::transmit()
+{
+    if (!m_port) {
+        failAll({ErrorCode::LinkClosed, tr("The serial port is not open.")});
+        return;
+    }
+    Pending &p = *m_current;
+    ++p.attempts;
+    if (!m_rx.isEmpty())
+        discardBuffer(QStringLiteral("stale bytes before request"));
+    m_recoveryQuietMs = 0;
+    m_port->write(p.request.bytes);
+    if (m_tap) {
+        QString note = p.request.note;
+        if (p.attempts > 1)
+            note = QStringLiteral("%1 (retry %2)").arg(note).arg(p.attempts - 1).trimmed();
+        m_tap->recordSerial(TrafficRecord::Direction::Tx, m_settings.portName, p.request.bytes, note);
+    }
+    m_sentAtUs = m_clock.nsecsElapsed() / 1000;
+    if (!p.request.matcher) {
+        m_state = State::AwaitingWrite;
+        const qint64 us = wireTimeUs(p.request.bytes.size());
+        m_responseTimer.start(static_cast<int>(std::max<qint64>(1, (us + 999) / 1000)));
+    } else {
+        m_state = State::AwaitingReply;
+        m_responseTimer.start(effectiveTimeoutMs(p.request));
+    }
+}
+
+int SerialLink::effectiveTimeoutMs(const SerialRequest &r) const
+{
+    if (r.timeoutMs >= 0)
+        return r.timeoutMs;
+    const int replyBytes = r.expectedReplyBytes > 0 ? r.expectedReplyBytes : kDefaultReplyBytes;
+    const qint64 wire = wireTimeUs(r.bytes.size()) + wireTimeUs(replyBytes);
+    return static_cast<int>((wire + 999) / 1000) + m_settings.responseTimeoutMs;
+}
+
+void SerialLink::onReadyRead()
+{
+    if (!m_port)
+        return;
+    const QByteArray data = m_port->readAll();
+    if (data.isEmpty())
+        return;
+    const qint64 now = m_clock.nsecsElapsed() / 1000;
+    m_lastRxUs = now;
+    if (m_state != State::AwaitingReply) {
+        if (m_tap)
+            m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, data,
+                                QStringLiteral("unsolicited or late bytes"));
+        if (m_recoveryQuietMs > 0)
+            m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(m_recoveryQuietMs) * 1000);
+        return;
+    }
+    m_rx += data;
+    if (m_rx.size() > kMaxRxBuffer)
+        discardBuffer(QStringLiteral("receive buffer overflow"));
+    processBuffer();
+}
+
+void SerialLink::processBuffer()
+{
+    while (m_current && m_state == State::AwaitingReply && !m_rx.isEmpty()) {
+        const FrameMatch m = m_current->request.matcher(m_rx);
+        const qsizetype consumed = std::clamp<qsizetype>(m.consumed, 1, m_rx.size());
+        switch (m.status) {
+        case FrameMatch::Status::Incomplete:
+            return;
+        case FrameMatch::Status::Garbage:
+            if (m_tap)
+                m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName,
+                                    m_rx.left(consumed), QStringLiteral("not the awaited reply"));
+            m_rx.remove(0, consumed);
+            continue;
+        case FrameMatch::Status::Corrupt: {
+            ++m_checksumErrors;
+            if (m_tap)
+                m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName,
+                                    m_rx.left(consumed), QStringLiteral("bad checksum"));
+            m_rx.remove(0, consumed);
+            m_responseTimer.stop();
+            const int quiet = static_cast<int>(std::max<qint64>(5, wireTimeUs(8) / 1000 + 2));
+            retryOrFail({ErrorCode::ChecksumError,
+                         tr("The drive's reply on %1 failed its checksum. Check the cable "
+                            "shielding, the bus termination and the baud rate.")
+                             .arg(m_settings.portName)},
+                        quiet);
+            return;
+        }
+        case FrameMatch::Status::Match: {
+            const qint64 now = m_clock.nsecsElapsed() / 1000;
+            const qint64 earliest =
+                (wireTimeUs(m_current->request.bytes.size()) + wireTimeUs(consumed)) / 2;
+            if (m_settings.rejectImpossiblyEarlyReplies && now - m_sentAtUs < earliest) {
+                if (m_tap)
+                    m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName,
+                                        m_rx.left(consumed),
+                                        QStringLiteral("arrived sooner than a reply could: late "
+                                                       "answer to an earlier request"));
+                m_rx.remove(0, consumed);
+                continue;
+            }
+            if (m_tap)
+                m_tap->recordSerial(TrafficRecord::Direction::Rx, m_settings.portName, m.frame);
+            m_rx.remove(0, consumed);
+            if (!m_rx.isEmpty())
+                discardBuffer(QStringLiteral("bytes after the reply"));
+            finishCurrent(Error::none(), m.frame);
+            return;
+        }
+        }
+    }
+}
+
+void SerialLink::onResponseTimeout()
+{
+    if (!m_current)
+        return;
+    if (m_state == State::AwaitingWrite) {
+        finishCurrent(Error::none());
+        return;
+    }
+    if (m_state != State::AwaitingReply)
+        return;
+    ++m_timeouts;
+    if (!m_rx.isEmpty())
+        discardBuffer(QStringLiteral("incomplete reply at timeout"));
+    const int timeout = effectiveTimeoutMs(m_current->request);
+    retryOrFail({ErrorCode::Timeout,
+                 tr("No reply on %1 within %2 ms. Check the drive address, the baud rate, the "
+                    "wiring (A/B swapped?) and the bus termination.")
+                     .arg(m_settings.portName)
+                     .arg(timeout)},
+                // Keep the line quiet long enough that a late reply lands while nothing waits.
+                std::max(2 * timeout, 20));
+}
+
+void SerialLink::retryOrFail(const Error &error, int quietMs)
+{
+    enterRecovery(quietMs);
+    const int retries = m_current->request.retries >= 0 ? m_current->request.retries
+                                                        : m_settings.retries;
+    if (m_current->attempts <= retries && m_current->reply) {
+        ++m_retryCount;
+        m_state = State::Gap;
+        scheduleNext();
+        return;
+    }
+    finishCurrent(error);
+}
+
+void SerialLink::enterRecovery(int quietMs)
+{
+    const qint64 now = m_clock.nsecsElapsed() / 1000;
+    m_recoveryQuietMs = quietMs;
+    m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(quietMs) * 1000);
+}
+
+void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)
+{
+    m_responseTimer.stop();
+    if (!m_current)
+        return;
+    Pending p = std::move(*m_current);
+    m_current.reset();
+    const qint64 now = m_clock.nsecsElapsed() / 1000;
+    if (p.reply) {
+        p.reply->setAttempts(p.attempts);
+        p.reply->setRoundTripUs(now - m_sentAtUs);
+        if (error.isError())
+            p.reply->finishWithError(error);
+        else if (p.request.matcher)
+            p.reply->finishWithFrame(frame);
+        else
+            p.reply->finishEmpty();
+    }
+    m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(m_settings.minGapMs) * 1000);
+    m_state = State::Idle;
+    scheduleNext();
+}
+
+void SerialLink::discardBuffer(const QString &why)
+{
+    if (m_tap && !m_rx.isEmpty())
+        m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, m_rx, why);
+    m_rx.clear();
+}
+
+void SerialLink::onPortError(QSerialPort::SerialPortError error)
+{
+    switch (error) {
+    case QSerialPort::ResourceError:
+    case QSerialPort::DeviceNotFoundError:
+    case QSerialPort::PermissionError:
+    case QSerialPort::ReadError:
+    case QSerialPort::WriteError: {
+        const Error e{ErrorCode::LinkClosed,
+                      tr("The serial port %1 failed (%2). Was the adapter unplugged?")
+                          .arg(m_settings.portName, m_port ? m_port->errorString() : QString())};
+        qCWarning(lcSerialLink) << e.message;
+        failAll(e);
+        if (m_port) {
+            m_port->disconnect(this);
+            m_port->close();
+            m_port->deleteLater();
+            m_port = nullptr;
+        }
+        emit closed(e);
+        break;
+    }
+    default:
+        if (error != QSerialPort::NoError)
+            qCDebug(lcSerialLink) << "serial port note:" << error;
+        break;
+    }
+}
+
+} // namespace dd

@@ -1,0 +1,126 @@
+#pragma once
+
+#include "common/error.h"
+#include "link/framematch.h"
+#include "link/linkreply.h"
+#include "link/serialsettings.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QPointer>
+#include <QQueue>
+#include <QSerialPort>
+#include <QTimer>
+
+#include <optional>
+
+namespace dd {
+
+class TrafficTap;
+
+// One request on a half-duplex serial bus.
+struct SerialRequest
+{
+    QByteArray bytes;
+    ReplyMatcher matcher;        // empty: no reply expected (broadcast, fire-and-forget)
+    int expectedReplyBytes = 0;  // for the timeout and the plausibility check
+    int timeoutMs = -1;          // -1: wire time of request + reply + settings.responseTimeoutMs
+    int retries = -1;            // -1: settings.retries
+    QString note;                // shown in the trace
+};
+
+// Half-duplex request/reply transport on QSerialPort (RS485 / RS232).
+//
+// Requests queue and go out one at a time. Before each request the receive buffer is
+// cleared (anything there is stale); after each transaction the link keeps the line quiet
+// for settings.minGapMs. A reply is accepted only through the request's matcher, and only
+// if it arrived no earlier than physically possible (half the wire time of request plus
+// reply): a late answer to an earlier, timed-out request can therefore never be taken as
+// the answer to the current one. After a timeout the link also waits until the line has
+// been quiet for the reply's wire time (plus margin) before it sends again.
+//
+// The QSerialPort is created in open(), so the link may be moved to a worker thread first.
+class SerialLink : public QObject
+{
+    Q_OBJECT
+public:
+    explicit SerialLink(QObject *parent = nullptr);
+    ~SerialLink() override;
+
+    void setTap(TrafficTap *tap) { m_tap = tap; }
+    TrafficTap *tap() const { return m_tap; }
+
+    bool open(const SerialSettings &settings, Error *error = nullptr);
+    void close();
+    bool isOpen() const;
+    const SerialSettings &settings() const { return m_settings; }
+    QString name() const { return m_settings.portName; }
+
+    // Change the baud rate between transactions (scan sweeps); fails while busy.
+    bool setBaudRate(qint32 baud);
+    void setMinGapMs(int ms) { m_settings.minGapMs = ms; }
+    void setResponseTimeoutMs(int ms) { m_settings.responseTimeoutMs = ms; }
+    void setRetries(int retries) { m_settings.retries = retries; }
+
+    // Queue a request. The reply is parented to the link; delete it when done.
+    LinkReply *send(const SerialRequest &request);
+    // Fail every queued and pending request (e.g. the user pressed cancel).
+    void cancelAll(const Error &why);
+
+    int queuedCount() const { return m_queue.size() + (m_current ? 1 : 0); }
+    bool isIdle() const { return !m_current && m_queue.isEmpty(); }
+    quint64 timeoutCount() const { return m_timeouts; }
+    quint64 retryCount() const { return m_retryCount; }
+    quint64 checksumErrorCount() const { return m_checksumErrors; }
+
+    // Wire time of `bytes` characters at the current settings, in microseconds.
+    qint64 wireTimeUs(qsizetype bytes) const;
+
+signals:
+    void opened();
+    void closed(const dd::Error &reason);   // by close() (no error) or because the port failed
+    void idle();                            // queue drained
+
+private:
+    struct Pending
+    {
+        SerialRequest request;
+        QPointer<LinkReply> reply;
+        int attempts = 0;
+    };
+    enum class State { Idle, Gap, AwaitingReply, AwaitingWrite, Recovering };
+
+    void scheduleNext();
+    void transmit();
+    void onReadyRead();
+    void processBuffer();
+    void onResponseTimeout();
+    void onGapElapsed();
+    void onPortError(QSerialPort::SerialPortError error);
+    void finishCurrent(const Error &error, const QByteArray &frame = {});
+    void retryOrFail(const Error &error, int quietMs);
+    void enterRecovery(int quietMs);
+    void discardBuffer(const QString &why);
+    int effectiveTimeoutMs(const SerialRequest &r) const;
+    void failAll(const Error &why);
+
+    SerialSettings m_settings;
+    QSerialPort *m_port = nullptr;
+    TrafficTap *m_tap = nullptr;
+    QQueue<Pending> m_queue;
+    std::optional<Pending> m_current;
+    State m_state = State::Idle;
+    QByteArray m_rx;
+    QTimer m_responseTimer;
+    QTimer m_gapTimer;
+    QElapsedTimer m_clock;
+    qint64 m_sentAtUs = 0;
+    qint64 m_quietUntilUs = 0;   // no transmission before this (gap / recovery)
+    qint64 m_lastRxUs = 0;
+    int m_recoveryQuietMs = 0;
+    quint64 m_timeouts = 0;
+    quint64 m_retryCount = 0;
+    quint64 m_checksumErrors = 0;
+};
+
+} // namespace dd

@@ -283,6 +283,45 @@ private slots:
         QVERIFY(dr.ok());
         QCOMPARE(dr.value->values, values);
     }
+    void randomFramesDecodeOnlyWhatReencodes()
+    {
+        // Random CRC-valid ADUs: whatever a decoder accepts encodes back to the same bytes.
+        QRandomGenerator rng(4242);
+        const quint8 functions[] = {0x03, 0x06, 0x10, 0x83, 0x86, 0x90, 0x04};
+        int acceptedRequests = 0, acceptedReplies = 0;
+        for (int i = 0; i < 20000; ++i) {
+            QByteArray body(rng.bounded(1, 40), Qt::Uninitialized);
+            for (auto &c : body)
+                c = static_cast<char>(rng.bounded(256));
+            body[0] = 5;
+            if (body.size() > 1)
+                body[1] = static_cast<char>(functions[rng.bounded(7)]);
+            if (body.size() > 2 && rng.bounded(2))
+                body[2] = static_cast<char>((body.size() - 3) & 0xFF); // plausible 0x03 byte count
+            if (body.size() > 6 && rng.bounded(2)) {
+                body[4] = 0;
+                body[5] = static_cast<char>((body.size() - 7) / 2);
+                body[6] = static_cast<char>(body.size() - 7); // plausible 0x10 header
+            }
+            const QByteArray adu = withCrc16(body);
+            const auto q = decodeRequest(adu, 20);
+            if (q.ok()) {
+                ++acceptedRequests;
+                QCOMPARE(encodeRequest(*q.value).toHex(' '), adu.toHex(' '));
+            }
+            const Request read = readReq(5, 0, quint16(rng.bounded(1, 20)));
+            const auto r = decodeReply(adu, read);
+            if (r.ok()) {
+                ++acceptedReplies;
+                const QByteArray again = r.value->isException
+                    ? encodeExceptionReply(0x05, read.function, r.value->exceptionCode)
+                    : encodeReadHoldingReply(5, r.value->values);
+                QCOMPARE(again.toHex(' '), adu.toHex(' '));
+            }
+        }
+        QVERIFY(acceptedRequests > 100);
+        QVERIFY(acceptedReplies > 10);
+    }
     void names()
     {
         QCOMPARE(exceptionCodeName(0x04), QStringLiteral("server device failure"));

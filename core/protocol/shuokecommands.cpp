@@ -172,7 +172,7 @@ bool isSupportedBy(quint8 code, Model model, int requestLength)
     const CommandInfo *c = commandInfo(code);
     if (!c)
         return false;
-    if (code == HomeOrSCurveInt32 || code == HomeOrSCurveDirection24) {
+    if (code == CmdHomeOrSCurveInt32 || code == CmdHomeOrSCurveDirection24) {
         const bool homing = model != Model::M4505;        // 1 data byte
         const bool sCurve = model == Model::M4505S;       // 4 data bytes
         if (requestLength == 1)
@@ -197,7 +197,7 @@ QList<quint8> acceptedReplyCommands(const Frame &request)
     const CommandInfo *c = commandInfo(request.command);
     if (!c)
         return {request.command};
-    if ((request.command == HomeOrSCurveInt32 || request.command == HomeOrSCurveDirection24)
+    if ((request.command == CmdHomeOrSCurveInt32 || request.command == CmdHomeOrSCurveDirection24)
         && request.data.size() == 4)
         return {request.command}; // S-curve move: answered with its own code
     QList<quint8> out{c->replyCommands[0]};
@@ -222,7 +222,7 @@ bool isKnownLayout(quint8 commandByte, int dataLength)
 bool isReplyAddress(quint8 replyAddress, const Frame &request)
 {
     return isBroadcastAddress(request.address) || replyAddress == request.address
-        || (request.command == ChangeAddress && request.data.size() == 1
+        || (request.command == CmdChangeAddress && request.data.size() == 1
             && replyAddress == static_cast<quint8>(request.data.at(0)));
 }
 

@@ -26,7 +26,7 @@ bool rtuCandidateMatches(const char *p, const RtuCandidate &c, const RtuOptions 
     const quint8 commandByte = static_cast<quint8>(p[1]);
     if (c.layout != RtuLayout::Standard && !isKnownLayout(commandByte, c.dataLength))
         return false;
-    if (options.skipHandshakeCrc && commandByte == Handshake && c.layout == RtuLayout::Standard)
+    if (options.skipHandshakeCrc && commandByte == CmdHandshake && c.layout == RtuLayout::Standard)
         return true;
     const quint16 crc = crc16Modbus(p, c.size - 2);
     return static_cast<quint8>(p[c.size - 2]) == (crc & 0xFF) && static_cast<quint8>(p[c.size - 1]) == (crc >> 8);

@@ -141,6 +141,21 @@ private slots:
         QCOMPARE(int(c->replyLengths), reply);
     }
 
+    void namedCodes()
+    {
+        // Spot checks of the name enum against the seed's numbering.
+        QCOMPARE(int(CmdHandshake), 0x20);
+        QCOMPARE(int(CmdSetStartSpeed), 0x25);
+        QCOMPARE(int(CmdQueryStatus), 0x3B);
+        QCOMPARE(int(CmdSetPlcBase), 0x3F);
+        QCOMPARE(int(CmdCanBitrate), 0x4B);
+        QCOMPARE(int(CmdClosedLoopMove), 0x55);
+        QCOMPARE(int(CmdEncoderDirection), 0x5C);
+        QCOMPARE(int(CmdNoEncoderMaxPulses), 0x66);
+        for (const int c : {CmdGetGearDenominator, CmdEncoderAbTolerance, CmdCanToSerialEcho, CmdFactoryReset})
+            QVERIFY(commandInfo(static_cast<quint8>(c)));
+    }
+
     void maxLengths()
     {
         QCOMPARE(commandInfo(0x3B)->maxReplyLength(), 5);

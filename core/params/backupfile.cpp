@@ -119,7 +119,12 @@ Error BackupFile::toJson(const ParameterDictionary &dictionary, QByteArray *out)
     root.insert(QStringLiteral("link"), m_link);
     root.insert(QStringLiteral("parameters"), parameters);
     root.insert(QStringLiteral("checksum"), checksum(m_values));
-    *out = QJsonDocument(root).toJson(QJsonDocument::Indented);
+    const QByteArray bytes = QJsonDocument(root).toJson(QJsonDocument::Indented);
+    // Never produce a file that load() refuses (over-long texts, nested link settings...).
+    BackupFile check;
+    if (Error e = check.parse(root, tr("the backup"), &dictionary))
+        return Error{ErrorCode::InvalidArgument, e.message};
+    *out = bytes;
     return Error::none();
 }
 
@@ -141,7 +146,9 @@ Error BackupFile::save(const QString &path, const ParameterDictionary &dictionar
         return Error{ErrorCode::FileError, tr("Cannot write %1: %2. Is the folder writable and the disk not full?")
                                                .arg(shown, file.errorString())};
     }
-    if (file.write(bytes) != bytes.size()) {
+    // Qt 6.4's QSaveFile::commit() ignores a failed flush inside close() and then commits a
+    // truncated file (seen with a full disk / file-size limit): flush and check first.
+    if (file.write(bytes) != bytes.size() || !file.flush()) {
         const QString why = file.errorString();
         file.cancelWriting();
         return Error{ErrorCode::FileError,

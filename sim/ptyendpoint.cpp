@@ -174,7 +174,7 @@ Error PtyEndpoint::open(const QString &linkPath)
     m_writeNotifier->setEnabled(false);
     connect(m_writeNotifier, &QSocketNotifier::activated, this, &PtyEndpoint::onWritable);
 
-    qCInfo(lcSim).noquote() << "pty open:" << description();
+    qCDebug(lcSim).noquote() << "pty open:" << description();
     return Error::none();
 }
 
@@ -224,6 +224,7 @@ void PtyEndpoint::removeLink()
 void PtyEndpoint::close()
 {
     const bool wasOpen = isOpen();
+    const bool announced = m_readNotifier != nullptr; // open() completed
     delete m_readNotifier;
     m_readNotifier = nullptr;
     delete m_writeNotifier;
@@ -236,10 +237,10 @@ void PtyEndpoint::close()
     m_master = -1;
     m_slave = -1;
     m_pending.clear();
-    if (wasOpen) {
-        qCInfo(lcSim).noquote() << "pty closed:" << m_slavePath;
+    if (announced)
+        qCDebug(lcSim).noquote() << "pty closed:" << m_slavePath;
+    if (wasOpen)
         emit closed();
-    }
 }
 
 qint64 PtyEndpoint::write(const QByteArray &bytes)

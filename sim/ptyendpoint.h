@@ -19,8 +19,12 @@ namespace dd {
 //   - hostBaud() reads the baud rate the client set (QSerialPort::setBaudRate sets the
 //     pty's termios; a pty accepts any rate and simulates no timing: pacing is
 //     SimSerialBus's job). Rates without a standard Bxxx constant report 0 (unknown);
-//   - close() closes the master: the client sees the adapter vanish (read error / hang-up),
-//     which is how fault tests unplug the adapter;
+//   - close() closes the master: the client sees the adapter vanish, which is how fault
+//     tests unplug the adapter. Measured with Qt 6.4: the client's QSerialPort emits
+//     errorOccurred(ReadError) ("No such file or directory"), not ResourceError, and stays
+//     open: a host link must treat any read error as "adapter gone";
+//   - bytes written while no client has the port open wait in the pty and are read by the
+//     next client (as with some real adapters): a host link should clear() after open();
 //   - an optional link path (open("/tmp/dd-servo")) is a symlink to the slave, created
 //     atomically (an existing symlink there is replaced, anything else is an error) and
 //     removed on close if it still points to this pty.

@@ -88,7 +88,7 @@ Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int b
         return {ErrorCode::OpenFailed,
                 tr("Cannot connect to the CAN interface %1:%2 (%3).").arg(plugin, interfaceName, why)};
     }
-    qCInfo(lcSim).noquote() << "CAN bus opening:" << description();
+    qCDebug(lcSim).noquote() << "CAN bus opening:" << description();
     if (dev->state() == QCanBusDevice::ConnectedState)
         onStateChanged(static_cast<int>(QCanBusDevice::ConnectedState));
     return Error::none();
@@ -166,7 +166,7 @@ void SimCanBus::onStateChanged(int state)
         if (m_wasConnected)
             return;
         m_wasConnected = true;
-        qCInfo(lcSim).noquote() << "CAN bus connected:" << description();
+        qCDebug(lcSim).noquote() << "CAN bus connected:" << description();
         const QList<QCanBusFrame> queued = std::exchange(m_outbox, {});
         for (const QCanBusFrame &f : queued) {
             if (!m_device || !m_device->writeFrame(f))

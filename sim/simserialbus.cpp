@@ -85,7 +85,9 @@ void SimSerialBus::onReceived(const QByteArray &bytes)
 
     const int hostBaud = m_endpoint ? m_endpoint->hostBaud() : 0;
     const qint64 rxStart = std::max(now, m_lineFreeUs);
-    qint64 lineBusyUntil = rxStart;
+    qint64 lineBusyUntil = hostBaud > 0
+            ? rxStart + ceilUs(WireTime::serialBytesUs(bytes.size(), hostBaud))
+            : rxStart;
     QList<Candidate> candidates;
     int answeringDevices = 0;
 

@@ -33,8 +33,8 @@ namespace dd {
 //     (SimSerialBus::setCollisionsModelled).
 //
 // What the implementation does:
-//   - onBusBytes() sees every byte on the bus (requests for other addresses, other drives'
-//     traffic is not included: only what the host sends). Chunks carry no framing: a frame
+//   - onBusBytes() sees every byte the host sends, including requests for other addresses
+//     (the other simulated drives' replies are not included). Chunks carry no framing: a frame
 //     may come in pieces or several frames in one chunk. Keep a receive buffer, frame by
 //     structure and / or by silence (`nowUs` gaps longer than WireTime::modbusSilenceUs()),
 //     resynchronise after garbage, and never read past the buffer.

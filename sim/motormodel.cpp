@@ -12,6 +12,18 @@ constexpr double Dt = MotorModel::StepSeconds;
 // Noise channels used by the model itself.
 enum NoiseChannel { CurrentNoise = 0, VoltageNoise = 1, ErrorNoise = 2 };
 
+// Keeps the integration well defined whatever a drive configures.
+MotorModel::Config sanitized(MotorModel::Config c)
+{
+    c.countsPerRev = c.countsPerRev > 0.0 ? c.countsPerRev : 10000.0;
+    c.maxSpeed = std::abs(c.maxSpeed);
+    c.acceleration = std::max(std::abs(c.acceleration), 1.0);
+    c.deceleration = std::max(std::abs(c.deceleration), 1.0);
+    c.inertia = std::max(c.inertia, 1e-9);
+    c.thermalTimeConstant = std::max(c.thermalTimeConstant, Dt);
+    return c;
+}
+
 double sgn(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
 
 quint64 splitMix64(quint64 x)
@@ -25,7 +37,7 @@ quint64 splitMix64(quint64 x)
 
 MotorModel::MotorModel() : MotorModel(Config{}) {}
 
-MotorModel::MotorModel(const Config &config) : m_config(config)
+MotorModel::MotorModel(const Config &config) : m_config(sanitized(config))
 {
     m_temperature = m_config.ambientTemperature;
     updateOutputs();
@@ -35,6 +47,8 @@ MotorModel::MotorModel(const Config &config) : m_config(config)
 
 void MotorModel::advanceTo(double seconds)
 {
+    if (!std::isfinite(seconds))
+        return;
     const qint64 target = static_cast<qint64>(std::floor(seconds / Dt + 1e-6));
     if (target <= m_step)
         return;
@@ -70,7 +84,7 @@ void MotorModel::step()
         const double omega = std::abs(v0) / toCounts;
         const double brakeTorque = m_config.coulombFriction + std::abs(m_config.loadTorque)
                 + m_config.viscousFriction * omega;
-        const double dv = brakeTorque / std::max(m_config.inertia, 1e-9) * toCounts * Dt;
+        const double dv = brakeTorque / m_config.inertia * toCounts * Dt;
         v1 = std::abs(v0) <= dv ? 0.0 : v0 - sgn(v0) * dv;
     } else {
         switch (m_mode) {
@@ -205,8 +219,7 @@ void MotorModel::heat(double seconds)
 {
     const double power = m_cleanCurrent * m_cleanCurrent * m_config.windingResistance;
     const double steady = m_config.ambientTemperature + power * m_config.thermalResistance;
-    const double tau = std::max(m_config.thermalTimeConstant, Dt);
-    m_temperature = steady + (m_temperature - steady) * std::exp(-seconds / tau);
+    m_temperature = steady + (m_temperature - steady) * std::exp(-seconds / m_config.thermalTimeConstant);
 }
 
 double MotorModel::noiseAt(qint64 step, int channel) const
@@ -223,7 +236,7 @@ double MotorModel::noiseSample(int channel) const { return noiseAt(m_step, chann
 
 void MotorModel::setConfig(const Config &config)
 {
-    m_config = config;
+    m_config = sanitized(config);
     updateOutputs();
 }
 

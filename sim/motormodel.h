@@ -66,11 +66,13 @@ public:
     explicit MotorModel(const Config &config);
 
     // --- time ---------------------------------------------------------------------------
-    // Integrates up to `seconds` (whole milliseconds; earlier times are ignored).
+    // Integrates up to `seconds` (whole milliseconds; earlier times are ignored). Costs one
+    // substep per elapsed millisecond while the axis moves, nothing extra at rest.
     void advanceTo(double seconds);
     double time() const { return static_cast<double>(m_step) * StepSeconds; }
 
     // --- configuration (takes effect at the current time) ---------------------------------
+    // Out-of-range values are sanitised: accelerations >= 1 count/s², inertia > 0, ...
     const Config &config() const { return m_config; }
     void setConfig(const Config &config);
     void setMaxSpeed(double countsPerSecond);

@@ -89,6 +89,16 @@ Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int b
                 tr("Cannot connect to the CAN interface %1:%2 (%3).").arg(plugin, interfaceName, why)};
     }
     qCDebug(lcSim).noquote() << "CAN bus opening:" << description();
+    // Some plugins (virtualcan when its TCP server is unreachable) stay in ConnectingState
+    // without an error: say so instead of waiting silently.
+    QTimer::singleShot(ConnectTimeoutMs, dev, [this, dev] {
+        if (m_device == dev && dev->state() != QCanBusDevice::ConnectedState) {
+            const QString message = tr("%1: not connected after %2 s.")
+                                            .arg(description()).arg(ConnectTimeoutMs / 1000);
+            qCWarning(lcSim).noquote() << message;
+            emit errorOccurred(message);
+        }
+    });
     if (dev->state() == QCanBusDevice::ConnectedState)
         onStateChanged(static_cast<int>(QCanBusDevice::ConnectedState));
     return Error::none();

@@ -54,6 +54,7 @@ class SimCanBus : public QObject
 public:
     static constexpr int TickIntervalMs = 5;
     static constexpr int DefaultBitrate = 1000000;
+    static constexpr int ConnectTimeoutMs = 5000; // errorOccurred() if still not connected
 
     explicit SimCanBus(QObject *parent = nullptr);
     ~SimCanBus() override;

@@ -22,7 +22,8 @@ namespace dd {
 //   - Baud rate. When the host's configured baud (if the endpoint knows it) differs from
 //     baud(), the device is handed what its UART would make of the bytes
 //     (UartResampler): garbage, usually of a different length. Its replies, if any, are
-//     garbled the same way on their way to the host. baud() is read for every chunk, so a
+//     garbled the same way on their way to the host (a chunk its UART hears as nothing at
+//     all is not delivered). baud() is read for every chunk, so a
 //     drive may change it at run time (after a "set baud" command, or the Shuoke rule
 //     "9600 for the first 2 s after power-up").
 //   - Faults. faults() belongs to the device; the bus applies it to each reply frame:

@@ -224,17 +224,14 @@ void ServoCanDrive::sendCommand(const CanFrameData &frame, const QString &note, 
 void ServoCanDrive::awaitHeartbeat(const std::function<bool(quint8, qint32)> &pred, int timeoutMs,
                                    const Done &done)
 {
-    if (m_tracker) {
-        const ServoCanStationTracker::Station &st = m_tracker->station(m_station);
-        if (st.online && pred(st.state, st.position)) {
-            done(Error::none());
-            return;
-        }
-    }
     if (!m_tracker || !m_link) {
         done(linkClosedError());
         return;
     }
+    // Only heartbeats that leave the drive after it handled the command count: the last one
+    // before it may still show the previous motion. The frame was just written; a heartbeat
+    // arriving within kSettleMs may have crossed it on the bus.
+    constexpr qint64 kSettleMs = 2;
     auto *ctx = new QObject(this);
     auto finished = std::make_shared<bool>(false);
     auto finish = [ctx, finished, done](const Error &e) {
@@ -245,9 +242,11 @@ void ServoCanDrive::awaitHeartbeat(const std::function<bool(quint8, qint32)> &pr
         done(e);
     };
     const int station = m_station;
+    const qint64 notBefore = m_tracker->elapsedMs() + kSettleMs;
+    ServoCanStationTracker *tracker = m_tracker;
     connect(m_tracker, &ServoCanStationTracker::heartbeat, ctx,
-            [station, pred, finish](int s, quint8 state, qint32 position) {
-                if (s == station && pred(state, position))
+            [station, pred, finish, tracker, notBefore](int s, quint8 state, qint32 position) {
+                if (s == station && tracker->elapsedMs() >= notBefore && pred(state, position))
                     finish(Error::none());
             });
     connect(m_link, &CanLink::closed, ctx, [this, finish] { finish(linkClosedError()); });

@@ -97,7 +97,7 @@ private:
     void sendCommand(const CanFrameData &frame, const QString &note, const Done &done = {});
     void writeOne(const ParameterWrite &w, int attempt, DriveReply *reply,
                   const std::function<void(const ParameterWriteResult &)> &done);
-    // Waits for a heartbeat for which `pred` holds (checked at once against the last one).
+    // Waits for a heartbeat, arriving from now on, for which `pred` holds.
     void awaitHeartbeat(const std::function<bool(quint8 state, qint32 position)> &pred,
                         int timeoutMs, const Done &done);
     DriveReply *startMotion(const QList<CanFrameData> &frames, const QString &what,

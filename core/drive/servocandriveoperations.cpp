@@ -202,10 +202,18 @@ DriveReply *ServoCanDrive::startMotion(const QList<CanFrameData> &frames, const 
     if (!m_link || !m_link->isConnected())
         return finishedReply(linkClosedError());
     DriveReply *reply = newReply();
-    for (const CanFrameData &f : frames)
-        sendCommand(f, what);
+    for (int i = 0; i < frames.size(); ++i) {
+        const bool last = i == frames.size() - 1;
+        sendCommand(frames.at(i), what, [this, reply, started, last](const Error &e) {
+            if (e.isError()) {
+                reply->finish(e);
+                return;
+            }
+            if (last) // the motion command is on the bus: watch the heartbeats from now on
+                awaitHeartbeat(started, m_motionStartMs, [reply](const Error &e2) { reply->finish(e2); });
+        });
+    }
     setEnabledState(true); // 0x20, 0x21 and 0x22 enable the servo
-    awaitHeartbeat(started, m_motionStartMs, [reply](const Error &e) { reply->finish(e); });
     return reply;
 }
 

@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-Q_LOGGING_CATEGORY(lcServoCanTracker, "drivedesk.drive.servocan")
+Q_LOGGING_CATEGORY(lcServoCanTracker, "drivedesk.drive.servocan", QtInfoMsg)
 
 namespace dd {
 

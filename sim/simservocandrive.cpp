@@ -85,6 +85,12 @@ qint32 SimServoCanDrive::countsToRpm(double countsPerSecond) const
     return clampToInt32(countsPerSecond * 60.0 / countsPerRev());
 }
 
+void SimServoCanDrive::setWriteProtected(int index, bool on)
+{
+    if (sc::isValidParameterIndex(index))
+        m_writeProtected[static_cast<size_t>(index)] = on;
+}
+
 void SimServoCanDrive::restart()
 {
     const int p75 = m_params[sc::kParamStation];
@@ -206,7 +212,8 @@ qint32 SimServoCanDrive::outputs() const
 void SimServoCanDrive::handleWrite(const sc::Message &m)
 {
     // The decoder guarantees sub-code 0x01 and index 0..219.
-    if (m.paramIndex == sc::kParamStation && !sc::isValidStation(m.paramValue)) {
+    if (m_writeProtected[m.paramIndex]
+        || (m.paramIndex == sc::kParamStation && !sc::isValidStation(m.paramValue))) {
         ++m_stats.writesRefused;
         return;
     }

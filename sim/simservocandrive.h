@@ -17,7 +17,8 @@ namespace dd {
 // P75 = station. The others get distinct deterministic values (-1000..2999, some negative)
 // so that a shifted or swapped backup shows. Writes (0x15) take effect at once and read back;
 // P75 accepts 0..99 only (other values are ignored, as a real drive refuses them) and, like
-// on a real drive, the new station number is used after restart() only.
+// on a real drive, the new station number is used after restart() only. setWriteProtected()
+// makes the drive ignore writes to a parameter.
 //
 // Periodic frames: heartbeat every 30 ms while P74 = 1 (state 0x88 idle, 0x00 while the
 // shaft turns or a motion command is active; absolute position); alarm frame (0x05) at once
@@ -83,6 +84,9 @@ public:
     // positioning speed 0, watchdog disarmed; parameters and the alarm stay.
     void restart();
 
+    // Fault injection: the drive ignores writes to this parameter (as a drive may refuse a
+    // value in its present state); a host sees it when it reads the value back.
+    void setWriteProtected(int index, bool on);
     void injectAlarm(int code);   // the drive disables; 0x05 goes out on the next tick
     int alarmCode() const { return m_motor.alarmCode(); }
     void setInputs(quint32 bits) { m_inputs = bits; }
@@ -115,6 +119,7 @@ private:
     qint32 m_positioningSpeed = 0;  // r/min, from 0x23
     bool m_disableAtRest = false;   // 0x28 in progress
     quint32 m_inputs = 0;
+    std::array<bool, servocan::kParameterCount> m_writeProtected{};
 
     qint64 m_nextHeartbeatUs = 0;
     int m_reportedAlarm = 0;

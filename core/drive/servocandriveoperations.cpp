@@ -58,7 +58,8 @@ DriveReply *ServoCanDrive::readParameters(const QList<int> &indices)
 
 DriveReply *ServoCanDrive::writeParameters(const QList<ParameterWrite> &writes)
 {
-    // Validate everything before anything is sent.
+    // Validate everything before anything is sent: the protocol's limits (index 0..219,
+    // int16), then the dictionary (ranges, read-only parameters).
     for (const ParameterWrite &w : writes) {
         if (!sc::isValidParameterIndex(w.index))
             return finishedReply({ErrorCode::InvalidArgument,
@@ -72,6 +73,8 @@ DriveReply *ServoCanDrive::writeParameters(const QList<ParameterWrite> &writes)
                                       .arg(w.index)
                                       .arg(w.value)});
     }
+    if (const Error e = validateWrites(writes))
+        return finishedReply(e);
     DriveReply *reply = newReply();
     auto results = std::make_shared<QList<ParameterWriteResult>>(writes.size());
     auto join = OperationJoin::create(

@@ -296,15 +296,27 @@ void TestServoCanDrive::outOfRangeWriteSendsNothing()
 
 void TestServoCanDrive::refusedWriteIsAMismatch()
 {
-    // The drive accepts station numbers 0..99 only: 150 is a valid int16 but does not stick.
+    // The dictionary knows P75 is 0..99: refused before sending.
     DriveReply *r = drive(7)->writeParameters({{75, 150}});
     QVERIFY(waitFinished(r));
+    QCOMPARE(r->error().code, ErrorCode::OutOfRange);
+    QVERIFY(sentFrames(sc::Command::Write).isEmpty());
+    // A drive that ignores the write: caught by the read-back, after 1 + retries attempts.
+    m_sim7->setWriteProtected(30, true);
+    const qint16 before = m_sim7->parameter(30);
+    r = drive(7)->writeParameters({{31, 5}, {30, 99}});
+    QVERIFY(waitFinished(r));
+    m_sim7->setWriteProtected(30, false);
     QCOMPARE(r->error().code, ErrorCode::VerifyMismatch);
-    QCOMPARE(r->writeResults().size(), 1);
-    QVERIFY(!r->writeResults().first().verified);
-    QCOMPARE(r->writeResults().first().readBack, 7);
-    QVERIFY(!r->writeResults().first().error.isEmpty());
-    QCOMPARE(sentFrames(sc::Command::Write).size(), 7); // 1 + retries (6)
+    QCOMPARE(r->writeResults().size(), 2);
+    QVERIFY(r->writeResults().at(0).verified);
+    const ParameterWriteResult &w = r->writeResults().at(1);
+    QCOMPARE(w.index, 30);
+    QVERIFY(w.written);
+    QVERIFY(!w.verified);
+    QCOMPARE(w.readBack, qint64(before));
+    QVERIFY(!w.error.isEmpty());
+    QCOMPARE(sentFrames(sc::Command::Write).size(), 1 + 7); // P31 once, P30 1 + retries (6)
 }
 
 void TestServoCanDrive::identityChecksCanMode()

@@ -71,7 +71,9 @@ private slots:
     void emergencyStopDisables();
     void dropFaultsAreRetried();
     void corruptFaultsNeedConfirmedReads();
-    void watchdogStopsMotionWithoutKeepAlive(); // closes and reopens the link: keep it last
+    void silentStationGoesOffline();
+    void watchdogStopsMotionWithoutKeepAlive(); // closes and reopens the link
+    void busGoingAwayIsALostLink();             // ends the bus: keep it last
 
 private:
     bool openBackend();
@@ -511,6 +513,32 @@ void TestServoCanDrive::corruptFaultsNeedConfirmedReads()
         QCOMPARE(r->parameters().value(i), qint64(m_sim1->parameter(i)));
 }
 
+void TestServoCanDrive::silentStationGoesOffline()
+{
+    ServoCanDrive *d = drive(7);
+    QVERIFY(d->status().online);
+    QSignalSpy offline(m_backend->tracker(), &ServoCanStationTracker::stationOffline);
+    m_sim7->faults().setSilent(true); // power loss
+    QVERIFY(offline.wait(1000));
+    QCOMPARE(offline.first().first().toInt(), 7);
+    QVERIFY(!d->status().online);
+    QVERIFY(m_backend->tracker()->isOnline(1));
+    DriveReply *r = d->readAlarm();
+    QVERIFY(waitFinished(r));
+    QCOMPARE(r->error().code, ErrorCode::Timeout);
+    r = d->jog(100);
+    QVERIFY(waitFinished(r));
+    QCOMPARE(r->error().code, ErrorCode::DriveException);
+    QVERIFY(r->error().message.contains(QStringLiteral("heartbeat")));
+    QVERIFY(waitFinished(d->stop()));
+    // The keep-alive goes on while it is away; it is back with its first heartbeat.
+    const quint64 frames = m_backend->tracker()->stats().keepAliveFrames;
+    QTest::qWait(250);
+    QVERIFY(m_backend->tracker()->stats().keepAliveFrames >= frames + 4);
+    m_sim7->faults().setSilent(false);
+    QVERIFY(waitUntil([d] { return d->status().online; }, 1000));
+}
+
 void TestServoCanDrive::watchdogStopsMotionWithoutKeepAlive()
 {
     ServoCanDrive *d = drive(7);
@@ -536,6 +564,23 @@ void TestServoCanDrive::watchdogStopsMotionWithoutKeepAlive()
     QVERIFY(openBackend());
     QVERIFY(waitUntil([this] { return m_sim7->isHostOnline(); }, 1000));
     d->setJogLeaseMs(300);
+}
+
+void TestServoCanDrive::busGoingAwayIsALostLink()
+{
+    ServoCanDrive *d = drive(1);
+    QSignalSpy lost(m_backend.get(), &FamilyBackend::linkLost);
+    QSignalSpy driveLost(d, &Drive::connectionLost);
+    m_hub.reset(); // the process hosting the virtual bus went away
+    QVERIFY(lost.wait(3000));
+    QCOMPARE(lost.first().first().value<Error>().code, ErrorCode::LinkClosed);
+    QCOMPARE(driveLost.size(), 1);
+    QVERIFY(!m_backend->isOpen());
+    QVERIFY(!d->status().online);
+    QVERIFY(m_backend->tracker()->seenStations().isEmpty()); // keep-alive ended
+    DriveReply *r = d->readAlarm();
+    QVERIFY(waitFinished(r));
+    QCOMPARE(r->error().code, ErrorCode::LinkClosed);
 }
 
 QTEST_GUILESS_MAIN(TestServoCanDrive)

@@ -547,6 +547,9 @@ void TestServoCanDrive::watchdogStopsMotionWithoutKeepAlive()
     QVERIFY(waitFinished(r));
     QVERIFY2(r->ok(), qPrintable(errorText(r)));
     const quint64 trips = m_sim7->stats().watchdogTrips;
+    // The drive's 2 s count starts at the last keep-alive it got: make sure that is now.
+    const quint64 keepAlives = m_sim7->stats().keepAlives;
+    QVERIFY(waitUntil([this, keepAlives] { return m_sim7->stats().keepAlives >= keepAlives + 2; }, 1000));
     QSignalSpy lost(d, &Drive::connectionLost);
     QElapsedTimer t;
     t.start();

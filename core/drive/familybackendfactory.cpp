@@ -1,14 +1,15 @@
 #include "drive/driveconnection.h"
 #include "drive/familybackend.h"
+#include "drive/servocanbackend.h"
 
 namespace dd {
 
 // One place that knows every family's backend class.
 FamilyBackend *createFamilyBackend(Family family, QObject *parent)
 {
-    Q_UNUSED(parent);
     switch (family) {
     case Family::ServoCan:
+        return new ServoCanBackend(parent);
     case Family::ServoModbus:
     case Family::Shuoke:
         break;

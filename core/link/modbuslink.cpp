@@ -3,6 +3,7 @@
 #include "link/modbuslinkprivate.h"
 
 #include <QModbusRtuSerialClient>
+#include <QVariant>
 
 namespace dd {
 

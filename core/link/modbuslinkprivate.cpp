@@ -6,6 +6,7 @@
 #include <QLoggingCategory>
 #include <QModbusReply>
 #include <QModbusRtuSerialClient>
+#include <QVariant>
 #include <cmath>
 
 Q_LOGGING_CATEGORY(lcModbusLink, "drivedesk.link.modbus")

@@ -3,9 +3,9 @@
 #include <QByteArray>
 #include <QObject>
 #include <QPointer>
+#include <QSocketNotifier>
 
 class QIODevice;
-class QSocketNotifier;
 
 namespace dd {
 

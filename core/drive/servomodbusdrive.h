@@ -1,6 +1,7 @@
 #pragma once
 
 #include "drive/drive.h"
+#include "link/modbuslink.h"
 #include "protocol/servomodbus.h"
 
 #include <QPointer>
@@ -9,7 +10,6 @@
 
 namespace dd {
 
-class ModbusLink;
 
 // Settings of a servo-modbus drive where the seed is silent (ConnectionSettings::options).
 struct ServoModbusOptions

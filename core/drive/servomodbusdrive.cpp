@@ -4,6 +4,7 @@
 
 #include "link/modbusbatch.h"
 #include "link/modbuslink.h"
+#include "params/parameterdictionary.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -265,14 +266,14 @@ DriveReply *ServoModbusDrive::readParameters(const QList<int> &indices)
         readRequests(address(), servomodbus::planReads(indices), QStringLiteral("read parameters"));
     ModbusBatch::run(
         m_link, requests, reply, ModbusBatch::Mode::StopOnError,
-        [reply, requests, indices](const Error &error, const QList<ModbusBatch::Result> &results) {
+        [this, reply, requests, indices](const Error &error, const QList<ModbusBatch::Result> &results) {
             if (error) {
                 reply->finish(error);
                 return;
             }
             const auto regs = collect(requests, results);
             for (int n : indices)
-                reply->setParameter(n, qint16(regs.value(servomodbus::parameterRegister(n))));
+                reply->setParameter(n, parameterValue(n, regs.value(servomodbus::parameterRegister(n))));
             reply->finish();
         },
         [reply](int done, int total) { reply->reportProgress(done, total); });
@@ -321,6 +322,16 @@ DriveReply *ServoModbusDrive::readChannels(const QStringList &channelIds)
 
 // ---- Parameter writes ----
 
+qint64 ServoModbusDrive::parameterValue(int index, quint16 raw) const
+{
+    // Signed unless the dictionary says the register is unsigned.
+    if (const auto dict = dictionary()) {
+        if (const ParameterInfo *p = dict->byIndex(index); p && p->type == ValueType::UInt16)
+            return raw;
+    }
+    return qint16(raw);
+}
+
 Error ServoModbusDrive::checkWrites(const QList<ParameterWrite> &writes) const
 {
     QSet<int> seen;
@@ -341,6 +352,12 @@ Error ServoModbusDrive::checkWrites(const QList<ParameterWrite> &writes) const
                             "unsigned). Nothing was written.")
                         .arg(w.value)
                         .arg(w.index)};
+        if (const auto dict = dictionary(); dict && dict->byIndex(w.index)) {
+            if (Error e = dict->validateWrite(w.index, w.value)) {
+                e.message += QLatin1Char(' ') + trDrive("Nothing was written.");
+                return e;
+            }
+        }
     }
     return {};
 }
@@ -406,7 +423,7 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
         readRequests(address(), servomodbus::planReads(toRead), QStringLiteral("verify"));
     ModbusBatch::run(
         m_link, requests, reply, ModbusBatch::Mode::ContinueOnError,
-        [reply, requests, writes, writeErrors](const Error &, const QList<ModbusBatch::Result> &results) {
+        [this, reply, requests, writes, writeErrors](const Error &, const QList<ModbusBatch::Result> &results) {
             QHash<int, Error> readErrors;
             QHash<quint16, quint16> regs;
             for (int i = 0; i < requests.size(); ++i) {
@@ -437,7 +454,7 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
                         first = readErrors.value(w.index);
                 } else {
                     const quint16 raw = regs.value(reg);
-                    r.readBack = w.value > 32767 ? qint64(raw) : qint64(qint16(raw));
+                    r.readBack = w.value > 32767 ? qint64(raw) : parameterValue(w.index, raw);
                     r.verified = raw == static_cast<quint16>(w.value);
                     if (!r.verified) {
                         ++mismatches;

@@ -64,6 +64,7 @@ public:
 private:
     Error checkLink() const;
     Error checkWrites(const QList<ParameterWrite> &writes) const;
+    qint64 parameterValue(int index, quint16 raw) const;
     void runEe(DriveReply *reply, servomodbus::EeOp op, servomodbus::EeFormat format);
     void pollLegacyEe(DriveReply *reply, servomodbus::EeOp op, qint64 deadlineMs, int polls);
     void writeThenVerify(DriveReply *reply, const QList<ParameterWrite> &writes);

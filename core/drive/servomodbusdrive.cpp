@@ -325,11 +325,8 @@ DriveReply *ServoModbusDrive::readChannels(const QStringList &channelIds)
 qint64 ServoModbusDrive::parameterValue(int index, quint16 raw) const
 {
     // Signed unless the dictionary says the register is unsigned.
-    if (const auto dict = dictionary()) {
-        if (const ParameterInfo *p = dict->byIndex(index); p && p->type == ValueType::UInt16)
-            return raw;
-    }
-    return qint16(raw);
+    const ParameterInfo *p = parameterDictionary().byIndex(index);
+    return (p && p->type == ValueType::UInt16) ? qint64(raw) : qint64(qint16(raw));
 }
 
 Error ServoModbusDrive::checkWrites(const QList<ParameterWrite> &writes) const
@@ -352,12 +349,11 @@ Error ServoModbusDrive::checkWrites(const QList<ParameterWrite> &writes) const
                             "unsigned). Nothing was written.")
                         .arg(w.value)
                         .arg(w.index)};
-        if (const auto dict = dictionary(); dict && dict->byIndex(w.index)) {
-            if (Error e = dict->validateWrite(w.index, w.value)) {
-                e.message += QLatin1Char(' ') + trDrive("Nothing was written.");
-                return e;
-            }
-        }
+    }
+    // The dictionary (a user's file or the bundled one): ranges, read-only parameters.
+    if (Error e = validateWrites(writes)) {
+        e.message += QLatin1Char(' ') + trDrive("Nothing was written.");
+        return e;
     }
     return {};
 }
@@ -369,10 +365,6 @@ DriveReply *ServoModbusDrive::writeParameters(const QList<ParameterWrite> &write
     if (Error e = checkWrites(writes))
         return finishedReply(e);
     DriveReply *reply = newReply();
-    if (writes.isEmpty()) {
-        reply->finish();
-        return reply;
-    }
     writeThenVerify(reply, writes);
     return reply;
 }

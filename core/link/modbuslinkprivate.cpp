@@ -134,11 +134,13 @@ bool ModbusLink::Private::reconnect(Error *error)
         m_qtReply = nullptr;
     }
     m_aborting = true;
+    const qint64 t0 = nowUs();
     m_client->disconnectDevice();    // ends Qt's wait (its queue holds only our request)
     m_client->setInterFrameDelay(-1);
     const bool ok = m_client->connectDevice();
     m_aborting = false;
     ++m_reconnects;
+    m_reconnectCostUs = (3 * m_reconnectCostUs + (nowUs() - t0)) / 4;
     if (!ok) {
         if (error)
             *error = {ErrorCode::LinkClosed,
@@ -329,7 +331,10 @@ void ModbusLink::Private::transmit()
             Qt::QueuedConnection);
     // Qt's response timer starts when the bytes are written, after its inter-frame delay.
     const int ifdMs = (ifdUs + 999) / 1000;
-    const bool ownTimer = timeout < QtMinTimeoutMs;
+    // Below Qt's 10 ms minimum our own timer ends the wait by reconnecting the client, when
+    // that is quicker than letting Qt's timer run (the reconnect cost is measured).
+    const int reconnectMs = int((m_reconnectCostUs + 999) / 1000);
+    const bool ownTimer = timeout + reconnectMs < QtMinTimeoutMs;
     m_abortTimer.start(timeout + ifdMs + (ownTimer ? 1 : WatchdogMs));
 }
 

@@ -76,6 +76,7 @@ public:
     quint64 m_checksumErrors = 0;
     quint64 m_lateReplies = 0;
     quint64 m_reconnects = 0;
+    qint64 m_reconnectCostUs = 1000; // running average of a client reconnect
     quint64 m_strayBursts = 0;
 
 private:

@@ -16,7 +16,7 @@ class LinkReply;
 // for PA2 (one register: the firmware version, reported with the drive).
 //
 // Per-probe timeout (ScanOptions::timeoutMs = -1): the wire time of the request and its
-// 7-byte reply at that baud plus an allowance: allowanceMs() (6 ms unless set), raised to
+// 7-byte reply at that baud plus an allowance: allowanceMs() (4 ms unless set), raised to
 // 2 x the slowest turnaround seen so far + 1 ms once drives answer. A drive behind a slow
 // USB adapter (latency timer 16 ms) needs an explicit timeout (e.g. 40 ms). No retries,
 // except one repeat of a probe whose reply was garbled. An exception reply also counts as
@@ -28,7 +28,7 @@ class ServoModbusScanner : public Discovery
 {
     Q_OBJECT
 public:
-    static constexpr int DefaultAllowanceMs = 6;
+    static constexpr int DefaultAllowanceMs = 4;
 
     ServoModbusScanner(ModbusLink *link, const ScanOptions &options, QObject *parent = nullptr);
     ~ServoModbusScanner() override;

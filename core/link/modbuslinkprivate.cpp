@@ -325,7 +325,7 @@ void ModbusLink::Private::transmit()
     // that is quicker than letting Qt's timer run (the reconnect cost is measured).
     const int reconnectMs = int((m_reconnectCostUs + 999) / 1000);
     const bool ownTimer = timeout + reconnectMs < QtMinTimeoutMs;
-    m_abortTimer.start(timeout + ifdMs + (ownTimer ? 1 : WatchdogMs));
+    m_abortTimer.start(timeout + ifdMs + (ownTimer ? 0 : WatchdogMs));
 }
 
 void ModbusLink::Private::onClientError(QModbusDevice::Error error)

@@ -1,6 +1,7 @@
 #include "drive/driveconnection.h"
 #include "drive/familybackend.h"
 #include "drive/servocanbackend.h"
+#include "drive/servomodbusbackend.h"
 
 namespace dd {
 
@@ -11,6 +12,7 @@ FamilyBackend *createFamilyBackend(Family family, QObject *parent)
     case Family::ServoCan:
         return new ServoCanBackend(parent);
     case Family::ServoModbus:
+        return new ServoModbusBackend(parent);
     case Family::Shuoke:
         break;
     }

@@ -15,7 +15,10 @@ TrendPlotBuilder::Result TrendPlotBuilder::build(const SampleBuffer &buffer, qin
     Result r;
     if (toUs < fromUs || buffer.isEmpty())
         return r;
-    const int buckets = std::max(1, widthPx - 1);
+    // width - 1 buckets of <= 2 points, plus two edge points; a plot narrower than two
+    // pixels gets one bucket and no edge points.
+    const bool edges = widthPx >= 2;
+    const int buckets = edges ? widthPx - 1 : 1;
     const QList<TrendSample> inside = Decimator::minMax(buffer, fromUs, toUs, buckets);
     const auto map = [&](const TrendSample &s) {
         // Subtract in integers first: doubles lose µs beyond ~285 years but not differences.
@@ -23,7 +26,7 @@ TrendPlotBuilder::Result TrendPlotBuilder::build(const SampleBuffer &buffer, qin
     };
     r.points.reserve(inside.size() + 2);
     const qsizetype before = buffer.lowerBound(fromUs) - 1;
-    if (before >= 0 && !std::isnan(buffer.valueAt(before)))
+    if (edges && before >= 0 && !std::isnan(buffer.valueAt(before)))
         r.points.append(map(buffer.at(before)));
     double lo = std::numeric_limits<double>::infinity();
     double hi = -std::numeric_limits<double>::infinity();
@@ -34,7 +37,7 @@ TrendPlotBuilder::Result TrendPlotBuilder::build(const SampleBuffer &buffer, qin
         r.points.append(p);
     }
     const qsizetype after = buffer.upperBound(toUs);
-    if (after < buffer.size() && !std::isnan(buffer.valueAt(after)))
+    if (edges && after < buffer.size() && !std::isnan(buffer.valueAt(after)))
         r.points.append(map(buffer.at(after)));
     if (!inside.isEmpty()) {
         r.yMin = lo;

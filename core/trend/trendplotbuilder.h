@@ -11,7 +11,8 @@ namespace dd {
 // min/max-decimated to the plot width (Decimator), plus the nearest sample outside each
 // edge so the line reaches the border. x is seconds since originUs, y is
 // value × scale + offset. At most 2 × widthPx points: the window gets widthPx - 1
-// buckets (≤ 2 points each) and the two edge points make up the rest.
+// buckets (≤ 2 points each) and the two edge points make up the rest (below 2 px: one
+// bucket, no edge points).
 class TrendPlotBuilder
 {
 public:

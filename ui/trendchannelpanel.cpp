@@ -86,13 +86,13 @@ void TrendChannelPanel::setChannels(const QList<TrendChannel> &channels, const Q
         row.check->setIcon(swatch(colors.value(r - 1, Qt::black)));
         row.scale = new QDoubleSpinBox(this);
         row.scale->setDecimals(4);
-        row.scale->setRange(0.0001, 100000.0);
+        row.scale->setRange(0.0001, 10000.0);
         row.scale->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
         row.scale->setValue(s.scale);
         row.scale->setKeyboardTracking(false);
         row.offset = new QDoubleSpinBox(this);
-        row.offset->setDecimals(3);
-        row.offset->setRange(-1e9, 1e9);
+        row.offset->setDecimals(2);
+        row.offset->setRange(-1e7, 1e7);
         row.offset->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
         row.offset->setValue(s.offset);
         row.offset->setKeyboardTracking(false);

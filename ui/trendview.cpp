@@ -11,6 +11,7 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QGraphicsLineItem>
 #include <QHBoxLayout>
@@ -31,7 +32,8 @@ namespace dd {
 
 namespace {
 
-constexpr int RefreshIntervalMs = 40; // 25 Hz
+constexpr int RefreshIntervalMs = 40;     // 25 Hz
+constexpr int SlowestRefreshIntervalMs = 200; // 5 Hz on a machine too slow for 25
 
 // Distinguishable on white and in grey-scale print; repeats after eight channels.
 const QList<QColor> &seriesColors()
@@ -41,6 +43,16 @@ const QList<QColor> &seriesColors()
                                       QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
                                       QColor(0x17, 0xbe, 0xcf), QColor(0x7f, 0x7f, 0x7f)};
     return colors;
+}
+
+// A 1-2-5 step near `rough` (for axis ticks that stay on round values while scrolling).
+double niceStep(double rough)
+{
+    if (!(rough > 0.0))
+        return 1.0;
+    const double p = std::pow(10.0, std::floor(std::log10(rough)));
+    const double m = rough / p;
+    return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
 }
 
 qint64 secondsToUs(double s)
@@ -80,6 +92,9 @@ void TrendView::buildUi()
     m_axisX = new QValueAxis(m_chart);
     m_axisY = new QValueAxis(m_chart);
     m_axisX->setLabelFormat(QStringLiteral("%g"));
+    m_axisX->setTickType(QValueAxis::TicksDynamic); // round times while the axis scrolls
+    m_axisX->setTickAnchor(0.0);
+    m_axisX->setTickInterval(5.0);
     m_axisY->setLabelFormat(QStringLiteral("%g"));
     m_chart->addAxis(m_axisX, Qt::AlignBottom);
     m_chart->addAxis(m_axisY, Qt::AlignLeft);
@@ -323,6 +338,8 @@ void TrendView::refreshNow()
     if (m_drawn && from == m_drawnFrom && to == m_drawnTo && width == m_drawnWidth
         && m_stateVersion == m_drawnState && (!live || m_recorder->revision() == m_drawnRevision))
         return; // a frozen view only changes when its window, size or settings change
+    QElapsedTimer cost;
+    cost.start();
     m_drawn = true;
     m_drawnFrom = from;
     m_drawnTo = to;
@@ -332,8 +349,12 @@ void TrendView::refreshNow()
     m_viewFromUs = from;
     m_viewToUs = to;
 
+    // Qt Charts strokes a series' whole outline on every geometry change (replace() and
+    // every axis range change), so: build all point lists, empty the series (cheap) if an
+    // axis moves, move the axes, then replace() each series once.
     double yMin = std::numeric_limits<double>::infinity();
     double yMax = -std::numeric_limits<double>::infinity();
+    QList<std::pair<QLineSeries *, QList<QPointF>>> updates;
     ++m_updatingAxes;
     for (const TrendChannel &c : std::as_const(m_channels)) {
         QLineSeries *s = m_series.value(c.id);
@@ -346,54 +367,70 @@ void TrendView::refreshNow()
                 s->clear();
             continue;
         }
-        const TrendPlotBuilder::Result r = TrendPlotBuilder::build(
+        TrendPlotBuilder::Result r = TrendPlotBuilder::build(
             *buf, from, to, width, m_recorder->originUs(), st.scale, st.offset);
         if (r.hasData()) {
             yMin = std::min(yMin, r.yMin);
             yMax = std::max(yMax, r.yMax);
         }
-        s->replace(r.points); // never append() in a loop: quadratic in Qt Charts
+        updates.append({s, std::move(r.points)});
     }
-    --m_updatingAxes;
     const double o = static_cast<double>(m_recorder->originUs());
-    std::optional<std::pair<double, double>> yData;
-    if (yMin <= yMax)
-        yData = std::make_pair(yMin, yMax);
-    setAxes((static_cast<double>(from) - o) * 1e-6, (static_cast<double>(to) - o) * 1e-6, yData);
+    const double xMin = (static_cast<double>(from) - o) * 1e-6;
+    const double xMax = (static_cast<double>(to) - o) * 1e-6;
+    std::optional<std::pair<double, double>> yRange;
+    if (m_zoomY)
+        yRange = std::make_pair(m_zoomYMin, m_zoomYMax);
+    else if (yMin <= yMax)
+        yRange = fitValueRange(yMin, yMax);
+    const bool yMoves = yRange && (yRange->first != m_axisY->min() || yRange->second != m_axisY->max());
+    if (xMin != m_axisX->min() || xMax != m_axisX->max() || yMoves) {
+        for (const auto &u : std::as_const(updates)) {
+            if (u.first->count() > 0)
+                u.first->clear();
+        }
+    }
+    const double step = niceStep((xMax - xMin) / 6.0);
+    if (step != m_axisX->tickInterval())
+        m_axisX->setTickInterval(step);
+    m_axisX->setRange(xMin, xMax);
+    if (yMoves) {
+        m_axisY->setRange(yRange->first, yRange->second);
+        if (!m_zoomY)
+            m_axisY->applyNiceNumbers();
+    }
+    for (const auto &u : std::as_const(updates))
+        u.first->replace(u.second); // never append() in a loop: quadratic in Qt Charts
+    --m_updatingAxes;
     updateCursor();
     updateStatus();
+    // Keep redrawing under ~25 % of the GUI thread: slow down on a slow machine (the
+    // render that follows costs about as much again), speed up again when it is fast.
+    const int interval = std::clamp(int(cost.elapsed()) * 4, RefreshIntervalMs, SlowestRefreshIntervalMs);
+    if (interval != m_timer.interval())
+        m_timer.setInterval(interval);
 }
 
-void TrendView::setAxes(double xMin, double xMax, std::optional<std::pair<double, double>> yData)
+std::optional<std::pair<double, double>> TrendView::fitValueRange(double lo, double hi) const
 {
-    ++m_updatingAxes;
-    m_axisX->setRange(xMin, xMax);
-    if (m_zoomY) {
-        m_axisY->setRange(m_zoomYMin, m_zoomYMax);
-    } else if (yData) {
-        double lo = yData->first;
-        double hi = yData->second;
-        if (hi - lo <= 1e-12 * std::max(1.0, std::fabs(hi))) {
-            const double pad = std::max(1.0, std::fabs(hi) * 0.1);
-            lo -= pad;
-            hi += pad;
-        } else {
-            const double margin = (hi - lo) * 0.05;
-            lo -= margin;
-            hi += margin;
-        }
-        // Hysteresis: grow at once, shrink only when the data uses less than half the axis,
-        // so a noisy signal does not make the axis twitch every frame.
-        const double curLo = m_axisY->min();
-        const double curHi = m_axisY->max();
-        const bool fits = lo >= curLo && hi <= curHi;
-        const bool loose = (hi - lo) < 0.5 * (curHi - curLo);
-        if (!fits || loose) {
-            m_axisY->setRange(lo, hi);
-            m_axisY->applyNiceNumbers();
-        }
+    if (hi - lo <= 1e-12 * std::max(1.0, std::fabs(hi))) {
+        const double pad = std::max(1.0, std::fabs(hi) * 0.1);
+        lo -= pad;
+        hi += pad;
+    } else {
+        const double margin = (hi - lo) * 0.05;
+        lo -= margin;
+        hi += margin;
     }
-    --m_updatingAxes;
+    // Hysteresis: grow at once, shrink only when the data uses less than half the axis,
+    // so a noisy signal does not make the axis twitch every frame.
+    const double curLo = m_axisY->min();
+    const double curHi = m_axisY->max();
+    const bool fits = lo >= curLo && hi <= curHi;
+    const bool loose = (hi - lo) < 0.5 * (curHi - curLo);
+    if (fits && !loose)
+        return std::make_pair(curLo, curHi);
+    return std::make_pair(lo, hi);
 }
 
 void TrendView::onAxisRangeChanged()
@@ -519,7 +556,7 @@ void TrendView::updateStatus()
         if (const SampleBuffer *b = m_recorder->buffer(c.id))
             n += b->size();
     }
-    QString text = tr("%n sample(s) recorded", nullptr, static_cast<int>(std::min<qsizetype>(n, INT_MAX)));
+    QString text = tr("%Ln sample(s) recorded", nullptr, static_cast<int>(std::min<qsizetype>(n, INT_MAX)));
     if (m_recorder->droppedCount() > 0)
         text += QStringLiteral(" · ") + tr("recording limit reached: oldest samples dropped");
     if (m_recorder->isPaused())

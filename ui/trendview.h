@@ -28,9 +28,11 @@ class TrendRecorder;
 // - One QLineSeries per channel on a shared value axis; each channel has a scale and an
 //   offset (TrendChannelPanel) so channels of different magnitude fit together. The time
 //   axis is in seconds since the recording's origin.
-// - A refresh timer (25 Hz, only while shown) min/max-decimates the visible window to the
-//   plot width (Decimator) and calls QXYSeries::replace(): never more than two points per
-//   pixel column per series (plus one point beyond each edge so lines reach the border).
+// - A refresh timer (25 Hz, only while shown; slower, down to 5 Hz, if a refresh takes
+//   over 10 ms) min/max-decimates the visible window to the plot width (TrendPlotBuilder)
+//   and calls QXYSeries::replace() once per series: at most two points per pixel column.
+//   A frozen (paused or zoomed) view is redrawn only when its window, size or settings
+//   change.
 // - Window 10 s … 10 min; following the newest sample unless paused. Pause freezes the
 //   view while the recorder keeps recording; resume jumps back to live and drops zoom.
 // - Zoom: drag a rectangle (right click zooms out); zooming pauses following. "Reset zoom"
@@ -102,7 +104,8 @@ private:
     void updateSeriesName(const QString &id);
     void computeWindow(qint64 *fromUs, qint64 *toUs) const;
     int plotWidthPx() const;
-    void setAxes(double xMin, double xMax, std::optional<std::pair<double, double>> yData);
+    // The value-axis range for data in [lo, hi] (current range if it still fits well).
+    std::optional<std::pair<double, double>> fitValueRange(double lo, double hi) const;
     void onAxisRangeChanged();
     void onPausedChanged(bool paused);
     void updateCursor();

@@ -84,13 +84,41 @@ bool makeWindow(qint64 fromUs, qint64 toUs, int buckets, Window *w)
 } // namespace
 
 QList<TrendSample> Decimator::minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs,
-                                     int buckets)
+                                     int buckets, Strategy strategy)
 {
     Window w{};
     if (!makeWindow(fromUs, toUs, buckets, &w))
         return {};
-    return decimate(w, buffer.lowerBound(fromUs), buffer.upperBound(toUs),
-                    [&buffer](qsizetype i) { return buffer.at(i); });
+    qsizetype i = buffer.lowerBound(fromUs);
+    const qsizetype end = buffer.upperBound(toUs);
+    if (strategy == Strategy::Auto) {
+        // Measured (docs/performance.md): summaries win from a few hundred samples per bucket.
+        strategy = end - i < w.n * 4 * SampleBuffer::BlockSize ? Strategy::Scan : Strategy::Summaries;
+    }
+    if (strategy == Strategy::Scan)
+        return decimate(w, i, end, [&buffer](qsizetype k) { return buffer.at(k); });
+
+    // Bucket by bucket: its index range by binary search, its extremes from the buffer's
+    // block summaries. Same result as the scan, without reading every sample.
+    QList<TrendSample> out;
+    if (i >= end)
+        return out;
+    out.reserve(std::min<qsizetype>(end - i, 2 * w.n));
+    while (i < end) {
+        const qint64 bucketEnd = w.endOf(w.bucketOf(buffer.timeAt(i)));
+        const qsizetype j = std::min(end, buffer.lowerBound(bucketEnd));
+        const SampleBuffer::Extremes e = buffer.extremes(i, j);
+        if (e.minIndex >= 0) {
+            if (e.minIndex == e.maxIndex) {
+                out.append(buffer.at(e.minIndex));
+            } else {
+                out.append(buffer.at(std::min(e.minIndex, e.maxIndex)));
+                out.append(buffer.at(std::max(e.minIndex, e.maxIndex)));
+            }
+        }
+        i = j;
+    }
+    return out;
 }
 
 QList<TrendSample> Decimator::minMax(const QList<TrendSample> &sorted, qint64 fromUs,

@@ -22,12 +22,18 @@ class SampleBuffer;
 // - buckets < 1 counts as 1; toUs < fromUs gives an empty result.
 // A bucket with at most two samples keeps them all, so when the data is sparser than two
 // samples per bucket the output equals the input window: decimation is lossless there.
-// Pure functions; O(samples in the window) plus O(log n) to find the window.
+// Pure functions. Over a list: a scan, O(samples in the window). Over a SampleBuffer,
+// two strategies with exactly the same result: Scan, or Summaries (per non-empty bucket
+// O(log n) plus SampleBuffer::extremes() over the block summaries, so a 10-minute window
+// at 1 kHz costs about as much as a few seconds of raw samples). Auto scans when buckets
+// hold fewer than ~256 samples on average, where the summaries do not pay off.
 class Decimator
 {
 public:
+    enum class Strategy { Auto, Scan, Summaries };
+
     static QList<TrendSample> minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs,
-                                     int buckets);
+                                     int buckets, Strategy strategy = Strategy::Auto);
     // The same over samples sorted by time (non-decreasing).
     static QList<TrendSample> minMax(const QList<TrendSample> &sorted, qint64 fromUs,
                                      qint64 toUs, int buckets);

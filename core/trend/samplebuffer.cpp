@@ -1,6 +1,7 @@
 #include "trend/samplebuffer.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace dd {
 
@@ -26,6 +27,7 @@ bool SampleBuffer::append(qint64 timeUs, double value)
         }
         m_times.push_back(timeUs);
         m_values.push_back(value);
+        summarize(static_cast<qint64>(m_dropped) + m_size, value);
         ++m_size;
         return true;
     }
@@ -34,13 +36,101 @@ bool SampleBuffer::append(qint64 timeUs, double value)
     m_values[static_cast<size_t>(m_head)] = value;
     m_head = m_head + 1 == m_capacity ? 0 : m_head + 1;
     ++m_dropped;
+    summarize(static_cast<qint64>(m_dropped) + m_size - 1, value);
     return true;
+}
+
+void SampleBuffer::summarize(qint64 seq, double value)
+{
+    const size_t slot = static_cast<size_t>((seq / BlockSize) % blockSlots());
+    if (slot >= m_blocks.size()) {
+        if (slot >= m_blocks.capacity()) // grow like the samples, never past the slot count
+            m_blocks.reserve(std::min<size_t>(static_cast<size_t>(blockSlots()),
+                                              std::max<size_t>(16, 2 * m_blocks.capacity())));
+        m_blocks.resize(slot + 1);
+    }
+    Block &b = m_blocks[slot];
+    if (seq % BlockSize == 0)
+        b = Block{}; // a new block reuses the slot
+    if (std::isnan(value))
+        return;
+    if (b.minSeq < 0) {
+        b = Block{value, value, seq, seq};
+    } else if (value < b.minValue) {
+        b.minValue = value;
+        b.minSeq = seq;
+    } else if (value > b.maxValue) {
+        b.maxValue = value;
+        b.maxSeq = seq;
+    }
+}
+
+void SampleBuffer::rebuildSummaries()
+{
+    std::vector<Block>().swap(m_blocks);
+    for (qsizetype i = 0; i < m_size; ++i) {
+        const qint64 seq = static_cast<qint64>(m_dropped) + i;
+        if (i == 0 && seq % BlockSize != 0) {
+            // The first block is partial: start its slot fresh so stale data never mixes in.
+            const size_t slot = static_cast<size_t>((seq / BlockSize) % blockSlots());
+            if (slot >= m_blocks.size())
+                m_blocks.resize(slot + 1);
+            m_blocks[slot] = Block{};
+        }
+        summarize(seq, valueAt(i));
+    }
+}
+
+SampleBuffer::Extremes SampleBuffer::extremes(qsizetype begin, qsizetype end) const
+{
+    Extremes e;
+    double lo = 0.0;
+    double hi = 0.0;
+    // Candidates arrive in index order; strict comparisons keep the earliest on ties.
+    const auto minCandidate = [&](qsizetype i, double v) {
+        if (e.minIndex < 0 || v < lo) {
+            e.minIndex = i;
+            lo = v;
+        }
+    };
+    const auto maxCandidate = [&](qsizetype i, double v) {
+        if (e.maxIndex < 0 || v > hi) {
+            e.maxIndex = i;
+            hi = v;
+        }
+    };
+    begin = std::max<qsizetype>(0, begin);
+    end = std::min(end, m_size);
+    const qint64 first = static_cast<qint64>(m_dropped);
+    const qsizetype slotCount = blockSlots();
+    qsizetype i = begin;
+    while (i < end) {
+        const qint64 seq = first + i;
+        if (seq % BlockSize == 0 && i + BlockSize <= end) {
+            // A whole block inside the range (and therefore fully kept): its summary.
+            const Block &b = m_blocks[static_cast<size_t>((seq / BlockSize) % slotCount)];
+            if (b.minSeq >= 0) {
+                minCandidate(static_cast<qsizetype>(b.minSeq - first), b.minValue);
+                maxCandidate(static_cast<qsizetype>(b.maxSeq - first), b.maxValue);
+            }
+            i += BlockSize;
+            continue;
+        }
+        const double v = valueAt(i);
+        if (!std::isnan(v)) {
+            minCandidate(i, v);
+            maxCandidate(i, v);
+        }
+        ++i;
+    }
+    return e;
 }
 
 void SampleBuffer::clear()
 {
     std::vector<qint64>().swap(m_times);
     std::vector<double>().swap(m_values);
+    std::vector<Block>().swap(m_blocks);
     m_head = 0;
     m_size = 0;
     m_dropped = 0;
@@ -68,12 +158,14 @@ void SampleBuffer::setCapacity(qsizetype capacity)
     m_head = 0;
     m_size = keep;
     m_dropped += static_cast<quint64>(skip);
+    rebuildSummaries();
 }
 
 qsizetype SampleBuffer::memoryBytes() const
 {
     return static_cast<qsizetype>(m_times.capacity() * sizeof(qint64)
-                                  + m_values.capacity() * sizeof(double));
+                                  + m_values.capacity() * sizeof(double)
+                                  + m_blocks.capacity() * sizeof(Block));
 }
 
 qsizetype SampleBuffer::lowerBound(qint64 timeUs) const

@@ -20,11 +20,25 @@ namespace dd {
 //
 // A sample older than the newest one is rejected (append() returns false and
 // rejectedCount() counts it): lookups rely on the order. Equal times are allowed.
-// Lookups by time are binary searches, O(log n). Not thread-safe.
+// Lookups by time are binary searches, O(log n).
+//
+// For fast decimation of long windows the buffer also keeps, per block of BlockSize
+// consecutive samples, the block's smallest and largest sample (0.5 byte per sample):
+// extremes() over a range reads whole blocks from these summaries and only scans the
+// partial blocks at its ends, O(BlockSize + n / BlockSize). Not thread-safe.
 class SampleBuffer
 {
 public:
     static constexpr qsizetype DefaultCapacity = 600000;
+    static constexpr qsizetype BlockSize = 64;
+
+    // Indices of the smallest and the largest value in a range (the earliest one on
+    // equal values; NaN values are skipped); -1 when the range has no number.
+    struct Extremes
+    {
+        qsizetype minIndex = -1;
+        qsizetype maxIndex = -1;
+    };
 
     explicit SampleBuffer(qsizetype capacity = DefaultCapacity);
 
@@ -58,8 +72,21 @@ public:
     // Copies of the samples with fromUs <= time <= toUs, oldest first.
     QList<TrendSample> samples(qint64 fromUs, qint64 toUs) const;
     QList<TrendSample> samples() const;
+    // Extremes of the samples with index in [begin, end).
+    Extremes extremes(qsizetype begin, qsizetype end) const;
 
 private:
+    struct Block
+    {
+        double minValue = 0.0;
+        double maxValue = 0.0;
+        qint64 minSeq = -1; // -1: no number in the block yet
+        qint64 maxSeq = -1;
+    };
+    // Samples are numbered by seq since clear(); index 0 is seq m_dropped.
+    void summarize(qint64 seq, double value);
+    void rebuildSummaries();
+
     qsizetype physical(qsizetype i) const
     {
         const qsizetype p = m_head + i;
@@ -68,6 +95,8 @@ private:
 
     std::vector<qint64> m_times;
     std::vector<double> m_values;
+    std::vector<Block> m_blocks; // ring: block b at b % blockSlots()
+    qsizetype blockSlots() const { return m_capacity / BlockSize + 2; }
     qsizetype m_capacity;
     qsizetype m_head = 0; // physical index of the oldest sample (0 until the ring wraps)
     qsizetype m_size = 0;

@@ -54,6 +54,8 @@ private slots:
         QCOMPARE(Decimator::minMax(in, 0, 99, 10), expected);
         const SampleBuffer b = bufferOf(in);
         QCOMPARE(Decimator::minMax(b, 0, 99, 10), expected);
+        QCOMPARE(Decimator::minMax(b, 0, 99, 10, Decimator::Strategy::Scan), expected);
+        QCOMPARE(Decimator::minMax(b, 0, 99, 10, Decimator::Strategy::Summaries), expected);
     }
 
     void bucketBoundaries()
@@ -173,11 +175,66 @@ private slots:
         in[400001].value = -3000.0;
         const SampleBuffer b = bufferOf(in);
         const Samples out = Decimator::minMax(b, 0, in.last().timeUs, 1000);
+        QCOMPARE(Decimator::minMax(b, 0, in.last().timeUs, 1000, Decimator::Strategy::Scan), out);
         QVERIFY(out.size() <= 2000);
         QVERIFY(out.contains(TrendSample{123457000, 5000.0}));
         QVERIFY(out.contains(TrendSample{400001000, -3000.0}));
         // Flat buckets give one point each, spiky buckets two.
         QCOMPARE(out.size(), 1000 + 2);
+    }
+
+    void summariesGiveTheSameResultAsAScan_data()
+    {
+        QTest::addColumn<int>("capacity");
+        QTest::addColumn<int>("samples");
+        QTest::addColumn<int>("levels"); // few levels: many ties; 0: sparse +1/-1 spikes on 0
+        QTest::newRow("no wrap") << 100000 << 50000 << 1000000;
+        QTest::newRow("wrapped, odd capacity") << 10007 << 50000 << 1000000;
+        QTest::newRow("ties") << 9000 << 30000 << 3;
+        QTest::newRow("sparse tied spikes") << 20000 << 30000 << 0;
+        QTest::newRow("tiny capacity") << 5 << 1000 << 4;
+    }
+    void summariesGiveTheSameResultAsAScan()
+    {
+        QFETCH(int, capacity);
+        QFETCH(int, samples);
+        QFETCH(int, levels);
+        QRandomGenerator rng(capacity ^ samples);
+        Samples all;
+        qint64 t = 0;
+        for (int i = 0; i < samples; ++i) {
+            t += rng.bounded(4); // repeated times too
+            // Sparse spikes: ties between whole blocks decide which sample is kept.
+            const int r = int(rng.bounded(40));
+            double v = levels > 0 ? double(rng.bounded(levels)) : (r == 0 ? 1.0 : r == 1 ? -1.0 : 0.0);
+            if (rng.bounded(50) == 0)
+                v = std::numeric_limits<double>::quiet_NaN();
+            all.append({t, v});
+        }
+        SampleBuffer ring(capacity);
+        for (const auto &s : all)
+            QVERIFY(ring.append(s.timeUs, s.value));
+        const Samples kept = all.mid(all.size() - ring.size());
+        QCOMPARE(ring.size(), std::min(capacity, samples));
+        for (int round = 0; round < 40; ++round) {
+            const qint64 a = kept.first().timeUs - 5 + rng.bounded(qint64(kept.last().timeUs - kept.first().timeUs + 10));
+            const qint64 b = a + rng.bounded(qint64(kept.last().timeUs - kept.first().timeUs + 10));
+            const int buckets = 1 + rng.bounded(3000);
+            const Samples fast = Decimator::minMax(ring, a, b, buckets, Decimator::Strategy::Summaries);
+            const Samples scan = Decimator::minMax(kept, a, b, buckets);
+            QCOMPARE(Decimator::minMax(ring, a, b, buckets, Decimator::Strategy::Scan), scan);
+            QCOMPARE(fast.size(), scan.size());
+            for (qsizetype k = 0; k < fast.size(); ++k) {
+                QCOMPARE(fast.at(k).timeUs, scan.at(k).timeUs);
+                QCOMPARE(fast.at(k).value, scan.at(k).value); // never NaN in the output
+            }
+        }
+        // After shrinking the bound the summaries are rebuilt.
+        ring.setCapacity(std::max(1, capacity / 3));
+        const Samples kept2 = all.mid(all.size() - ring.size());
+        QCOMPARE(Decimator::minMax(ring, kept2.first().timeUs, kept2.last().timeUs, 97,
+                                   Decimator::Strategy::Summaries),
+                 Decimator::minMax(kept2, kept2.first().timeUs, kept2.last().timeUs, 97));
     }
 
     void ringBufferAgreesWithList()

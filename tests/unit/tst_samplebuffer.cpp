@@ -117,15 +117,36 @@ private slots:
         QCOMPARE(b.memoryBytes(), 0);
         b.append(0, 0);
         QVERIFY(b.memoryBytes() > 0);
-        QVERIFY(b.memoryBytes() <= 1024 * 16);
+        QVERIFY(b.memoryBytes() <= 1024 * 16 + 16 * 32);
         for (int i = 1; i < 20000; ++i)
             b.append(i, i);
-        QCOMPARE(b.memoryBytes(), 5000 * 16); // exactly the bound, never more
+        // Exactly the bound plus the block summaries (32 bytes per 64 samples), never more.
+        QCOMPARE(b.memoryBytes(), 5000 * 16 + (5000 / 64 + 2) * 32);
         QCOMPARE(b.size(), 5000);
         b.clear();
         QCOMPARE(b.memoryBytes(), 0);
         QCOMPARE(b.size(), 0);
         QCOMPARE(b.droppedCount(), 0u);
+    }
+
+    void extremes()
+    {
+        SampleBuffer b(1000);
+        // 200 samples: values rise to 150 at index 150 and fall; 7 at 10 and 20 (ties).
+        for (int i = 0; i < 200; ++i)
+            b.append(i, i <= 150 ? i : 300 - i);
+        b.append(200, 149); // equal to the value at 151, later: not the max of [151, 201)
+        QCOMPARE(b.extremes(0, b.size()).minIndex, 0);
+        QCOMPARE(b.extremes(0, b.size()).maxIndex, 150);
+        QCOMPARE(b.extremes(151, b.size()).maxIndex, 151); // 149 at 151; 150 at 200 is later
+        QCOMPARE(b.extremes(151, b.size()).minIndex, 199);
+        QCOMPARE(b.extremes(5, 6).minIndex, 5);
+        QCOMPARE(b.extremes(5, 6).maxIndex, 5);
+        QCOMPARE(b.extremes(6, 6).minIndex, -1);
+        QCOMPARE(b.extremes(-10, 100000).maxIndex, 150);
+        SampleBuffer n(10);
+        n.append(0, std::numeric_limits<double>::quiet_NaN());
+        QCOMPARE(n.extremes(0, 1).minIndex, -1);
     }
 
     void defaultBoundIsTenMinutesAtOneKilohertz()

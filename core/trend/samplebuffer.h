@@ -10,10 +10,10 @@ namespace dd {
 
 // The time series of one channel: samples in non-decreasing time order, bounded in memory.
 //
-// Memory bound: at most capacity() samples are kept, 16 bytes each (a qint64 time and a
-// double value, stored as two arrays). The default, DefaultCapacity = 600,000 samples, is
-// ten minutes at 1 kHz: 9.6 MB per channel, 77 MB for 8 channels at 1 kHz × 10 min (the
-// worst case the trend view offers). Storage grows with the recording (a short one costs
+// Memory bound: at most capacity() samples are kept, 16.5 bytes each (a qint64 time and a
+// double value in two arrays, plus the block summaries below). The default,
+// DefaultCapacity = 600,000 samples, is ten minutes at 1 kHz: 9.9 MB per channel, 79 MB
+// for 8 channels at 1 kHz × 10 min (the worst case the trend view offers). Storage grows with the recording (a short one costs
 // little) and never beyond the capacity. Past the capacity the buffer is a ring: each new
 // sample evicts the oldest one, and droppedCount() says how many were evicted, so a
 // long recording keeps its most recent capacity() samples.

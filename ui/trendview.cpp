@@ -446,8 +446,12 @@ void TrendView::onAxisRangeChanged()
     m_zoomYMin = m_axisY->min();
     m_zoomYMax = m_axisY->max();
     m_controls->setZoomed(true);
-    if (!m_recorder->isPaused())
+    if (!m_recorder->isPaused()) {
+        // No redraw from onPausedChanged() now: QChart is between setting the two axes.
+        m_handlingZoom = true;
         m_recorder->setPaused(true);
+        m_handlingZoom = false;
+    }
     invalidate();
     // Redraw with full resolution for the new range once the zoom has set both axes.
     QTimer::singleShot(0, this, &TrendView::refreshNow);
@@ -471,7 +475,8 @@ void TrendView::onPausedChanged(bool paused)
         m_controls->setZoomed(false);
     }
     invalidate();
-    refreshNow();
+    if (!m_handlingZoom)
+        refreshNow();
 }
 
 bool TrendView::eventFilter(QObject *watched, QEvent *event)

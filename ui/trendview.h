@@ -141,6 +141,7 @@ private:
     double m_zoomYMin = 0.0;
     double m_zoomYMax = 1.0;
     int m_updatingAxes = 0;
+    bool m_handlingZoom = false;
     qint64 m_viewFromUs = 0;
     qint64 m_viewToUs = 0;
     std::optional<QPoint> m_cursorPos;

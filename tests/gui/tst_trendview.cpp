@@ -203,6 +203,30 @@ private slots:
         QCOMPARE(x->max(), 60.999);
     }
 
+    void rubberBandDragZooms()
+    {
+        makeView(60000);
+        QWidget *vp = m_view->chartView()->viewport();
+        const QRectF plot = m_view->chart()->plotArea();
+        const auto toViewport = [&](const QPointF &chartPos) {
+            return m_view->chartView()->mapFromScene(m_view->chart()->mapToScene(chartPos));
+        };
+        const QPoint a = toViewport(plot.topLeft() + QPointF(plot.width() * 0.4, 5));
+        const QPoint b = toViewport(plot.topLeft() + QPointF(plot.width() * 0.6, plot.height() - 5));
+        QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, a);
+        QTest::mouseMove(vp, (a + b) / 2);
+        QTest::mouseMove(vp, b);
+        QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, b);
+        QVERIFY(m_view->isZoomed());
+        QVERIFY(m_rec->isPaused());
+        QTRY_VERIFY(m_view->visibleToUs() - m_view->visibleFromUs() < 8000000); // ~6 s of 30
+        QVERIFY(m_view->visibleFromUs() > T0 + 36000000);
+        // Right click zooms out again (still zoomed relative to the window, still paused).
+        QTest::mouseClick(vp, Qt::RightButton, Qt::NoModifier, (a + b) / 2);
+        QTRY_VERIFY(m_view->visibleToUs() - m_view->visibleFromUs() > 8000000);
+        QVERIFY(m_rec->isPaused());
+    }
+
     void cursorReadout()
     {
         makeView(30000);

@@ -185,6 +185,13 @@ Error CsvWriter::writeRow(qint64 timeUs, const QList<std::optional<double>> &val
     return e;
 }
 
+Error CsvWriter::writeRowAtSeconds(double timeS, const QMap<QString, double> &values)
+{
+    if (!std::isfinite(timeS) || std::fabs(timeS) > 9.2e12) // beyond qint64 µs
+        return Error{ErrorCode::InvalidArgument, tr("The sample time is not a valid number."), 0};
+    return writeRow(static_cast<qint64>(std::llround(timeS * 1e6)), values);
+}
+
 Error CsvWriter::writeBytes(const QByteArray &bytes)
 {
     if (m_file.write(bytes) != bytes.size() || !m_file.flush()) {

@@ -71,6 +71,9 @@ public:
     Error writeRow(qint64 timeUs, const QMap<QString, double> &values);
     // One row: values in channel order (nullopt = empty cell); extra values are ignored.
     Error writeRow(qint64 timeUs, const QList<std::optional<double>> &values);
+    // One row at a time in seconds on the same clock (rounded to the µs), for samplers
+    // that count seconds since their start: open(path, channels, 0) then this.
+    Error writeRowAtSeconds(double timeS, const QMap<QString, double> &values);
     Error close();
 
 private:

@@ -162,6 +162,24 @@ private slots:
         QCOMPARE(w.writeRow(0, QMap<QString, double>{}).code, ErrorCode::InvalidArgument);
     }
 
+    void streamingInSeconds()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("s.csv"));
+        CsvWriter w;
+        QVERIFY(!w.open(path, channels().mid(0, 2), qint64(0)));
+        QVERIFY(!w.writeRowAtSeconds(0.0, {{QStringLiteral("speed"), 1}}));
+        QVERIFY(!w.writeRowAtSeconds(0.1, {{QStringLiteral("torque"), 2}}));
+        QVERIFY(!w.writeRowAtSeconds(12.3456789, {{QStringLiteral("speed"), 3}}));
+        QCOMPARE(w.writeRowAtSeconds(std::numeric_limits<double>::quiet_NaN(), {}).code,
+                 ErrorCode::InvalidArgument);
+        QVERIFY(!w.close());
+        QCOMPARE(readAll(path), QByteArray("time_s,speed [r/min],torque [%]\n"
+                                           "0.000000,1,\n"
+                                           "0.100000,,2\n"
+                                           "12.345679,3,\n"));
+    }
+
     void streamingWithExplicitOrigin()
     {
         QTemporaryDir dir;

@@ -1,6 +1,7 @@
 #include "trendview.h"
 
 #include "trend/csvwriter.h"
+#include "trend/trendaxisscale.h"
 #include "trend/trendplotbuilder.h"
 #include "trend/trendrecorder.h"
 #include "trendchannelpanel.h"
@@ -43,16 +44,6 @@ const QList<QColor> &seriesColors()
                                       QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
                                       QColor(0x17, 0xbe, 0xcf), QColor(0x7f, 0x7f, 0x7f)};
     return colors;
-}
-
-// A 1-2-5 step near `rough` (for axis ticks that stay on round values while scrolling).
-double niceStep(double rough)
-{
-    if (!(rough > 0.0))
-        return 1.0;
-    const double p = std::pow(10.0, std::floor(std::log10(rough)));
-    const double m = rough / p;
-    return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
 }
 
 qint64 secondsToUs(double s)
@@ -382,7 +373,7 @@ void TrendView::refreshNow()
     if (m_zoomY)
         yRange = std::make_pair(m_zoomYMin, m_zoomYMax);
     else if (yMin <= yMax)
-        yRange = fitValueRange(yMin, yMax);
+        yRange = TrendAxisScale::fitValueRange(yMin, yMax, m_axisY->min(), m_axisY->max());
     const bool yMoves = yRange && (yRange->first != m_axisY->min() || yRange->second != m_axisY->max());
     if (xMin != m_axisX->min() || xMax != m_axisX->max() || yMoves) {
         for (const auto &u : std::as_const(updates)) {
@@ -390,7 +381,7 @@ void TrendView::refreshNow()
                 u.first->clear();
         }
     }
-    const double step = niceStep((xMax - xMin) / 6.0);
+    const double step = TrendAxisScale::niceStep((xMax - xMin) / 6.0);
     if (step != m_axisX->tickInterval())
         m_axisX->setTickInterval(step);
     m_axisX->setRange(xMin, xMax);
@@ -409,28 +400,6 @@ void TrendView::refreshNow()
     const int interval = std::clamp(int(cost.elapsed()) * 4, RefreshIntervalMs, SlowestRefreshIntervalMs);
     if (interval != m_timer.interval())
         m_timer.setInterval(interval);
-}
-
-std::optional<std::pair<double, double>> TrendView::fitValueRange(double lo, double hi) const
-{
-    if (hi - lo <= 1e-12 * std::max(1.0, std::fabs(hi))) {
-        const double pad = std::max(1.0, std::fabs(hi) * 0.1);
-        lo -= pad;
-        hi += pad;
-    } else {
-        const double margin = (hi - lo) * 0.05;
-        lo -= margin;
-        hi += margin;
-    }
-    // Hysteresis: grow at once, shrink only when the data uses less than half the axis,
-    // so a noisy signal does not make the axis twitch every frame.
-    const double curLo = m_axisY->min();
-    const double curHi = m_axisY->max();
-    const bool fits = lo >= curLo && hi <= curHi;
-    const bool loose = (hi - lo) < 0.5 * (curHi - curLo);
-    if (fits && !loose)
-        return std::make_pair(curLo, curHi);
-    return std::make_pair(lo, hi);
 }
 
 void TrendView::onAxisRangeChanged()
@@ -603,13 +572,16 @@ Error TrendView::exportPng(const QString &path) const
     return Error::none();
 }
 
+QString TrendView::askSavePath(const QString &title, const QString &suffix, const QString &filter)
+{
+    const QString name = QStringLiteral("trend-%1.%2")
+                             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")), suffix);
+    return QFileDialog::getSaveFileName(this, title, QDir::home().filePath(name), filter);
+}
+
 void TrendView::exportCsvInteractive(ExportRange range)
 {
-    const QString name = QStringLiteral("trend-%1.csv")
-                             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export trend as CSV"),
-                                                      QDir::home().filePath(name),
-                                                      tr("CSV files (*.csv)"));
+    const QString path = askSavePath(tr("Export trend as CSV"), QStringLiteral("csv"), tr("CSV files (*.csv)"));
     if (path.isEmpty())
         return;
     if (const Error e = exportCsv(path, range))
@@ -618,11 +590,7 @@ void TrendView::exportCsvInteractive(ExportRange range)
 
 void TrendView::exportPngInteractive()
 {
-    const QString name = QStringLiteral("trend-%1.png")
-                             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export plot as PNG"),
-                                                      QDir::home().filePath(name),
-                                                      tr("PNG images (*.png)"));
+    const QString path = askSavePath(tr("Export plot as PNG"), QStringLiteral("png"), tr("PNG images (*.png)"));
     if (path.isEmpty())
         return;
     if (const Error e = exportPng(path))

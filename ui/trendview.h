@@ -104,14 +104,13 @@ private:
     void updateSeriesName(const QString &id);
     void computeWindow(qint64 *fromUs, qint64 *toUs) const;
     int plotWidthPx() const;
-    // The value-axis range for data in [lo, hi] (current range if it still fits well).
-    std::optional<std::pair<double, double>> fitValueRange(double lo, double hi) const;
     void onAxisRangeChanged();
     void onPausedChanged(bool paused);
     void updateCursor();
     void updateStatus();
     void invalidate() { ++m_stateVersion; }
     QStringList exportChannelIds() const;
+    QString askSavePath(const QString &title, const QString &suffix, const QString &filter);
     void exportCsvInteractive(ExportRange range);
     void exportPngInteractive();
     std::optional<double> timeAtViewportX(int x) const;

@@ -113,6 +113,11 @@ CanFrameData ServoCanDrive::stopFrame(bool emergency) const
     return emergency && !m_emergencyHolds ? sc::stopAndDisable(m_station) : sc::stop(m_station);
 }
 
+int ServoCanDrive::watchdogMs() const
+{
+    return int(sc::kWatchdog.count());
+}
+
 Error ServoCanDrive::linkClosedError() const
 {
     return {ErrorCode::LinkClosed, tr("The CAN link to station %1 is not open.").arg(m_station)};
@@ -437,11 +442,17 @@ void ServoCanDrive::onOnline(int station, bool online)
     DriveStatus s = status();
     s.online = online;
     updateStatus(s);
+    if (!online && isJogging() && m_link && m_link->isConnected()) {
+        // It may have lost only its voice: stop it in case it still hears; the stop is not
+        // confirmed, so jogEnded() names the drive's watchdog.
+        DriveReply *r = stop(false);
+        connect(r, &DriveReply::finished, r, &QObject::deleteLater);
+    }
 }
 
 void ServoCanDrive::onLinkClosed(const Error &why)
 {
-    endJogLease();
+    endJogLeaseLinkLost(why);
     DriveStatus s = status();
     s.online = false;
     updateStatus(s);

@@ -148,10 +148,18 @@ void ServoCanDrive::readRaw(ReadType type, quint8 index, const ReadDone &done)
     req.note = isParam ? QStringLiteral("read P%1").arg(index)
                        : QStringLiteral("read %1").arg(QLatin1String(sc::readTypeInfo(type).key));
     LinkReply *r = m_link->request(req);
-    connect(r, &LinkReply::finished, this, [r, done, isParam] {
+    connect(r, &LinkReply::finished, this, [this, r, done, isParam] {
         r->deleteLater();
         if (r->error().isError()) {
-            done(r->error(), 0);
+            Error e = r->error();
+            if (e.code == ErrorCode::Timeout && m_tracker && m_tracker->station(m_station).seen
+                && !m_tracker->isOnline(m_station))
+                e.message += QLatin1Char(' ')
+                           + tr("Station %1 has sent no heartbeat for over %2 ms either: has it "
+                                "lost power or its CAN cable?")
+                                 .arg(m_station)
+                                 .arg(m_tracker->offlineMs());
+            done(e, 0);
             return;
         }
         const Decoded<sc::Message> d = sc::decode(r->canFrame());

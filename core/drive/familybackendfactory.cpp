@@ -1,5 +1,6 @@
 #include "drive/driveconnection.h"
 #include "drive/familybackend.h"
+#include "drive/servocanbackend.h"
 #include "drive/servomodbusbackend.h"
 
 namespace dd {
@@ -8,9 +9,10 @@ namespace dd {
 FamilyBackend *createFamilyBackend(Family family, QObject *parent)
 {
     switch (family) {
+    case Family::ServoCan:
+        return new ServoCanBackend(parent);
     case Family::ServoModbus:
         return new ServoModbusBackend(parent);
-    case Family::ServoCan:
     case Family::Shuoke:
         break;
     }

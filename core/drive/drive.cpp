@@ -3,6 +3,7 @@
 #include "params/parameterdictionary.h"
 
 #include <QDateTime>
+#include <QSet>
 
 namespace dd {
 
@@ -40,10 +41,15 @@ Error Drive::validateWrites(const QList<ParameterWrite> &writes) const
 {
     if (writes.isEmpty())
         return {ErrorCode::InvalidArgument, tr("No parameter to write.")};
+    QSet<int> seen;
     for (const ParameterWrite &w : writes) {
         const Error e = validateWrite(w);
         if (e.isError())
             return e;
+        if (seen.contains(w.index))
+            return {ErrorCode::InvalidArgument,
+                    tr("%1 is given twice. Nothing was written.").arg(parameterDictionary().label(w.index))};
+        seen.insert(w.index);
     }
     return Error::none();
 }

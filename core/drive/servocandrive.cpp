@@ -193,6 +193,11 @@ void ServoCanDrive::confirmRead(quint8 index, const std::shared_ptr<ConfirmState
         if (s->finished)
             return;
         if (e.isError()) {
+            // A read lost after its retries costs one of the reads allowed, not the parameter.
+            if (e.code == ErrorCode::Timeout && s->issued < kMaxReads) {
+                confirmRead(index, s);
+                return;
+            }
             s->finished = true;
             s->done(e, 0);
             return;

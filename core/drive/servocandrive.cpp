@@ -152,13 +152,15 @@ void ServoCanDrive::readRaw(ReadType type, quint8 index, const ReadDone &done)
         r->deleteLater();
         if (r->error().isError()) {
             Error e = r->error();
-            if (e.code == ErrorCode::Timeout && m_tracker && m_tracker->station(m_station).seen
-                && !m_tracker->isOnline(m_station))
+            // Heartbeats come every 30 ms: silence for longer says more than the timeout.
+            const ServoCanStationTracker::Station *st = m_tracker ? &m_tracker->station(m_station) : nullptr;
+            const qint64 quietMs = st && st->seen ? m_tracker->elapsedMs() - st->lastHeartbeatMs : 0;
+            if (e.code == ErrorCode::Timeout && quietMs > 100)
                 e.message += QLatin1Char(' ')
-                           + tr("Station %1 has sent no heartbeat for over %2 ms either: has it "
-                                "lost power or its CAN cable?")
+                           + tr("Station %1 has sent no heartbeat for %2 ms either: has it lost "
+                                "power or its CAN cable?")
                                  .arg(m_station)
-                                 .arg(m_tracker->offlineMs());
+                                 .arg(quietMs);
             done(e, 0);
             return;
         }

@@ -137,6 +137,9 @@ Error ShuokeDrive::checkParameterWrite(const ParameterWrite &w, const ShuokePara
 
 DriveReply *ShuokeDrive::writeParameters(const QList<ParameterWrite> &writes)
 {
+    // The dictionary first (names, ranges of the user's file), then the drive's own limits.
+    if (const Error e = validateWrites(writes))
+        return finishedReply(e);
     for (const ParameterWrite &w : writes) {
         const ShuokeParameter *p = nullptr;
         if (const Error e = checkParameterWrite(w, &p))

@@ -1,5 +1,7 @@
 #include "drive/driveconnection.h"
 #include "drive/familybackend.h"
+#include "drive/servocanbackend.h"
+#include "drive/servomodbusbackend.h"
 #include "drive/shuokebackend.h"
 
 namespace dd {
@@ -8,11 +10,12 @@ namespace dd {
 FamilyBackend *createFamilyBackend(Family family, QObject *parent)
 {
     switch (family) {
+    case Family::ServoCan:
+        return new ServoCanBackend(parent);
+    case Family::ServoModbus:
+        return new ServoModbusBackend(parent);
     case Family::Shuoke:
         return new ShuokeBackend(parent);
-    case Family::ServoCan:
-    case Family::ServoModbus:
-        break;
     }
     return nullptr;
 }

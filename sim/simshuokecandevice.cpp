@@ -28,6 +28,18 @@ QList<CanFrameData> SimShuokeCanDevice::onCanFrame(const CanFrameData &frame, qi
     return {*out.value};
 }
 
+SimShuokeDrive &SimShuokeCanDevice::drive()
+{
+    if (m_clock)
+        advanceTo(m_clock());
+    return m_drive;
+}
+
+void SimShuokeCanDevice::powerCycle()
+{
+    m_drive.powerCycle(m_clock ? std::max(m_nowUs, m_clock()) : m_nowUs);
+}
+
 QList<CanFrameData> SimShuokeCanDevice::tick(qint64 nowUs)
 {
     advanceTo(nowUs);

@@ -3,6 +3,8 @@
 #include "simcandevice.h"
 #include "simshuokedrive.h"
 
+#include <functional>
+
 namespace dd {
 
 // A simulated Shuoke drive on a CAN bus (SimCanBus): frames with identifier = its address
@@ -19,12 +21,15 @@ public:
     QString describe() const override;
     void advanceTo(qint64 nowUs) override;
 
-    SimShuokeDrive &drive() { return m_drive; }
+    // The bus clock (SimCanBus::nowUs): drive() then brings the drive up to date.
+    void setClock(std::function<qint64()> nowUs) { m_clock = std::move(nowUs); }
+    SimShuokeDrive &drive();
     const SimShuokeDrive &drive() const { return m_drive; }
-    void powerCycle() { m_drive.powerCycle(m_nowUs); }
+    void powerCycle();
 
 private:
     SimShuokeDrive m_drive;
+    std::function<qint64()> m_clock;
     qint64 m_nowUs = 0;
 };
 

@@ -30,9 +30,21 @@ SimShuokeSerialDevice::SimShuokeSerialDevice(const SimShuokeDrive::Config &confi
 {
 }
 
+qint64 SimShuokeSerialDevice::clockUs() const
+{
+    return m_clock ? std::max(m_nowUs, m_clock()) : m_nowUs;
+}
+
+SimShuokeDrive &SimShuokeSerialDevice::drive()
+{
+    if (m_clock)
+        advanceTo(m_clock());
+    return m_drive;
+}
+
 int SimShuokeSerialDevice::baud() const
 {
-    return m_drive.serialBaud(m_nowUs);
+    return m_drive.serialBaud(clockUs());
 }
 
 QString SimShuokeSerialDevice::describe() const
@@ -55,7 +67,7 @@ void SimShuokeSerialDevice::advanceTo(qint64 nowUs)
 void SimShuokeSerialDevice::powerCycle()
 {
     m_rx.clear();
-    m_drive.powerCycle(m_nowUs);
+    m_drive.powerCycle(clockUs());
 }
 
 void SimShuokeSerialDevice::drop(qsizetype n)

@@ -4,6 +4,8 @@
 #include "simserialdevice.h"
 #include "simshuokedrive.h"
 
+#include <functional>
+
 namespace dd {
 
 // A simulated Shuoke drive on a serial bus (SimSerialBus), in one of the serial framings:
@@ -31,7 +33,12 @@ public:
     QString describe() const override;
     void advanceTo(qint64 nowUs) override;
 
-    SimShuokeDrive &drive() { return m_drive; }
+    // The bus clock (SimSerialBus::nowUs): with it the drive is brought up to date when it
+    // is looked at (drive()) and baud() knows when the power-up window ends even before the
+    // next chunk arrives. Without it the drive's time is that of the last chunk.
+    void setClock(std::function<qint64()> nowUs) { m_clock = std::move(nowUs); }
+    // The drive, advanced to the bus clock when there is one.
+    SimShuokeDrive &drive();
     const SimShuokeDrive &drive() const { return m_drive; }
     Framing framing() const { return m_framing; }
     void setFraming(Framing framing) { m_framing = framing; m_rx.clear(); }
@@ -51,7 +58,10 @@ private:
     QByteArray encodeAsciiReply(const shuoke::Frame &reply) const;
     void drop(qsizetype n);
 
+    qint64 clockUs() const;
+
     SimShuokeDrive m_drive;
+    std::function<qint64()> m_clock;
     Framing m_framing;
     shuoke::AsciiCheck m_check;
     QByteArray m_rx;

@@ -119,6 +119,7 @@ private slots:
     {
         QVERIFY(setUp(config()));
         m_sim->drive().setSetting(CmdSetHomingSpeed, 4321);
+        WAIT_OK(m_drive->refreshIdentity()); // detects the M6505
         DriveReply *r = m_drive->readParameters({});
         WAIT_OK(r);
         const QMap<int, qint64> p = r->parameters();

@@ -48,6 +48,8 @@ SimShuokeSerialDevice *ShuokeSerialBench::addDrive(const SimShuokeDrive::Config 
 {
     auto device = std::make_unique<SimShuokeSerialDevice>(config, framing, check);
     SimShuokeSerialDevice *raw = device.get();
+    SimSerialBus *bus = m_bus.get();
+    raw->setClock([bus] { return bus->nowUs(); });
     m_bus->addDevice(std::move(device));
     return raw;
 }

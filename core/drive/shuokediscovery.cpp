@@ -20,6 +20,7 @@ ShuokeDiscovery::ShuokeDiscovery(ShuokeTransport *transport, const ScanOptions &
     , m_options(options)
 {
     m_listen.setSingleShot(true);
+    connect(&m_listen, &QTimer::timeout, this, &ShuokeDiscovery::onListenDone);
 }
 
 ShuokeDiscovery::~ShuokeDiscovery()
@@ -128,11 +129,13 @@ void ShuokeDiscovery::startCan()
         });
         return;
     }
-    connect(&m_listen, &QTimer::timeout, this, [this] {
-        emit progress(1, 1);
-        finish(Error::none());
-    }, Qt::UniqueConnection);
     m_listen.start(std::max(10, m_options.listenMs));
+}
+
+void ShuokeDiscovery::onListenDone()
+{
+    emit progress(1, 1);
+    finish(Error::none());
 }
 
 void ShuokeDiscovery::onCanFrame(const CanFrameData &frame)

@@ -47,6 +47,7 @@ public:
 private:
     void startCan();
     void onCanFrame(const CanFrameData &frame);
+    void onListenDone();
     void startBaud();
     void probeBroadcast();
     void probeNextAddress();

@@ -508,7 +508,8 @@ private slots:
         QVERIFY2(m_bench->connectHost(s, &error), qPrintable(error));
         m_bench->drive(3)->setJogLeaseMs(60000);
         WAIT_OK(m_bench->drive(3)->jog(2000));
-        WAIT_OK(m_bench->drive(4)->sendCommand(CmdRunSpeed, encodeInt32(-2000)));
+        // No host object for drive 4: only the broadcast can stop it.
+        WAIT_OK(m_bench->drive(3)->sendCommand(CmdRunSpeed, encodeInt32(-2000), true, 4));
         QTRY_VERIFY_WITH_TIMEOUT(a->drive().axis().speed() == 2000 && b->drive().axis().speed() == -2000, 3000);
         m_bench->backend()->stopAll();
         QTRY_VERIFY_WITH_TIMEOUT(!a->drive().axis().isRunning() && !b->drive().axis().isRunning(), 3000);

@@ -4,6 +4,7 @@
 #include "drive/drivereply.h"
 #include "drive/shuokecantransport.h"
 #include "drive/shuokediscovery.h"
+#include "drive/shuokeplctransport.h"
 #include "drive/shuokedrive.h"
 #include "drive/shuokeserialtransport.h"
 
@@ -52,9 +53,8 @@ bool ShuokeBackend::open(const ConnectionSettings &settings, TrafficTap *tap, Er
         m_transport = new ShuokeCanTransport(options, this);
         break;
     case ShuokeFraming::Plc:
-        if (error)
-            *error = {ErrorCode::NotSupported, tr("The Shuoke PLC framing is not available in this build.")};
-        return false;
+        m_transport = new ShuokePlcTransport(options, this);
+        break;
     }
     if (!m_transport->open(settings, tap, &e)) {
         delete m_transport;

@@ -6,12 +6,12 @@
 #include "drive/shuokedrive.h"
 #include "link/traffictap.h"
 #include "simcanbus.h"
+#include "virtualcanhub.h"
 
 #include <QCanBus>
 #include <QDeadlineTimer>
 #include <QLoggingCategory>
 #include <QSignalSpy>
-#include <QTcpServer>
 
 namespace dd {
 
@@ -24,6 +24,7 @@ ShuokeCanBench::~ShuokeCanBench()
 {
     m_connection.reset();
     m_bus.reset();
+    m_hub.reset();
 }
 
 bool ShuokeCanBench::start(QString *error)
@@ -34,19 +35,15 @@ bool ShuokeCanBench::start(QString *error)
             *error = QStringLiteral("Qt's virtualcan plugin is not installed");
         return false;
     }
-    // One port per process: virtualcan keeps the server it started for the process's first
-    // device, so later benches must use the same one.
-    static quint16 port = 0;
-    if (port == 0) {
-        QTcpServer probe;
-        if (!probe.listen(QHostAddress::LocalHost, 0)) {
-            if (error)
-                *error = QStringLiteral("no free TCP port");
-            return false;
-        }
-        port = probe.serverPort();
+    // A hub of our own on a free port (see virtualcanhub.h): no other process shares the
+    // bus, and the plugin's sockets get TCP_NODELAY (pipelined requests do not stall).
+    m_hub = std::make_unique<VirtualCanHub>();
+    if (!m_hub->start()) {
+        if (error)
+            *error = QStringLiteral("the virtualcan hub could not listen");
+        return false;
     }
-    m_interface = QStringLiteral("tcp://127.0.0.1:%1/can0").arg(port);
+    m_interface = m_hub->interfaceName(0);
     m_bus = std::make_unique<SimCanBus>();
     const Error e = m_bus->open(QStringLiteral("virtualcan"), m_interface, 100000);
     if (e) {
@@ -60,6 +57,7 @@ bool ShuokeCanBench::start(QString *error)
             *error = QStringLiteral("the simulated CAN bus did not connect");
         return false;
     }
+    VirtualCanHub::setLowDelay(m_bus->canDevice());
     return true;
 }
 
@@ -97,6 +95,7 @@ bool ShuokeCanBench::connectHost(ConnectionSettings settings, QString *error)
             *error = QStringLiteral("the host's CAN link did not connect");
         return false;
     }
+    VirtualCanHub::setLowDelay(can->link());
     return true;
 }
 

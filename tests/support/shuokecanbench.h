@@ -13,10 +13,11 @@ class DriveConnection;
 class ShuokeBackend;
 class ShuokeDrive;
 class SimCanBus;
+class VirtualCanHub;
 
 // Integration bench for Shuoke over CAN: a SimCanBus of simulated Shuoke drives and a
-// DriveConnection (the real ShuokeBackend on a CanLink) on Qt's virtualcan, on a private
-// TCP port (no other test process shares the bus). Every frame the host's TrafficTap
+// DriveConnection (the real ShuokeBackend on a CanLink) on Qt's virtualcan, through a
+// VirtualCanHub on a free TCP port (no other test process shares the bus). Every frame the host's TrafficTap
 // records is kept in records().
 class ShuokeCanBench : public QObject
 {
@@ -41,6 +42,7 @@ public:
     int txCount() const;
 
 private:
+    std::unique_ptr<VirtualCanHub> m_hub;
     std::unique_ptr<SimCanBus> m_bus;
     std::unique_ptr<DriveConnection> m_connection;
     QString m_interface;

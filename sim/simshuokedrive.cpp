@@ -154,6 +154,15 @@ std::optional<Frame> SimShuokeDrive::handle(const Frame &request, Medium medium,
     advanceTo(nowUs);
     if (request.failure || !isAddressed(request.address))
         return std::nullopt;
+    if (medium != Medium::Can && m_config.minCommandGapMs > 0) {
+        const bool tooSoon = m_lastSerialRequestUs >= 0
+            && nowUs - m_lastSerialRequestUs < qint64(m_config.minCommandGapMs) * 1000;
+        m_lastSerialRequestUs = nowUs;
+        if (tooSoon) {
+            ++m_tooSoon;
+            return std::nullopt; // still busy with the previous command
+        }
+    }
     ++m_requestCount;
     if (m_requestTimes.size() >= kMaxRecordedRequests) {
         m_requestTimes.removeFirst();

@@ -31,6 +31,8 @@ namespace dd {
 //    effect at the next powerCycle(); a new baud code (0x24) right after the reply;
 //  - serial rate: 9600 for the first Config::powerUpWindowMs (2 s) after power-up, then the
 //    configured baud code (set the window to 0 to start at the configured rate);
+//  - the 50 ms rule: on serial and PLC a command arriving less than Config::minCommandGapMs
+//    after the previous one is ignored (no reply; counted by tooSoonCount());
 //  - motion through SimShuokeAxis: jog, moves (open and closed loop), stops, limits,
 //    homing; start and stop speeds are stored but do not shape the motion.
 // Times are the bus clock in microseconds.
@@ -50,6 +52,9 @@ public:
         QList<quint8> broadcasts{shuoke::kBroadcastZero, shuoke::kBroadcastAllOnes};
         quint16 plcBase = 0;
         int powerUpWindowMs = 2000;     // 9600 baud after power-up
+        // Serial and PLC: a command that arrives sooner than this after the previous one is
+        // not taken (the V1.5 note "leave at least 50 ms between commands"); 0: no limit.
+        int minCommandGapMs = 50;
         bool enableInput = true;
         quint8 inputs = 0;              // 0x42 bits IO1..IO5
         quint8 controlInputs = 0x04;    // 0x43 bits pulse, dir, enable, F1, F2
@@ -94,6 +99,7 @@ public:
 
     // Diagnostics: requests handled (addressed to this drive) and their arrival times.
     int requestCount() const { return m_requestCount; }
+    int tooSoonCount() const { return m_tooSoon; }
     const QList<qint64> &requestTimesUs() const { return m_requestTimes; }
     QList<quint8> requestCommands() const { return m_requestCommands; }
 
@@ -124,6 +130,8 @@ private:
     qint64 m_powerOnUs = 0;
     qint64 m_nowUs = 0;
     int m_requestCount = 0;
+    int m_tooSoon = 0;
+    qint64 m_lastSerialRequestUs = -1;
     QList<qint64> m_requestTimes;
     QList<quint8> m_requestCommands;
 };

@@ -42,6 +42,7 @@ QJsonObject SimShuokeDrive::saveState() const
     o.insert(QStringLiteral("broadcasts"), broadcasts);
     o.insert(QStringLiteral("plcBase"), m_config.plcBase);
     o.insert(QStringLiteral("powerUpWindowMs"), m_config.powerUpWindowMs);
+    o.insert(QStringLiteral("minCommandGapMs"), m_config.minCommandGapMs);
     o.insert(QStringLiteral("enableInput"), m_config.enableInput);
     o.insert(QStringLiteral("inputs"), m_config.inputs);
     o.insert(QStringLiteral("controlInputs"), m_config.controlInputs);
@@ -97,6 +98,7 @@ bool SimShuokeDrive::loadState(const QJsonObject &state, QString *error)
     }
     c.plcBase = static_cast<quint16>(state.value(QStringLiteral("plcBase")).toInt(c.plcBase));
     c.powerUpWindowMs = state.value(QStringLiteral("powerUpWindowMs")).toInt(c.powerUpWindowMs);
+    c.minCommandGapMs = state.value(QStringLiteral("minCommandGapMs")).toInt(c.minCommandGapMs);
     c.enableInput = state.value(QStringLiteral("enableInput")).toBool(c.enableInput);
     c.inputs = static_cast<quint8>(state.value(QStringLiteral("inputs")).toInt(c.inputs));
     c.controlInputs = static_cast<quint8>(state.value(QStringLiteral("controlInputs")).toInt(c.controlInputs));

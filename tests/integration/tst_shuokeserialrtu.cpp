@@ -381,7 +381,9 @@ private slots:
         QVariantMap options;
         if (gapMs >= 0)
             options.insert(QStringLiteral("shuoke.minGapMs"), gapMs);
-        QVERIFY(setUp(config(), options));
+        SimShuokeDrive::Config c = config();
+        c.minCommandGapMs = gapMs >= 0 ? 10 : 50; // the drive's own limit
+        QVERIFY(setUp(c, options));
         const int expected = gapMs >= 0 ? gapMs : 50;
         m_bench->clearRecords();
         WAIT_OK(m_drive->readParameters({}));
@@ -404,6 +406,17 @@ private slots:
         const QList<qint64> &t = m_sim->drive().requestTimesUs();
         for (int i = 1; i < t.size(); ++i)
             QVERIFY(t[i] - t[i - 1] >= expected * 1000);
+    }
+
+    void driveIgnoresCommandsSentTooSoon()
+    {
+        QVERIFY(setUp(config(), {{QStringLiteral("shuoke.minGapMs"), 0}}));
+        qobject_cast<ShuokeSerialTransport *>(m_bench->backend()->transport())->link()->setRetries(0);
+        DriveReply *r = m_drive->readParameters({});
+        QVERIFY(ShuokeSerialBench::wait(r, 10000));
+        QCOMPARE(r->error().code, ErrorCode::Timeout);
+        QVERIFY(r->parameters().size() < 9);
+        QVERIFY(m_sim->drive().tooSoonCount() > 0);
     }
 
     void dropAndCorruptRecovery()

@@ -21,6 +21,7 @@ SimShuokeDrive::Config config(Model model = Model::M6505)
     SimShuokeDrive::Config c;
     c.model = model;
     c.powerUpWindowMs = 0;
+    c.minCommandGapMs = 0; // many requests at the same instant below
     return c;
 }
 
@@ -134,6 +135,20 @@ private slots:
         d.powerCycle(4000 * Ms);
         QCOMPARE(d.serialBaud(4500 * Ms), 9600);
         QCOMPARE(d.serialBaud(6000 * Ms), 4800);
+    }
+
+    void commandsTooSoonAreIgnored()
+    {
+        SimShuokeDrive::Config c = config();
+        c.minCommandGapMs = 50;
+        SimShuokeDrive d(c);
+        QVERIFY(d.handle(req(CmdHandshake), SimShuokeDrive::Medium::Serial, 0));
+        QVERIFY(!d.handle(req(CmdHandshake), SimShuokeDrive::Medium::Serial, 49 * Ms));
+        QVERIFY(!d.handle(req(CmdHandshake), SimShuokeDrive::Medium::Plc, 60 * Ms)); // 11 ms after the last
+        QVERIFY(d.handle(req(CmdHandshake), SimShuokeDrive::Medium::Serial, 110 * Ms));
+        QVERIFY(d.handle(req(CmdHandshake), SimShuokeDrive::Medium::Can, 111 * Ms)); // CAN: no such rule
+        QCOMPARE(d.tooSoonCount(), 2);
+        QCOMPARE(d.requestCount(), 3);
     }
 
     void writeOnlyAndReadable()

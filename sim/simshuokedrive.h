@@ -33,8 +33,10 @@ namespace dd {
 //    configured baud code (set the window to 0 to start at the configured rate);
 //  - the 50 ms rule: on serial and PLC a command arriving less than Config::minCommandGapMs
 //    after the previous one is ignored (no reply; counted by tooSoonCount());
-//  - motion through SimShuokeAxis: jog, moves (open and closed loop), stops, limits,
-//    homing; start and stop speeds are stored but do not shape the motion.
+//  - motion through SimShuokeAxis: jog, moves (open and closed loop, geared 0x56 with the
+//    gear setting), stops, limits, homing, speed steps (0x44..0x46). Stored without effect
+//    on the model: start / stop speeds, encoder and motion direction, error correction,
+//    encoder tolerances, IO substitution entries.
 // Times are the bus clock in microseconds.
 class SimShuokeDrive
 {

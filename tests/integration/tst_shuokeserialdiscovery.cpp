@@ -131,6 +131,31 @@ private slots:
         QCOMPARE(found.first().address, 33);
     }
 
+    void broadcastAddressSetting_data()
+    {
+        QTest::addColumn<int>("hostBroadcast");
+        QTest::addColumn<int>("found");
+        QTest::newRow("host 255, drive 255") << 255 << 1;
+        QTest::newRow("host 0, drive 255") << 0 << 0;
+    }
+    void broadcastAddressSetting()
+    {
+        QFETCH(int, hostBroadcast);
+        QFETCH(int, found);
+        SimShuokeDrive::Config c = config(200, 6);
+        c.broadcasts = {255};
+        QVERIFY(start({c}, QStringLiteral("rtu"), {{QStringLiteral("shuoke.broadcast"), hostBroadcast}}));
+        ScanOptions o;
+        o.from = 1;
+        o.to = 3; // the drive is outside: only the broadcast can find it
+        int skipped = -1;
+        const QList<DiscoveredDrive> drives = scan(o, &skipped);
+        QCOMPARE(drives.size(), found);
+        if (found)
+            QCOMPARE(drives.first().address, 200);
+        QCOMPARE(skipped, found ? 0 : 1);
+    }
+
     void cancel()
     {
         QVERIFY(start({config(3, 6)}, QStringLiteral("rtu"), {{QStringLiteral("shuoke.scanSkipSilent"), false}}));

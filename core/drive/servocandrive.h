@@ -41,8 +41,8 @@ class ServoCanStationTracker;
 // Emergency stop: 0x28 by default (stop, then torque off: IEC 60204-1 stop category 1),
 // or 0x26 (stop and hold the shaft: for vertical axes without a brake) with
 // setEmergencyStopHolds(true) — option "servo-can.emergencyStop" = "disable" | "hold".
-// Confirmed reads (option "servo-can.confirmReads"): each parameter is read until two
-// answers agree. Real CAN hardware never delivers a damaged frame (CRC), so this is off by
+// Confirmed reads (option "servo-can.confirmReads"): each parameter is read until three
+// answers agree (up to eight reads). Real CAN hardware never delivers a damaged frame (CRC), so this is off by
 // default; it defends against a drive (or a simulator) that answers wrong values.
 class ServoCanDrive : public Drive
 {
@@ -96,7 +96,7 @@ private:
 
     // One 0x12 read (retried by the link on timeout); value is the int16 parameter or int32.
     void readRaw(servocan::ReadType type, quint8 index, const ReadDone &done);
-    // A parameter read; with confirmReads() read until two answers agree.
+    // A parameter read; with confirmReads() read until three answers agree.
     void readParameterValue(quint8 index, const ReadDone &done);
     struct ConfirmState;
     void confirmRead(quint8 index, const std::shared_ptr<ConfirmState> &state);

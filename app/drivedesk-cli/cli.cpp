@@ -1,0 +1,108 @@
+#include "cli.h"
+
+#include "clicommand.h"
+#include "clicommands.h"
+#include "clihelp.h"
+#include "clioutput.h"
+#include "signalwatcher.h"
+
+#include "drive/driveconnection.h"
+#include "drive/familybackend.h" // driveconnection.h needs it complete (QPointer)
+#include "link/traffictap.h"
+
+#include <QEventLoop>
+#include <QTimer>
+#include <memory>
+
+namespace dd {
+
+Cli::Cli(QObject *parent)
+    : QObject(parent)
+{
+}
+
+Cli::~Cli() = default;
+
+int Cli::run(const QStringList &arguments)
+{
+    // --json is honoured even for usage errors, so scripts always get a document.
+    CliOutput out(arguments.contains(QLatin1String("--json")));
+    const CliParser parser(CliGlobals::optionSpecs(), CliCommands::specs());
+
+    CliInvocation inv;
+    QString error;
+    if (!parser.parse(arguments, &inv, &error)) {
+        out.failure(QString(), int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
+        out.note(tr("Try: drivedesk-cli --help"));
+        return int(CliExit::Usage);
+    }
+    out.setJson(inv.has(QStringLiteral("json")));
+
+    if (inv.has(QStringLiteral("version"))) {
+        out.result({{QStringLiteral("version"), QStringLiteral(DRIVEDESK_VERSION)}},
+                   QStringLiteral("drivedesk-cli %1").arg(QStringLiteral(DRIVEDESK_VERSION)));
+        return int(CliExit::Ok);
+    }
+    if (inv.has(QStringLiteral("help"))) {
+        QTextStream(stdout) << (inv.command.isEmpty() ? CliHelp::general() : CliHelp::command(inv.command));
+        return int(CliExit::Ok);
+    }
+    if (inv.command.isEmpty()) {
+        out.failure(QString(), int(CliExit::Usage),
+                    {ErrorCode::InvalidArgument, tr("No command given.")});
+        out.note(tr("Try: drivedesk-cli --help"));
+        return int(CliExit::Usage);
+    }
+
+    CliContext context;
+    context.out = &out;
+    if (!context.globals.load(inv, &error)) {
+        out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
+        return int(CliExit::Usage);
+    }
+
+    std::unique_ptr<CliCommand> command(CliCommands::create(inv.command, &context));
+    if (!command->prepare(inv, &error)) {
+        out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
+        out.note(tr("See: drivedesk-cli %1 --help").arg(inv.command));
+        return int(CliExit::Usage);
+    }
+    return runCommand(command.get(), context);
+}
+
+int Cli::runCommand(CliCommand *command, CliContext &context)
+{
+    CliOutput &out = *context.out;
+    DriveConnection connection;
+    if (context.globals.trace)
+        connect(connection.tap(), &TrafficTap::frameRecorded, this,
+                [&out](const TrafficRecord &r) { out.trace(r); });
+
+    if (command->needsLink()) {
+        Error e;
+        if (!connection.open(context.globals.connection, &e)) {
+            if (e.message.isEmpty())
+                e.message = tr("Could not open %1.").arg(context.globals.connection.linkName());
+            const CliExit code = e.code == ErrorCode::OpenFailed || e.code == ErrorCode::LinkClosed
+                ? CliExit::OpenFailed : CliExit::DriveFailed;
+            out.failure(command->name(), int(code), e);
+            return int(code);
+        }
+        context.connection = &connection;
+        connect(&connection, &DriveConnection::linkLost, command, &CliCommand::linkLost);
+    }
+
+    SignalWatcher watcher;
+    connect(&watcher, &SignalWatcher::interrupted, command, &CliCommand::interrupt);
+
+    QEventLoop loop;
+    connect(command, &CliCommand::done, &loop, &QEventLoop::exit);
+    QTimer::singleShot(0, command, &CliCommand::start);
+    const int code = loop.exec();
+
+    context.connection = nullptr;
+    connection.close();
+    return code;
+}
+
+} // namespace dd

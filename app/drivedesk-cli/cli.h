@@ -1,0 +1,28 @@
+#pragma once
+
+#include <QObject>
+#include <QStringList>
+
+namespace dd {
+
+class CliCommand;
+class CliOutput;
+struct CliContext;
+
+// The command-line tool: parse, check everything, open the link, run one command, return
+// its exit code (see CliExit).
+class Cli : public QObject
+{
+    Q_OBJECT
+public:
+    explicit Cli(QObject *parent = nullptr);
+    ~Cli() override;
+
+    // `arguments` without the program name. Runs an event loop until the command is done.
+    int run(const QStringList &arguments);
+
+private:
+    int runCommand(CliCommand *command, CliContext &context);
+};
+
+} // namespace dd

@@ -1,0 +1,91 @@
+#include "clicommand.h"
+
+#include "drive/drive.h"
+#include "drive/driveconnection.h"
+#include "drive/familybackend.h" // driveconnection.h needs it complete (QPointer)
+
+namespace dd {
+
+Drive *CliContext::drive() const
+{
+    return connection ? connection->drive(globals.address) : nullptr;
+}
+
+CliCommand::CliCommand(const QString &name, CliContext *context, QObject *parent)
+    : QObject(parent)
+    , m_name(name)
+    , m_ctx(context)
+{
+}
+
+void CliCommand::interrupt(int)
+{
+    fail({ErrorCode::Cancelled, tr("Interrupted.")});
+}
+
+void CliCommand::linkLost(const Error &why)
+{
+    Error e = why;
+    if (e.message.isEmpty())
+        e.message = tr("The link to the drive was lost. Check the adapter and its cable.");
+    if (e.code == ErrorCode::None)
+        e.code = ErrorCode::LinkClosed;
+    fail(e);
+}
+
+void CliCommand::succeed(const QJsonObject &json, const QString &text)
+{
+    if (m_done)
+        return;
+    QJsonObject doc{{QStringLiteral("command"), m_name}, {QStringLiteral("ok"), true}};
+    for (auto it = json.begin(); it != json.end(); ++it)
+        doc.insert(it.key(), it.value());
+    out()->result(doc, text);
+    finish(CliExit::Ok);
+}
+
+void CliCommand::fail(const Error &error, const QJsonObject &partial, std::optional<CliExit> code)
+{
+    if (m_done)
+        return;
+    const CliExit c = code.value_or(exitFor(error) == CliExit::Ok ? CliExit::DriveFailed : exitFor(error));
+    Error shown = error;
+    if (error.code == ErrorCode::Timeout)
+        shown.message += QLatin1Char(' ')
+            + tr("If the address or baud rate may be wrong, try: drivedesk-cli ... scan");
+    out()->failure(m_name, int(c), shown, partial);
+    finish(c);
+}
+
+void CliCommand::finish(CliExit code)
+{
+    if (m_done)
+        return;
+    m_done = true;
+    emit done(int(code));
+}
+
+bool CliCommand::expectArguments(const CliInvocation &inv, int min, int max, const QString &what,
+                                 QString *error) const
+{
+    const int n = int(inv.positionals.size());
+    if (n < min) {
+        *error = tr("\"%1\" needs %2.").arg(m_name, what);
+        return false;
+    }
+    if (max >= 0 && n > max) {
+        *error = tr("\"%1\": unexpected argument \"%2\".").arg(m_name, inv.positionals.at(max));
+        return false;
+    }
+    return true;
+}
+
+void CliCommand::onFinished(DriveReply *reply, std::function<void(DriveReply *)> handler)
+{
+    connect(reply, &DriveReply::finished, this, [reply, handler = std::move(handler)] {
+        handler(reply);
+        reply->deleteLater();
+    });
+}
+
+} // namespace dd

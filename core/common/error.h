@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QMetaType>
 #include <QString>
 
 namespace dd {
@@ -37,3 +38,5 @@ struct Error
 QString errorCodeName(ErrorCode code); // stable English identifier, e.g. "timeout"
 
 } // namespace dd
+
+Q_DECLARE_METATYPE(dd::Error)

@@ -45,7 +45,7 @@ void DriveConnection::close()
     if (!m_backend)
         return;
     m_backend->close();
-    delete m_backend.data();
+    delete m_backend;
     m_backend = nullptr;
 }
 

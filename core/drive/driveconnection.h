@@ -5,7 +5,6 @@
 #include "drive/discovery.h"
 
 #include <QObject>
-#include <QPointer>
 
 namespace dd {
 
@@ -41,7 +40,7 @@ signals:
 private:
     ConnectionSettings m_settings;
     TrafficTap *m_tap = nullptr;
-    QPointer<FamilyBackend> m_backend;
+    FamilyBackend *m_backend = nullptr;
 };
 
 // The backend object for a family (defined with the backends).

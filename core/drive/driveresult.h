@@ -1,0 +1,31 @@
+#pragma once
+
+#include "common/error.h"
+#include "drive/drivetypes.h"
+
+#include <QMap>
+#include <QMetaType>
+#include <QVariantMap>
+
+namespace dd {
+
+class DriveReply;
+
+// A DriveReply's outcome as a value, so that it can cross threads (DriveHub).
+struct DriveResult
+{
+    Error error;
+    QMap<int, qint64> parameters;
+    QList<ParameterWriteResult> writes;
+    QMap<QString, double> samples;
+    qint64 sampleTimeUs = 0;
+    DriveStatus status;
+    QVariantMap info;
+
+    bool ok() const { return !error.isError(); }
+    static DriveResult from(const DriveReply &reply);
+};
+
+} // namespace dd
+
+Q_DECLARE_METATYPE(dd::DriveResult)

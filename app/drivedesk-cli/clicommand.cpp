@@ -50,7 +50,7 @@ void CliCommand::fail(const Error &error, const QJsonObject &partial, std::optio
         return;
     const CliExit c = code.value_or(exitFor(error) == CliExit::Ok ? CliExit::DriveFailed : exitFor(error));
     Error shown = error;
-    if (error.code == ErrorCode::Timeout)
+    if (error.code == ErrorCode::Timeout && m_name != QLatin1String("scan"))
         shown.message += QLatin1Char(' ')
             + tr("If the address or baud rate may be wrong, try: drivedesk-cli ... scan");
     out()->failure(m_name, int(c), shown, partial);

@@ -1,6 +1,10 @@
 #include "clicommands.h"
 
 #include "drivecommands.h"
+#include "eecommand.h"
+#include "monitorcommand.h"
+#include "motioncommands.h"
+#include "scancommand.h"
 
 namespace dd {
 
@@ -14,16 +18,34 @@ CliOptionSpec valued(const char *name, QChar shortName = {}) { return {QLatin1St
 QList<CliCommandSpec> CliCommands::specs()
 {
     return {
+        {QStringLiteral("scan"), {valued("from"), valued("to"), valued("bauds")}},
         {QStringLiteral("info"), {}},
         {QStringLiteral("channels"), {}},
         {QStringLiteral("stop"), {flag("emergency")}},
         {QStringLiteral("enable"), {}},
         {QStringLiteral("clear-alarm"), {}},
+        {QStringLiteral("ee"), {}},
+        {QStringLiteral("monitor"), {valued("rate"), valued("duration"), valued("output", QLatin1Char('o'))}},
+        {QStringLiteral("jog"), {valued("duration")}},
+        {QStringLiteral("move"), {valued("by"), valued("to"), valued("speed")}},
+        {QStringLiteral("home"), {flag("positive")}},
     };
 }
 
 CliCommand *CliCommands::create(const QString &name, CliContext *context)
 {
+    if (name == QLatin1String("scan"))
+        return new ScanCommand(context);
+    if (name == QLatin1String("ee"))
+        return new EeCommand(context);
+    if (name == QLatin1String("monitor"))
+        return new MonitorCommand(context);
+    if (name == QLatin1String("jog"))
+        return new JogCommand(context);
+    if (name == QLatin1String("move"))
+        return new MoveCommand(context);
+    if (name == QLatin1String("home"))
+        return new HomeCommand(context);
     if (name == QLatin1String("info"))
         return new InfoCommand(context);
     if (name == QLatin1String("channels"))

@@ -19,7 +19,8 @@ inline CliExit exitFor(const Error &e)
     switch (e.code) {
     case ErrorCode::None: return CliExit::Ok;
     case ErrorCode::OutOfRange:
-    case ErrorCode::InvalidArgument: return CliExit::Usage;
+    case ErrorCode::InvalidArgument:
+    case ErrorCode::NotSupported: return CliExit::Usage;   // refused before anything was sent
     case ErrorCode::OpenFailed: return CliExit::OpenFailed;
     default: return CliExit::DriveFailed;
     }

@@ -9,6 +9,7 @@
 #include "drive/driveconnection.h"
 #include "drive/familybackend.h" // driveconnection.h needs it complete (QPointer)
 #include "link/traffictap.h"
+#include "params/parameterdictionary.h"
 
 #include <QEventLoop>
 #include <QTimer>
@@ -60,6 +61,22 @@ int Cli::run(const QStringList &arguments)
         out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
         return int(CliExit::Usage);
     }
+
+    auto dictionary = std::make_shared<ParameterDictionary>();
+    const Family family = context.globals.connection.family;
+    if (!context.globals.dictionaryFile.isEmpty()) {
+        if (Error e = dictionary->loadFromFile(context.globals.dictionaryFile, family)) {
+            out.failure(inv.command, int(CliExit::Usage), e);
+            return int(CliExit::Usage);
+        }
+    } else if (Error e = dictionary->loadForFamily(family)) {
+        if (dictionary->isEmpty()) {
+            out.failure(inv.command, int(CliExit::DriveFailed), e);
+            return int(CliExit::DriveFailed);
+        }
+        out.note(tr("Your own %1 dictionary was not used: %2").arg(familyId(family), e.message));
+    }
+    context.dictionary = dictionary;
 
     std::unique_ptr<CliCommand> command(CliCommands::create(inv.command, &context));
     if (!command->prepare(inv, &error)) {

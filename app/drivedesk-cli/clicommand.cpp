@@ -8,7 +8,10 @@ namespace dd {
 
 Drive *CliContext::drive() const
 {
-    return connection ? connection->drive(globals.address) : nullptr;
+    Drive *d = connection ? connection->drive(globals.address) : nullptr;
+    if (d && dictionary && d->dictionary() != dictionary)
+        d->setDictionary(dictionary);
+    return d;
 }
 
 CliCommand::CliCommand(const QString &name, CliContext *context, QObject *parent)

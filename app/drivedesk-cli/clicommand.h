@@ -9,12 +9,14 @@
 #include <QJsonObject>
 #include <QObject>
 #include <functional>
+#include <memory>
 #include <optional>
 
 namespace dd {
 
 class Drive;
 class DriveConnection;
+class ParameterDictionary;
 
 // What every command sees: the global options, the output, and (once the link is open)
 // the connection.
@@ -23,7 +25,11 @@ struct CliContext
     CliGlobals globals;
     CliOutput *out = nullptr;
     DriveConnection *connection = nullptr;
+    // --dictionary FILE, or the family's (user's or bundled) dictionary; never null once
+    // the runner has loaded it. Commands check names and values against it in prepare().
+    std::shared_ptr<const ParameterDictionary> dictionary;
 
+    // The drive at --address, with `dictionary` set on it.
     Drive *drive() const;
 };
 

@@ -1,6 +1,8 @@
 #include "clicommands.h"
 
+#include "backupcommands.h"
 #include "drivecommands.h"
+#include "paramcommands.h"
 #include "eecommand.h"
 #include "monitorcommand.h"
 #include "motioncommands.h"
@@ -20,15 +22,20 @@ QList<CliCommandSpec> CliCommands::specs()
     return {
         {QStringLiteral("scan"), {valued("from"), valued("to"), valued("bauds")}},
         {QStringLiteral("info"), {}},
-        {QStringLiteral("channels"), {}},
-        {QStringLiteral("stop"), {flag("emergency")}},
-        {QStringLiteral("enable"), {}},
-        {QStringLiteral("clear-alarm"), {}},
+        {QStringLiteral("get"), {}},
+        {QStringLiteral("set"), {}},
+        {QStringLiteral("backup"), {valued("output", QLatin1Char('o'))}},
+        {QStringLiteral("diff"), {}},
+        {QStringLiteral("restore"), {flag("dry-run"), valued("only"), flag("force")}},
         {QStringLiteral("ee"), {}},
         {QStringLiteral("monitor"), {valued("rate"), valued("duration"), valued("output", QLatin1Char('o'))}},
         {QStringLiteral("jog"), {valued("duration")}},
         {QStringLiteral("move"), {valued("by"), valued("to"), valued("speed")}},
+        {QStringLiteral("stop"), {flag("emergency")}},
+        {QStringLiteral("enable"), {}},
+        {QStringLiteral("clear-alarm"), {}},
         {QStringLiteral("home"), {flag("positive")}},
+        {QStringLiteral("channels"), {}},
     };
 }
 
@@ -46,6 +53,16 @@ CliCommand *CliCommands::create(const QString &name, CliContext *context)
         return new MoveCommand(context);
     if (name == QLatin1String("home"))
         return new HomeCommand(context);
+    if (name == QLatin1String("get"))
+        return new GetCommand(context);
+    if (name == QLatin1String("set"))
+        return new SetCommand(context);
+    if (name == QLatin1String("backup"))
+        return new BackupCommand(context);
+    if (name == QLatin1String("diff"))
+        return new DiffCommand(context);
+    if (name == QLatin1String("restore"))
+        return new RestoreCommand(context);
     if (name == QLatin1String("info"))
         return new InfoCommand(context);
     if (name == QLatin1String("channels"))

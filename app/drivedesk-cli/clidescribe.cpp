@@ -1,5 +1,7 @@
 #include "clidescribe.h"
 
+#include "params/parameterdictionary.h"
+
 namespace dd {
 
 QJsonObject CliDescribe::identity(const DriveIdentity &id)
@@ -73,6 +75,18 @@ QString CliDescribe::discoveredText(const DiscoveredDrive &d)
     if (!d.state.isEmpty())
         cols << d.state;
     return cols.join(QLatin1String("  "));
+}
+
+QJsonObject CliDescribe::parameter(const ParameterDictionary &dict, int index, std::optional<qint64> value)
+{
+    const ParameterInfo *p = dict.byIndex(index);
+    QJsonObject o{{QStringLiteral("index"), index},
+                  {QStringLiteral("key"), p ? p->key : QStringLiteral("P%1").arg(index)},
+                  {QStringLiteral("name"), dict.displayName(index)},
+                  {QStringLiteral("unit"), p ? p->unit : QString()}};
+    if (value)
+        o.insert(QStringLiteral("value"), double(*value));
+    return o;
 }
 
 QString CliDescribe::table(const QList<QPair<QString, QString>> &rows)

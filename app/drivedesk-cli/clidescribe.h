@@ -5,8 +5,11 @@
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <optional>
 
 namespace dd {
+
+class ParameterDictionary;
 
 // Text and JSON forms of the Drive API's value types, shared by the commands.
 class CliDescribe
@@ -19,6 +22,8 @@ public:
     static QJsonArray channels(const QList<ChannelInfo> &channels);
     static QJsonObject discovered(const DiscoveredDrive &d);
     static QString discoveredText(const DiscoveredDrive &d);
+    // {"index", "key", "name", "unit"[, "value"]}
+    static QJsonObject parameter(const ParameterDictionary &dict, int index, std::optional<qint64> value);
     // "  Name      value" rows with the names padded to one width.
     static QString table(const QList<QPair<QString, QString>> &rows);
 };

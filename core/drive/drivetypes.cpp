@@ -1,5 +1,7 @@
 #include "drive/drivetypes.h"
 
+#include "protocol/servomodbus.h"
+
 #include <QCoreApplication>
 
 namespace dd {
@@ -35,39 +37,26 @@ QStringList capabilityIds(Capabilities caps)
     return out;
 }
 
+// The servo-modbus register map owns the EE operation table; the Drive API's
+// family-neutral enum uses the same op codes.
+static servomodbus::EeOp toEeOp(EeOperation op)
+{
+    return static_cast<servomodbus::EeOp>(static_cast<quint16>(op));
+}
+
 QString eeMnemonic(EeOperation op)
 {
-    switch (op) {
-    case EeOperation::Save: return QStringLiteral("EE-Set");
-    case EeOperation::Reload: return QStringLiteral("EE-rd");
-    case EeOperation::Backup: return QStringLiteral("EE-bA");
-    case EeOperation::RestoreBackup: return QStringLiteral("EE-rS");
-    case EeOperation::FactoryDefaults: return QStringLiteral("EE-dEF");
-    }
-    return {};
+    return QString::fromLatin1(servomodbus::eeOpMnemonic(toEeOp(op)));
 }
 
 QString eeMeaning(EeOperation op)
 {
-    switch (op) {
-    case EeOperation::Save:
-        return QCoreApplication::translate("dd::Ee", "Store the current parameters to EEPROM");
-    case EeOperation::Reload:
-        return QCoreApplication::translate("dd::Ee", "Reload the parameters from EEPROM, discarding unsaved changes");
-    case EeOperation::Backup:
-        return QCoreApplication::translate("dd::Ee", "Copy the parameters to the drive's backup area");
-    case EeOperation::RestoreBackup:
-        return QCoreApplication::translate("dd::Ee", "Restore the parameters from the drive's backup area");
-    case EeOperation::FactoryDefaults:
-        return QCoreApplication::translate("dd::Ee", "Reset every parameter to its factory default");
-    }
-    return {};
+    return QCoreApplication::translate(servomodbus::TranslationContext, servomodbus::eeOpMeaning(toEeOp(op)));
 }
 
 bool eeIsDestructive(EeOperation op)
 {
-    return op == EeOperation::Reload || op == EeOperation::RestoreBackup
-        || op == EeOperation::FactoryDefaults;
+    return servomodbus::eeOpNeedsConfirmation(toEeOp(op));
 }
 
 std::optional<EeOperation> eeFromText(const QString &text)

@@ -1,0 +1,7 @@
+#include "params/paramslog.h"
+
+namespace dd {
+
+Q_LOGGING_CATEGORY(lcParams, "drivedesk.params")
+
+} // namespace dd

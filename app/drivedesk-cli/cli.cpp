@@ -81,7 +81,6 @@ int Cli::run(const QStringList &arguments)
     std::unique_ptr<CliCommand> command(CliCommands::create(inv.command, &context));
     if (!command->prepare(inv, &error)) {
         out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
-        out.note(tr("See: drivedesk-cli %1 --help").arg(inv.command));
         return int(CliExit::Usage);
     }
     return runCommand(command.get(), context);

@@ -73,11 +73,12 @@ bool CliCommand::expectArguments(const CliInvocation &inv, int min, int max, con
 {
     const int n = int(inv.positionals.size());
     if (n < min) {
-        *error = tr("\"%1\" needs %2.").arg(m_name, what);
+        *error = tr("\"%1\" needs %2. See: drivedesk-cli %1 --help").arg(m_name, what);
         return false;
     }
     if (max >= 0 && n > max) {
-        *error = tr("\"%1\": unexpected argument \"%2\".").arg(m_name, inv.positionals.at(max));
+        *error = tr("\"%1\": unexpected argument \"%2\". See: drivedesk-cli %1 --help")
+                     .arg(m_name, inv.positionals.at(max));
         return false;
     }
     return true;

@@ -1,6 +1,8 @@
 // drivedesk-cli: the scriptable commissioning tool. See `drivedesk-cli --help`.
 #include "cli.h"
 
+#include "common/coreresources.h"
+
 #include <QCoreApplication>
 #include <QLocale>
 #include <QTranslator>
@@ -16,6 +18,7 @@ int main(int argc, char *argv[])
                         QStringLiteral(":/i18n")))
         QCoreApplication::installTranslator(&translator);
 
+    dd::ensureCoreResources();
     dd::Cli cli;
     return cli.run(QCoreApplication::arguments().mid(1));
 }

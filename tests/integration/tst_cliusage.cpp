@@ -2,6 +2,10 @@
 // port (exit 3). Runs the real executable.
 #include "clirun.h"
 
+#include "params/backupfile.h"
+#include "params/parameterdictionary.h"
+#include "common/coreresources.h"
+
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -19,12 +23,15 @@ private slots:
     void usageErrors_data();
     void usageErrors();
     void usageErrorAsJson();
+    void badBackupFiles_data();
+    void badBackupFiles();
     void unopenablePort_data();
     void unopenablePort();
 };
 
 void TestCliUsage::initTestCase()
 {
+    dd::ensureCoreResources();
     QVERIFY2(QFileInfo::exists(cliPath()), qPrintable(cliPath()));
 }
 
@@ -113,6 +120,20 @@ void TestCliUsage::usageErrors_data()
     QTest::newRow("scan inverted range") << a({"scan", "--from", "10", "--to", "5"}) << "above --to";
     QTest::newRow("scan empty baud") << a({"scan", "--bauds", "9600,,19200"}) << "empty item";
     QTest::newRow("scan bauds on can") << QStringList{"--can", "virtualcan:can0", "scan", "--bauds", "9600"} << "--bauds is for serial";
+    QTest::newRow("get unknown parameter") << a({"get", "PA99"}) << "Unknown parameter";
+    QTest::newRow("set without =") << a({"set", "PA12"}) << "PARAM=VALUE";
+    QTest::newRow("set not a number") << a({"set", "PA12=fast"}) << "not a whole number";
+    QTest::newRow("set out of range") << a({"set", "PA12=99999999"}) << "outside the allowed range";
+    QTest::newRow("set one of two out of range") << a({"set", "PA12=5", "PA13=-99999999"}) << "outside the allowed range";
+    QTest::newRow("set read-only") << a({"set", "PA2=1"}) << "read-only";
+    QTest::newRow("set twice") << a({"set", "PA12=1", "12=2"}) << "given twice";
+    QTest::newRow("servo-can out of range") << QStringList{"--can", "virtualcan:can0", "set", "P12=40000"} << "outside the allowed range";
+    QTest::newRow("backup without file") << a({"backup"}) << "backup -o FILE";
+    QTest::newRow("backup into missing folder") << a({"backup", "-o", "/nonexistent-dir/b.json"}) << "does not exist";
+    QTest::newRow("diff without file") << a({"diff"}) << "\"diff\" needs";
+    QTest::newRow("diff missing file") << a({"diff", "/nonexistent-dir/b.json"}) << "/nonexistent-dir/b.json";
+    QTest::newRow("restore missing file") << a({"restore", "/nonexistent-dir/b.json"}) << "/nonexistent-dir/b.json";
+    QTest::newRow("missing dictionary") << a({"--dictionary", "/nonexistent-dir/d.json", "get", "PA1"}) << "/nonexistent-dir/d.json";
     QTest::newRow("sim drives malformed") << QStringList{"--sim-drives", "1@2@3", "info"} << "--sim-drives";
 }
 
@@ -139,6 +160,63 @@ void TestCliUsage::usageErrorAsJson()
     QCOMPARE(doc.value(QLatin1String("exitCode")).toInt(), 2);
     QCOMPARE(doc.value(QLatin1String("command")).toString(), QStringLiteral("set"));
     QVERIFY(!doc.value(QLatin1String("error")).toObject().value(QLatin1String("message")).toString().isEmpty());
+}
+
+void TestCliUsage::badBackupFiles_data()
+{
+    QTest::addColumn<QByteArray>("content");
+    QTest::addColumn<QStringList>("args");   // after the file name
+    QTest::addColumn<QString>("message");
+
+    // A valid servo-modbus backup, then damaged in different ways.
+    dd::BackupFile file;
+    file.setFamily(dd::Family::ServoModbus);
+    file.setAddress(1);
+    file.setFirmware(QStringLiteral("7051"));
+    dd::ParameterSet values;
+    values.set(12, 300);
+    values.set(13, 40);
+    file.setValues(values);
+    QByteArray good;
+    QVERIFY(!file.toJson(dd::ParameterDictionary::bundled(dd::Family::ServoModbus), &good));
+    QVERIFY(good.contains("\"300\"") || good.contains("300"));
+
+    QByteArray badChecksum = good;
+    badChecksum.replace("300", "301");
+    QTest::newRow("not json") << QByteArray("{ this is not json") << QStringList{} << "";
+    QTest::newRow("empty") << QByteArray() << QStringList{} << "";
+    QTest::newRow("checksum") << badChecksum << QStringList{} << "";
+    QTest::newRow("truncated") << good.left(good.size() / 2) << QStringList{} << "";
+
+    dd::BackupFile other = file;
+    other.setFamily(dd::Family::ServoCan);
+    QByteArray otherFamily;
+    QVERIFY(!other.toJson(dd::ParameterDictionary::bundled(dd::Family::ServoCan), &otherFamily));
+    QTest::newRow("other family") << otherFamily << QStringList{} << "servo-can";
+    QTest::newRow("only unknown") << good << QStringList{"--only", "PA77"} << "Unknown parameter";
+    QTest::newRow("only not in file") << good << QStringList{"--only", "PA14"} << "no value";
+}
+
+void TestCliUsage::badBackupFiles()
+{
+    QFETCH(QByteArray, content);
+    QFETCH(QStringList, args);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("b.json"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(content);
+    f.close();
+    for (const char *command : {"diff", "restore"}) {
+        if (!args.isEmpty() && qstrcmp(command, "diff") == 0)
+            continue;
+        const QStringList all = QStringList{"--trace", "--port", "/dev/null", QString::fromLatin1(command), path} + args;
+        const CliRun r = runCli(all);
+        QVERIFY2(r.exitCode == 2, qPrintable(QStringLiteral("%1: exit %2: %3").arg(command).arg(r.exitCode).arg(r.text())));
+        QVERIFY2(r.err.contains(message.toUtf8()), r.err.constData());
+        QCOMPARE(r.txFrames(), 0);
+    }
 }
 
 void TestCliUsage::unopenablePort_data()

@@ -1,6 +1,6 @@
 #include "drive/drive.h"
 
-// parameter validation arrives with the params layer
+#include "params/parameterdictionary.h"
 
 #include <QDateTime>
 
@@ -21,6 +21,30 @@ Drive::~Drive() = default;
 void Drive::setDictionary(std::shared_ptr<const ParameterDictionary> dictionary)
 {
     m_dictionary = std::move(dictionary);
+}
+
+const ParameterDictionary &Drive::parameterDictionary() const
+{
+    if (m_dictionary)
+        return *m_dictionary;
+    return ParameterDictionary::bundled(family());
+}
+
+Error Drive::validateWrite(const ParameterWrite &write) const
+{
+    return parameterDictionary().validateWrite(write.index, write.value);
+}
+
+Error Drive::validateWrites(const QList<ParameterWrite> &writes) const
+{
+    if (writes.isEmpty())
+        return {ErrorCode::InvalidArgument, tr("No parameter to write.")};
+    for (const ParameterWrite &w : writes) {
+        const Error e = validateWrite(w);
+        if (e.isError())
+            return e;
+    }
+    return Error::none();
 }
 
 QString Drive::unsupportedReason(Capability c) const

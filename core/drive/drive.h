@@ -39,8 +39,11 @@ public:
     DriveStatus status() const { return m_status; }
     bool hasCapability(Capability c) const { return capabilities().testFlag(c); }
 
+    // The dictionary values are validated against: the one set here (a user's file), else
+    // the family's bundled dictionary.
     std::shared_ptr<const ParameterDictionary> dictionary() const { return m_dictionary; }
     void setDictionary(std::shared_ptr<const ParameterDictionary> dictionary);
+    const ParameterDictionary &parameterDictionary() const;
 
     // Identity and state.
     virtual DriveReply *refreshIdentity();
@@ -73,7 +76,8 @@ public:
     int jogLeaseMs() const { return m_jogLeaseMs; }
     void setJogLeaseMs(int ms) { m_jogLeaseMs = ms; }
 
-    // Validation of one value against the dictionary (range, access); no I/O.
+    // Validation against parameterDictionary() (known index, range, not read-only); no I/O.
+    // validateWrites() returns the first problem (nothing may be sent if there is one).
     Error validateWrite(const ParameterWrite &write) const;
     Error validateWrites(const QList<ParameterWrite> &writes) const;
 

@@ -4,6 +4,7 @@
 #include "clicommands.h"
 #include "clihelp.h"
 #include "clioutput.h"
+#include "clisimbench.h"
 #include "signalwatcher.h"
 
 #include "drive/driveconnection.h"
@@ -93,6 +94,16 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
     if (context.globals.trace)
         connect(connection.tap(), &TrafficTap::frameRecorded, this,
                 [&out](const TrafficRecord &r) { out.trace(r); });
+
+    CliSimBench bench;
+    if (context.globals.sim && command->needsLink()) {
+        if (Error e = bench.start(&context.globals)) {
+            const CliExit code = e.code == ErrorCode::InvalidArgument ? CliExit::Usage : CliExit::OpenFailed;
+            out.failure(command->name(), int(code), e);
+            return int(code);
+        }
+        out.note(bench.description());
+    }
 
     if (command->needsLink()) {
         Error e;

@@ -127,6 +127,12 @@ bool CliGlobals::load(const CliInvocation &inv, QString *error)
         break;
     }
 
+    if (sim && (!c.port.isEmpty() || !c.can.isEmpty())) {
+        *error = tr("--sim brings its own simulated bus: leave out --port and --can.");
+        return false;
+    }
+    if (sim && c.family == Family::Shuoke && c.framing.isEmpty())
+        c.framing = QStringLiteral("rtu");
     if (!sim && c.port.isEmpty() && c.can.isEmpty()) {
         *error = tr("No link given: add --port DEVICE (e.g. /dev/ttyUSB0) or --can PLUGIN:INTERFACE "
                     "(e.g. socketcan:can0), or --sim to use the built-in simulator.");

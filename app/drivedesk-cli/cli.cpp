@@ -117,6 +117,14 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
         }
         context.connection = &connection;
         connect(&connection, &DriveConnection::linkLost, command, &CliCommand::linkLost);
+        if (command->needsDrive() && !context.drive()) {
+            out.failure(command->name(), int(CliExit::Usage),
+                        {ErrorCode::InvalidArgument,
+                         tr("There can be no %1 drive at address %2 on this link.")
+                             .arg(familyId(context.globals.connection.family))
+                             .arg(context.globals.address)});
+            return int(CliExit::Usage);
+        }
     }
 
     SignalWatcher watcher;

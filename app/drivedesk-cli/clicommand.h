@@ -49,6 +49,8 @@ public:
     virtual bool prepare(const CliInvocation &inv, QString *error) = 0;
     // Whether the command needs an open link (all but a few do).
     virtual bool needsLink() const { return true; }
+    // Whether it talks to the drive at --address (all but scan).
+    virtual bool needsDrive() const { return true; }
     virtual void start() = 0;
     // SIGINT / SIGTERM. Default: give up (exit 1); commands that move the axis stop it.
     virtual void interrupt(int signalNumber);

@@ -17,6 +17,7 @@ public:
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
     void interrupt(int signalNumber) override;
+    bool needsDrive() const override { return false; }
 
     // The rates a serial scan tries when neither --bauds nor --baud is given.
     static QList<int> usualBauds(Family family);

@@ -13,6 +13,7 @@
 #include "params/parameterdictionary.h"
 
 #include <QEventLoop>
+#include <QLoggingCategory>
 #include <QTimer>
 #include <memory>
 
@@ -25,8 +26,19 @@ Cli::Cli(QObject *parent)
 
 Cli::~Cli() = default;
 
+void Cli::configureLogging(bool sim)
+{
+    QString rules = QStringLiteral("drivedesk.*.debug=false\ndrivedesk.*.info=false\n"
+                                   "drivedesk.debug=false\ndrivedesk.info=false\n"
+                                   "qt.canbus.*.debug=false\nqt.canbus.*.info=false\n");
+    if (sim)
+        rules += QStringLiteral("qt.canbus.plugins.virtualcan.warning=false\n");
+    QLoggingCategory::setFilterRules(rules);
+}
+
 int Cli::run(const QStringList &arguments)
 {
+    configureLogging(false);
     // --json is honoured even for usage errors, so scripts always get a document.
     CliOutput out(arguments.contains(QLatin1String("--json")));
     const CliParser parser(CliGlobals::optionSpecs(), CliCommands::specs());
@@ -97,6 +109,7 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
 
     CliSimBench bench;
     if (context.globals.sim && command->needsLink()) {
+        configureLogging(true);
         if (Error e = bench.start(&context.globals)) {
             const CliExit code = e.code == ErrorCode::InvalidArgument ? CliExit::Usage : CliExit::OpenFailed;
             out.failure(command->name(), int(code), e);
@@ -132,7 +145,7 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
 
     QEventLoop loop;
     connect(command, &CliCommand::done, &loop, &QEventLoop::exit);
-    QTimer::singleShot(0, command, &CliCommand::start);
+    QTimer::singleShot(0, command, &CliCommand::begin);
     const int code = loop.exec();
 
     context.connection = nullptr;

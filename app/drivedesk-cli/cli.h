@@ -21,6 +21,11 @@ public:
     // `arguments` without the program name. Runs an event loop until the command is done.
     int run(const QStringList &arguments);
 
+    // stderr is for the CLI's own messages and --trace: the libraries' debug and info
+    // chatter stays off (QT_LOGGING_RULES in the environment still overrides this); with the
+    // simulator also virtualcan's expected warnings about its private hub.
+    static void configureLogging(bool sim);
+
 private:
     int runCommand(CliCommand *command, CliContext &context);
 };

@@ -21,6 +21,25 @@ CliCommand::CliCommand(const QString &name, CliContext *context, QObject *parent
 {
 }
 
+void CliCommand::begin()
+{
+    if (!identifyFirst())
+        return start();
+    onFinished(drive()->refreshIdentity(), [this](DriveReply *r) {
+        if (m_done)
+            return;
+        const QStringList warnings = r->info().value(QStringLiteral("warnings")).toStringList();
+        for (const QString &w : warnings)
+            out()->note(tr("Warning: %1").arg(w));
+        if (!r->ok()) {
+            if (!identifyMayFail())
+                return fail(r->error());
+            out()->note(tr("The drive did not identify itself (%1); going on.").arg(r->error().message));
+        }
+        start();
+    });
+}
+
 void CliCommand::interrupt(int)
 {
     fail({ErrorCode::Cancelled, tr("Interrupted.")});

@@ -51,6 +51,13 @@ public:
     virtual bool needsLink() const { return true; }
     // Whether it talks to the drive at --address (all but scan).
     virtual bool needsDrive() const { return true; }
+    // Whether begin() identifies the drive before start(), and whether start() runs anyway
+    // when that fails (stop: a stop is always sent).
+    virtual bool identifyFirst() const { return needsDrive(); }
+    virtual bool identifyMayFail() const { return false; }
+    // Runs the command: for commands that talk to a drive, identify it first (this also
+    // waits until the link is up, e.g. a CAN bus still connecting), then start().
+    void begin();
     virtual void start() = 0;
     // SIGINT / SIGTERM. Default: give up (exit 1); commands that move the axis stop it.
     virtual void interrupt(int signalNumber);

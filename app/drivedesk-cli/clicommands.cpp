@@ -30,11 +30,11 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("ee"), {}},
         {QStringLiteral("monitor"), {valued("rate"), valued("duration"), valued("output", QLatin1Char('o'))}},
         {QStringLiteral("jog"), {valued("duration")}},
-        {QStringLiteral("move"), {valued("by"), valued("to"), valued("speed")}},
+        {QStringLiteral("move"), {valued("by"), valued("to"), valued("speed"), flag("no-wait")}},
         {QStringLiteral("stop"), {flag("emergency")}},
         {QStringLiteral("enable"), {}},
         {QStringLiteral("clear-alarm"), {}},
-        {QStringLiteral("home"), {flag("positive")}},
+        {QStringLiteral("home"), {flag("positive"), flag("no-wait")}},
         {QStringLiteral("channels"), {}},
     };
 }

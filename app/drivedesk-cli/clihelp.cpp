@@ -44,11 +44,12 @@ QString CliHelp::general()
         "  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]\n"
         "                                 sample live values (Ctrl-C ends)\n"
         "  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once\n"
-        "  move (--by N | --to N) [--speed V]\n"
+        "  move (--by N | --to N) [--speed V] [--no-wait]\n"
+        "                                 move, and wait until the axis is at rest\n"
         "  stop [--emergency]\n"
         "  enable on|off\n"
         "  clear-alarm\n"
-        "  home [--positive]\n"
+        "  home [--positive] [--no-wait]\n"
         "  channels                       the monitor channels this drive offers\n"
         "\n"
         "Exit codes:\n"
@@ -121,9 +122,11 @@ QString CliHelp::command(const QString &name)
                   "or any error, then stop. Without --duration it runs until Ctrl-C. A second\n"
                   "Ctrl-C sends an emergency stop where the family has one.\n");
     if (name == QLatin1String("move"))
-        return tr("Usage: drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V]\n"
-                  "Relative (--by) or absolute (--to) move, in the drive's position units.\n"
-                  "Ctrl-C stops the axis.\n");
+        return tr("Usage: drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait]\n"
+                  "Relative (--by) or absolute (--to) move, in the drive's position units, at\n"
+                  "--speed (the family's unit). Waits until the axis is at rest again (the link\n"
+                  "and its keep-alives stay up meanwhile); --no-wait returns once the drive has\n"
+                  "started. Ctrl-C stops the axis.\n");
     if (name == QLatin1String("stop"))
         return tr("Usage: drivedesk-cli [OPTIONS] stop [--emergency]\n");
     if (name == QLatin1String("enable"))
@@ -132,8 +135,9 @@ QString CliHelp::command(const QString &name)
         return tr("Usage: drivedesk-cli [OPTIONS] clear-alarm\n"
                   "Clear the alarm and read it again; exit code 1 if it is still there.\n");
     if (name == QLatin1String("home"))
-        return tr("Usage: drivedesk-cli [OPTIONS] home [--positive]\n"
-                  "Search home, negative direction first (--positive: positive first).\n");
+        return tr("Usage: drivedesk-cli [OPTIONS] home [--positive] [--no-wait]\n"
+                  "Search home, negative direction first (--positive: positive first), and wait\n"
+                  "until the axis is at rest. Ctrl-C stops the axis.\n");
     if (name == QLatin1String("channels"))
         return tr("Usage: drivedesk-cli [OPTIONS] channels\n"
                   "The monitor channels this drive offers, with units.\n");

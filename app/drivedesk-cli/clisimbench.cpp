@@ -3,17 +3,9 @@
 #include "ptyendpoint.h"
 #include "simcanbus.h"
 #include "simserialbus.h"
-
-// The family simulators land one by one; build with those that are there.
-#if __has_include("simservomodbusdrive.h")
-#include "simservomodbusdrive.h"
-#define DD_SIM_SERVO_MODBUS 1
-#endif
-#if __has_include("simservocandrive.h") && __has_include("virtualcanhub.h")
 #include "simservocandrive.h"
+#include "simservomodbusdrive.h"
 #include "virtualcanhub.h"
-#define DD_SIM_SERVO_CAN 1
-#endif
 
 namespace dd {
 
@@ -27,9 +19,7 @@ CliSimBench::~CliSimBench()
     // The buses before the hub they are connected to.
     delete m_can;
     delete m_serial;
-#ifdef DD_SIM_SERVO_CAN
     delete m_hub;
-#endif
 }
 
 int CliSimBench::defaultBaud(Family family)
@@ -67,15 +57,11 @@ Error CliSimBench::startSerial(CliGlobals *globals)
         const int baud = d.baud ? d.baud : c.baud ? c.baud : defaultBaud(c.family);
         switch (c.family) {
         case Family::ServoModbus: {
-#ifdef DD_SIM_SERVO_MODBUS
             SimServoModbusDrive::Config config;
             config.address = d.address;
             config.baud = baud;
             m_serial->addDevice(std::make_unique<SimServoModbusDrive>(config));
             break;
-#else
-            return {ErrorCode::NotSupported, tr("This build has no servo-modbus simulator.")};
-#endif
         }
         case Family::Shuoke:
             return {ErrorCode::NotSupported, tr("This build has no shuoke simulator.")};
@@ -93,7 +79,6 @@ Error CliSimBench::startSerial(CliGlobals *globals)
 Error CliSimBench::startCan(CliGlobals *globals)
 {
     ConnectionSettings &c = globals->connection;
-#ifdef DD_SIM_SERVO_CAN
     m_hub = new VirtualCanHub;
     if (!m_hub->start(0))
         return {ErrorCode::OpenFailed, tr("Could not start the simulated CAN bus (no free local TCP port).")};
@@ -115,10 +100,6 @@ Error CliSimBench::startCan(CliGlobals *globals)
     m_description = tr("simulated %1 bus on %2: %3")
                         .arg(familyId(c.family), c.can, drives.join(QLatin1String(", ")));
     return {};
-#else
-    Q_UNUSED(c);
-    return {ErrorCode::NotSupported, tr("This build has no CAN simulator.")};
-#endif
 }
 
 } // namespace dd

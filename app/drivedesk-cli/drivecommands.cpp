@@ -20,6 +20,7 @@ void InfoCommand::start()
     onFinished(d->refreshIdentity(), [this, d](DriveReply *r) {
         if (!r->ok())
             return fail(r->error());
+        m_warnings = r->info().value(QStringLiteral("warnings")).toStringList();
         onFinished(d->readStatus(), [this, d](DriveReply *r) {
             if (!r->ok())
                 return fail(r->error());
@@ -48,7 +49,8 @@ void InfoCommand::report()
     QJsonObject json{{QStringLiteral("identity"), CliDescribe::identity(id)},
                      {QStringLiteral("status"), CliDescribe::status(m_status)},
                      {QStringLiteral("capabilities"), QJsonArray::fromStringList(caps)},
-                     {QStringLiteral("channels"), CliDescribe::channels(d->channels())}};
+                     {QStringLiteral("channels"), CliDescribe::channels(d->channels())},
+                     {QStringLiteral("warnings"), QJsonArray::fromStringList(m_warnings)}};
     QList<QPair<QString, QString>> rows{
         {tr("Family"), familyId(id.family)},
         {tr("Address"), QString::number(id.address)},
@@ -62,6 +64,8 @@ void InfoCommand::report()
     rows.append({tr("Alarm"), m_status.alarmCode ? QString::number(m_status.alarmCode) : tr("none")});
     rows.append({tr("Capabilities"), caps.join(QLatin1String(", "))});
     rows.append({tr("Channels"), channelIds.join(QLatin1String(", "))});
+    for (const QString &w : std::as_const(m_warnings))
+        rows.append({tr("Warning"), w});
     succeed(json, CliDescribe::table(rows));
 }
 

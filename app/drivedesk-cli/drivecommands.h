@@ -12,11 +12,13 @@ class InfoCommand : public CliCommand
 public:
     explicit InfoCommand(CliContext *c) : CliCommand(QStringLiteral("info"), c) {}
     bool prepare(const CliInvocation &inv, QString *error) override;
+    bool identifyFirst() const override { return false; }   // start() does
     void start() override;
 
 private:
     void report();
     DriveStatus m_status;
+    QStringList m_warnings;
 };
 
 class ChannelsCommand : public CliCommand
@@ -25,6 +27,7 @@ class ChannelsCommand : public CliCommand
 public:
     explicit ChannelsCommand(CliContext *c) : CliCommand(QStringLiteral("channels"), c) {}
     bool prepare(const CliInvocation &inv, QString *error) override;
+    bool identifyFirst() const override { return false; }   // start() does
     void start() override;
 };
 
@@ -36,6 +39,7 @@ public:
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
     void interrupt(int) override {}   // a stop is never abandoned half-way
+    bool identifyMayFail() const override { return true; }
 
 private:
     bool m_emergency = false;

@@ -5,7 +5,6 @@
 
 #include <QCoreApplication>
 #include <QLocale>
-#include <QLoggingCategory>
 #include <QTranslator>
 
 int main(int argc, char *argv[])
@@ -13,11 +12,6 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("drivedesk-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
-
-    // stderr is for the CLI's own messages and --trace; the libraries' debug chatter stays
-    // off unless QT_LOGGING_RULES asks for it (the environment overrides these rules).
-    QLoggingCategory::setFilterRules(QStringLiteral("drivedesk.*.debug=false\ndrivedesk.*.info=false\n"
-                                                    "drivedesk.debug=false\ndrivedesk.info=false"));
 
     QTranslator translator;
     if (translator.load(QLocale(), QStringLiteral("drivedesk"), QStringLiteral("_"),

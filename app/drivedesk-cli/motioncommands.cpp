@@ -139,8 +139,10 @@ void JogCommand::onStopped(DriveReply *reply)
                       .arg(m_reason == Reason::Duration ? tr("duration ended") : tr("interrupted")));
 }
 
-void JogCommand::interrupt(int)
+void JogCommand::interrupt(int signalNumber)
 {
+    if (!m_clock.isValid())
+        return CliCommand::interrupt(signalNumber);   // not moving yet
     stopNow(Reason::Signal);
 }
 
@@ -155,6 +157,84 @@ void JogCommand::linkLost(const Error &why)
     e.message = tr("The link was lost while jogging (%1). The drive's own watchdog stops the "
                    "axis where the family has one; check it has stopped.").arg(why.message);
     fail(e);
+}
+
+// --- move and home: run to the end ------------------------------------------------------
+
+PositioningCommand::PositioningCommand(const QString &name, CliContext *c)
+    : CliCommand(name, c)
+    , m_poll(this)
+{
+    m_poll.setInterval(50);
+    connect(&m_poll, &QTimer::timeout, this, &PositioningCommand::poll);
+}
+
+bool PositioningCommand::prepareWait(const CliInvocation &inv)
+{
+    m_wait = !inv.has(QStringLiteral("no-wait"));
+    return true;
+}
+
+void PositioningCommand::follow(DriveReply *reply, const QJsonObject &json, const QString &text)
+{
+    m_json = json;
+    m_text = text;
+    onFinished(reply, [this](DriveReply *r) {
+        if (m_stopping)
+            return;
+        if (!r->ok())
+            return fail(r->error(), m_json);
+        if (!m_wait)
+            return succeed(m_json, m_text);
+        out()->note(m_text);
+        m_clock.start();
+        m_poll.start();
+    });
+}
+
+void PositioningCommand::poll()
+{
+    m_poll.stop();   // one status read at a time
+    onFinished(drive()->readStatus(), [this](DriveReply *r) {
+        if (m_stopping || isDone())
+            return;
+        if (!r->ok())
+            return fail(r->error(), m_json);
+        const DriveStatus s = r->status();
+        if (s.alarmCode != 0)
+            return fail({ErrorCode::DriveException,
+                         tr("The drive raised alarm %1 during the motion.").arg(s.alarmCode), s.alarmCode},
+                        m_json);
+        if (s.running) {
+            m_sawRunning = true;
+            m_idlePolls = 0;
+        } else {
+            ++m_idlePolls;
+        }
+        // At rest after having moved, or at rest for a while (a short motion may be over
+        // before the first poll).
+        if ((m_sawRunning && m_idlePolls >= 1) || (m_idlePolls >= 3 && m_clock.elapsed() >= 300)) {
+            QJsonObject json = m_json;
+            json.insert(QStringLiteral("finished"), true);
+            if (s.positionValid)
+                json.insert(QStringLiteral("position"), double(s.position));
+            return succeed(json, s.positionValid ? tr("Done; position %1.").arg(s.position) : tr("Done."));
+        }
+        m_poll.start();
+    });
+}
+
+void PositioningCommand::interrupt(int)
+{
+    if (m_stopping)
+        return;
+    m_stopping = true;
+    m_poll.stop();
+    stopAfterInterrupt(this, drive(), out(), [this](const Error &e) {
+        if (e)
+            return fail(e, m_json);
+        fail({ErrorCode::Cancelled, tr("Interrupted; the axis was stopped.")}, m_json);
+    });
 }
 
 // --- move -------------------------------------------------------------------------------
@@ -184,34 +264,16 @@ bool MoveCommand::prepare(const CliInvocation &inv, QString *error)
             return false;
         m_speed = qint32(*s);
     }
-    return true;
+    return prepareWait(inv);
 }
 
 void MoveCommand::start()
 {
     Drive *d = drive();
     DriveReply *r = m_relative ? d->moveRelative(m_target, m_speed) : d->moveAbsolute(m_target, m_speed);
-    onFinished(r, [this](DriveReply *r) {
-        if (m_stopping)
-            return;
-        const QJsonObject json{{m_relative ? QStringLiteral("by") : QStringLiteral("to"), double(m_target)},
-                               {QStringLiteral("speed"), m_speed}};
-        if (!r->ok())
-            return fail(r->error(), json);
-        succeed(json, m_relative ? tr("Moving by %1.").arg(m_target) : tr("Moving to %1.").arg(m_target));
-    });
-}
-
-void MoveCommand::interrupt(int)
-{
-    if (m_stopping)
-        return;
-    m_stopping = true;
-    stopAfterInterrupt(this, drive(), out(), [this](const Error &e) {
-        if (e)
-            return fail(e);
-        fail({ErrorCode::Cancelled, tr("Move interrupted; the axis was stopped.")});
-    });
+    follow(r, {{m_relative ? QStringLiteral("by") : QStringLiteral("to"), double(m_target)},
+               {QStringLiteral("speed"), m_speed}},
+           m_relative ? tr("Moving by %1.").arg(m_target) : tr("Moving to %1.").arg(m_target));
 }
 
 // --- home -------------------------------------------------------------------------------
@@ -219,32 +281,13 @@ void MoveCommand::interrupt(int)
 bool HomeCommand::prepare(const CliInvocation &inv, QString *error)
 {
     m_positive = inv.has(QStringLiteral("positive"));
-    return expectArguments(inv, 0, 0, QString(), error);
+    return expectArguments(inv, 0, 0, QString(), error) && prepareWait(inv);
 }
 
 void HomeCommand::start()
 {
-    onFinished(drive()->home(m_positive), [this](DriveReply *r) {
-        if (m_stopping)
-            return;
-        const QJsonObject json{{QStringLiteral("positiveFirst"), m_positive}};
-        if (!r->ok())
-            return fail(r->error(), json);
-        succeed(json, tr("Homing started (%1 direction first).")
-                          .arg(m_positive ? tr("positive") : tr("negative")));
-    });
-}
-
-void HomeCommand::interrupt(int)
-{
-    if (m_stopping)
-        return;
-    m_stopping = true;
-    stopAfterInterrupt(this, drive(), out(), [this](const Error &e) {
-        if (e)
-            return fail(e);
-        fail({ErrorCode::Cancelled, tr("Homing interrupted; the axis was stopped.")});
-    });
+    follow(drive()->home(m_positive), {{QStringLiteral("positiveFirst"), m_positive}},
+           tr("Homing (%1 direction first).").arg(m_positive ? tr("positive") : tr("negative")));
 }
 
 } // namespace dd

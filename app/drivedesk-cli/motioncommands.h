@@ -37,36 +37,60 @@ private:
     Error m_error;
 };
 
-// move (--by N | --to N) [--speed V]
-class MoveCommand : public CliCommand
+// A motion that runs to its end: move and home. After the command is accepted it waits
+// (polling the drive's state) until the axis is at rest again, keeping the link and its
+// keep-alives up; --no-wait returns at once. Ctrl-C / SIGTERM stop the axis.
+class PositioningCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit MoveCommand(CliContext *c) : CliCommand(QStringLiteral("move"), c) {}
+    PositioningCommand(const QString &name, CliContext *c);
+    void interrupt(int signalNumber) override;
+
+protected:
+    bool prepareWait(const CliInvocation &inv);
+    // Starts the motion's reply handling; `json` / `text` describe it.
+    void follow(DriveReply *reply, const QJsonObject &json, const QString &text);
+
+private:
+    void poll();
+
+    bool m_wait = true;
+    bool m_stopping = false;
+    bool m_sawRunning = false;
+    int m_idlePolls = 0;
+    QTimer m_poll;
+    QElapsedTimer m_clock;
+    QJsonObject m_json;
+    QString m_text;
+};
+
+// move (--by N | --to N) [--speed V] [--no-wait]
+class MoveCommand : public PositioningCommand
+{
+    Q_OBJECT
+public:
+    explicit MoveCommand(CliContext *c) : PositioningCommand(QStringLiteral("move"), c) {}
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
-    void interrupt(int signalNumber) override;
 
 private:
     bool m_relative = true;
     qint64 m_target = 0;
     qint32 m_speed = 0;
-    bool m_stopping = false;
 };
 
-// home [--positive]
-class HomeCommand : public CliCommand
+// home [--positive] [--no-wait]
+class HomeCommand : public PositioningCommand
 {
     Q_OBJECT
 public:
-    explicit HomeCommand(CliContext *c) : CliCommand(QStringLiteral("home"), c) {}
+    explicit HomeCommand(CliContext *c) : PositioningCommand(QStringLiteral("home"), c) {}
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
-    void interrupt(int signalNumber) override;
 
 private:
     bool m_positive = false;
-    bool m_stopping = false;
 };
 
 } // namespace dd

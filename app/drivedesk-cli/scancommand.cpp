@@ -78,6 +78,9 @@ void ScanCommand::start()
     if (!m_discovery)
         return fail({ErrorCode::NotSupported, tr("This family cannot scan.")});
     connect(m_discovery, &Discovery::found, this, [this](const DiscoveredDrive &d) {
+        // Some discoveries listen to the whole bus (servo-can heartbeats): keep to the range.
+        if (d.address < m_options.from || d.address > m_options.to)
+            return;
         m_found.append(CliDescribe::discovered(d));
         out()->line(CliDescribe::discoveredText(d));
     });

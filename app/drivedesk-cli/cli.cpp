@@ -4,13 +4,13 @@
 #include "clicommands.h"
 #include "clihelp.h"
 #include "clioutput.h"
-#include "clisimbench.h"
-#include "signalwatcher.h"
+#include "common/signalwatcher.h"
 
 #include "drive/driveconnection.h"
 #include "drive/familybackend.h" // driveconnection.h needs it complete (QPointer)
 #include "link/traffictap.h"
 #include "params/parameterdictionary.h"
+#include "simbench.h"
 
 #include <QEventLoop>
 #include <QLoggingCategory>
@@ -99,6 +99,38 @@ int Cli::run(const QStringList &arguments)
     return runCommand(command.get(), context);
 }
 
+Error Cli::startBench(SimBench *bench, CliGlobals *globals)
+{
+    ConnectionSettings &c = globals->connection;
+    SimBenchOptions o;
+    o.family = c.family;
+    o.baud = c.baud;
+    o.bitrate = c.bitrate;
+    o.framing = c.framing;
+    o.stateFile = globals->simStateFile;
+    if (c.family == Family::ServoCan || c.framing == QLatin1String("can"))
+        o.can = QStringLiteral("virtualcan:auto");   // a private hub: nobody else on this bus
+    if (globals->simDrives.isEmpty())
+        o.addresses = {globals->address};
+    for (const CliGlobals::SimDrive &d : std::as_const(globals->simDrives)) {
+        o.addresses << d.address;
+        if (d.baud)
+            o.bauds.insert(d.address, d.baud);
+    }
+    if (Error e = bench->start(o))
+        return {e.code == ErrorCode::InvalidArgument ? e.code : ErrorCode::OpenFailed,
+                tr("Could not start the simulator: %1").arg(e.message)};
+    const ConnectionSettings client = bench->clientSettings();
+    c.port = client.port;
+    c.can = client.can;
+    QStringList drives;
+    for (int a : std::as_const(o.addresses))
+        drives << (o.bauds.contains(a) ? QStringLiteral("%1@%2").arg(a).arg(o.bauds.value(a)) : QString::number(a));
+    globals->simDescription = tr("simulated %1 drives %2 on %3")
+                                  .arg(familyId(c.family), drives.join(QLatin1Char(',')), c.linkName());
+    return {};
+}
+
 int Cli::runCommand(CliCommand *command, CliContext &context)
 {
     CliOutput &out = *context.out;
@@ -107,15 +139,14 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
         connect(connection.tap(), &TrafficTap::frameRecorded, this,
                 [&out](const TrafficRecord &r) { out.trace(r); });
 
-    CliSimBench bench;
+    SimBench bench;
     if (context.globals.sim && command->needsLink()) {
         configureLogging(true);
-        if (Error e = bench.start(&context.globals)) {
+        if (Error e = startBench(&bench, &context.globals)) {
             const CliExit code = e.code == ErrorCode::InvalidArgument ? CliExit::Usage : CliExit::OpenFailed;
             out.failure(command->name(), int(code), e);
             return int(code);
         }
-        out.note(bench.description());
     }
 
     if (command->needsLink()) {
@@ -128,6 +159,8 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
             out.failure(command->name(), int(code), e);
             return int(code);
         }
+        if (context.globals.sim)
+            out.note(context.globals.simDescription);
         context.connection = &connection;
         connect(&connection, &DriveConnection::linkLost, command, &CliCommand::linkLost);
         if (command->needsDrive() && !context.drive()) {

@@ -1,10 +1,14 @@
 #pragma once
 
+#include "common/error.h"
+
 #include <QObject>
 #include <QStringList>
 
 namespace dd {
 
+class SimBench;
+struct CliGlobals;
 class CliCommand;
 class CliOutput;
 struct CliContext;
@@ -27,6 +31,8 @@ public:
     static void configureLogging(bool sim);
 
 private:
+    // --sim: simulated drives in this process; points the connection settings at them.
+    static Error startBench(SimBench *bench, CliGlobals *globals);
     int runCommand(CliCommand *command, CliContext &context);
 };
 

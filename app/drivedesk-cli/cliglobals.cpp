@@ -22,22 +22,28 @@ QList<CliOptionSpec> CliGlobals::optionSpecs()
         {QStringLiteral("dictionary"), true, {}},
         {QStringLiteral("sim"), false, {}},
         {QStringLiteral("sim-drives"), true, {}},
+        {QStringLiteral("sim-state"), true, {}},
         {QStringLiteral("help"), false, QLatin1Char('h')},
         {QStringLiteral("version"), false, QLatin1Char('V')},
     };
 }
 
-int CliGlobals::defaultAddress(Family family)
+int CliGlobals::defaultAddress(Family)
 {
-    // servo-can: the seed's examples use station 0; the serial families start at 1.
-    return family == Family::ServoCan ? 0 : 1;
+    return 1;
 }
 
 bool CliGlobals::load(const CliInvocation &inv, QString *error)
 {
     json = inv.has(QStringLiteral("json"));
     trace = inv.has(QStringLiteral("trace"));
-    sim = inv.has(QStringLiteral("sim")) || inv.has(QStringLiteral("sim-drives"));
+    sim = inv.has(QStringLiteral("sim")) || inv.has(QStringLiteral("sim-drives"))
+        || inv.has(QStringLiteral("sim-state"));
+    simStateFile = inv.value(QStringLiteral("sim-state"));
+    if (inv.has(QStringLiteral("sim-state")) && simStateFile.isEmpty()) {
+        *error = tr("--sim-state needs a file name.");
+        return false;
+    }
     dictionaryFile = inv.value(QStringLiteral("dictionary"));
     if (inv.has(QStringLiteral("dictionary")) && dictionaryFile.isEmpty()) {
         *error = tr("--dictionary needs a file name.");

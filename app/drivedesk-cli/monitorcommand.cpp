@@ -4,6 +4,10 @@
 
 #include "drive/drive.h"
 #include "trend/channelsampler.h"
+#include "trend/trendchannel.h"
+
+#include <QFile>
+#include <QFileInfo>
 
 #include <QJsonArray>
 #include <cmath>
@@ -51,9 +55,13 @@ bool MonitorCommand::prepare(const CliInvocation &inv, QString *error)
     }
     if (inv.has(QStringLiteral("output"))) {
         m_csvPath = inv.value(QStringLiteral("output"));
-        // Open now: an unwritable path is bad input, found before anything is sent.
-        if (Error e = m_csv.open(m_csvPath, {})) {
-            *error = e.message;
+        // Try it now: an unwritable path is bad input, found before anything is sent. The
+        // header (the drive's channels and units) is written once the link is open.
+        QFile probe(m_csvPath);
+        if (m_csvPath.isEmpty() || QFileInfo(m_csvPath).isDir()
+            || !probe.open(QIODevice::WriteOnly | QIODevice::Append)) {
+            *error = tr("Cannot write %1: %2. Check the folder exists and is writable.")
+                         .arg(m_csvPath, probe.errorString());
             return false;
         }
     }
@@ -80,8 +88,10 @@ void MonitorCommand::start()
                      tr("This drive has no channel %1. Its channels: %2.")
                          .arg(unknown.join(QLatin1String(", ")), ids.join(QLatin1String(", ")))});
     }
-    if (m_csv.isOpen())
-        m_csv.setChannels(m_channels);
+    if (!m_csvPath.isEmpty()) {
+        if (Error e = m_csv.open(m_csvPath, TrendChannel::fromInfos(m_channels), 0))
+            return fail(e);
+    }
 
     m_sampler = new ChannelSampler(d, this);
     m_sampler->setChannels(m_channelIds);
@@ -92,7 +102,7 @@ void MonitorCommand::start()
     if (!m_csv.isOpen() && !out()->isJson()) {
         QStringList head{tr("time [s]")};
         for (const ChannelInfo &c : m_channels)
-            head << CsvTrendWriter::headerCell(c);
+            head << (c.unit.isEmpty() ? c.id : QStringLiteral("%1 [%2]").arg(c.id, c.unit));
         out()->line(textRow(head));
     }
     if (m_durationS > 0)
@@ -111,7 +121,7 @@ QString MonitorCommand::textRow(const QStringList &cells) const
 void MonitorCommand::onSample(double timeS, const QMap<QString, double> &values)
 {
     if (m_csv.isOpen()) {
-        if (Error e = m_csv.writeRow(timeS, values))
+        if (Error e = m_csv.writeRowAtSeconds(timeS, values))
             end(e);
         return;
     }

@@ -2,7 +2,7 @@
 
 #include "clicommand.h"
 
-#include "trend/csvtrendwriter.h"
+#include "trend/csvwriter.h"
 
 #include <QTimer>
 
@@ -30,7 +30,7 @@ private:
     double m_rateHz = 10.0;
     double m_durationS = 0.0;   // 0: until Ctrl-C
     QString m_csvPath;
-    CsvTrendWriter m_csv;
+    CsvWriter m_csv;
     ChannelSampler *m_sampler = nullptr;
     QTimer m_duration;
 };

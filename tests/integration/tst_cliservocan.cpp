@@ -282,7 +282,7 @@ void TestCliServoCan::monitorCsvAndJson()
     QFile f(csv);
     QVERIFY(f.open(QIODevice::ReadOnly));
     const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
-    QCOMPARE(lines.at(0), QByteArray("time [s],speed [r/min],position [pulses],bus-voltage [V]"));
+    QCOMPARE(lines.at(0), QByteArray("time_s,speed [r/min],position [pulses],bus-voltage [V]"));
     QVERIFY2(lines.size() >= 5, QByteArray::number(lines.size()).constData());
     const QList<QByteArray> row = lines.last().split(',');
     QCOMPARE(row.size(), 4);

@@ -17,6 +17,7 @@ private slots:
     void jogRunsAndStops();
     void backupOfASimulatedDrive();
     void simLeavesNoRoomForAPort();
+    void stateCarriesOverBetweenRuns();
 };
 
 void TestCliSim::info_data()
@@ -38,7 +39,9 @@ void TestCliSim::info()
 
 void TestCliSim::scanFindsSimulatedDrives()
 {
-    const CliRun r = runCli({"--sim", "--sim-drives", "5@19200,9@19200", "--baud", "19200", "--json", "scan"});
+    // The simulator shares the CLI's thread: allow the probes more than the adaptive minimum.
+    const CliRun r = runCli({"--sim", "--sim-drives", "5@19200,9@38400", "--timeout", "100", "--json", "scan",
+                             "--to", "12", "--bauds", "19200,38400"});
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QList<int> found;
     for (const QJsonValue &v : r.json().value("drives").toArray())
@@ -52,7 +55,7 @@ void TestCliSim::jogRunsAndStops()
     const CliRun r = runCli({"--sim", "--family", "servo-can", "--json", "--trace", "jog", "100", "--duration", "0.3"});
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QCOMPARE(r.json().value("stoppedBy").toString(), QStringLiteral("duration"));
-    QVERIFY(r.err.contains("00 20 00 64 00 00 00 FF"));   // the seed's "speed mode +100" frame
+    QVERIFY(r.err.contains("065#01 20 00 64 00 00 00 FF"));   // "speed mode +100" (the seed's example, station 1)
     QVERIFY(r.err.contains("(stop)"));
 }
 
@@ -73,6 +76,21 @@ void TestCliSim::simLeavesNoRoomForAPort()
     const CliRun r = runCli({"--sim", "--port", "/dev/ttyUSB0", "info"});
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.err.contains("--sim"));
+}
+
+void TestCliSim::stateCarriesOverBetweenRuns()
+{
+    QTemporaryDir dir;
+    const QString state = dir.filePath(QStringLiteral("bench.json"));
+    CliRun r = runCli({"--sim-state", state, "set", "PA12=321"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY(QFile::exists(state));
+    r = runCli({"--sim-state", state, "--json", "get", "PA12"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QCOMPARE(r.json().value("parameters").toArray().at(0).toObject().value("value").toInt(), 321);
+    // Without the state file a fresh drive has its factory value again.
+    r = runCli({"--sim", "--json", "get", "PA12"});
+    QVERIFY(r.json().value("parameters").toArray().at(0).toObject().value("value").toInt() != 321);
 }
 
 QTEST_GUILESS_MAIN(TestCliSim)

@@ -1,0 +1,57 @@
+#include "simbench.h"
+
+#include "simbenchworker.h"
+
+#include <QThread>
+
+namespace dd {
+
+SimBench::SimBench(QObject *parent)
+    : QObject(parent)
+{
+}
+
+SimBench::~SimBench()
+{
+    stop();
+}
+
+Error SimBench::start()
+{
+    if (m_running)
+        return Error::none();
+    m_thread = new QThread;
+    m_thread->setObjectName(QStringLiteral("drivedesk-simbench"));
+    m_worker = new SimBenchWorker;
+    m_worker->moveToThread(m_thread);
+    m_thread->start();
+    Error error;
+    QMetaObject::invokeMethod(
+        m_worker, [this, &error] { error = m_worker->build(); }, Qt::BlockingQueuedConnection);
+    if (error.isError()) {
+        stop();
+        return error;
+    }
+    m_connections = m_worker->connections();
+    m_descriptions = m_worker->describe();
+    m_running = true;
+    return Error::none();
+}
+
+void SimBench::stop()
+{
+    if (!m_thread)
+        return;
+    // The simulators are deleted on their own thread (their sockets and timers live there).
+    QMetaObject::invokeMethod(m_worker, [this] { delete m_worker; }, Qt::BlockingQueuedConnection);
+    m_worker = nullptr;
+    m_thread->quit();
+    m_thread->wait();
+    delete m_thread;
+    m_thread = nullptr;
+    m_connections.clear();
+    m_descriptions.clear();
+    m_running = false;
+}
+
+} // namespace dd

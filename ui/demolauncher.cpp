@@ -1,0 +1,51 @@
+#include "demolauncher.h"
+
+#include "connectioncontroller.h"
+#include "simbench.h"
+
+namespace dd {
+
+DemoLauncher::DemoLauncher(ConnectionController *connections, QObject *parent)
+    : QObject(parent)
+    , m_connections(connections)
+{
+}
+
+DemoLauncher::~DemoLauncher() = default;
+
+Error DemoLauncher::start()
+{
+    if (isRunning())
+        return Error::none();
+    auto bench = std::make_unique<SimBench>();
+    if (Error e = bench->start())
+        return e;
+    m_bench = std::move(bench);
+    for (const ConnectionSettings &s : m_bench->connections()) {
+        ConnectRequest r;
+        r.settings = s;
+        r.scan = true;
+        r.scanOptions.from = SimBench::FirstAddress;
+        r.scanOptions.to = SimBench::LastScannedAddress;
+        m_connections->connectTo(r);
+    }
+    emit started();
+    return Error::none();
+}
+
+void DemoLauncher::stop()
+{
+    m_bench.reset();
+}
+
+bool DemoLauncher::isRunning() const
+{
+    return m_bench && m_bench->isRunning();
+}
+
+QList<ConnectionSettings> DemoLauncher::connections() const
+{
+    return m_bench ? m_bench->connections() : QList<ConnectionSettings>();
+}
+
+} // namespace dd

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "common/error.h"
+#include "drive/connectionsettings.h"
+
+#include <QObject>
+#include <memory>
+
+namespace dd {
+
+class ConnectionController;
+class SimBench;
+
+// File → Demo bench and `drivedesk --demo`: starts the in-process simulated bench (one
+// drive of each family, on its own thread — see SimBench) and connects to its three links,
+// scanning each, so the application can be tried with nothing plugged in.
+class DemoLauncher : public QObject
+{
+    Q_OBJECT
+public:
+    explicit DemoLauncher(ConnectionController *connections, QObject *parent = nullptr);
+    ~DemoLauncher() override;
+
+    Error start();
+    void stop();
+    bool isRunning() const;
+    QList<ConnectionSettings> connections() const;
+    SimBench *bench() const { return m_bench.get(); }
+
+signals:
+    void started();
+
+private:
+    ConnectionController *m_connections = nullptr;
+    std::unique_ptr<SimBench> m_bench;
+};
+
+} // namespace dd

@@ -390,7 +390,7 @@ void ConnectDialog::retranslate()
     m_pluginLabel->setText(tr("P&lugin:"));
     m_interfaceLabel->setText(tr("&Interface:"));
     m_refreshCan->setText(tr("Refresh"));
-    m_bitrateLabel->setText(tr("B&itrate:"));
+    m_bitrateLabel->setText(tr("Bi&trate:"));
     m_bitrate->setItemText(0, tr("Family default"));
     for (int i = 1; i < m_bitrate->count(); ++i)
         m_bitrate->setItemText(i, tr("%1 kbit/s").arg(m_bitrate->itemData(i).toInt() / 1000));

@@ -53,4 +53,25 @@ QString DisplayText::summary(const DriveStatus &s)
     return text;
 }
 
+QString DisplayText::capabilityName(Capability c)
+{
+    switch (c) {
+    case Capability::ReadParameters: return tr("Read parameters");
+    case Capability::WriteParameters: return tr("Write parameters");
+    case Capability::Monitor: return tr("Live monitor");
+    case Capability::Jog: return tr("Jog");
+    case Capability::MoveRelative: return tr("Relative move");
+    case Capability::MoveAbsolute: return tr("Absolute move");
+    case Capability::Home: return tr("Homing");
+    case Capability::SetPosition: return tr("Set position");
+    case Capability::Enable: return tr("Enable / disable");
+    case Capability::Stop: return tr("Stop");
+    case Capability::EmergencyStop: return tr("Emergency stop");
+    case Capability::ReadAlarm: return tr("Read alarm");
+    case Capability::ClearAlarm: return tr("Clear alarm");
+    case Capability::EeOperations: return tr("EEPROM operations");
+    }
+    return capabilityId(c);
+}
+
 } // namespace dd

@@ -20,6 +20,7 @@ public:
     static QString enabledState(const DriveStatus &s); // "Enabled" / "Disabled"
     static QString alarm(int code);                    // "Alarm 12" / "No alarm"
     static QString position(const DriveStatus &s);     // "12345" / "—"
+    static QString capabilityName(Capability c);       // "Jog", "EEPROM operations"
     // One line: "Running, enabled, alarm 12".
     static QString summary(const DriveStatus &s);
 };

@@ -1,10 +1,11 @@
 #include "driveinfo.h"
 
+#include "displaytext.h"
+
 #include "drive/drive.h"
 #include "drive/drivehub.h"
 #include "drive/drivereply.h"
 
-#include <QCoreApplication>
 #include <memory>
 
 namespace dd {
@@ -20,24 +21,7 @@ QList<Capability> DriveInfo::allCapabilities()
 
 QString DriveInfo::capabilityName(Capability c)
 {
-    const char *ctx = "dd::DriveInfo";
-    switch (c) {
-    case Capability::ReadParameters: return QCoreApplication::translate(ctx, "Read parameters");
-    case Capability::WriteParameters: return QCoreApplication::translate(ctx, "Write parameters");
-    case Capability::Monitor: return QCoreApplication::translate(ctx, "Live monitor");
-    case Capability::Jog: return QCoreApplication::translate(ctx, "Jog");
-    case Capability::MoveRelative: return QCoreApplication::translate(ctx, "Relative move");
-    case Capability::MoveAbsolute: return QCoreApplication::translate(ctx, "Absolute move");
-    case Capability::Home: return QCoreApplication::translate(ctx, "Homing");
-    case Capability::SetPosition: return QCoreApplication::translate(ctx, "Set position");
-    case Capability::Enable: return QCoreApplication::translate(ctx, "Enable / disable");
-    case Capability::Stop: return QCoreApplication::translate(ctx, "Stop");
-    case Capability::EmergencyStop: return QCoreApplication::translate(ctx, "Emergency stop");
-    case Capability::ReadAlarm: return QCoreApplication::translate(ctx, "Read alarm");
-    case Capability::ClearAlarm: return QCoreApplication::translate(ctx, "Clear alarm");
-    case Capability::EeOperations: return QCoreApplication::translate(ctx, "EEPROM operations");
-    }
-    return capabilityId(c);
+    return DisplayText::capabilityName(c);
 }
 
 void fetchDriveInfo(DriveHub *hub, int connectionId, int address,

@@ -38,14 +38,13 @@ qint64 EtaEstimator::remainingMs() const
 
 QString EtaEstimator::format(qint64 ms)
 {
-    const char *ctx = "dd::EtaEstimator";
     if (ms < 0)
         return QString();
     const qint64 s = (ms + 999) / 1000;
     if (s < 60)
-        return QCoreApplication::translate(ctx, "about %n s", nullptr, int(s));
+        return QCoreApplication::translate("dd::EtaEstimator", "about %n s", nullptr, int(s));
     const qint64 min = (s + 30) / 60;
-    return QCoreApplication::translate(ctx, "about %n min", nullptr, int(min));
+    return QCoreApplication::translate("dd::EtaEstimator", "about %n min", nullptr, int(min));
 }
 
 } // namespace dd

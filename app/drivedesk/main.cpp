@@ -10,6 +10,14 @@
 #include <QSettings>
 #include <QTimer>
 
+namespace dd {
+// The translation context of this file's texts.
+struct DriveDeskMain
+{
+    Q_DECLARE_TR_FUNCTIONS(dd::DriveDeskMain)
+};
+} // namespace dd
+
 namespace {
 
 struct Options
@@ -28,41 +36,40 @@ struct Options
 // Parses the command line; exits (help, version, errors) like any Qt tool.
 Options parseOptions(const QApplication &app)
 {
-    const char *ctx = "dd::DriveDeskMain";
     QCommandLineParser p;
-    p.setApplicationDescription(QCoreApplication::translate(
-        ctx, "DriveDesk: commissioning workbench for servo and stepper drives."));
+    p.setApplicationDescription(dd::DriveDeskMain::tr(
+        "DriveDesk: commissioning workbench for servo and stepper drives."));
     p.addHelpOption();
     p.addVersionOption();
     const QCommandLineOption demo(QStringLiteral("demo"),
-        QCoreApplication::translate(ctx, "Start the simulated bench (one drive of each family) and connect to it."));
+        dd::DriveDeskMain::tr("Start the simulated bench (one drive of each family) and connect to it."));
     const QCommandLineOption lang(QStringLiteral("lang"),
-        QCoreApplication::translate(ctx, "User-interface language for this session: en, zh_CN or system "
+        dd::DriveDeskMain::tr("User-interface language for this session: en, zh_CN or system "
                                          "(default: the Language menu's choice)."),
         QStringLiteral("language"));
     const QCommandLineOption connect(QStringLiteral("connect"),
-        QCoreApplication::translate(ctx, "Connect at start-up and scan: a serial port (/dev/ttyUSB0, COM3), "
+        dd::DriveDeskMain::tr("Connect at start-up and scan: a serial port (/dev/ttyUSB0, COM3), "
                                          "a CAN interface as plugin:interface (socketcan:can0), or 'last' for "
                                          "the connection used last."),
         QStringLiteral("link"));
     const QCommandLineOption family(QStringLiteral("family"),
-        QCoreApplication::translate(ctx, "With --connect: servo-can, servo-modbus, shuoke or detect (default)."),
+        dd::DriveDeskMain::tr("With --connect: servo-can, servo-modbus, shuoke or detect (default)."),
         QStringLiteral("family"), QStringLiteral("detect"));
     const QCommandLineOption baud(QStringLiteral("baud"),
-        QCoreApplication::translate(ctx, "With --connect on a serial port: the baud rate (default: the family's)."),
+        dd::DriveDeskMain::tr("With --connect on a serial port: the baud rate (default: the family's)."),
         QStringLiteral("rate"));
     const QCommandLineOption bitrate(QStringLiteral("bitrate"),
-        QCoreApplication::translate(ctx, "With --connect on CAN: the bitrate in bit/s (default: the family's)."),
+        dd::DriveDeskMain::tr("With --connect on CAN: the bitrate in bit/s (default: the family's)."),
         QStringLiteral("rate"));
     const QCommandLineOption framing(QStringLiteral("framing"),
-        QCoreApplication::translate(ctx, "With --family shuoke: rtu, ascii, plc or can."),
+        dd::DriveDeskMain::tr("With --family shuoke: rtu, ascii, plc or can."),
         QStringLiteral("framing"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
-        QCoreApplication::translate(ctx, "Save a picture of the main window to this PNG file after the delay, "
+        dd::DriveDeskMain::tr("Save a picture of the main window to this PNG file after the delay, "
                                          "then quit (documentation)."),
         QStringLiteral("file"));
     const QCommandLineOption delay(QStringLiteral("screenshot-delay"),
-        QCoreApplication::translate(ctx, "Seconds to wait before --screenshot (default 3)."),
+        dd::DriveDeskMain::tr("Seconds to wait before --screenshot (default 3)."),
         QStringLiteral("seconds"), QStringLiteral("3"));
     p.addOptions({demo, lang, connect, family, baud, bitrate, framing, screenshot, delay});
     p.process(app);
@@ -78,7 +85,7 @@ Options parseOptions(const QApplication &app)
     o.screenshot = p.value(screenshot);
     o.screenshotDelayMs = qMax(0, int(p.value(delay).toDouble() * 1000));
     if (!o.family.isEmpty() && o.family != QLatin1String("detect") && !dd::familyFromId(o.family)) {
-        qCritical("%s", qPrintable(QCoreApplication::translate(ctx, "Unknown family '%1'; use one of: %2, detect.")
+        qCritical("%s", qPrintable(dd::DriveDeskMain::tr("Unknown family '%1'; use one of: %2, detect.")
                                        .arg(o.family, dd::familyIds().join(QStringLiteral(", ")))));
         ::exit(2);
     }

@@ -58,9 +58,11 @@ ConnectDialog::ConnectDialog(QWidget *parent)
     auto *driveForm = new QFormLayout(m_driveBox);
     m_familyLabel = new QLabel(m_driveBox);
     m_family = new QComboBox(m_driveBox);
+    m_family->setObjectName(QStringLiteral("familyCombo"));
     m_familyLabel->setBuddy(m_family);
     m_framingLabel = new QLabel(m_driveBox);
     m_framing = new QComboBox(m_driveBox);
+    m_framing->setObjectName(QStringLiteral("framingCombo"));
     m_framingLabel->setBuddy(m_framing);
     driveForm->addRow(m_familyLabel, m_family);
     driveForm->addRow(m_framingLabel, m_framing);
@@ -116,6 +118,7 @@ QWidget *ConnectDialog::createSerialPage()
     form->setContentsMargins(0, 0, 0, 0);
     m_portLabel = new QLabel(page);
     m_port = new QComboBox(page);
+    m_port->setObjectName(QStringLiteral("portCombo"));
     m_port->setEditable(true);
     m_port->setInsertPolicy(QComboBox::NoInsert);
     m_port->setMinimumContentsLength(36);
@@ -123,6 +126,7 @@ QWidget *ConnectDialog::createSerialPage()
     m_portLabel->setBuddy(m_port);
     m_baudLabel = new QLabel(page);
     m_baud = new QComboBox(page);
+    m_baud->setObjectName(QStringLiteral("baudCombo"));
     m_baud->addItem(QString(), 0);
     for (int b : {4800, 9600, 19200, 38400, 57600, 115200, 230400})
         m_baud->addItem(QString::number(b), b);
@@ -141,9 +145,11 @@ QWidget *ConnectDialog::createCanPage()
     form->setContentsMargins(0, 0, 0, 0);
     m_pluginLabel = new QLabel(page);
     m_plugin = new QComboBox(page);
+    m_plugin->setObjectName(QStringLiteral("canPluginCombo"));
     m_pluginLabel->setBuddy(m_plugin);
     m_interfaceLabel = new QLabel(page);
     m_interface = new QComboBox(page);
+    m_interface->setObjectName(QStringLiteral("canInterfaceCombo"));
     m_interface->setEditable(true);
     m_interface->setInsertPolicy(QComboBox::NoInsert);
     m_interfaceLabel->setBuddy(m_interface);
@@ -153,6 +159,7 @@ QWidget *ConnectDialog::createCanPage()
     ifaceRow->addWidget(m_refreshCan);
     m_bitrateLabel = new QLabel(page);
     m_bitrate = new QComboBox(page);
+    m_bitrate->setObjectName(QStringLiteral("bitrateCombo"));
     m_bitrate->addItem(QString(), 0);
     for (int b : {1000000, 500000, 250000, 125000, 100000, 50000, 20000})
         m_bitrate->addItem(tr("%1 kbit/s").arg(b / 1000), b);

@@ -9,6 +9,7 @@ namespace dd {
 SimBench::SimBench(QObject *parent)
     : QObject(parent)
 {
+    qRegisterMetaType<dd::Error>();
 }
 
 SimBench::~SimBench()
@@ -24,10 +25,18 @@ Error SimBench::start()
     m_thread->setObjectName(QStringLiteral("drivedesk-simbench"));
     m_worker = new SimBenchWorker;
     m_worker->moveToThread(m_thread);
+    // Queued to this (the caller's) thread.
+    connect(m_worker, &SimBenchWorker::ready, this, [this] {
+        if (m_running && !m_ready) {
+            m_ready = true;
+            emit ready();
+        }
+    });
+    connect(m_worker, &SimBenchWorker::failed, this, &SimBench::failed);
     m_thread->start();
     Error error;
     QMetaObject::invokeMethod(
-        m_worker, [this, &error] { error = m_worker->build(); }, Qt::BlockingQueuedConnection);
+        m_worker, [this, &error] { error = m_worker->build(Address); }, Qt::BlockingQueuedConnection);
     if (error.isError()) {
         stop();
         return error;
@@ -43,7 +52,8 @@ void SimBench::stop()
     if (!m_thread)
         return;
     // The simulators are deleted on their own thread (their sockets and timers live there).
-    QMetaObject::invokeMethod(m_worker, [this] { delete m_worker; }, Qt::BlockingQueuedConnection);
+    SimBenchWorker *worker = m_worker;
+    QMetaObject::invokeMethod(worker, [worker] { delete worker; }, Qt::BlockingQueuedConnection);
     m_worker = nullptr;
     m_thread->quit();
     m_thread->wait();
@@ -52,6 +62,7 @@ void SimBench::stop()
     m_connections.clear();
     m_descriptions.clear();
     m_running = false;
+    m_ready = false;
 }
 
 } // namespace dd

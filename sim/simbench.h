@@ -15,30 +15,40 @@ class SimBenchWorker;
 // The demo bench: one simulated drive of each family, each on its own link, running on a
 // thread of its own (not the caller's), so that a busy or blocked GUI thread never stalls
 // the simulator:
-//   - servo-modbus: a SimServoModbusDrive on a pty (SimSerialBus);
+//   - servo-modbus: a SimServoModbusDrive on a pty (SimSerialBus), 19200 baud;
 //   - shuoke: a SimShuokeDrive (RTU framing) on a second pty;
-//   - servo-can: a SimServoCanDrive on a virtual CAN bus (virtualcan, on a private TCP port
-//     "tcp://127.0.0.1:<free port>/can0", so it never meets another bench or test).
-// connections() returns what to connect to. Each drive answers at FirstAddress.
+//   - servo-can: a SimServoCanDrive on a virtual CAN bus (virtualcan through a
+//     VirtualCanHub on a free local port, "tcp://127.0.0.1:<port>/can0", so it never meets
+//     another bench or test).
+// Every drive answers at `Address`. start() creates everything; the serial drives answer
+// at once, the CAN bus is up when ready() is emitted (connect to connections() then).
+// Nothing moves on its own: the drives start idle, disabled, without alarms.
 class SimBench : public QObject
 {
     Q_OBJECT
 public:
-    static constexpr int FirstAddress = 1;
-    static constexpr int LastScannedAddress = 4;   // the demo scans 1..4
+    static constexpr int Address = 1;
+    static constexpr int ScanFrom = 1;   // the demo scans 1..4
+    static constexpr int ScanTo = 4;
 
     explicit SimBench(QObject *parent = nullptr);
     ~SimBench() override;   // stops the bench (the links' clients see the adapters vanish)
 
-    // Creates the simulators on the bench thread; returns when they are ready.
+    // Creates the simulators on the bench thread; fails at once if one cannot be created.
     Error start();
     void stop();
     bool isRunning() const { return m_running; }
+    bool isReady() const { return m_ready; }
 
+    // What to connect to (valid after start()), one link per family.
     QList<ConnectionSettings> connections() const { return m_connections; }
-    // One line per simulated drive, for logs and the About box.
+    // One line per simulated drive, for logs.
     QStringList describe() const { return m_descriptions; }
-    QThread *thread() const { return m_thread; }
+    QThread *benchThread() const { return m_thread; }
+
+signals:
+    void ready();
+    void failed(const dd::Error &error);
 
 private:
     QThread *m_thread = nullptr;
@@ -46,6 +56,7 @@ private:
     QList<ConnectionSettings> m_connections;
     QStringList m_descriptions;
     bool m_running = false;
+    bool m_ready = false;
 };
 
 } // namespace dd

@@ -8,6 +8,10 @@
 
 namespace dd {
 
+class SimCanBus;
+class SimSerialBus;
+class VirtualCanHub;
+
 // SimBench's objects on the bench thread: the buses and the simulated drives. Created,
 // built and deleted on that thread only.
 class SimBenchWorker : public QObject
@@ -17,11 +21,22 @@ public:
     explicit SimBenchWorker(QObject *parent = nullptr);
     ~SimBenchWorker() override;
 
-    Error build();
+    // Creates every bus and drive; the serial ones are ready at once, the CAN bus emits
+    // ready() once its plugin has connected (or failed() after SimCanBus::ConnectTimeoutMs).
+    Error build(int address);
     QList<ConnectionSettings> connections() const { return m_connections; }
     QStringList describe() const { return m_descriptions; }
 
+signals:
+    void ready();
+    void failed(const dd::Error &error);
+
 private:
+    Error addCanBus(int station);
+
+    QList<SimSerialBus *> m_serialBuses;
+    VirtualCanHub *m_canHub = nullptr;
+    SimCanBus *m_canBus = nullptr;
     QList<ConnectionSettings> m_connections;
     QStringList m_descriptions;
 };

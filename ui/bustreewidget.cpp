@@ -31,8 +31,11 @@ BusTreeWidget::BusTreeWidget(DriveDirectory *directory, QWidget *parent)
     setAlternatingRowColors(true);
     setSelectionMode(QAbstractItemView::SingleSelection);
     setContextMenuPolicy(Qt::CustomContextMenu);
-    header()->setSectionResizeMode(NameColumn, QHeaderView::ResizeToContents);
+    header()->setSectionResizeMode(QHeaderView::Interactive);
     header()->setStretchLastSection(true);
+    header()->resizeSection(NameColumn, 170);
+    header()->resizeSection(StateColumn, 140);
+    header()->resizeSection(PositionColumn, 90);
     retranslate();
 
     connect(directory, &DriveDirectory::connectionAdded, this, &BusTreeWidget::onConnectionAdded);
@@ -96,6 +99,7 @@ void BusTreeWidget::onConnectionAdded(int id)
     item->setData(0, ConnectionRole, id);
     item->setData(0, AddressRole, 0);
     item->setIcon(0, style()->standardIcon(QStyle::SP_DriveNetIcon));
+    item->setFirstColumnSpanned(true);   // the link name is long; drives use the columns
     item->setExpanded(true);
     updateConnection(id);
 }
@@ -129,12 +133,12 @@ void BusTreeWidget::updateConnection(int id)
     if (!item)
         return;
     const ConnectionSettings s = m_directory->connectionSettings(id);
-    item->setText(NameColumn, QStringLiteral("%1 — %2").arg(linkText(s), familyId(s.family)));
     const bool lost = m_directory->linkState(id) == DriveDirectory::LinkState::Lost;
     const int n = m_directory->drives(id).size();
-    item->setText(StateColumn, lost ? tr("Link lost") : tr("%n drive(s)", nullptr, n));
-    item->setToolTip(NameColumn, lost ? m_directory->linkError(id) : QString());
-    item->setForeground(StateColumn, lost ? QBrush(QColor(0xc6, 0x28, 0x28)) : QBrush());
+    const QString state = lost ? tr("link lost") : tr("%n drive(s)", nullptr, n);
+    item->setText(NameColumn, tr("%1 — %2 (%3)").arg(familyId(s.family), linkText(s), state));
+    item->setToolTip(NameColumn, lost ? m_directory->linkError(id) : linkText(s));
+    item->setForeground(NameColumn, lost ? QBrush(QColor(0xc6, 0x28, 0x28)) : QBrush());
 }
 
 void BusTreeWidget::updateDrive(int id, int address)

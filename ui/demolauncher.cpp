@@ -1,6 +1,7 @@
 #include "demolauncher.h"
 
 #include "connectioncontroller.h"
+#include "connectrequest.h"
 #include "simbench.h"
 
 namespace dd {
@@ -18,19 +19,25 @@ Error DemoLauncher::start()
     if (isRunning())
         return Error::none();
     auto bench = std::make_unique<SimBench>();
+    connect(bench.get(), &SimBench::ready, this, &DemoLauncher::connectToBench);
+    connect(bench.get(), &SimBench::failed, this, &DemoLauncher::failed);
     if (Error e = bench->start())
         return e;
     m_bench = std::move(bench);
+    emit started();
+    return Error::none();
+}
+
+void DemoLauncher::connectToBench()
+{
     for (const ConnectionSettings &s : m_bench->connections()) {
         ConnectRequest r;
         r.settings = s;
         r.scan = true;
-        r.scanOptions.from = SimBench::FirstAddress;
-        r.scanOptions.to = SimBench::LastScannedAddress;
+        r.scanOptions.from = SimBench::ScanFrom;
+        r.scanOptions.to = SimBench::ScanTo;
         m_connections->connectTo(r);
     }
-    emit started();
-    return Error::none();
 }
 
 void DemoLauncher::stop()

@@ -12,8 +12,9 @@ class ConnectionController;
 class SimBench;
 
 // File → Demo bench and `drivedesk --demo`: starts the in-process simulated bench (one
-// drive of each family, on its own thread — see SimBench) and connects to its three links,
-// scanning each, so the application can be tried with nothing plugged in.
+// drive of each family, on its own thread — see SimBench) and, once it is ready, connects
+// to its links, scanning each, so the application can be tried with nothing plugged in.
+// stop() (or destruction) ends the bench: close the connections to it first.
 class DemoLauncher : public QObject
 {
     Q_OBJECT
@@ -29,8 +30,11 @@ public:
 
 signals:
     void started();
+    void failed(const dd::Error &error);
 
 private:
+    void connectToBench();
+
     ConnectionController *m_connections = nullptr;
     std::unique_ptr<SimBench> m_bench;
 };

@@ -232,6 +232,7 @@ void MainWindow::wireParts()
     connect(m_poller, &StatusPoller::pollFailed, m_statusBar,
             [this](int, int, const Error &e) { m_statusBar->countError(e); });
     connect(m_recent, &RecentFiles::fileTriggered, this, &MainWindow::openRecentFile);
+    connect(m_demo, &DemoLauncher::failed, m_statusBar, &StatusBarWidget::countError);
     connect(m_language, &LanguageManager::languageChanged, this, [this] {
         const QString id = LanguageManager::languageId(m_language->language());
         for (QAction *a : m_languageGroup->actions())

@@ -14,7 +14,7 @@
 #include <QLocale>
 #include <QPointer>
 #include <QPushButton>
-#include <QTreeWidget>
+#include <QTableWidget>
 #include <QVBoxLayout>
 
 namespace dd {
@@ -49,12 +49,16 @@ OverviewPanel::OverviewPanel(const DriveContext &context, QWidget *parent)
 
     m_capsBox = new QGroupBox(this);
     auto *capsLayout = new QVBoxLayout(m_capsBox);
-    m_caps = new QTreeWidget(m_capsBox);
+    m_caps = new QTableWidget(m_capsBox);
+    m_caps->setObjectName(QStringLiteral("capabilities"));
     m_caps->setColumnCount(2);
-    m_caps->setRootIsDecorated(false);
     m_caps->setSelectionMode(QAbstractItemView::NoSelection);
-    m_caps->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    m_caps->header()->setStretchLastSection(true);
+    m_caps->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_caps->setWordWrap(true);
+    m_caps->setShowGrid(false);
+    m_caps->verticalHeader()->hide();
+    m_caps->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_caps->horizontalHeader()->setStretchLastSection(true);
     capsLayout->addWidget(m_caps);
 
     m_refresh = new QPushButton(this);
@@ -134,7 +138,7 @@ void OverviewPanel::retranslate()
                                  tr("Position:"), tr("Alarm:"), tr("Last update:")};
     for (int i = 0; i < statusRows.size(); ++i)
         m_statusLabels.at(i)->setText(statusRows.at(i));
-    m_caps->setHeaderLabels({tr("Function"), tr("Available")});
+    m_caps->setHorizontalHeaderLabels({tr("Function"), tr("Available")});
     m_refresh->setText(tr("Refresh"));
     m_refresh->setToolTip(tr("Read the identity and the status of the drive again"));
     showIdentity();
@@ -156,20 +160,31 @@ void OverviewPanel::showIdentity()
 
 void OverviewPanel::showCapabilities()
 {
-    m_caps->clear();
     const DriveInfo &info = driveInfo();
-    for (Capability c : DriveInfo::allCapabilities()) {
-        auto *item = new QTreeWidgetItem(m_caps);
-        item->setText(0, DriveInfo::capabilityName(c));
+    const QList<Capability> all = DriveInfo::allCapabilities();
+    m_caps->setRowCount(int(all.size()));
+    for (int row = 0; row < all.size(); ++row) {
+        const Capability c = all.at(row);
+        auto *name = new QTableWidgetItem(DriveInfo::capabilityName(c));
+        auto *value = new QTableWidgetItem;
         if (info.capabilities.testFlag(c)) {
-            item->setText(1, tr("Yes"));
+            value->setText(tr("Yes"));
         } else {
             const QString reason = info.reason(c);
-            item->setText(1, reason.isEmpty() ? tr("No") : tr("No: %1").arg(reason));
-            item->setForeground(0, palette().brush(QPalette::Disabled, QPalette::Text));
-            item->setToolTip(1, reason);
+            value->setText(reason.isEmpty() ? tr("No") : tr("No: %1").arg(reason));
+            value->setToolTip(reason);
+            name->setForeground(palette().brush(QPalette::Disabled, QPalette::Text));
         }
+        m_caps->setItem(row, 0, name);
+        m_caps->setItem(row, 1, value);
     }
+    m_caps->resizeRowsToContents();
+}
+
+void OverviewPanel::resizeEvent(QResizeEvent *event)
+{
+    DrivePanel::resizeEvent(event);
+    m_caps->resizeRowsToContents();   // the reasons wrap to the new width
 }
 
 void OverviewPanel::showStatus()

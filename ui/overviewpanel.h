@@ -6,7 +6,7 @@ class QFormLayout;
 class QGroupBox;
 class QLabel;
 class QPushButton;
-class QTreeWidget;
+class QTableWidget;
 
 namespace dd {
 
@@ -29,6 +29,7 @@ protected:
     void statusChanged(const DriveStatus &status) override;
     void alarmChanged(int code) override;
     void retranslate() override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     void showIdentity();
@@ -53,7 +54,7 @@ private:
     QLabel *m_position = nullptr;
     QLabel *m_alarm = nullptr;
     QLabel *m_updated = nullptr;
-    QTreeWidget *m_caps = nullptr;
+    QTableWidget *m_caps = nullptr;
     QPushButton *m_refresh = nullptr;
 };
 

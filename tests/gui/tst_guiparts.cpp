@@ -67,7 +67,7 @@ private slots:
         QVERIFY(d);
         QCOMPARE(d->text(BusTreeWidget::FirmwareColumn), QStringLiteral("V2.1"));
         QVERIFY(d->text(BusTreeWidget::NameColumn).contains(QLatin1String("#5")));
-        QVERIFY(c->text(BusTreeWidget::StateColumn).contains(QLatin1Char('2')));
+        QVERIFY(c->text(BusTreeWidget::NameColumn).contains(QLatin1String("2 drive(s)")));
 
         // Live state from the hub's signal.
         DriveStatus s;
@@ -100,7 +100,7 @@ private slots:
 
         // Link lost, then removed.
         emit hub.linkLost(7, Error{ErrorCode::LinkClosed, QStringLiteral("unplugged")});
-        QTRY_COMPARE(c->text(BusTreeWidget::StateColumn), QStringLiteral("Link lost"));
+        QTRY_VERIFY(c->text(BusTreeWidget::NameColumn).contains(QLatin1String("link lost")));
         dir.removeConnection(7);
         QVERIFY(!tree.connectionItem(7));
     }

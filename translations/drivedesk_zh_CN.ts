@@ -1,10 +1,9 @@
-<?xml version="1.0" encoding="utf-8"?>
-<!DOCTYPE TS>
+<?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="zh_CN">
 <context>
     <name>dd::AlarmDictionary</name>
     <message>
-        <source>%1 is not a DriveDesk alarm table (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
+        <source>%1 is not a DriveDesk alarm table (format "%2", expected "%3")</source>
         <translation>%1 不是 DriveDesk 报警表（格式为“%2”，应为“%3”）</translation>
     </message>
     <message>
@@ -12,7 +11,7 @@
         <translation>%1：不支持报警表格式版本 %2（本版 DriveDesk 读取版本 %3）</translation>
     </message>
     <message>
-        <source>%1: unknown drive family &quot;%2&quot; (known: %3)</source>
+        <source>%1: unknown drive family "%2" (known: %3)</source>
         <translation>%1：未知的驱动器系列“%2”（已知：%3）</translation>
     </message>
     <message>
@@ -20,7 +19,7 @@
         <translation>%1 是 %2 驱动器的报警表，不适用于 %3</translation>
     </message>
     <message>
-        <source>%1: field &quot;fallback.%2&quot; must contain %3 where the code goes</source>
+        <source>%1: field "fallback.%2" must contain %3 where the code goes</source>
         <translation>%1：字段“fallback.%2”必须在代码位置包含 %3</translation>
     </message>
     <message>
@@ -71,19 +70,19 @@
         <translation>%1 大于 %2 字节，不是 DriveDesk 生成的文件</translation>
     </message>
     <message>
-        <source>%1: field &quot;link&quot; has more than %2 entries</source>
+        <source>%1: field "link" has more than %2 entries</source>
         <translation>%1：字段“link”超过 %2 项</translation>
     </message>
     <message>
-        <source>%1: field &quot;%2&quot; has an empty or too long name</source>
+        <source>%1: field "%2" has an empty or too long name</source>
         <translation>%1：字段“%2”的名称为空或过长</translation>
     </message>
     <message>
-        <source>%1: field &quot;%2&quot; must be a string (up to 256 characters), a number within ±2^53 or true/false (found %3)</source>
+        <source>%1: field "%2" must be a string (up to 256 characters), a number within ±2^53 or true/false (found %3)</source>
         <translation>%1：字段“%2”必须是字符串（最多 256 个字符）、±2^53 以内的数值或 true/false（实际为 %3）</translation>
     </message>
     <message>
-        <source>%1 is not a DriveDesk backup file (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
+        <source>%1 is not a DriveDesk backup file (format "%2", expected "%3")</source>
         <translation>%1 不是 DriveDesk 备份文件（格式为“%2”，应为“%3”）</translation>
     </message>
     <message>
@@ -91,7 +90,7 @@
         <translation>%1：不支持备份格式版本 %2，本版 DriveDesk 读取版本 %3。请使用生成该文件的 DriveDesk 版本或更新版本。</translation>
     </message>
     <message>
-        <source>%1: unknown drive family &quot;%2&quot; (known: %3)</source>
+        <source>%1: unknown drive family "%2" (known: %3)</source>
         <translation>%1：未知的驱动器系列“%2”（已知：%3）</translation>
     </message>
     <message>
@@ -99,11 +98,11 @@
         <translation>%1 是 %2 驱动器的备份，但所给参数字典适用于 %3 驱动器</translation>
     </message>
     <message>
-        <source>%1: field &quot;created&quot; = &quot;%2&quot; is not an ISO 8601 date and time</source>
+        <source>%1: field "created" = "%2" is not an ISO 8601 date and time</source>
         <translation>%1：字段“created” = “%2”不是 ISO 8601 日期时间</translation>
     </message>
     <message>
-        <source>%1: field &quot;checksum&quot; must be &quot;sha256:&quot; followed by 64 lower-case hex digits</source>
+        <source>%1: field "checksum" must be "sha256:" followed by 64 lower-case hex digits</source>
         <translation>%1：字段“checksum”必须是“sha256:”后跟 64 位小写十六进制数字</translation>
     </message>
     <message>
@@ -123,19 +122,19 @@
         <translation>%1：%3 驱动器没有参数 %2</translation>
     </message>
     <message>
-        <source>%1: index %2 is %3 in the dictionary, not &quot;%4&quot;</source>
+        <source>%1: index %2 is %3 in the dictionary, not "%4"</source>
         <translation>%1：序号 %2 在参数字典中是 %3，而不是“%4”</translation>
     </message>
     <message>
-        <source>%1: access &quot;%2&quot; differs from the dictionary&apos;s &quot;%3&quot;</source>
+        <source>%1: access "%2" differs from the dictionary's "%3"</source>
         <translation>%1：访问属性“%2”与参数字典中的“%3”不同</translation>
     </message>
     <message>
-        <source>%1: a write-only value must be marked &quot;lastWritten&quot;: true</source>
-        <translation>%1：只写参数值必须标注 &quot;lastWritten&quot;: true</translation>
+        <source>%1: a write-only value must be marked "lastWritten": true</source>
+        <translation>%1：只写参数值必须标注 "lastWritten": true</translation>
     </message>
     <message>
-        <source>%1: &quot;lastWritten&quot; is only allowed on write-only values</source>
+        <source>%1: "lastWritten" is only allowed on write-only values</source>
         <translation>%1：“lastWritten”只能用于只写参数值</translation>
     </message>
     <message>
@@ -147,7 +146,7 @@
         <translation>此备份来自 %1 驱动器，不能恢复到 %2 驱动器</translation>
     </message>
     <message>
-        <source>The backup was taken from firmware %1, but the drive&apos;s firmware version is unknown. Parameters may differ between firmware versions: compare them first, then force the restore if you are sure.</source>
+        <source>The backup was taken from firmware %1, but the drive's firmware version is unknown. Parameters may differ between firmware versions: compare them first, then force the restore if you are sure.</source>
         <translation>备份取自固件 %1，但驱动器的固件版本未知。不同固件版本的参数可能不同：请先比较参数，确认无误后再强制恢复。</translation>
     </message>
     <message>
@@ -163,13 +162,11 @@
     <name>dd::BusTreeWidget</name>
     <message>
         <source>Link lost</source>
-        <translation>连接中断</translation>
+        <translation type="vanished">连接中断</translation>
     </message>
     <message numerus="yes">
         <source>%n drive(s)</source>
-        <translation>
-            <numerusform>%n 台驱动器</numerusform>
-        </translation>
+        <translation><numerusform>%n 台驱动器</numerusform></translation>
     </message>
     <message>
         <source>%1, address %2</source>
@@ -222,6 +219,14 @@
     <message>
         <source>Firmware</source>
         <translation>固件</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>连接中断</translation>
+    </message>
+    <message>
+        <source>%1 — %2 (%3)</source>
+        <translation>%1 — %2（%3）</translation>
     </message>
 </context>
 <context>
@@ -397,6 +402,22 @@
         <source>Bi&amp;trate:</source>
         <translation>波特率(&amp;T)：</translation>
     </message>
+    <message>
+        <source>Probe ti&amp;meout:</source>
+        <translation>应答超时(&amp;M)：</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Automatic (fast, direct RS485 only)</source>
+        <translation>自动（较快，仅适用于直连 RS485）</translation>
+    </message>
+    <message>
+        <source>How long to wait for each address to answer. USB adapters add up to 16 ms of latency: keep 50 ms or more unless the port is a native RS485 interface.</source>
+        <translation>每个地址等待应答的时间。USB 转换器会增加最多 16 ms 的延迟：除非是原生 RS485 接口，否则请保持 50 ms 或以上。</translation>
+    </message>
 </context>
 <context>
     <name>dd::ConnectRequest</name>
@@ -425,9 +446,7 @@
     </message>
     <message numerus="yes">
         <source>Found %n drive(s).</source>
-        <translation>
-            <numerusform>找到 %n 台驱动器。</numerusform>
-        </translation>
+        <translation><numerusform>找到 %n 台驱动器。</numerusform></translation>
     </message>
     <message>
         <source>Scan cancelled.</source>
@@ -560,7 +579,7 @@
         <translation>没有要写入的参数。</translation>
     </message>
     <message>
-        <source>The %1 drive family has no &quot;%2&quot; operation.</source>
+        <source>The %1 drive family has no "%2" operation.</source>
         <translation>%1 驱动器系列没有“%2”操作。</translation>
     </message>
 </context>
@@ -582,11 +601,11 @@
         <translation>启动模拟试验台（每个系列一台驱动器）并连接。</translation>
     </message>
     <message>
-        <source>User-interface language for this session: en, zh_CN or system (default: the Language menu&apos;s choice).</source>
+        <source>User-interface language for this session: en, zh_CN or system (default: the Language menu's choice).</source>
         <translation>本次运行的界面语言：en、zh_CN 或 system（默认：“语言”菜单中的选择）。</translation>
     </message>
     <message>
-        <source>Connect at start-up and scan: a serial port (/dev/ttyUSB0, COM3), a CAN interface as plugin:interface (socketcan:can0), or &apos;last&apos; for the connection used last.</source>
+        <source>Connect at start-up and scan: a serial port (/dev/ttyUSB0, COM3), a CAN interface as plugin:interface (socketcan:can0), or 'last' for the connection used last.</source>
         <translation>启动时连接并扫描：串口（/dev/ttyUSB0、COM3）、CAN 接口（插件:接口，如 socketcan:can0），或 last 表示上次使用的连接。</translation>
     </message>
     <message>
@@ -594,11 +613,11 @@
         <translation>与 --connect 配合：servo-can、servo-modbus、shuoke 或 detect（默认，自动识别）。</translation>
     </message>
     <message>
-        <source>With --connect on a serial port: the baud rate (default: the family&apos;s).</source>
+        <source>With --connect on a serial port: the baud rate (default: the family's).</source>
         <translation>与 --connect 串口配合：波特率（默认：系列默认值）。</translation>
     </message>
     <message>
-        <source>With --connect on CAN: the bitrate in bit/s (default: the family&apos;s).</source>
+        <source>With --connect on CAN: the bitrate in bit/s (default: the family's).</source>
         <translation>与 --connect CAN 配合：波特率，单位 bit/s（默认：系列默认值）。</translation>
     </message>
     <message>
@@ -614,7 +633,7 @@
         <translation>--screenshot 之前等待的秒数（默认 3）。</translation>
     </message>
     <message>
-        <source>Unknown family &apos;%1&apos;; use one of: %2, detect.</source>
+        <source>Unknown family '%1'; use one of: %2, detect.</source>
         <translation>未知系列“%1”，请使用：%2、detect。</translation>
     </message>
 </context>
@@ -648,21 +667,17 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <name>dd::EtaEstimator</name>
     <message numerus="yes">
         <source>about %n s</source>
-        <translation>
-            <numerusform>约 %n 秒</numerusform>
-        </translation>
+        <translation><numerusform>约 %n 秒</numerusform></translation>
     </message>
     <message numerus="yes">
         <source>about %n min</source>
-        <translation>
-            <numerusform>约 %n 分钟</numerusform>
-        </translation>
+        <translation><numerusform>约 %n 分钟</numerusform></translation>
     </message>
 </context>
 <context>
     <name>dd::JsonFieldReader</name>
     <message>
-        <source>%1: field &quot;%2&quot;</source>
+        <source>%1: field "%2"</source>
         <translation>%1：字段“%2”</translation>
     </message>
     <message>
@@ -678,7 +693,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>必须是整数（实际为 %1）</translation>
     </message>
     <message>
-        <source>%1: required field &quot;%2&quot; is missing</source>
+        <source>%1: required field "%2" is missing</source>
         <translation>%1：缺少必需字段“%2”</translation>
     </message>
     <message>
@@ -718,15 +733,15 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>超过 %1 项</translation>
     </message>
     <message>
-        <source>%1: &quot;%2&quot; is not a language code (use e.g. &quot;en&quot;, &quot;zh&quot;, &quot;zh_CN&quot;)</source>
+        <source>%1: "%2" is not a language code (use e.g. "en", "zh", "zh_CN")</source>
         <translation>%1：“%2”不是语言代码（例如“en”、“zh”、“zh_CN”）</translation>
     </message>
     <message>
-        <source>%1 needs a non-empty &quot;%2&quot; text</source>
+        <source>%1 needs a non-empty "%2" text</source>
         <translation>%1 需要非空的“%2”文本</translation>
     </message>
     <message>
-        <source>%1: unknown field &quot;%2&quot;</source>
+        <source>%1: unknown field "%2"</source>
         <translation>%1：未知字段“%2”</translation>
     </message>
     <message>
@@ -862,6 +877,81 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
 </context>
 <context>
+    <name>dd::ModbusLink</name>
+    <message>
+        <source>The Modbus link was destroyed.</source>
+        <translation>Modbus 连接已被销毁。</translation>
+    </message>
+    <message>
+        <source>The serial port %1 was closed.</source>
+        <translation>串口 %1 已关闭。</translation>
+    </message>
+    <message>
+        <source>The Modbus link was reopened.</source>
+        <translation>Modbus 连接已重新打开。</translation>
+    </message>
+    <message>
+        <source>Cannot open serial port %1: %2. Check the device name, that no other program is using it, and that you may access it (dialout group).</source>
+        <translation>无法打开串口 %1：%2。请检查设备名称、是否被其他程序占用，以及是否有访问权限（dialout 组）。</translation>
+    </message>
+    <message>
+        <source>The serial port %1 could not be reopened: %2. Was the adapter unplugged?</source>
+        <translation>无法重新打开串口 %1：%2。适配器是否已拔出？</translation>
+    </message>
+    <message>
+        <source>The serial port is not open.</source>
+        <translation>串口未打开。</translation>
+    </message>
+    <message>
+        <source>Invalid Modbus request (function %1, address %2, %3 registers): nothing was sent.</source>
+        <translation>无效的 Modbus 请求（功能码 %1，地址 %2，%3 个寄存器）：未发送任何数据。</translation>
+    </message>
+    <message>
+        <source>The Modbus client refused the request: %1</source>
+        <translation>Modbus 客户端拒绝了请求：%1</translation>
+    </message>
+    <message>
+        <source>The serial port %1 failed (%2). Was the adapter unplugged?</source>
+        <translation>串口 %1 出错（%2）。适配器是否已拔出？</translation>
+    </message>
+    <message>
+        <source>The broadcast could not be sent on %1: %2</source>
+        <translation>无法在 %1 上发送广播：%2</translation>
+    </message>
+    <message>
+        <source>The drive at address %1 rejected the request (Modbus exception %2: %3).</source>
+        <translation>地址 %1 的驱动器拒绝了请求（Modbus 异常 %2：%3）。</translation>
+    </message>
+    <message>
+        <source>The Modbus request to address %1 on %2 failed: %3</source>
+        <translation>%2 上发往地址 %1 的 Modbus 请求失败：%3</translation>
+    </message>
+    <message>
+        <source>The reply from address %1 on %2 does not fit the request (%3).</source>
+        <translation>%2 上地址 %1 的应答与请求不符（%3）。</translation>
+    </message>
+    <message>
+        <source>Only a late answer to an earlier request came from address %1 on %2. The drive answers more slowly than the timeout allows: raise the timeout.</source>
+        <translation>%2 上地址 %1 只返回了对先前请求的迟到应答。驱动器的应答慢于超时设定，请加大超时时间。</translation>
+    </message>
+    <message>
+        <source>The reply from address %1 on %2 failed its CRC. Check the cable shielding, the bus termination and the baud rate.</source>
+        <translation>%2 上地址 %1 的应答 CRC 校验失败。请检查电缆屏蔽、总线终端电阻和波特率。</translation>
+    </message>
+    <message>
+        <source>No reply from address %1 on %2 within %3 ms. Check the drive address (PA51), the baud rate, the wiring (A/B swapped?) and the bus termination.</source>
+        <translation>%2 上地址 %1 在 %3 ms 内无应答。请检查驱动器地址（PA51）、波特率、接线（A/B 是否接反？）和总线终端电阻。</translation>
+    </message>
+    <message>
+        <source>A frame with another address arrived meanwhile; servo drives send exception replies with address 1, so the drive may have rejected the request.</source>
+        <translation>期间收到了其他地址的帧；伺服驱动器的异常应答使用地址 1，驱动器可能拒绝了该请求。</translation>
+    </message>
+    <message>
+        <source>The drive at address %1 rejected the request (Modbus exception %2: %3; the reply carried address byte %4).</source>
+        <translation>地址 %1 的驱动器拒绝了请求（Modbus 异常 %2：%3；应答中的地址字节为 %4）。</translation>
+    </message>
+</context>
+<context>
     <name>dd::OverviewPanel</name>
     <message>
         <source>Overview</source>
@@ -877,7 +967,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
     <message>
         <source>Capabilities</source>
-        <translation>功能</translation>
+        <translation>支持的功能</translation>
     </message>
     <message>
         <source>Family:</source>
@@ -953,7 +1043,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
     <message>
         <source>No: %1</source>
-        <translation>否：%1</translation>
+        <translation type="vanished">否：%1</translation>
     </message>
     <message>
         <source>Online</source>
@@ -967,6 +1057,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>Not polled yet</source>
         <translation>尚未查询</translation>
     </message>
+    <message>
+        <source>No (%1)</source>
+        <translation>否（%1）</translation>
+    </message>
 </context>
 <context>
     <name>dd::ParameterDictionary</name>
@@ -975,19 +1069,19 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1 必须是对象（实际为 %2）</translation>
     </message>
     <message>
-        <source>%1: key &quot;%2&quot; must start with a letter and hold only letters, digits, &apos;_&apos;, &apos;.&apos; and &apos;-&apos;</source>
+        <source>%1: key "%2" must start with a letter and hold only letters, digits, '_', '.' and '-'</source>
         <translation>%1：键名“%2”必须以字母开头，且只能包含字母、数字、“_”、“.”和“-”</translation>
     </message>
     <message>
-        <source>%1: key &quot;%2&quot; names parameter %3 but the index is %4</source>
+        <source>%1: key "%2" names parameter %3 but the index is %4</source>
         <translation>%1：键名“%2”对应参数 %3，但序号为 %4</translation>
     </message>
     <message>
-        <source>%1: field &quot;type&quot; = &quot;%2&quot; is not one of uint8, int16, uint16, int32, uint32</source>
+        <source>%1: field "type" = "%2" is not one of uint8, int16, uint16, int32, uint32</source>
         <translation>%1：字段“type” = “%2”不是 uint8、int16、uint16、int32、uint32 之一</translation>
     </message>
     <message>
-        <source>%1: field &quot;access&quot; = &quot;%2&quot; is not one of rw, ro, wo</source>
+        <source>%1: field "access" = "%2" is not one of rw, ro, wo</source>
         <translation>%1：字段“access” = “%2”不是 rw、ro、wo 之一</translation>
     </message>
     <message>
@@ -1019,7 +1113,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：models[%2] 必须是型号名称</translation>
     </message>
     <message>
-        <source>%1 is not a DriveDesk parameter dictionary (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
+        <source>%1 is not a DriveDesk parameter dictionary (format "%2", expected "%3")</source>
         <translation>%1 不是 DriveDesk 参数字典（格式为“%2”，应为“%3”）</translation>
     </message>
     <message>
@@ -1027,7 +1121,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：不支持参数字典格式版本 %2（本版 DriveDesk 读取版本 %3）</translation>
     </message>
     <message>
-        <source>%1: unknown drive family &quot;%2&quot; (known: %3)</source>
+        <source>%1: unknown drive family "%2" (known: %3)</source>
         <translation>%1：未知的驱动器系列“%2”（已知：%3）</translation>
     </message>
     <message>
@@ -1035,7 +1129,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1 是 %2 驱动器的参数字典，不适用于 %3</translation>
     </message>
     <message>
-        <source>%1: field &quot;valueType&quot; = &quot;%2&quot; is not one of uint8, int16, uint16, int32, uint32</source>
+        <source>%1: field "valueType" = "%2" is not one of uint8, int16, uint16, int32, uint32</source>
         <translation>%1：字段“valueType” = “%2”不是 uint8、int16、uint16、int32、uint32 之一</translation>
     </message>
     <message>
@@ -1047,7 +1141,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：序号 %2 已被 %3 占用</translation>
     </message>
     <message>
-        <source>%1: key &quot;%2&quot; is already used (keys are case-insensitive)</source>
+        <source>%1: key "%2" is already used (keys are case-insensitive)</source>
         <translation>%1：键名“%2”已被使用（键名不区分大小写）</translation>
     </message>
     <message>
@@ -1055,7 +1149,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：寄存器 %2 已被 %3 占用</translation>
     </message>
     <message>
-        <source>Unknown parameter &quot;%1&quot; for %2 drives: give a number (12), a key (%3) or a name</source>
+        <source>Unknown parameter "%1" for %2 drives: give a number (12), a key (%3) or a name</source>
         <translation>%2 驱动器没有参数“%1”：请输入序号（如 12）、键名（如 %3）或名称</translation>
     </message>
     <message>
@@ -1105,9 +1199,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
     <message numerus="yes">
         <source>%n drive(s) found</source>
-        <translation>
-            <numerusform>已找到 %n 台驱动器</numerusform>
-        </translation>
+        <translation><numerusform>已找到 %n 台驱动器</numerusform></translation>
     </message>
     <message>
         <source>%1 left · %2</source>
@@ -1133,7 +1225,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>串口未打开。</translation>
     </message>
     <message>
-        <source>The drive&apos;s reply on %1 failed its checksum. Check the cable shielding, the bus termination and the baud rate.</source>
+        <source>The drive's reply on %1 failed its checksum. Check the cable shielding, the bus termination and the baud rate.</source>
         <translation>%1 上驱动器应答的校验失败。请检查电缆屏蔽、总线终端电阻和波特率。</translation>
     </message>
     <message>
@@ -1153,6 +1245,260 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
 </context>
 <context>
+    <name>dd::ServoCanBackend</name>
+    <message>
+        <source>"%1" is not a CAN interface: write plugin:interface, e.g. socketcan:can0 or virtualcan:can0.</source>
+        <translation>“%1”不是 CAN 接口：请按“插件:接口”填写，例如 socketcan:can0 或 virtualcan:can0。</translation>
+    </message>
+    <message>
+        <source>servo-can.emergencyStop must be "disable" or "hold", not "%1".</source>
+        <translation>servo-can.emergencyStop 必须为“disable”或“hold”，而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>servo-can.maxInFlight must be at least 1.</source>
+        <translation>servo-can.maxInFlight 至少为 1。</translation>
+    </message>
+    <message>
+        <source>%1, %2 kbit/s</source>
+        <translation>%1，%2 kbit/s</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoCanDiscovery</name>
+    <message>
+        <source>The CAN link is not open.</source>
+        <translation>CAN 连接未打开。</translation>
+    </message>
+    <message>
+        <source>The CAN link was closed.</source>
+        <translation>CAN 连接已关闭。</translation>
+    </message>
+    <message>
+        <source>The scan was cancelled.</source>
+        <translation>扫描已取消。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoCanDrive</name>
+    <message>
+        <source>The servo-can protocol has no homing command. Move to the reference point and use "set position" (0x50) instead.</source>
+        <translation>servo-can 协议没有回零命令。请运动到参考点后使用“设置位置”（0x50）。</translation>
+    </message>
+    <message>
+        <source>The servo-can protocol has no EEPROM command.</source>
+        <translation>servo-can 协议没有 EEPROM 命令。</translation>
+    </message>
+    <message>
+        <source>The CAN link to station %1 is not open.</source>
+        <translation>到站号 %1 的 CAN 连接未打开。</translation>
+    </message>
+    <message>
+        <source>%1 reads of P%2 gave no two equal values.</source>
+        <translation>读取 P%2 共 %1 次，没有两次结果相同。</translation>
+    </message>
+    <message>
+        <source>Station %1 did not start within %2 ms. Is an alarm active? Is parameter 4 = 8 (internal run control) and parameter 74 = 1 (CAN)?</source>
+        <translation>站号 %1 在 %2 ms 内未启动。是否有报警？参数 4 是否为 8（内部运行控制）、参数 74 是否为 1（CAN）？</translation>
+    </message>
+    <message>
+        <source>No heartbeat from station %1. Is the drive powered, is parameter 74 = 1 (CAN mode) and is the station number right?</source>
+        <translation>未收到站号 %1 的心跳。驱动器是否上电？参数 74 是否为 1（CAN 模式）？站号是否正确？</translation>
+    </message>
+    <message>
+        <source>Parameter 75 (station) is %1 but the drive answers as station %2.</source>
+        <translation>参数 75（站号）为 %1，但驱动器以站号 %2 应答。</translation>
+    </message>
+    <message>
+        <source>Parameter 74 is %1: set it to 1 for CAN communication mode.</source>
+        <translation>参数 74 为 %1：CAN 通讯模式需设为 1。</translation>
+    </message>
+    <message>
+        <source>Parameter 4 is %1: set it to 8 (internal run control) to move the axis over CAN.</source>
+        <translation>参数 4 为 %1：要通过 CAN 控制运动，需设为 8（内部运行控制）。</translation>
+    </message>
+    <message>
+        <source>Status of station %1</source>
+        <translation>站号 %1 的状态</translation>
+    </message>
+    <message>
+        <source>Alarm of station %1</source>
+        <translation>站号 %1 的报警</translation>
+    </message>
+    <message>
+        <source>Station %1 still reports alarm %2 after the clear command. Remove the cause of the alarm first.</source>
+        <translation>发送清除命令后，站号 %1 仍报警 %2。请先排除报警原因。</translation>
+    </message>
+    <message>
+        <source>Parameter %1 does not exist: servo-can parameters are 0 to %2.</source>
+        <translation>参数 %1 不存在：servo-can 参数为 0 到 %2。</translation>
+    </message>
+    <message>
+        <source>Station %1, P%2: %3</source>
+        <translation>站号 %1，P%2：%3</translation>
+    </message>
+    <message>
+        <source>P%1 = %2 is out of range: servo-can parameters are 16-bit values from -32768 to 32767. Nothing was written.</source>
+        <translation>P%1 = %2 超出范围：servo-can 参数为 -32768 到 32767 的 16 位数值。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>P%1 was written but could not be read back: %2</source>
+        <translation>P%1 已写入，但无法回读：%2</translation>
+    </message>
+    <message>
+        <source>P%1: wrote %2 but the drive reads back %3 (%4 attempts). The drive may limit this parameter or not accept writes in its present state.</source>
+        <translation>P%1：写入 %2，但回读为 %3（尝试 %4 次）。驱动器可能限制了该参数，或在当前状态下不接受写入。</translation>
+    </message>
+    <message>
+        <source>A servo-can drive has no channel "%1".</source>
+        <translation>servo-can 驱动器没有通道“%1”。</translation>
+    </message>
+    <message>
+        <source>Station %1, %2: %3</source>
+        <translation>站号 %1，%2：%3</translation>
+    </message>
+    <message>
+        <source>A relative move of %1 counts does not fit the drive's 32-bit command.</source>
+        <translation>相对运动量 %1 超出驱动器 32 位指令的范围。</translation>
+    </message>
+    <message>
+        <source>A move needs a positive positioning speed (r/min); %1 was given.</source>
+        <translation>运动需要正的定位速度（r/min），给定值为 %1。</translation>
+    </message>
+    <message>
+        <source>Target %1 does not fit the drive's 32-bit position.</source>
+        <translation>目标位置 %1 超出驱动器 32 位位置的范围。</translation>
+    </message>
+    <message>
+        <source>Position %1 does not fit the drive's 32-bit position.</source>
+        <translation>位置 %1 超出驱动器 32 位位置的范围。</translation>
+    </message>
+    <message>
+        <source>Station %1: position set to %2 but it reads back %3.</source>
+        <translation>站号 %1：位置设为 %2，但回读为 %3。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoModbusBackend</name>
+    <message>
+        <source>servo-modbus drives are reached over a serial port (RS485): give a port.</source>
+        <translation>servo-modbus 驱动器通过串口（RS485）通讯：请指定端口。</translation>
+    </message>
+    <message>
+        <source>%1 @ %2 baud, Modbus RTU (servo-modbus)</source>
+        <translation>%1 @ %2 波特，Modbus RTU（servo-modbus）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoModbusDrive</name>
+    <message>
+        <source>Speed (DP-SPd)</source>
+        <translation>速度（DP-SPd）</translation>
+    </message>
+    <message>
+        <source>Position (DP-PoS)</source>
+        <translation>位置（DP-PoS）</translation>
+    </message>
+    <message>
+        <source>Position, low register (DP-PoS)</source>
+        <translation>位置，低位寄存器（DP-PoS）</translation>
+    </message>
+    <message>
+        <source>Position, high register (DP-PoS.)</source>
+        <translation>位置，高位寄存器（DP-PoS.）</translation>
+    </message>
+    <message>
+        <source>Command position (DP-CPo)</source>
+        <translation>指令位置（DP-CPo）</translation>
+    </message>
+    <message>
+        <source>Command position, low register (DP-CPo)</source>
+        <translation>指令位置，低位寄存器（DP-CPo）</translation>
+    </message>
+    <message>
+        <source>Command position, high register (DP-CPo.)</source>
+        <translation>指令位置，高位寄存器（DP-CPo.）</translation>
+    </message>
+    <message>
+        <source>Position error (DP-EPo)</source>
+        <translation>位置偏差（DP-EPo）</translation>
+    </message>
+    <message>
+        <source>Position error, low register (DP-EPo)</source>
+        <translation>位置偏差，低位寄存器（DP-EPo）</translation>
+    </message>
+    <message>
+        <source>Position error, high register (DP-EPo.)</source>
+        <translation>位置偏差，高位寄存器（DP-EPo.）</translation>
+    </message>
+    <message>
+        <source>Torque (DP-trq)</source>
+        <translation>转矩（DP-trq）</translation>
+    </message>
+    <message>
+        <source>Current (DP-I)</source>
+        <translation>电流（DP-I）</translation>
+    </message>
+    <message>
+        <source>Pulse frequency (DP-Frq)</source>
+        <translation>脉冲频率（DP-Frq）</translation>
+    </message>
+    <message>
+        <source>Speed command (DP-CS)</source>
+        <translation>速度指令（DP-CS）</translation>
+    </message>
+    <message>
+        <source>Torque command (DP-Ct)</source>
+        <translation>转矩指令（DP-Ct）</translation>
+    </message>
+    <message>
+        <source>Rotor absolute position (DP-APo)</source>
+        <translation>转子绝对位置（DP-APo）</translation>
+    </message>
+    <message>
+        <source>Input terminals (DP-In)</source>
+        <translation>输入端子（DP-In）</translation>
+    </message>
+    <message>
+        <source>Output terminals (DP-oUt)</source>
+        <translation>输出端子（DP-oUt）</translation>
+    </message>
+    <message>
+        <source>Encoder signals (DP-Cod)</source>
+        <translation>编码器信号（DP-Cod）</translation>
+    </message>
+    <message>
+        <source>Alarm (DP-Err)</source>
+        <translation>报警（DP-Err）</translation>
+    </message>
+    <message>
+        <source>Phase A current (DP-IA)</source>
+        <translation>A 相电流（DP-IA）</translation>
+    </message>
+    <message>
+        <source>Phase C current (DP-IC)</source>
+        <translation>C 相电流（DP-IC）</translation>
+    </message>
+    <message>
+        <source>Invalid value "%1" for %2 (allowed: %3).</source>
+        <translation>%2 的值“%1”无效（允许：%3）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoModbusScanner</name>
+    <message>
+        <source>The serial port is not open.</source>
+        <translation>串口未打开。</translation>
+    </message>
+    <message>
+        <source>Cannot switch the port to %1 baud: the link is busy or closed. Stop other operations on this port before scanning.</source>
+        <translation>无法将端口切换到 %1 波特：连接忙或已关闭。扫描前请停止该端口上的其他操作。</translation>
+    </message>
+    <message>
+        <source>The scan was cancelled.</source>
+        <translation>扫描已取消。</translation>
+    </message>
+</context>
+<context>
     <name>dd::StatusBarWidget</name>
     <message>
         <source>Not connected</source>
@@ -1168,9 +1514,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
     <message numerus="yes">
         <source>%n link(s) open</source>
-        <translation>
-            <numerusform>已打开 %n 个连接</numerusform>
-        </translation>
+        <translation><numerusform>已打开 %n 个连接</numerusform></translation>
     </message>
     <message>
         <source>%1 frames/s</source>

@@ -33,9 +33,9 @@ BusTreeWidget::BusTreeWidget(DriveDirectory *directory, QWidget *parent)
     setContextMenuPolicy(Qt::CustomContextMenu);
     header()->setSectionResizeMode(QHeaderView::Interactive);
     header()->setStretchLastSection(true);
-    header()->resizeSection(NameColumn, 170);
-    header()->resizeSection(StateColumn, 140);
-    header()->resizeSection(PositionColumn, 90);
+    header()->resizeSection(NameColumn, 150);
+    header()->resizeSection(StateColumn, 120);
+    header()->resizeSection(PositionColumn, 80);
     retranslate();
 
     connect(directory, &DriveDirectory::connectionAdded, this, &BusTreeWidget::onConnectionAdded);

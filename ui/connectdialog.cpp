@@ -84,6 +84,14 @@ ConnectDialog::ConnectDialog(QWidget *parent)
     range->addWidget(m_to);
     range->addStretch(1);
     scanForm->addRow(m_rangeLabel, range);
+    m_timeoutLabel = new QLabel(m_scanBox);
+    m_timeout = new QSpinBox(m_scanBox);
+    m_timeout->setObjectName(QStringLiteral("probeTimeout"));
+    m_timeout->setRange(0, 2000);   // 0 (shown as "Automatic"): the scanner's adaptive timeout
+    m_timeout->setSingleStep(10);
+    m_timeout->setValue(ConnectRequest::DefaultProbeTimeoutMs);
+    m_timeoutLabel->setBuddy(m_timeout);
+    scanForm->addRow(m_timeoutLabel, m_timeout);
     connect(m_from, &QSpinBox::valueChanged, this, [this](int v) { m_to->setMinimum(v); });
 
     m_buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
@@ -309,6 +317,7 @@ void ConnectDialog::setRequest(const ConnectRequest &r)
     m_scanBox->setChecked(r.scan);
     m_from->setValue(r.scanOptions.from);
     m_to->setValue(r.scanOptions.to);
+    m_timeout->setValue(r.scanOptions.timeoutMs <= 0 ? 0 : r.scanOptions.timeoutMs);
     updateEnabled();
 }
 
@@ -332,6 +341,7 @@ ConnectRequest ConnectDialog::request() const
     r.scan = m_scanBox->isChecked();
     r.scanOptions.from = m_from->value();
     r.scanOptions.to = m_to->value();
+    r.scanOptions.timeoutMs = m_timeout->value() > 0 ? m_timeout->value() : -1;
     return r;
 }
 
@@ -421,6 +431,12 @@ void ConnectDialog::retranslate()
     fillFramings();
     m_scanBox->setTitle(tr("S&can for drives after connecting"));
     m_rangeLabel->setText(tr("Addresses:"));
+    m_timeoutLabel->setText(tr("Probe ti&meout:"));
+    m_timeout->setSuffix(tr(" ms"));
+    m_timeout->setSpecialValueText(tr("Automatic (fast, direct RS485 only)"));
+    m_timeout->setToolTip(tr("How long to wait for each address to answer. USB adapters add up "
+                             "to 16 ms of latency: keep 50 ms or more unless the port is a "
+                             "native RS485 interface."));
     m_buttons->button(QDialogButtonBox::Ok)->setText(tr("C&onnect"));
     m_buttons->button(QDialogButtonBox::Cancel)->setText(tr("Cancel"));
 }

@@ -91,6 +91,8 @@ private:
     QLabel *m_rangeLabel = nullptr;
     QSpinBox *m_from = nullptr;
     QSpinBox *m_to = nullptr;
+    QLabel *m_timeoutLabel = nullptr;
+    QSpinBox *m_timeout = nullptr;
     QDialogButtonBox *m_buttons = nullptr;
     QString m_wantedPort;       // a remembered port not (yet) in the list
     QString m_wantedInterface;

@@ -45,6 +45,7 @@ void ConnectRequest::save(QSettings &s) const
     s.setValue(QStringLiteral("scanFrom"), scanOptions.from);
     s.setValue(QStringLiteral("scanTo"), scanOptions.to);
     s.setValue(QStringLiteral("sweepBauds"), !scanOptions.bauds.isEmpty());
+    s.setValue(QStringLiteral("probeTimeoutMs"), scanOptions.timeoutMs);
     s.endGroup();
 }
 
@@ -63,6 +64,7 @@ ConnectRequest ConnectRequest::load(QSettings &s)
     r.scan = s.value(QStringLiteral("scan"), true).toBool();
     r.scanOptions.from = qBound(0, s.value(QStringLiteral("scanFrom"), DefaultFrom).toInt(), 255);
     r.scanOptions.to = qBound(r.scanOptions.from, s.value(QStringLiteral("scanTo"), DefaultTo).toInt(), 255);
+    r.scanOptions.timeoutMs = qBound(-1, s.value(QStringLiteral("probeTimeoutMs"), DefaultProbeTimeoutMs).toInt(), 5000);
     if (s.value(QStringLiteral("sweepBauds"), false).toBool())
         r.scanOptions.bauds = sweepBauds();
     s.endGroup();

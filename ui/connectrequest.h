@@ -17,7 +17,9 @@ struct ConnectRequest
     ConnectionSettings settings;  // `family` is ignored when `detect` is set
     bool detect = false;
     bool scan = true;             // scan for drives after connecting
-    ScanOptions scanOptions;      // address range, baud sweep
+    ScanOptions scanOptions;      // address range, baud sweep, probe timeout
+
+    ConnectRequest() { scanOptions.from = DefaultFrom; scanOptions.to = DefaultTo; scanOptions.timeoutMs = DefaultProbeTimeoutMs; }
 
     // Detect: the families tried in order, one connection each, stopping at the first that
     // finds a drive (a bus speaks one protocol). Serial: servo-modbus (standard Modbus RTU),
@@ -31,6 +33,10 @@ struct ConnectRequest
     // drives; the dialog lets the user widen it to 1..247).
     static constexpr int DefaultFrom = 1;
     static constexpr int DefaultTo = 32;
+    // Per-probe timeout of a serial scan. The scanners' adaptive default (wire time + a few
+    // ms) misses drives behind USB adapters with a 16 ms latency timer (FTDI's default), so
+    // the GUI starts from a safe fixed value; 32 addresses then take about 2 s.
+    static constexpr int DefaultProbeTimeoutMs = 50;
 
     // Persisted in the "connect" group.
     void save(QSettings &settings) const;

@@ -36,6 +36,8 @@ void DemoLauncher::connectToBench()
         r.scan = true;
         r.scanOptions.from = SimBench::ScanFrom;
         r.scanOptions.to = SimBench::ScanTo;
+        // The simulator runs on a thread of a possibly busy machine: no tight timeouts.
+        r.scanOptions.timeoutMs = 150;
         m_connections->connectTo(r);
     }
 }

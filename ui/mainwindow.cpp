@@ -82,7 +82,7 @@ void MainWindow::createParts()
     m_busDock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable
                            | QDockWidget::DockWidgetClosable);
     addDockWidget(Qt::LeftDockWidgetArea, m_busDock);
-    resizeDocks({m_busDock}, {420}, Qt::Horizontal);
+    resizeDocks({m_busDock}, {460}, Qt::Horizontal);
 
     m_workspace = new DriveWorkspace(m_directory, this);
     m_workspace->setObjectName(QStringLiteral("driveWorkspace"));

@@ -54,12 +54,18 @@ OverviewPanel::OverviewPanel(const DriveContext &context, QWidget *parent)
     m_caps->setColumnCount(2);
     m_caps->setSelectionMode(QAbstractItemView::NoSelection);
     m_caps->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_caps->setWordWrap(true);
     m_caps->setShowGrid(false);
     m_caps->verticalHeader()->hide();
     m_caps->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_caps->horizontalHeader()->setStretchLastSection(true);
-    capsLayout->addWidget(m_caps);
+    m_caps->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    capsLayout->addWidget(m_caps, 1);
+    m_reasons = new QLabel(m_capsBox);
+    m_reasons->setObjectName(QStringLiteral("capabilityReasons"));
+    m_reasons->setWordWrap(true);
+    m_reasons->setTextFormat(Qt::RichText);
+    m_reasons->hide();
+    capsLayout->addWidget(m_reasons);
 
     m_refresh = new QPushButton(this);
     connect(m_refresh, &QPushButton::clicked, this, &OverviewPanel::refresh);
@@ -160,8 +166,11 @@ void OverviewPanel::showIdentity()
 
 void OverviewPanel::showCapabilities()
 {
+    // A family usually gives one reason for several missing functions: each distinct reason
+    // is written once under the table and referred to by number.
     const DriveInfo &info = driveInfo();
     const QList<Capability> all = DriveInfo::allCapabilities();
+    QStringList reasons;
     m_caps->setRowCount(int(all.size()));
     for (int row = 0; row < all.size(); ++row) {
         const Capability c = all.at(row);
@@ -171,21 +180,23 @@ void OverviewPanel::showCapabilities()
             value->setText(tr("Yes"));
         } else {
             const QString reason = info.reason(c);
-            value->setText(reason.isEmpty() ? tr("No") : tr("No: %1").arg(reason));
+            if (!reason.isEmpty() && !reasons.contains(reason))
+                reasons.append(reason);
+            value->setText(reason.isEmpty() ? tr("No") : tr("No (%1)").arg(reasons.indexOf(reason) + 1));
             value->setToolTip(reason);
             name->setForeground(palette().brush(QPalette::Disabled, QPalette::Text));
+            value->setForeground(palette().brush(QPalette::Disabled, QPalette::Text));
         }
         m_caps->setItem(row, 0, name);
         m_caps->setItem(row, 1, value);
     }
-    m_caps->resizeRowsToContents();
+    QStringList notes;
+    for (int i = 0; i < reasons.size(); ++i)
+        notes << QStringLiteral("(%1) %2").arg(i + 1).arg(reasons.at(i).toHtmlEscaped());
+    m_reasons->setText(notes.join(QStringLiteral("<br>")));
+    m_reasons->setVisible(!notes.isEmpty());
 }
 
-void OverviewPanel::resizeEvent(QResizeEvent *event)
-{
-    DrivePanel::resizeEvent(event);
-    m_caps->resizeRowsToContents();   // the reasons wrap to the new width
-}
 
 void OverviewPanel::showStatus()
 {

@@ -29,7 +29,6 @@ protected:
     void statusChanged(const DriveStatus &status) override;
     void alarmChanged(int code) override;
     void retranslate() override;
-    void resizeEvent(QResizeEvent *event) override;
 
 private:
     void showIdentity();
@@ -55,6 +54,7 @@ private:
     QLabel *m_alarm = nullptr;
     QLabel *m_updated = nullptr;
     QTableWidget *m_caps = nullptr;
+    QLabel *m_reasons = nullptr;
     QPushButton *m_refresh = nullptr;
 };
 

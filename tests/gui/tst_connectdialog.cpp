@@ -110,6 +110,7 @@ private slots:
         r.scanOptions.from = 3;
         r.scanOptions.to = 40;
         r.scanOptions.bauds = ConnectRequest::sweepBauds();
+        r.scanOptions.timeoutMs = 80;
         {
             ConnectDialog dialog;
             dialog.setRequest(r);
@@ -122,6 +123,7 @@ private slots:
             QCOMPARE(back.scanOptions.from, 3);
             QCOMPARE(back.scanOptions.to, 40);
             QCOMPARE(back.scanOptions.bauds, ConnectRequest::sweepBauds());
+            QCOMPARE(back.scanOptions.timeoutMs, 80);
             dialog.saveSettings();
         }
         ConnectDialog fresh;
@@ -131,6 +133,15 @@ private slots:
         QCOMPARE(loaded.settings.family, Family::Shuoke);
         QCOMPARE(loaded.settings.framing, QStringLiteral("ascii"));
         QCOMPARE(loaded.scanOptions.to, 40);
+        QCOMPARE(loaded.scanOptions.timeoutMs, 80);
+
+        // "Automatic" is the scanners' adaptive timeout.
+        ConnectRequest adaptive = r;
+        adaptive.scanOptions.timeoutMs = -1;
+        fresh.setRequest(adaptive);
+        QCOMPARE(fresh.request().scanOptions.timeoutMs, -1);
+        // A new request starts from the safe default, not from the adaptive one.
+        QCOMPARE(ConnectRequest().scanOptions.timeoutMs, ConnectRequest::DefaultProbeTimeoutMs);
 
         // Framing is a shuoke setting only.
         ConnectRequest modbus = r;

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Takes the documentation screenshots: the main window in demo mode (simulated drives, no
+# hardware), in English and in Chinese, under a virtual X server (xvfb-run), into
+# docs/screenshots/. The application grabs its own window (--screenshot FILE after
+# --screenshot-delay seconds) and quits, so the pictures are the same on every run.
+# Settings go to a temporary directory: the user's own are neither read nor changed.
+#   packaging/screenshots.sh [build-dir]
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-${DRIVEDESK_BUILD_DIR:-$here/build}}"
+app="$build/app/drivedesk"
+out="$here/docs/screenshots"
+delay="${DRIVEDESK_SCREENSHOT_DELAY:-6}"
+
+if [ ! -x "$app" ]; then
+  echo "screenshots: $app not found; build first (packaging/build.sh)" >&2
+  exit 1
+fi
+command -v xvfb-run >/dev/null || { echo "screenshots: xvfb-run is missing (apt install xvfb)" >&2; exit 1; }
+mkdir -p "$out"
+settings="$(mktemp -d)"
+trap 'rm -rf "$settings"' EXIT
+
+shoot() {   # shoot LANG FILE
+  XDG_CONFIG_HOME="$settings/$1" QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" \
+    xvfb-run --auto-servernum --server-args="-screen 0 1400x900x24" \
+    "$app" --demo --lang "$1" --screenshot "$out/$2" --screenshot-delay "$delay"
+  echo "screenshots: $out/$2"
+}
+
+shoot en main-window-en.png
+shoot zh_CN main-window-zh_CN.png

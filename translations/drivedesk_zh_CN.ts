@@ -429,6 +429,14 @@
         <source>%1 on %2</source>
         <translation>%1，%2</translation>
     </message>
+    <message>
+        <source>Unknown family "%1"; use one of: %2, detect.</source>
+        <translation>未知系列“%1”，请使用：%2、detect。</translation>
+    </message>
+    <message>
+        <source>Unknown framing "%1"; use one of: %2.</source>
+        <translation>未知帧格式“%1”，请使用：%2。</translation>
+    </message>
 </context>
 <context>
     <name>dd::ConnectionController</name>
@@ -634,7 +642,7 @@
     </message>
     <message>
         <source>Unknown family '%1'; use one of: %2, detect.</source>
-        <translation>未知系列“%1”，请使用：%2、detect。</translation>
+        <translation type="vanished">未知系列“%1”，请使用：%2、detect。</translation>
     </message>
 </context>
 <context>

@@ -33,9 +33,9 @@ BusTreeWidget::BusTreeWidget(DriveDirectory *directory, QWidget *parent)
     setContextMenuPolicy(Qt::CustomContextMenu);
     header()->setSectionResizeMode(QHeaderView::Interactive);
     header()->setStretchLastSection(true);
-    header()->resizeSection(NameColumn, 150);
-    header()->resizeSection(StateColumn, 120);
-    header()->resizeSection(PositionColumn, 80);
+    header()->resizeSection(NameColumn, 165);
+    header()->resizeSection(StateColumn, 110);
+    header()->resizeSection(PositionColumn, 75);
     retranslate();
 
     connect(directory, &DriveDirectory::connectionAdded, this, &BusTreeWidget::onConnectionAdded);

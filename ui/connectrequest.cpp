@@ -1,5 +1,6 @@
 #include "connectrequest.h"
 
+#include <QCanBus>
 #include <QCoreApplication>
 #include <QSettings>
 
@@ -30,6 +31,42 @@ QList<ConnectionSettings> ConnectRequest::attempts() const
 QList<int> ConnectRequest::sweepBauds()
 {
     return {9600, 19200, 38400, 57600, 115200};
+}
+
+bool ConnectRequest::fromCommandLine(const QString &link, const QString &family, int baud, int bitrate,
+                                     const QString &framing, ConnectRequest *out, QString *error)
+{
+    ConnectRequest r;
+    r.detect = family.isEmpty() || family == QLatin1String("detect");
+    if (!r.detect) {
+        const std::optional<Family> f = familyFromId(family);
+        if (!f) {
+            if (error)
+                *error = QCoreApplication::translate("dd::ConnectRequest", "Unknown family \"%1\"; use one of: %2, detect.")
+                             .arg(family, familyIds().join(QStringLiteral(", ")));
+            return false;
+        }
+        r.settings.family = *f;
+    }
+    const QStringList framings{QStringLiteral("rtu"), QStringLiteral("ascii"), QStringLiteral("plc"),
+                               QStringLiteral("can")};
+    if (!framing.isEmpty() && !framings.contains(framing)) {
+        if (error)
+            *error = QCoreApplication::translate("dd::ConnectRequest", "Unknown framing \"%1\"; use one of: %2.")
+                         .arg(framing, framings.join(QStringLiteral(", ")));
+        return false;
+    }
+    const QString plugin = link.section(QLatin1Char(':'), 0, 0);
+    if (link.contains(QLatin1Char(':')) && QCanBus::instance()->plugins().contains(plugin))
+        r.settings.can = link;
+    else
+        r.settings.port = link;
+    r.settings.baud = baud;
+    r.settings.bitrate = bitrate;
+    r.settings.framing = framing;
+    r.scan = true;
+    *out = r;
+    return true;
 }
 
 void ConnectRequest::save(QSettings &s) const

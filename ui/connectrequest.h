@@ -38,6 +38,13 @@ struct ConnectRequest
     // the GUI starts from a safe fixed value; 32 addresses then take about 2 s.
     static constexpr int DefaultProbeTimeoutMs = 50;
 
+    // From drivedesk's --connect LINK [--family F] [--baud N] [--bitrate N] [--framing F]:
+    // LINK is "plugin:interface" when the part before the first ':' names an installed Qt
+    // CAN plugin, otherwise a serial port; family "" or "detect" detects. Scans 1..32.
+    // False with a message for an unknown family or framing.
+    static bool fromCommandLine(const QString &link, const QString &family, int baud, int bitrate,
+                                const QString &framing, ConnectRequest *out, QString *error);
+
     // Persisted in the "connect" group.
     void save(QSettings &settings) const;
     static ConnectRequest load(QSettings &settings);

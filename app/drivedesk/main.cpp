@@ -5,10 +5,10 @@
 #include "mainwindow.h"
 
 #include <QApplication>
-#include <QCanBus>
 #include <QCommandLineParser>
 #include <QSettings>
 #include <QTimer>
+#include <optional>
 
 namespace dd {
 // The translation context of this file's texts.
@@ -54,7 +54,7 @@ Options parseOptions(const QApplication &app)
         QStringLiteral("link"));
     const QCommandLineOption family(QStringLiteral("family"),
         dd::DriveDeskMain::tr("With --connect: servo-can, servo-modbus, shuoke or detect (default)."),
-        QStringLiteral("family"), QStringLiteral("detect"));
+        QStringLiteral("family"));
     const QCommandLineOption baud(QStringLiteral("baud"),
         dd::DriveDeskMain::tr("With --connect on a serial port: the baud rate (default: the family's)."),
         QStringLiteral("rate"));
@@ -84,34 +84,7 @@ Options parseOptions(const QApplication &app)
     o.framing = p.value(framing);
     o.screenshot = p.value(screenshot);
     o.screenshotDelayMs = qMax(0, int(p.value(delay).toDouble() * 1000));
-    if (!o.family.isEmpty() && o.family != QLatin1String("detect") && !dd::familyFromId(o.family)) {
-        qCritical("%s", qPrintable(dd::DriveDeskMain::tr("Unknown family '%1'; use one of: %2, detect.")
-                                       .arg(o.family, dd::familyIds().join(QStringLiteral(", ")))));
-        ::exit(2);
-    }
     return o;
-}
-
-dd::ConnectRequest requestFrom(const Options &o)
-{
-    QSettings settings;
-    dd::ConnectRequest r = dd::ConnectRequest::load(settings);
-    if (o.connect == QLatin1String("last"))
-        return r;
-    r.settings = {};
-    r.detect = o.family.isEmpty() || o.family == QLatin1String("detect");
-    r.settings.family = dd::familyFromId(o.family).value_or(dd::Family::ServoModbus);
-    // "plugin:interface" when the part before the colon names a Qt CAN plugin.
-    const QString plugin = o.connect.section(QLatin1Char(':'), 0, 0);
-    if (o.connect.contains(QLatin1Char(':')) && QCanBus::instance()->plugins().contains(plugin))
-        r.settings.can = o.connect;
-    else
-        r.settings.port = o.connect;
-    r.settings.baud = o.baud;
-    r.settings.bitrate = o.bitrate;
-    r.settings.framing = o.framing;
-    r.scan = true;
-    return r;
 }
 
 } // namespace
@@ -126,32 +99,47 @@ int main(int argc, char *argv[])
     QGuiApplication::setApplicationDisplayName(QStringLiteral("DriveDesk"));
     dd::ensureCoreResources();
 
-    // The language first, so that --help is translated too.
+    // The language first, so that --help is translated too (QCommandLineParser has not run
+    // yet: look for "--lang X" / "--lang=X" by hand).
+    QString langArg;
+    const QStringList args = app.arguments();
+    for (int i = 1; i < args.size(); ++i) {
+        if (args.at(i) == QLatin1String("--lang") && i + 1 < args.size())
+            langArg = args.at(i + 1);
+        else if (args.at(i).startsWith(QLatin1String("--lang=")))
+            langArg = args.at(i).mid(7);
+    }
+    bool langOk = true;
+    const auto chosen = dd::LanguageManager::languageFromId(langArg, &langOk);
     dd::LanguageManager language;
-    const QString langArg = [&] {
-        const QStringList args = app.arguments();
-        const int i = args.indexOf(QStringLiteral("--lang"));
-        return i >= 0 && i + 1 < args.size() ? args.at(i + 1) : QString();
-    }();
-    language.apply(langArg.isEmpty() ? dd::LanguageManager::savedLanguage()
-                                     : dd::LanguageManager::languageFromId(langArg));
+    language.apply(langArg.isEmpty() ? dd::LanguageManager::savedLanguage() : chosen);
     const Options options = parseOptions(app);
+    if (!langOk)
+        qWarning("Unknown language '%s': use en, zh_CN or system", qPrintable(langArg));
 
-    if (!options.lang.isEmpty()) {
-        bool ok = false;
-        dd::LanguageManager::languageFromId(options.lang, &ok);
-        if (!ok)
-            qWarning("Unknown language '%s': use en, zh_CN or system", qPrintable(options.lang));
+    // --connect is checked before any window opens.
+    std::optional<dd::ConnectRequest> request;
+    if (options.connect == QLatin1String("last")) {
+        QSettings settings;
+        request = dd::ConnectRequest::load(settings);
+    } else if (!options.connect.isEmpty()) {
+        dd::ConnectRequest r;
+        QString error;
+        if (!dd::ConnectRequest::fromCommandLine(options.connect, options.family, options.baud,
+                                                 options.bitrate, options.framing, &r, &error)) {
+            qCritical("%s", qPrintable(error));
+            return 2;
+        }
+        request = r;
     }
 
     dd::MainWindow window(&language);   // --lang holds for this session only: not saved
     window.restoreLayout();
     window.show();
-
     if (options.demo)
         window.startDemo();
-    if (!options.connect.isEmpty())
-        window.connectTo(requestFrom(options));
+    if (request)
+        window.connectTo(*request);
     if (!options.screenshot.isEmpty()) {
         QTimer::singleShot(options.screenshotDelayMs, &window, [&window, &options] {
             const bool ok = window.grab().save(options.screenshot, "PNG");

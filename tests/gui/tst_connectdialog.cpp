@@ -178,6 +178,45 @@ private slots:
         QCOMPARE(can.attempts().size(), 1);
     }
 
+    void commandLineRequests()
+    {
+        ConnectRequest r;
+        QString error;
+        QVERIFY(ConnectRequest::fromCommandLine(QStringLiteral("/dev/ttyUSB0"), QString(), 19200, 0,
+                                                QString(), &r, &error));
+        QCOMPARE(r.settings.port, QStringLiteral("/dev/ttyUSB0"));
+        QVERIFY(!r.settings.isCan());
+        QVERIFY(r.detect);
+        QCOMPARE(r.settings.baud, 19200);
+        QVERIFY(r.scan);
+
+        QVERIFY(ConnectRequest::fromCommandLine(QStringLiteral("COM3"), QStringLiteral("shuoke"), 0, 0,
+                                                QStringLiteral("ascii"), &r, &error));
+        QCOMPARE(r.settings.port, QStringLiteral("COM3"));
+        QVERIFY(!r.detect);
+        QCOMPARE(r.settings.family, Family::Shuoke);
+        QCOMPARE(r.settings.framing, QStringLiteral("ascii"));
+
+        if (QCanBus::instance()->plugins().contains(QLatin1String("virtualcan"))) {
+            QVERIFY(ConnectRequest::fromCommandLine(QStringLiteral("virtualcan:tcp://127.0.0.1:1234/can0"),
+                                                    QStringLiteral("servo-can"), 0, 500000, QString(), &r, &error));
+            QVERIFY(r.settings.isCan());
+            QCOMPARE(r.settings.can, QStringLiteral("virtualcan:tcp://127.0.0.1:1234/can0"));
+            QCOMPARE(r.settings.bitrate, 500000);
+        }
+        // A Windows-style or unknown "x:" prefix is a serial port, not a CAN plugin.
+        QVERIFY(ConnectRequest::fromCommandLine(QStringLiteral("nosuchplugin:can0"), QString(), 0, 0,
+                                                QString(), &r, &error));
+        QVERIFY(!r.settings.isCan());
+
+        QVERIFY(!ConnectRequest::fromCommandLine(QStringLiteral("/dev/ttyS0"), QStringLiteral("stepper"), 0, 0,
+                                                 QString(), &r, &error));
+        QVERIFY(error.contains(QLatin1String("stepper")));
+        QVERIFY(!ConnectRequest::fromCommandLine(QStringLiteral("/dev/ttyS0"), QStringLiteral("shuoke"), 0, 0,
+                                                 QStringLiteral("binary"), &r, &error));
+        QVERIFY(error.contains(QLatin1String("binary")));
+    }
+
     void portLabelShowsUsbIds()
     {
         SerialPortEntry e;

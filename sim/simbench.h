@@ -2,61 +2,60 @@
 
 #include "common/error.h"
 #include "drive/connectionsettings.h"
+#include "simbenchoptions.h"
 
+#include <QJsonObject>
 #include <QObject>
-#include <QStringList>
-
-class QThread;
+#include <memory>
 
 namespace dd {
 
-class SimBenchWorker;
+class SimCanBus;
+class SimSerialBus;
+class VirtualCanHub;
 
-// The demo bench: one simulated drive of each family, each on its own link, running on a
-// thread of its own (not the caller's), so that a busy or blocked GUI thread never stalls
-// the simulator:
-//   - servo-modbus: a SimServoModbusDrive on a pty (SimSerialBus), 19200 baud;
-//   - shuoke: a SimShuokeDrive (RTU framing) on a second pty;
-//   - servo-can: a SimServoCanDrive on a virtual CAN bus (virtualcan through a
-//     VirtualCanHub on a free local port, "tcp://127.0.0.1:<port>/can0", so it never meets
-//     another bench or test).
-// Every drive answers at `Address`. start() creates everything; the serial drives answer
-// at once, the CAN bus is up when ready() is emitted (connect to connections() then).
-// Nothing moves on its own: the drives start idle, disabled, without alarms.
+// One simulated bus with drives of one family on it: a pty (SimSerialBus) or a CAN bus
+// (SimCanBus; for virtualcan a private low-delay hub when the interface names no server).
+// Lives in the thread that created it; the motor models advance on its event loop.
 class SimBench : public QObject
 {
     Q_OBJECT
 public:
-    static constexpr int Address = 1;
-    static constexpr int ScanFrom = 1;   // the demo scans 1..4
-    static constexpr int ScanTo = 4;
-
     explicit SimBench(QObject *parent = nullptr);
-    ~SimBench() override;   // stops the bench (the links' clients see the adapters vanish)
+    ~SimBench() override;
 
-    // Creates the simulators on the bench thread; fails at once if one cannot be created.
-    Error start();
-    void stop();
-    bool isRunning() const { return m_running; }
-    bool isReady() const { return m_ready; }
+    Error start(const SimBenchOptions &options);
+    void stop();                         // saves the state file if one was given
+    Error saveState() const;
+    bool isRunning() const;
 
-    // What to connect to (valid after start()), one link per family.
-    QList<ConnectionSettings> connections() const { return m_connections; }
-    // One line per simulated drive, for logs.
-    QStringList describe() const { return m_descriptions; }
-    QThread *benchThread() const { return m_thread; }
+    const SimBenchOptions &options() const { return m_options; }
+    // Where a client connects, as drivedesk-sim prints it: "pty: /dev/pts/5" or
+    // "can: virtualcan:tcp://127.0.0.1:40123/can0".
+    QString where() const;
+    // The settings a DriveDesk client uses to reach these drives.
+    ConnectionSettings clientSettings() const;
 
-signals:
-    void ready();
-    void failed(const dd::Error &error);
+    // Power loss on every drive of the bench (they hear and answer nothing) or back.
+    void setSilent(bool silent);
+    // Injects an alarm (0 clears) into the drive at `address`; false when there is none.
+    bool injectAlarm(int address, int code);
+
+    SimSerialBus *serialBus() const { return m_serial; }
+    SimCanBus *canBus() const { return m_can; }
 
 private:
-    QThread *m_thread = nullptr;
-    SimBenchWorker *m_worker = nullptr;   // lives on m_thread
-    QList<ConnectionSettings> m_connections;
-    QStringList m_descriptions;
-    bool m_running = false;
-    bool m_ready = false;
+    Error startSerial();
+    Error startCan();
+    QJsonObject stateOf() const;
+    Error applyState(const QJsonObject &state);
+
+    SimBenchOptions m_options;
+    SimSerialBus *m_serial = nullptr;
+    SimCanBus *m_can = nullptr;
+    VirtualCanHub *m_hub = nullptr;
+    QString m_clientCan;      // the CAN interface a client should open
+    QString m_ptyPath;
 };
 
 } // namespace dd

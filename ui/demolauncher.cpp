@@ -2,7 +2,7 @@
 
 #include "connectioncontroller.h"
 #include "connectrequest.h"
-#include "simbench.h"
+#include "demobench.h"
 
 namespace dd {
 
@@ -18,9 +18,9 @@ Error DemoLauncher::start()
 {
     if (isRunning())
         return Error::none();
-    auto bench = std::make_unique<SimBench>();
-    connect(bench.get(), &SimBench::ready, this, &DemoLauncher::connectToBench);
-    connect(bench.get(), &SimBench::failed, this, &DemoLauncher::failed);
+    auto bench = std::make_unique<DemoBench>();
+    connect(bench.get(), &DemoBench::ready, this, &DemoLauncher::connectToBench);
+    connect(bench.get(), &DemoBench::failed, this, &DemoLauncher::failed);
     if (Error e = bench->start())
         return e;
     m_bench = std::move(bench);
@@ -34,8 +34,8 @@ void DemoLauncher::connectToBench()
         ConnectRequest r;
         r.settings = s;
         r.scan = true;
-        r.scanOptions.from = SimBench::ScanFrom;
-        r.scanOptions.to = SimBench::ScanTo;
+        r.scanOptions.from = DemoBench::ScanFrom;
+        r.scanOptions.to = DemoBench::ScanTo;
         // The simulator runs on a thread of a possibly busy machine: no tight timeouts.
         r.scanOptions.timeoutMs = 150;
         m_connections->connectTo(r);

@@ -9,10 +9,10 @@
 namespace dd {
 
 class ConnectionController;
-class SimBench;
+class DemoBench;
 
 // File → Demo bench and `drivedesk --demo`: starts the in-process simulated bench (one
-// drive of each family, on its own thread — see SimBench) and, once it is ready, connects
+// drive of each family, on its own thread — see DemoBench) and, once it is ready, connects
 // to its links, scanning each, so the application can be tried with nothing plugged in.
 // stop() (or destruction) ends the bench: close the connections to it first.
 class DemoLauncher : public QObject
@@ -26,7 +26,7 @@ public:
     void stop();
     bool isRunning() const;
     QList<ConnectionSettings> connections() const;
-    SimBench *bench() const { return m_bench.get(); }
+    DemoBench *bench() const { return m_bench.get(); }
 
 signals:
     void started();
@@ -36,7 +36,7 @@ private:
     void connectToBench();
 
     ConnectionController *m_connections = nullptr;
-    std::unique_ptr<SimBench> m_bench;
+    std::unique_ptr<DemoBench> m_bench;
 };
 
 } // namespace dd

@@ -8,7 +8,7 @@
 #include "drivedirectory.h"
 #include "driveworkspace.h"
 #include "mainwindow.h"
-#include "simbench.h"
+#include "demobench.h"
 #include "stopaction.h"
 
 #include <QApplication>
@@ -74,8 +74,8 @@ private slots:
 
     void benchRunsOnItsOwnThread()
     {
-        SimBench bench;
-        QSignalSpy ready(&bench, &SimBench::ready);
+        DemoBench bench;
+        QSignalSpy ready(&bench, &DemoBench::ready);
         const Error e = bench.start();
         QVERIFY2(!e, qPrintable(e.message));
         QVERIFY(bench.benchThread());
@@ -113,8 +113,8 @@ private slots:
                         [&] { return driveCount(dir) == expected && !w.connections()->isBusy(); }, 20000));
         QCOMPARE(int(dir->connections().size()), expected);
         for (int id : dir->connections()) {
-            QCOMPARE(dir->drives(id), QList<int>({SimBench::Address}));
-            QVERIFY(w.busTree()->driveItem(id, SimBench::Address));
+            QCOMPARE(dir->drives(id), QList<int>({DemoBench::Address}));
+            QVERIFY(w.busTree()->driveItem(id, DemoBench::Address));
         }
         // The first drive found is selected and shown.
         QVERIFY(w.workspace()->currentDrive().connectionId > 0);

@@ -1,6 +1,7 @@
 #include "drivepanels.h"
 
 #include "overviewpanel.h"
+#include "trendpanel.h"
 
 namespace dd {
 
@@ -8,7 +9,8 @@ QList<DrivePanel *> createDrivePanels(const DriveContext &context, QWidget *pare
 {
     QList<DrivePanel *> panels;
     panels << new OverviewPanel(context, parent);
-    // Further panels (parameters, backup/restore, EE, motion, trend, alarms) go here.
+    panels << new TrendPanel(context, parent);
+    // Further panels (parameters, backup/restore, EE, motion, alarms) go here.
     return panels;
 }
 

@@ -161,10 +161,6 @@
 </context>
 <context>
     <name>dd::BusTreeWidget</name>
-    <message>
-        <source>Link lost</source>
-        <translation type="vanished">连接中断</translation>
-    </message>
     <message numerus="yes">
         <source>%n drive(s)</source>
         <translation>
@@ -665,10 +661,6 @@
         <translation>--screenshot 之前等待的秒数（默认 3）。</translation>
     </message>
     <message>
-        <source>Unknown family &apos;%1&apos;; use one of: %2, detect.</source>
-        <translation type="vanished">未知系列“%1”，请使用：%2、detect。</translation>
-    </message>
-    <message>
         <source>The tab to show for the selected drive: overview, trend, ...</source>
         <translation>所选驱动器首先显示的标签页：overview、trend 等。</translation>
     </message>
@@ -1080,10 +1072,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>No</source>
         <translation>否</translation>
-    </message>
-    <message>
-        <source>No: %1</source>
-        <translation type="vanished">否：%1</translation>
     </message>
     <message>
         <source>Online</source>

@@ -228,7 +228,7 @@ void RestoreCommand::report(const Error &error)
             const O outcome = r.outcome(e.index);
             o.insert(QStringLiteral("result"), RestoreReport::outcomeId(outcome));
             const ParameterWriteResult *res = r.result(e.index);
-            if (res && res->readable && res->written)
+            if (res && res->readable && res->written && !res->readBackFailed)
                 o.insert(QStringLiteral("readBack"), double(res->readBack));
             switch (outcome) {
             case O::Verified: state = tr("verified"); break;
@@ -236,6 +236,10 @@ void RestoreCommand::report(const Error &error)
             case O::Mismatch: state = tr("WRITTEN, READ BACK %1").arg(res ? res->readBack : 0); break;
             case O::Failed: state = tr("NOT WRITTEN: %1").arg(res ? res->error : QString()); break;
             case O::NotAttempted: state = tr("NOT WRITTEN (not attempted)"); break;
+            case O::Unconfirmed:
+                state = res && res->written ? tr("WRITTEN, NOT VERIFIED (no answer to the read-back)")
+                                            : tr("UNKNOWN: %1").arg(res ? res->error : QString());
+                break;
             }
         } else {
             state = tr("would be written");
@@ -261,6 +265,7 @@ void RestoreCommand::report(const Error &error)
         json.insert(QStringLiteral("written"), keys(r.written()));
         json.insert(QStringLiteral("notWritten"), keys(r.notWritten()));
         json.insert(QStringLiteral("mismatch"), keys(r.indices(O::Mismatch)));
+        json.insert(QStringLiteral("unconfirmed"), keys(r.indices(O::Unconfirmed)));
     }
 
     if (error) {
@@ -275,6 +280,11 @@ void RestoreCommand::report(const Error &error)
                 n << dict.label(i);
             out()->line(tr("Written: %1").arg(w.isEmpty() ? tr("none") : w.join(QLatin1String(", "))));
             out()->line(tr("Not written: %1").arg(n.isEmpty() ? tr("none") : n.join(QLatin1String(", "))));
+            QStringList u;
+            for (int i : r.indices(O::Unconfirmed))
+                u << dict.label(i);
+            if (!u.isEmpty())
+                out()->line(tr("Unknown (read them again): %1").arg(u.join(QLatin1String(", "))));
         }
         return fail(error, json);
     }

@@ -80,6 +80,8 @@ struct ParameterWriteResult
     bool written = false;      // the drive accepted the write
     bool verified = false;     // read back and equal (write-only: never)
     bool readable = true;      // false for write-only parameters
+    bool readBackFailed = false; // no answer to the read-back (nor to the write, if !written):
+                                 // what the drive holds is unknown
     QString error;             // translated reason when !written or !verified
 };
 

@@ -94,8 +94,11 @@ void ParameterTransfer::identify()
 
 void ParameterTransfer::onIdentified(DriveReply *reply)
 {
-    if (!reply->ok())
-        return end(reply->error());
+    if (!reply->ok()) {
+        Error e = reply->error();
+        e.message = tr("The drive could not be identified: %1").arg(e.message);
+        return end(e);
+    }
     if (m_job == Job::Restore) {
         const DriveIdentity id = m_drive->identity();
         if (Error e = m_file.checkCompatible(id.family, id.firmware, m_options.force))
@@ -168,7 +171,8 @@ void ParameterTransfer::onWritten(DriveReply *reply)
     if (!reply->ok())
         return end(reply->error());
     if (!m_report.isComplete()) {
-        const QList<int> bad = m_report.notWritten() + m_report.indices(RestoreReport::Outcome::Mismatch);
+        const QList<int> bad = m_report.notWritten() + m_report.indices(RestoreReport::Outcome::Mismatch)
+            + m_report.indices(RestoreReport::Outcome::Unconfirmed);
         QStringList keys;
         for (int i : bad)
             keys << dictionary().label(i);

@@ -15,10 +15,12 @@ RestoreReport::Outcome RestoreReport::outcome(int index) const
     const ParameterWriteResult *r = result(index);
     if (!r)
         return Outcome::NotAttempted;
-    if (!r->written)
-        return Outcome::Failed;
     if (r->verified)
         return Outcome::Verified;
+    if (r->readBackFailed && r->readable)
+        return Outcome::Unconfirmed;
+    if (!r->written)
+        return Outcome::Failed;
     return r->readable ? Outcome::Mismatch : Outcome::WrittenOnly;
 }
 
@@ -73,6 +75,7 @@ QString RestoreReport::outcomeId(Outcome o)
     case Outcome::Mismatch: return QStringLiteral("mismatch");
     case Outcome::Failed: return QStringLiteral("failed");
     case Outcome::NotAttempted: return QStringLiteral("not-attempted");
+    case Outcome::Unconfirmed: return QStringLiteral("unconfirmed");
     }
     return {};
 }

@@ -26,7 +26,8 @@ struct RestoreReport
         WrittenOnly,     // written; write-only, so it cannot be read back
         Mismatch,        // written, but the read-back differs
         Failed,          // the drive did not accept the write
-        NotAttempted     // the restore stopped before this parameter
+        NotAttempted,    // the restore stopped before this parameter
+        Unconfirmed      // no answer to the read-back: the value the drive holds is unknown
     };
 
     ParameterDiff diff;
@@ -39,7 +40,8 @@ struct RestoreReport
     QList<int> indices(Outcome outcome) const;     // among `selected`, in order
     // Every selected parameter verified (or, write-only, written).
     bool isComplete() const;
-    // "written" = Verified, WrittenOnly or Mismatch (the drive took a value).
+    // "written" = Verified, WrittenOnly or Mismatch (the drive took a value); "not written"
+    // = Failed or NotAttempted; Unconfirmed ones are in neither list.
     QList<int> written() const;
     QList<int> notWritten() const;
 

@@ -111,9 +111,14 @@ void ServoCanDrive::writeOne(const ParameterWrite &w, int attempt, DriveReply *r
         ParameterWriteResult r;
         r.index = w.index;
         r.requested = w.value;
-        r.written = true; // sent; the drive does not acknowledge writes
+        r.written = true; // sent; the drive acknowledges nothing: the read-back tells
         if (e.isError()) {
-            r.error = tr("P%1 was written but could not be read back: %2").arg(w.index).arg(e.message);
+            r.written = false;
+            r.readBackFailed = true;
+            r.error = tr("P%1 was sent but could not be read back, so whether the drive took it "
+                         "is unknown: %2")
+                          .arg(w.index)
+                          .arg(e.message);
             done(r);
             return;
         }

@@ -451,14 +451,17 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
                     r.readBack = w.value;
                 } else if (!r.written) {
                     r.error = writeErrors.value(w.index).message;
-                    if (readBack)
+                    if (readBack) {
                         r.readBack = w.value > 32767 ? qint64(regs.value(reg)) : parameterValue(w.index, regs.value(reg));
-                    else if (writeErrors.value(w.index).code != ErrorCode::DriveException)
+                    } else if (writeErrors.value(w.index).code != ErrorCode::DriveException) {
+                        r.readBackFailed = true;
                         r.error += QLatin1Char(' ')
                                  + trDrive("Whether the drive took the value is unknown: read it again.");
+                    }
                     if (!first)
                         first = writeErrors.value(w.index);
                 } else if (readErrors.contains(w.index)) {
+                    r.readBackFailed = true;
                     r.error = readErrors.value(w.index).message;
                     if (!first)
                         first = readErrors.value(w.index);

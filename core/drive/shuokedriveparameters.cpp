@@ -184,6 +184,7 @@ void ShuokeDrive::writeNext(DriveReply *reply, QList<ParameterWrite> writes, int
                     return;
                 }
                 res.error = e.message;
+                res.readBackFailed = bool(e2);
                 if (!e2)
                     res.readBack = value;
                 else
@@ -217,6 +218,7 @@ void ShuokeDrive::writeNext(DriveReply *reply, QList<ParameterWrite> writes, int
         readOneParameter(reply, p, [this, res, first, next, w](const Error &e2, qint64 value) mutable {
             Error f = first;
             if (e2) {
+                res.readBackFailed = true;
                 res.error = tr("Written, but reading it back failed: %1").arg(e2.message);
                 if (!f)
                     f = e2;

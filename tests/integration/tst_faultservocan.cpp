@@ -194,12 +194,16 @@ void TestFaultServoCan::silentMidBackup()
 
 void TestFaultServoCan::silentMidRestore()
 {
-    QList<ParameterWrite> writes;
+    const BackupOutcome base = backupToFile(drive(), m_dir.filePath(QStringLiteral("base.json")));
+    QVERIFY2(!base.error.isError(), qPrintable(base.error.message));
+    BackupFile file = base.file;
+    ParameterSet values = file.values();
     QMap<int, qint64> old;
     for (int p = 100; p < 120; p += 2) {
-        writes.append({p, value(p) + 11});
         old.insert(p, value(p));
+        values.set(p, value(p) + 11);
     }
+    file.setValues(values);
     int seen = 0;
     // Direct: the drive goes silent as the fifth write reaches the bus, before it hears it.
     connect(
@@ -209,26 +213,26 @@ void TestFaultServoCan::silentMidRestore()
                 m_sim->faults().setSilent(true);
         },
         Qt::DirectConnection);
-    DriveReply *r = drive()->writeParameters(writes);
-    QVERIFY(waitFinished(r, 5000));
-    QVERIFY(isClearError(r->error()));
-    QCOMPARE(r->writeResults().size(), writes.size());
+    const RestoreOutcome o = restoreFrom(drive(), file);
+    QVERIFY2(o.finished, "a restore must never hang");
+    QVERIFY(isClearError(o.error));
+    const RestoreReport &r = o.report;
+    QCOMPARE(r.selected.size(), 10);
     const QString lie = dishonesty(
-        r->writeResults(), [&](int p) { return value(p); }, [&](int p) { return old.value(p); });
+        r.results, [&](int p) { return value(p); }, [&](int p) { return old.value(p); });
     QVERIFY2(lie.isEmpty(), qPrintable(lie));
-    QStringList verified;
-    QStringList changed;
-    for (const ParameterWriteResult &w : r->writeResults()) {
-        if (w.verified)
-            verified << QString::number(w.index);
-        if (value(w.index) != old.value(w.index))
-            changed << QString::number(w.index);
-    }
-    // Exactly the parameters the drive changed are reported verified.
-    QCOMPARE(verified, changed);
-    QCOMPARE(verified.size(), 4);
-    qInfo("silent mid-restore: verified P%s; the others: %s", qPrintable(verified.join(QStringLiteral(", P"))),
-          qPrintable(r->writeResults().last().error));
+    QList<int> changed;
+    for (const DiffEntry &e : r.selected)
+        if (value(e.index) != old.value(e.index))
+            changed << e.index;
+    // Exactly the parameters the drive changed are reported verified (and written); the
+    // others are unconfirmed: the protocol acknowledges no write, and no read-back came.
+    QCOMPARE(r.indices(RestoreReport::Outcome::Verified), changed);
+    QCOMPARE(r.written(), changed);
+    QCOMPARE(changed.size(), 4);
+    QCOMPARE(r.indices(RestoreReport::Outcome::Unconfirmed).size(), 6);
+    qInfo("silent mid-restore: %s", qPrintable(describe(r)));
+    qInfo("  %s", qPrintable(o.error.message));
 }
 
 void TestFaultServoCan::busGoneMidBackup()

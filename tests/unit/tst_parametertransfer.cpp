@@ -131,6 +131,7 @@ private slots:
     void restoreRefusesOtherFirmwareUnlessForced();
     void restoreReportsMismatch();
     void restoreReportsWhatWasNotWritten();
+    void unansweredReadBackIsUnconfirmed();
     void dryRunWritesNothing();
     void onlyNarrowsTheSelection();
     void readableIndicesFollowModels();
@@ -244,6 +245,37 @@ void TestParameterTransfer::restoreReportsWhatWasNotWritten()
     QCOMPARE(r.outcome(14), RestoreReport::Outcome::NotAttempted);
     QCOMPARE(r.written(), (QList<int>{10}));
     QCOMPARE(r.notWritten(), (QList<int>{12, 14}));
+}
+
+void TestParameterTransfer::unansweredReadBackIsUnconfirmed()
+{
+    RestoreReport r;
+    auto result = [&r](int index, bool written, bool verified, bool readBackFailed) {
+        DiffEntry e;
+        e.index = index;
+        r.selected.append(e);
+        ParameterWriteResult w;
+        w.index = index;
+        w.requested = 5;
+        w.readBack = verified ? 5 : 0;
+        w.written = written;
+        w.verified = verified;
+        w.readBackFailed = readBackFailed;
+        r.results.append(w);
+    };
+    result(1, true, true, false);   // verified
+    result(2, true, false, true);   // the drive took it, the read-back got no answer
+    result(3, false, false, true);  // no answer to the write nor to the read-back
+    result(4, false, false, false); // refused
+    QCOMPARE(r.outcome(1), RestoreReport::Outcome::Verified);
+    QCOMPARE(r.outcome(2), RestoreReport::Outcome::Unconfirmed);
+    QCOMPARE(r.outcome(3), RestoreReport::Outcome::Unconfirmed);
+    QCOMPARE(r.outcome(4), RestoreReport::Outcome::Failed);
+    QCOMPARE(r.written(), (QList<int>{1}));
+    QCOMPARE(r.notWritten(), (QList<int>{4}));
+    QCOMPARE(r.indices(RestoreReport::Outcome::Unconfirmed), (QList<int>{2, 3}));
+    QVERIFY(!r.isComplete());
+    QCOMPARE(RestoreReport::outcomeId(RestoreReport::Outcome::Unconfirmed), QStringLiteral("unconfirmed"));
 }
 
 void TestParameterTransfer::dryRunWritesNothing()

@@ -268,7 +268,19 @@ DriveReply *ServoModbusDrive::readParameters(const QList<int> &indices)
         m_link, requests, reply, ModbusBatch::Mode::StopOnError,
         [this, reply, requests, indices](const Error &error, const QList<ModbusBatch::Result> &results) {
             if (error) {
-                reply->finish(error);
+                // Name the parameters the failed request was for.
+                Error e = error;
+                for (int i = 0; i < results.size() && i < requests.size(); ++i) {
+                    if (!results.at(i).error)
+                        continue;
+                    const int first = servomodbus::parameterIndex(requests.at(i).pdu.start);
+                    e.message = trDrive("PA%1..PA%2: %3")
+                                    .arg(first)
+                                    .arg(first + requests.at(i).pdu.count - 1)
+                                    .arg(error.message);
+                    break;
+                }
+                reply->finish(e);
                 return;
             }
             const auto regs = collect(requests, results);

@@ -282,6 +282,13 @@
     </message>
 </context>
 <context>
+    <name>dd::ChannelSampler</name>
+    <message>
+        <source>The drive is gone; sampling stopped.</source>
+        <translation>驱动器已不在；采样已停止。</translation>
+    </message>
+</context>
+<context>
     <name>dd::ConnectDialog</name>
     <message>
         <source>%1 kbit/s</source>
@@ -623,6 +630,30 @@
     <message>
         <source>The %1 drive family has no &quot;%2&quot; operation.</source>
         <translation>%1 驱动器系列没有“%2”操作。</translation>
+    </message>
+    <message>
+        <source>%1 is given twice. Nothing was written.</source>
+        <translation>%1 给出了两次。未写入任何参数。</translation>
+    </message>
+    <message>
+        <source>The jog lease was not renewed within %1 ms.</source>
+        <translation>点动租约在 %1 ms 内未续期。</translation>
+    </message>
+    <message>
+        <source>The axis was stopped by a stop command.</source>
+        <translation>轴已由停止命令停止。</translation>
+    </message>
+    <message>
+        <source>%1 The drive&apos;s own watchdog stops the axis %2 ms after it last heard from DriveDesk.</source>
+        <translation>%1 驱动器自身的看门狗会在最后一次收到 DriveDesk 消息 %2 ms 后停止该轴。</translation>
+    </message>
+    <message>
+        <source>%1 This drive has no watchdog: the axis may still be moving. Use the machine&apos;s emergency stop.</source>
+        <translation>%1 该驱动器没有看门狗：轴可能仍在运动。请使用机器的急停按钮。</translation>
+    </message>
+    <message>
+        <source>The link to the drive was closed.</source>
+        <translation>与驱动器的连接已关闭。</translation>
     </message>
 </context>
 <context>
@@ -996,6 +1027,18 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>The drive at address %1 rejected the request (Modbus exception %2: %3; the reply carried address byte %4).</source>
         <translation>地址 %1 的驱动器拒绝了请求（Modbus 异常 %2：%3；应答中的地址字节为 %4）。</translation>
     </message>
+    <message>
+        <source>No complete reply from address %1 on %2 within %3 ms: only %4 byte(s) arrived, which form no valid frame (an incomplete or garbled reply). Check the baud rate, the wiring and the bus termination.</source>
+        <translation>%3 ms 内 %2 上地址 %1 没有完整应答：只收到 %4 个字节，构不成有效帧（应答不完整或已损坏）。请检查波特率、接线和总线终端电阻。</translation>
+    </message>
+    <message>
+        <source>A frame with function %1 came from that address instead, which does not answer this request (function %2).</source>
+        <translation>该地址发来的是功能码 %1 的帧，不是对本请求（功能码 %2）的应答。</translation>
+    </message>
+    <message>
+        <source>A frame from address %1 arrived instead: do two drives share an address, or does another master talk on the bus?</source>
+        <translation>收到的是地址 %1 的帧：是否有两台驱动器使用同一地址，或总线上有另一个主站？</translation>
+    </message>
 </context>
 <context>
     <name>dd::OverviewPanel</name>
@@ -1223,6 +1266,29 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
 </context>
 <context>
+    <name>dd::ParameterTransfer</name>
+    <message>
+        <source>A backup or restore is already running on this drive.</source>
+        <translation>该驱动器上已有备份或恢复正在进行。</translation>
+    </message>
+    <message>
+        <source>The drive is gone.</source>
+        <translation>驱动器已不在。</translation>
+    </message>
+    <message>
+        <source>The drive could not be identified: %1</source>
+        <translation>无法识别驱动器：%1</translation>
+    </message>
+    <message>
+        <source>The parameter dictionary lists no readable parameter.</source>
+        <translation>参数字典中没有可读的参数。</translation>
+    </message>
+    <message>
+        <source>Not every parameter was restored: %1.</source>
+        <translation>并非所有参数都已恢复：%1。</translation>
+    </message>
+</context>
+<context>
     <name>dd::RecentFiles</name>
     <message>
         <source>(none)</source>
@@ -1279,6 +1345,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>The serial port %1 failed (%2). Was the adapter unplugged?</source>
         <translation>串口 %1 出错（%2）。适配器是否已拔出？</translation>
+    </message>
+    <message>
+        <source>Answers came after the timeout: the drive is slower than the response allowance (%1 ms): raise the timeout.</source>
+        <translation>应答在超时之后才到达：驱动器比应答余量（%1 ms）慢，请增大超时时间。</translation>
     </message>
 </context>
 <context>
@@ -1337,10 +1407,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>到站号 %1 的 CAN 连接未打开。</translation>
     </message>
     <message>
-        <source>%1 reads of P%2 gave no two equal values.</source>
-        <translation>读取 P%2 共 %1 次，没有两次结果相同。</translation>
-    </message>
-    <message>
         <source>Station %1 did not start within %2 ms. Is an alarm active? Is parameter 4 = 8 (internal run control) and parameter 74 = 1 (CAN)?</source>
         <translation>站号 %1 在 %2 ms 内未启动。是否有报警？参数 4 是否为 8（内部运行控制）、参数 74 是否为 1（CAN）？</translation>
     </message>
@@ -1385,10 +1451,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>P%1 = %2 超出范围：servo-can 参数为 -32768 到 32767 的 16 位数值。未写入任何数据。</translation>
     </message>
     <message>
-        <source>P%1 was written but could not be read back: %2</source>
-        <translation>P%1 已写入，但无法回读：%2</translation>
-    </message>
-    <message>
         <source>P%1: wrote %2 but the drive reads back %3 (%4 attempts). The drive may limit this parameter or not accept writes in its present state.</source>
         <translation>P%1：写入 %2，但回读为 %3（尝试 %4 次）。驱动器可能限制了该参数，或在当前状态下不接受写入。</translation>
     </message>
@@ -1419,6 +1481,22 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Station %1: position set to %2 but it reads back %3.</source>
         <translation>站号 %1：位置设为 %2，但回读为 %3。</translation>
+    </message>
+    <message>
+        <source>Station %1 has sent no heartbeat for %2 ms either: has it lost power or its CAN cable?</source>
+        <translation>站号 %1 也已 %2 ms 没有发送心跳：是否断电或 CAN 线缆脱落？</translation>
+    </message>
+    <message>
+        <source>%1 reads of P%2 gave no value often enough to trust it.</source>
+        <translation>读取 P%2 共 %1 次，没有一个值出现足够多次，无法确认。</translation>
+    </message>
+    <message>
+        <source>P%1 was sent but could not be read back, so whether the drive took it is unknown: %2</source>
+        <translation>P%1 已发送但无法回读，驱动器是否接受未知：%2</translation>
+    </message>
+    <message>
+        <source>The stop command was sent, but station %1 has sent no heartbeat since (%2 ms): it may not have received it.</source>
+        <translation>停止命令已发送，但站号 %1 此后（%2 ms）没有发送心跳：它可能没有收到该命令。</translation>
     </message>
 </context>
 <context>
@@ -1595,6 +1673,14 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>%1 did not finish within %2 s: the drive still reports it running after %3 polls. Do not switch the drive off; read its parameters again to see what was stored.</source>
         <translation>%1 在 %2 秒内未完成：查询 %3 次后驱动器仍报告执行中。请勿关闭驱动器电源；重新读取参数以确认保存的内容。</translation>
+    </message>
+    <message>
+        <source>PA%1..PA%2: %3</source>
+        <translation>PA%1..PA%2：%3</translation>
+    </message>
+    <message>
+        <source>Whether the drive took the value is unknown: read it again.</source>
+        <translation>驱动器是否接受该值未知：请重新读取。</translation>
     </message>
 </context>
 <context>
@@ -1787,6 +1873,14 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Parameter %1: %2</source>
         <translation>参数 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Whether the drive took the value is unknown: read it again.</source>
+        <translation>驱动器是否接受该值未知：请重新读取。</translation>
     </message>
 </context>
 <context>

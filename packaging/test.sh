@@ -102,8 +102,8 @@ fuzz_one() {
   [ -n "$dict" ] && args+=(-dict="$dict")
   "$bin" "${args[@]}" "$run/corpus" "$@" > "$log" 2>&1
   rc=$?
-  units="$(grep -Eo 'stat::number_of_executed_units: [0-9]+' "$log" | grep -Eo '[0-9]+$')"
-  added="$(grep -Eo 'stat::new_units_added: [0-9]+' "$log" | grep -Eo '[0-9]+$')"
+  units="$(grep -Eo 'stat::number_of_executed_units:[[:space:]]*[0-9]+' "$log" | grep -Eo '[0-9]+$')"
+  added="$(grep -Eo 'stat::new_units_added:[[:space:]]*[0-9]+' "$log" | grep -Eo '[0-9]+$')"
   if [ "$rc" -eq 0 ]; then
     echo "ok $name: ${units:-?} inputs in ${fuzz_seconds} s, ${added:-?} new" > "$run.result"
   else

@@ -1,7 +1,9 @@
 // ModbusRtuStreamParser, both modes (core/protocol/modbusrtuparser.h), and its static
 // checkFrame() used by the serial link's reply matcher.
 // Input: [mode/cap: bit0 = Replies, bits 1..7 = cap selector (0 = default 256, else 8 + n)]
-//        [chunk: feed() slices of 1 + chunk bytes][byte stream].
+//        [chunk: feed() slices of 1 + chunk bytes][format: bit0 = segments]
+//        [byte stream, or with bit0 segments that become frames with a CRC or noise: see
+//        fuzz::segmentsWithCrc()].
 // Invariants: fewer than bufferCap bytes wait after every feed(); every delivered frame is
 // CRC-valid, at most bufferCap long, a frame by checkFrame() and present in the input; no byte
 // is lost or invented (discarded + delivered + pending == fed); discardPending() empties.
@@ -25,7 +27,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const int capSelector = control >> 1;
     const int cap = capSelector == 0 ? Parser::DefaultBufferCap : Parser::MinBufferCap + capSelector;
     const qsizetype chunk = 1 + in.byte();
-    const QByteArray stream = in.rest();
+    const bool segments = in.byte() & 1;
+    const QByteArray stream = segments ? fuzz::segmentsWithCrc(in) : in.rest();
 
     Parser parser(mode, cap);
     DD_FUZZ_CHECK(parser.bufferCap() == cap);

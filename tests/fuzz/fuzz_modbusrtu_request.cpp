@@ -1,6 +1,6 @@
 // Modbus RTU request decoder, drive side (core/protocol/modbusrtu.h), and the servo-modbus
 // drive's request validation (core/protocol/servomodbus.h) on what it accepts.
-// Input: [maxCount selector: 0 = Modbus limits, else 1..125][request ADU].
+// Input: [flags: bit0 = repair the CRC][maxCount selector % 126: 0 = Modbus limits][request ADU].
 // Invariants: a reason is given exactly when the decode fails; an accepted request
 // re-encodes to the input bytes exactly and respects the register limit.
 
@@ -16,8 +16,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fuzz::initialise();
     fuzz::FuzzInput in(data, size);
+    const bool repairCrc = in.byte() & 1;
     const int maxCount = in.byte() % 126; // 0 = UseStandardLimit
-    const QByteArray adu = in.rest();
+    const QByteArray adu = repairCrc ? fuzz::withRepairedCrc(in.rest()) : in.rest();
 
     DecodeError reason = DecodeError::TooShort;
     const Decoded<Request> d = decodeRequest(adu, maxCount, &reason);
@@ -35,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     DD_FUZZ_CHECK(r.function == WriteSingleRegister || r.count <= standard);
     DD_FUZZ_CHECK(r.function == ReadHoldingRegisters || r.values.size() == r.count);
     DD_FUZZ_CHECK(encodeRequest(r) == adu);
-    DD_FUZZ_CHECK(expectedReplySize(r) >= 8 && expectedReplySize(r) <= MaxAduSize);
+    DD_FUZZ_CHECK(expectedReplySize(r) >= 7 && expectedReplySize(r) <= MaxAduSize);
 
     (void)servomodbus::validateRequest(r);
     return 0;

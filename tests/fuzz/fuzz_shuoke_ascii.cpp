@@ -1,5 +1,6 @@
 // Shuoke ASCII line decoder (core/protocol/shuokeascii.h) and the value codecs on its data.
-// Input: [options: bit0 check = two's complement, bit1 acceptLengthPlusOne][one line].
+// Input: [options: bit0 check = two's complement, bit1 acceptLengthPlusOne, bit2 repair the check
+//         byte][one line].
 // Invariants: an accepted line re-encodes to bytes that decode to the same frame; a line in
 // the canonical form (upper-case hex, CR LF, len = data bytes) re-encodes to itself.
 
@@ -18,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     AsciiOptions options;
     options.check = (control & 1) ? AsciiCheck::TwosComplement : AsciiCheck::PlainSum;
     options.acceptLengthPlusOne = control & 2;
-    const QByteArray line = in.rest();
+    const QByteArray line = (control & 4) ? fuzz::withRepairedAsciiCheck(in.rest(), options.check) : in.rest();
 
     const Decoded<Frame> d = decodeAscii(line, options);
     DD_FUZZ_CHECK(d.ok() != !d.error.isEmpty());

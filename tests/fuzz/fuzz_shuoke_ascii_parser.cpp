@@ -1,7 +1,9 @@
 // Shuoke AsciiStreamParser (core/protocol/shuokeasciistreamparser.h).
-// Input: [options: bit0 check = two's complement, bit1 acceptLengthPlusOne]
+// Input: [options: bit0 check = two's complement, bit1 acceptLengthPlusOne, bit2 segments]
 //        [capacity selector: 0 = default, else 4 x the value (raised to the minimum)]
-//        [chunk: feed() slices of 1 + chunk bytes][character stream].
+//        [chunk: feed() slices of 1 + chunk bytes]
+//        [character stream, or with bit2 segments that become valid lines or noise: see
+//        fuzz::asciiSegments()].
 // Invariants: the buffer never exceeds its capacity; every frame's hex form (upper-cased, len
 // = data bytes or data + 1) occurs in the upper-cased input: the parser invents nothing;
 // a rejected frame leaves a reason.
@@ -38,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     options.acceptLengthPlusOne = control & 2;
     const quint8 capacitySelector = in.byte();
     const qsizetype chunk = 1 + in.byte();
-    const QByteArray stream = in.rest();
+    const QByteArray stream = (control & 4) ? fuzz::asciiSegments(in, options.check) : in.rest();
     const QByteArray upper = stream.toUpper();
 
     AsciiStreamParser parser(options, capacitySelector == 0 ? AsciiStreamParser::kDefaultCapacity : 4 * capacitySelector);

@@ -1,6 +1,6 @@
 // Shuoke PLC-mode codec (core/protocol/shuokeplc.h): the reply decoder (host side) judged
 // against a request, and the request decoder (drive side, simulator).
-// Input: [mode: bit0 = request decoder][base: u16 LE]
+// Input: [mode: bit0 = request decoder, bit1 = repair the ADU's CRC][base: u16 LE]
 //        reply mode: [request address][request command][request data length % 8][data...]
 //        then the ADU.
 // Invariants: an accepted reply answers the request's command from an address that may
@@ -19,12 +19,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fuzz::initialise();
     fuzz::FuzzInput in(data, size);
-    const bool requestMode = in.byte() & 1;
+    const quint8 mode = in.byte();
+    const bool requestMode = mode & 1;
+    const bool repairCrc = mode & 2;
     PlcOptions options;
     options.base = in.u16();
 
     if (requestMode) {
-        const QByteArray adu = in.rest();
+        const QByteArray adu = repairCrc ? fuzz::withRepairedCrc(in.rest()) : in.rest();
         const Decoded<Frame> d = decodePlcRequest(adu, options);
         DD_FUZZ_CHECK(d.ok() != !d.error.isEmpty());
         if (!d.ok())
@@ -47,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     request.address = in.byte();
     request.command = in.byte() & 0x7F;
     request.data = in.take(in.byte() % 8);
-    const QByteArray adu = in.rest();
+    const QByteArray adu = repairCrc ? fuzz::withRepairedCrc(in.rest()) : in.rest();
     const Decoded<Frame> d = decodePlcReply(adu, request, options);
     DD_FUZZ_CHECK(d.ok() != !d.error.isEmpty());
     if (!d.ok())

@@ -1,6 +1,6 @@
 // Shuoke RTU frame decoder (core/protocol/shuokertu.h) and the value codecs on its data.
-// Input: [options: bit0 acceptLengthWithCrc, bit1 acceptFixedLength, bit2 skipHandshakeCrc]
-//        [one frame].
+// Input: [options: bit0 acceptLengthWithCrc, bit1 acceptFixedLength, bit2 skipHandshakeCrc,
+//         bit3 repair the CRC (the frame's last two bytes)][one frame].
 // Invariants: an accepted frame has a layout; a Standard frame with a valid CRC re-encodes to
 // the input exactly; a FixedLength frame re-encodes (padded) to the input when the padding is
 // zero; every accepted frame re-encodes to bytes that decode to the same frame.
@@ -22,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     options.acceptLengthWithCrc = control & 1;
     options.acceptFixedLength = control & 2;
     options.skipHandshakeCrc = control & 4;
-    const QByteArray bytes = in.rest();
+    const QByteArray bytes = (control & 8) ? fuzz::withRepairedCrc(in.rest()) : in.rest();
 
     RtuLayout layout = static_cast<RtuLayout>(0xFF);
     const Decoded<Frame> d = decodeRtu(bytes, options, &layout);

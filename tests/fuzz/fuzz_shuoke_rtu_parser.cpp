@@ -1,8 +1,10 @@
 // Shuoke RtuStreamParser (core/protocol/shuokertustreamparser.h).
 // Input: [options: bit0 acceptLengthWithCrc, bit1 acceptFixedLength, bit2 skipHandshakeCrc,
-//         bit3 use feed() instead of append() + takeFrame()]
+//         bit3 use feed() instead of append() + takeFrame(), bit4 segments]
 //        [capacity selector: 0 = default, else the value (raised to the minimum)]
-//        [chunk: input slices of 1 + chunk bytes][byte stream].
+//        [chunk: input slices of 1 + chunk bytes]
+//        [byte stream, or with bit4 segments that become frames with a CRC or noise: see
+//        fuzz::segmentsWithCrc()].
 // Invariants: the buffer never exceeds its capacity; every frame's header and data bytes
 // occur in the input (the parser invents nothing), with the length byte of its layout; with
 // append() + takeFrame() no byte is lost or invented (discarded + frames + buffered == fed).
@@ -60,7 +62,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const bool useFeed = control & 8;
     const quint8 capacitySelector = in.byte();
     const qsizetype chunk = 1 + in.byte();
-    const QByteArray stream = in.rest();
+    const QByteArray stream = (control & 16) ? fuzz::segmentsWithCrc(in) : in.rest();
 
     RtuStreamParser parser(options, capacitySelector == 0 ? RtuStreamParser::kDefaultCapacity : capacitySelector);
     const qsizetype capacity = parser.capacity();

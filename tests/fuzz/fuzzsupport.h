@@ -61,6 +61,18 @@ private:
     size_t m_n;
 };
 
+// Frames behind a CRC are out of a mutation-based fuzzer's reach: almost no mutated frame
+// has a valid CRC, so the checks after it would never run. The targets therefore offer
+// modes (a control bit) that repair the CRC of what the fuzzer produced.
+
+// `bytes` with its last two bytes replaced by the CRC-16/MODBUS of the bytes before them.
+QByteArray withRepairedCrc(const QByteArray &bytes);
+
+// A byte stream built from segments [h][h & 0x7F bytes]: with bit 7 of h set the segment
+// gets its CRC-16/MODBUS appended (a frame), else it is copied as it is (noise, truncated
+// frames). Reads `in` to its end.
+QByteArray segmentsWithCrc(FuzzInput &in);
+
 // Once per process: silences Qt's debug / info / warning output (the loaders log on every
 // rejected input, which would slow fuzzing to a crawl); fatal messages still print and
 // abort. Registers drivedesk_core's resources (bundled dictionaries).

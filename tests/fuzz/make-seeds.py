@@ -45,6 +45,16 @@ def u32(v):
     return struct.pack('<I', v)
 
 
+def segments(frames, noise=b''):
+    """The segment form of tests/fuzz/fuzzsupport.h segmentsWithCrc(): each frame (CRC
+    included) becomes [0x80 | length without CRC][bytes without CRC]; noise is one plain
+    segment in front."""
+    out = bytes([len(noise)]) + noise if noise else b''
+    for f in frames:
+        out += bytes([0x80 | (len(f) - 2)]) + f[:-2]
+    return out
+
+
 def write(target, name, data):
     folder = os.path.join(CORPUS, target)
     os.makedirs(folder, exist_ok=True)
@@ -109,11 +119,13 @@ MODBUS_REPLIES = {  # name: (request address, function, start, count, reply)
 
 def modbus():
     for name, data in MODBUS_REQUESTS.items():
-        write('fuzz_modbusrtu_request', name, b'\x00' + h(data))
-        write('fuzz_modbusrtu_request', name + '-max20', b'\x14' + h(data))
+        write('fuzz_modbusrtu_request', name, b'\x00\x00' + h(data))
+        write('fuzz_modbusrtu_request', name + '-max20-repair-crc', b'\x01\x14' + h(data))
     selector = {0x03: 0, 0x06: 1, 0x10: 2}
     for name, (addr, fc, start, count, data) in MODBUS_REPLIES.items():
-        write('fuzz_modbusrtu_reply', name, bytes([addr, selector[fc]]) + u16(start) + u16(count) + h(data))
+        request = bytes([addr, selector[fc]]) + u16(start) + u16(count)
+        write('fuzz_modbusrtu_reply', name, b'\x00' + request + h(data))
+        write('fuzz_modbusrtu_reply', name + '-repair-crc', b'\x01' + request + h(data))
 
     # Streams: frames back to back, with noise, local echo and a truncated frame.
     reqs = [h(MODBUS_REQUESTS[n]) for n in ('read-0x6b-3', 'write-single', 'write-multiple', 'ee-new')]
@@ -128,8 +140,10 @@ def modbus():
         'replies-claims-long': (1, h('0503fe') + reps[1]),
     }
     for name, (control, data) in streams.items():
-        write('fuzz_modbusrtu_parser', name, bytes([control, 0xff]) + data)
-        write('fuzz_modbusrtu_parser', name + '-bytewise', bytes([control, 0]) + data)
+        write('fuzz_modbusrtu_parser', name, bytes([control, 0xff, 0]) + data)
+        write('fuzz_modbusrtu_parser', name + '-bytewise', bytes([control, 0, 0]) + data)
+    write('fuzz_modbusrtu_parser', 'requests-segments', bytes([0, 3, 1]) + segments(reqs, b'\x01\x10\x00'))
+    write('fuzz_modbusrtu_parser', 'replies-segments', bytes([1, 3, 1]) + segments(reps, b'\x05\x03'))
 
 
 SHUOKE_RTU = {  # tst_shuokertu.cpp and the seed's examples
@@ -183,7 +197,7 @@ SHUOKE_ASCII = {  # tst_shuokeascii.cpp and the seed's worked example
 
 def shuoke():
     for name, data in SHUOKE_RTU.items():
-        for control in (0, 3, 7):
+        for control in (0, 3, 7, 11):
             write('fuzz_shuoke_rtu', '%s-opt%d' % (name, control), bytes([control]) + h(data))
     rtu = [h(SHUOKE_RTU[n]) for n in ('change-address', 'speed-reply', 'status-reply', 'failure-reply',
                                        'len-counts-crc', 'fixed-length')]
@@ -196,15 +210,23 @@ def shuoke():
         for control in (0x3, 0x0, 0xF):
             write('fuzz_shuoke_rtu_parser', '%s-opt%d' % (name, control), bytes([control, 0, 0xff]) + data)
         write('fuzz_shuoke_rtu_parser', name + '-bytewise', bytes([0x3, 0, 0]) + data)
+    write('fuzz_shuoke_rtu_parser', 'segments', bytes([0x13, 0, 4]) + segments(rtu, b'\x01\x36\x04'))
+    write('fuzz_shuoke_rtu_parser', 'segments-feed', bytes([0x1B, 0, 0xff]) + segments(rtu))
 
     for name, line in SHUOKE_ASCII.items():
         control = 1 if name in ('lower-case', 'twos-complement') else 2
         write('fuzz_shuoke_ascii', name, bytes([control]) + line)
+        write('fuzz_shuoke_ascii', name + '-repair-check', bytes([control | 4]) + line)
     stream = b''.join(SHUOKE_ASCII[n] for n in ('change-address', 'speed-reply', 'bad-check', 'failure'))
     write('fuzz_shuoke_ascii_parser', 'lines', bytes([2, 0, 0xff]) + stream)
     write('fuzz_shuoke_ascii_parser', 'lines-bytewise', bytes([2, 0, 0]) + stream)
     write('fuzz_shuoke_ascii_parser', 'garbage-and-interrupted',
           bytes([2, 0, 5]) + b'xx:01220:0122010226\r\n:01X2010226\r\n:0222010227\r\n')
+    ascii_segments = b''
+    for n in ('change-address', 'speed-reply', 'failure'):
+        body = bytes.fromhex(SHUOKE_ASCII[n][1:].strip().decode())[:-1]
+        ascii_segments += bytes([0x80 | len(body)]) + body
+    write('fuzz_shuoke_ascii_parser', 'segments', bytes([6, 0, 0xff]) + b'\x03x:0' + ascii_segments)
     write('fuzz_shuoke_ascii_parser', 'too-long', bytes([2, 0, 0xff]) + b':' + b'0' * 60 + b'\r\n'
           + SHUOKE_ASCII['status-reply'])
 
@@ -236,6 +258,8 @@ def shuoke():
     for name, (base, addr, cmd, data, adu) in plc_replies.items():
         d = h(data)
         write('fuzz_shuoke_plc', 'reply-' + name, b'\x00' + u16(base) + bytes([addr, cmd, len(d)]) + d + h(adu))
+        write('fuzz_shuoke_plc', 'reply-' + name + '-repair-crc',
+              b'\x02' + u16(base) + bytes([addr, cmd, len(d)]) + d + h(adu))
     plc_requests = {
         'read-speed': with_crc(h('010300360002')).hex(),
         'set-address': '011000220002040200000071d6',
@@ -247,6 +271,7 @@ def shuoke():
     }
     for name, adu in plc_requests.items():
         write('fuzz_shuoke_plc', 'request-' + name, b'\x01' + u16(0) + h(adu))
+        write('fuzz_shuoke_plc', 'request-' + name + '-repair-crc', b'\x03' + u16(0) + h(adu))
 
 
 def json_loaders():

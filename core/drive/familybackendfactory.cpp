@@ -1,15 +1,18 @@
 #include "drive/driveconnection.h"
 #include "drive/familybackend.h"
+#include "drive/servocanbackend.h"
+#include "drive/servomodbusbackend.h"
 
 namespace dd {
 
 // One place that knows every family's backend class.
 FamilyBackend *createFamilyBackend(Family family, QObject *parent)
 {
-    Q_UNUSED(parent);
     switch (family) {
     case Family::ServoCan:
+        return new ServoCanBackend(parent);
     case Family::ServoModbus:
+        return new ServoModbusBackend(parent);
     case Family::Shuoke:
         break;
     }

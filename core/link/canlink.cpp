@@ -5,6 +5,7 @@
 #include <QCanBus>
 #include <QCanBusFrame>
 #include <QLoggingCategory>
+#include <QTcpSocket>
 #include <QVariant>
 
 Q_LOGGING_CATEGORY(lcCanLink, "drivedesk.link.can")
@@ -255,6 +256,13 @@ void CanLink::onFramesReceived()
 void CanLink::onStateChanged(QCanBusDevice::CanBusDeviceState state)
 {
     if (state == QCanBusDevice::ConnectedState) {
+        if (m_settings.plugin == QLatin1String("virtualcan")) {
+            // Qt's virtualcan leaves Nagle's algorithm on its TCP socket: a frame written
+            // while the previous one is unacknowledged waits for the peer's delayed ACK
+            // (~40 ms on Linux), which stalls pipelined requests into timeouts.
+            for (QTcpSocket *socket : m_device->findChildren<QTcpSocket *>())
+                socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+        }
         while (!m_unsent.isEmpty()) {
             const auto item = m_unsent.dequeue();
             writeNow(item.first, item.second);

@@ -1,0 +1,68 @@
+#pragma once
+
+#include "drive/discovery.h"
+#include "link/modbuslink.h"
+
+#include <QList>
+#include <QPointer>
+#include <QSet>
+
+namespace dd {
+
+class LinkReply;
+
+// Finds servo-modbus drives: for each baud rate of ScanOptions::bauds (baud-major, so the
+// port is reopened once per rate), asks every address of from..to that has not answered yet
+// for PA2 (one register: the firmware version, reported with the drive).
+//
+// Per-probe timeout (ScanOptions::timeoutMs = -1): the wire time of the request and its
+// 7-byte reply at that baud plus an allowance: allowanceMs() (4 ms unless set), raised to
+// 2 x the slowest turnaround seen so far + 1 ms once drives answer. A drive behind a slow
+// USB adapter (latency timer 16 ms) needs an explicit timeout (e.g. 40 ms). No retries,
+// except one repeat of a probe whose reply was garbled. An exception reply also counts as
+// "a device answers here" (state "exception <code>").
+// Probes are queued two at a time, so that the link sends the next one without waiting for
+// this object. Qt's inter-frame delay (2 ms; 5 ms at 9600) comes before each probe.
+// The link is left at its original baud; cancel() stops at once (finished(Cancelled)).
+class ServoModbusScanner : public Discovery
+{
+    Q_OBJECT
+public:
+    static constexpr int DefaultAllowanceMs = 4;
+
+    ServoModbusScanner(ModbusLink *link, const ScanOptions &options, QObject *parent = nullptr);
+    ~ServoModbusScanner() override;
+
+    void start() override;
+    void cancel() override;
+
+    void setAllowanceMs(int ms) { m_baseAllowanceUs = qint64(ms) * 1000; }
+    int allowanceMs() const;
+    int probeTimeoutMs() const;   // at the link's current baud
+    int probesSent() const { return m_probesSent; }
+    bool isRunning() const { return m_running; }
+
+private:
+    void startBaud();
+    void fillWindow();
+    void onProbeFinished(LinkReply *reply, int address, bool repeated);
+    void endScan(const Error &error);
+
+    QPointer<ModbusLink> m_link;
+    ScanOptions m_options;
+    QList<int> m_bauds;
+    int m_baudIndex = -1;
+    int m_originalBaud = 0;
+    QList<int> m_todo;        // addresses still to probe at this baud
+    QList<int> m_repeat;      // garbled replies: probe once more
+    QSet<int> m_found;
+    QList<QPointer<LinkReply>> m_inFlight;
+    int m_done = 0;
+    int m_total = 0;
+    int m_probesSent = 0;
+    qint64 m_baseAllowanceUs = qint64(DefaultAllowanceMs) * 1000;
+    qint64 m_maxTurnaroundUs = 0;
+    bool m_running = false;
+};
+
+} // namespace dd

@@ -1,0 +1,290 @@
+#include "link/modbuslinkprivate.h"
+
+#include "protocol/crc16.h"
+
+#include <QModbusReply>
+#include <QModbusRtuSerialClient>
+
+// ModbusLink::Private, second half: what happens when Qt reports on a request.
+
+namespace dd {
+
+namespace {
+constexpr int BroadcastTurnaroundMs = 100; // Modbus: let servers act on a broadcast
+
+QByteArray aduOf(int address, const QModbusResponse &pdu)
+{
+    QByteArray a;
+    a.append(static_cast<char>(address));
+    a.append(static_cast<char>(quint8(pdu.functionCode()) | (pdu.isException() ? 0x80 : 0x00)));
+    a += pdu.data();
+    return withCrc16(a);
+}
+
+QString hexByte(int v)
+{
+    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
+}
+} // namespace
+
+void ModbusLink::Private::onQtFinished(QModbusReply *reply)
+{
+    if (reply != m_qtReply || m_state != State::Awaiting || !m_current) {
+        reply->deleteLater();
+        return;
+    }
+    m_abortTimer.stop();
+    m_qtReply = nullptr;
+    const QModbusDevice::Error err = reply->error();
+    const QModbusResponse response = reply->rawResult();
+    const QString qtText = reply->errorString();
+    reply->deleteLater();
+    const modbusrtu::Request &pdu = m_current->request.pdu;
+
+    if (pdu.address == modbusrtu::BroadcastAddress) {
+        m_quietUntilUs = std::max(m_quietUntilUs, nowUs() + qint64(BroadcastTurnaroundMs) * 1000);
+        if (err == QModbusDevice::NoError)
+            finishCurrent(Error::none());
+        else
+            finishCurrent({ErrorCode::LinkClosed,
+                           ModbusLink::tr("The broadcast could not be sent on %1: %2")
+                               .arg(m_settings.portName, qtText)});
+        return;
+    }
+    switch (err) {
+    case QModbusDevice::NoError:
+        handleSuccess(response);
+        return;
+    case QModbusDevice::ProtocolError:
+        if (response.isException()) {
+            const QByteArray adu = aduOf(pdu.address, response);
+            const int code = response.exceptionCode();
+            recordRx(adu, QStringLiteral("exception %1").arg(modbusrtu::exceptionCodeName(quint8(code))));
+            Error e{ErrorCode::DriveException,
+                    ModbusLink::tr("The drive at address %1 rejected the request (Modbus exception "
+                                   "%2: %3).")
+                        .arg(pdu.address)
+                        .arg(hexByte(code))
+                        .arg(modbusrtu::exceptionCodeName(quint8(code))),
+                    code};
+            finishCurrent(e);
+            return;
+        }
+        break;
+    case QModbusDevice::TimeoutError:
+        handleTimeout(effectiveTimeoutMs(m_current->request));
+        return;
+    default:
+        break;
+    }
+    taint(pdu.address, nowUs() + qint64(silenceMs()) * 1000);
+    retryOrFail({ErrorCode::Malformed,
+                 ModbusLink::tr("The Modbus request to address %1 on %2 failed: %3")
+                     .arg(pdu.address)
+                     .arg(m_settings.portName, qtText)},
+                silenceMs());
+}
+
+void ModbusLink::Private::handleSuccess(const QModbusResponse &response)
+{
+    const ModbusRequest &req = m_current->request;
+    const QByteArray adu = aduOf(req.pdu.address, response);
+    const qint64 now = nowUs();
+    modbusrtu::DecodeError why = modbusrtu::DecodeError::None;
+    const Decoded<modbusrtu::Reply> decoded = modbusrtu::decodeReply(adu, req.pdu, &why);
+    if (!decoded.ok()) {
+        recordDiscarded(adu, QStringLiteral("reply does not fit the request: %1").arg(decoded.error));
+        taint(req.pdu.address, now + qint64(silenceMs()) * 1000);
+        retryOrFail({ErrorCode::Malformed,
+                     ModbusLink::tr("The reply from address %1 on %2 does not fit the request (%3).")
+                         .arg(req.pdu.address)
+                         .arg(m_settings.portName, decoded.error)},
+                    silenceMs());
+        return;
+    }
+    const qsizetype requestBytes = modbusrtu::encodeRequest(req.pdu).size();
+    const qint64 earliest = m_sentLowerBoundUs + (wireTimeUs(requestBytes) + wireTimeUs(adu.size())) / 2;
+    if (m_settings.rejectImpossiblyEarlyReplies && now < earliest) {
+        // A reply this early answers an earlier request; the answer to this one is still
+        // on its way: let it pass, then ask again.
+        ++m_lateReplies;
+        recordDiscarded(adu, QStringLiteral("arrived sooner than a reply could: late answer to an "
+                                            "earlier request"));
+        const int quiet = quietAfterTimeoutMs(effectiveTimeoutMs(req));
+        taint(req.pdu.address, now + qint64(quiet) * 1000);
+        retryOrFail({ErrorCode::Timeout,
+                     ModbusLink::tr("Only a late answer to an earlier request came from address %1 "
+                                    "on %2. The drive answers more slowly than the timeout allows: "
+                                    "raise the timeout.")
+                         .arg(req.pdu.address)
+                         .arg(m_settings.portName)},
+                    quiet);
+        return;
+    }
+    recordRx(adu);
+    const modbusrtu::Reply &r = *decoded.value;
+    QList<quint16> registers;
+    switch (r.function) {
+    case modbusrtu::ReadHoldingRegisters: registers = r.values; break;
+    case modbusrtu::WriteSingleRegister: registers = {r.start, r.values.value(0)}; break;
+    default: registers = {r.start, r.count}; break;
+    }
+    finishCurrent(Error::none(), registers);
+}
+
+void ModbusLink::Private::handleTimeout(int timeoutMs)
+{
+    ++m_timeouts;
+    const int address = m_current->request.pdu.address;
+    const int quiet = quietAfterTimeoutMs(timeoutMs);
+    taint(address, nowUs() + qint64(quiet) * 1000);
+    if (!m_rxSinceSend.isEmpty())
+        recordDiscarded(m_rxSinceSend, QStringLiteral("bytes that formed no reply"));
+    Error e;
+    if (m_crcErrorSeen) {
+        e = {ErrorCode::ChecksumError,
+             ModbusLink::tr("The reply from address %1 on %2 failed its CRC. Check the cable "
+                            "shielding, the bus termination and the baud rate.")
+                 .arg(address)
+                 .arg(m_settings.portName)};
+    } else {
+        e = {ErrorCode::Timeout,
+             ModbusLink::tr("No reply from address %1 on %2 within %3 ms. Check the drive address "
+                            "(PA51), the baud rate, the wiring (A/B swapped?) and the bus "
+                            "termination.")
+                 .arg(address)
+                 .arg(m_settings.portName)
+                 .arg(timeoutMs)};
+        if (m_mismatchSeen)
+            e.message += QLatin1Char(' ')
+                       + ModbusLink::tr("A frame with another address arrived meanwhile; servo "
+                                        "drives send exception replies with address 1, so the "
+                                        "drive may have rejected the request.");
+    }
+    retryOrFail(e, quiet);
+}
+
+void ModbusLink::Private::onQtIntermediateError(QModbusReply *reply, QModbusDevice::IntermediateError error)
+{
+    if (reply != m_qtReply || m_state != State::Awaiting || !m_current)
+        return;
+    if (error == QModbusDevice::ResponseCrcError) {
+        ++m_checksumErrors;
+        m_crcErrorSeen = true;
+        // Qt's framing is out of step now and would only time out: let the rest of the
+        // frame pass, then abort and try again.
+        m_abortTimer.start(silenceMs());
+        return;
+    }
+    if (error != QModbusDevice::ResponseRequestMismatch)
+        return;
+    m_mismatchSeen = true;
+    const QByteArray adu = exceptionInSniffedBytes();
+    if (adu.isEmpty())
+        return; // someone else's frame (or raw bytes not visible): keep waiting
+    const modbusrtu::Request pdu = m_current->request.pdu;
+    if (!abortInFlight())
+        return;
+    const int code = quint8(adu.at(2));
+    recordRx(adu, QStringLiteral("exception %1 with address byte %2")
+                      .arg(modbusrtu::exceptionCodeName(quint8(code)), hexByte(quint8(adu.at(0)))));
+    finishCurrent({ErrorCode::DriveException,
+                   ModbusLink::tr("The drive at address %1 rejected the request (Modbus exception "
+                                  "%2: %3; the reply carried address byte %4).")
+                       .arg(pdu.address)
+                       .arg(hexByte(code))
+                       .arg(modbusrtu::exceptionCodeName(quint8(code)))
+                       .arg(hexByte(quint8(adu.at(0)))),
+                   code});
+}
+
+QByteArray ModbusLink::Private::exceptionInSniffedBytes() const
+{
+    const modbusrtu::Request &pdu = m_current->request.pdu;
+    const qsizetype n = modbusrtu::ExceptionReplySize;
+    for (qsizetype i = 0; i + n <= m_rxSinceSend.size(); ++i) {
+        const QByteArray window = m_rxSinceSend.mid(i, n);
+        const auto decoded = modbusrtu::decodeReply(window, pdu);
+        if (decoded.ok() && decoded.value->isException)
+            return window;
+    }
+    return {};
+}
+
+void ModbusLink::Private::onAbortTimer()
+{
+    if (m_state != State::Awaiting || !m_current)
+        return;
+    const bool crc = m_crcErrorSeen;
+    const int timeout = effectiveTimeoutMs(m_current->request);
+    const int address = m_current->request.pdu.address;
+    if (!abortInFlight())
+        return;
+    if (crc) {
+        if (!m_rxSinceSend.isEmpty())
+            recordDiscarded(m_rxSinceSend, QStringLiteral("bad CRC"));
+        taint(address, nowUs() + qint64(silenceMs()) * 1000);
+        retryOrFail({ErrorCode::ChecksumError,
+                     ModbusLink::tr("The reply from address %1 on %2 failed its CRC. Check the "
+                                    "cable shielding, the bus termination and the baud rate.")
+                         .arg(address)
+                         .arg(m_settings.portName)},
+                    silenceMs());
+        return;
+    }
+    handleTimeout(timeout);
+}
+
+bool ModbusLink::Private::abortInFlight()
+{
+    m_abortTimer.stop();
+    Error e;
+    if (reconnect(&e))
+        return true;
+    close(e);
+    emit q->closed(e);
+    return false;
+}
+
+void ModbusLink::Private::retryOrFail(const Error &error, int quietMs)
+{
+    m_abortTimer.stop();
+    if (m_qtReply) {
+        QObject::disconnect(m_qtReply, nullptr, this, nullptr);
+        m_qtReply->deleteLater();
+        m_qtReply = nullptr;
+    }
+    Q_UNUSED(quietMs); // the address is tainted by the caller
+    const int retries = m_current->request.retries >= 0 ? m_current->request.retries
+                                                        : m_settings.retries;
+    if (m_current->attempts <= retries && m_current->reply) {
+        ++m_retries;
+        m_state = State::Waiting;
+        scheduleNext();
+        return;
+    }
+    finishCurrent(error);
+}
+
+void ModbusLink::Private::finishCurrent(const Error &error, const QList<quint16> &registers)
+{
+    m_abortTimer.stop();
+    if (!m_current)
+        return;
+    Pending p = std::move(*m_current);
+    m_current.reset();
+    const qint64 now = nowUs();
+    if (p.reply) {
+        p.reply->setAttempts(p.attempts);
+        p.reply->setRoundTripUs(now - m_sentLowerBoundUs);
+        if (error.isError())
+            p.reply->finishWithError(error);
+        else
+            p.reply->finishWithRegisters(registers);
+    }
+    m_lastFinishUs = now;
+    m_state = State::Idle;
+    scheduleNext();
+}
+
+} // namespace dd

@@ -1,0 +1,146 @@
+#include "trend/decimator.h"
+
+#include "trend/samplebuffer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dd {
+
+namespace {
+
+// Window arithmetic in µs ticks: the window holds span = toUs - fromUs + 1 ticks and tick
+// offset d belongs to bucket d × n / span. Products stay far below 2^63 for any realistic
+// window (a year in µs × 100,000 buckets is 3 × 10^18).
+struct Window
+{
+    qint64 from;
+    qint64 span;
+    qint64 n;
+
+    qint64 bucketOf(qint64 t) const { return (t - from) * n / span; }
+    // First time that belongs to bucket k + 1: from + ceil((k + 1) × span / n).
+    qint64 endOf(qint64 k) const { return from + ((k + 1) * span + n - 1) / n; }
+};
+
+// Get: qsizetype -> TrendSample. Scans indices [begin, end), all inside the window.
+template<typename Get>
+QList<TrendSample> decimate(const Window &w, qsizetype begin, qsizetype end, Get get)
+{
+    QList<TrendSample> out;
+    if (begin >= end)
+        return out;
+    out.reserve(std::min<qsizetype>(end - begin, 2 * w.n));
+    qsizetype i = begin;
+    while (i < end) {
+        const qint64 bucket = w.bucketOf(get(i).timeUs);
+        const qint64 bucketEnd = w.endOf(bucket);
+        bool any = false;
+        TrendSample lo;
+        TrendSample hi;
+        qsizetype loIdx = 0;
+        qsizetype hiIdx = 0;
+        for (; i < end; ++i) {
+            const TrendSample s = get(i);
+            if (s.timeUs >= bucketEnd)
+                break;
+            if (std::isnan(s.value))
+                continue;
+            if (!any) {
+                lo = hi = s;
+                loIdx = hiIdx = i;
+                any = true;
+            } else if (s.value < lo.value) {
+                lo = s;
+                loIdx = i;
+            } else if (s.value > hi.value) {
+                hi = s;
+                hiIdx = i;
+            }
+        }
+        if (!any)
+            continue;
+        if (loIdx == hiIdx) {
+            out.append(lo);
+        } else if (loIdx < hiIdx) {
+            out.append(lo);
+            out.append(hi);
+        } else {
+            out.append(hi);
+            out.append(lo);
+        }
+    }
+    return out;
+}
+
+bool makeWindow(qint64 fromUs, qint64 toUs, int buckets, Window *w)
+{
+    if (toUs < fromUs)
+        return false;
+    *w = Window{fromUs, toUs - fromUs + 1, std::max(1, buckets)};
+    return true;
+}
+
+} // namespace
+
+QList<TrendSample> Decimator::minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs,
+                                     int buckets, Strategy strategy)
+{
+    Window w{};
+    if (!makeWindow(fromUs, toUs, buckets, &w))
+        return {};
+    qsizetype i = buffer.lowerBound(fromUs);
+    const qsizetype end = buffer.upperBound(toUs);
+    if (strategy == Strategy::Auto) {
+        // Measured (docs/performance.md): summaries win from a few hundred samples per bucket.
+        strategy = end - i < w.n * 4 * SampleBuffer::BlockSize ? Strategy::Scan : Strategy::Summaries;
+    }
+    if (strategy == Strategy::Scan)
+        return decimate(w, i, end, [&buffer](qsizetype k) { return buffer.at(k); });
+
+    // Bucket by bucket: its index range by binary search, its extremes from the buffer's
+    // block summaries. Same result as the scan, without reading every sample.
+    QList<TrendSample> out;
+    if (i >= end)
+        return out;
+    out.reserve(std::min<qsizetype>(end - i, 2 * w.n));
+    while (i < end) {
+        const qint64 bucketEnd = w.endOf(w.bucketOf(buffer.timeAt(i)));
+        const qsizetype j = std::min(end, buffer.lowerBound(bucketEnd));
+        const SampleBuffer::Extremes e = buffer.extremes(i, j);
+        if (e.minIndex >= 0) {
+            if (e.minIndex == e.maxIndex) {
+                out.append(buffer.at(e.minIndex));
+            } else {
+                out.append(buffer.at(std::min(e.minIndex, e.maxIndex)));
+                out.append(buffer.at(std::max(e.minIndex, e.maxIndex)));
+            }
+        }
+        i = j;
+    }
+    return out;
+}
+
+QList<TrendSample> Decimator::minMax(const QList<TrendSample> &sorted, qint64 fromUs,
+                                     qint64 toUs, int buckets)
+{
+    Window w{};
+    if (!makeWindow(fromUs, toUs, buckets, &w))
+        return {};
+    const auto byTime = [](const TrendSample &s, qint64 t) { return s.timeUs < t; };
+    const auto b = std::lower_bound(sorted.cbegin(), sorted.cend(), fromUs, byTime);
+    const auto e = std::upper_bound(sorted.cbegin(), sorted.cend(), toUs,
+                                    [](qint64 t, const TrendSample &s) { return t < s.timeUs; });
+    return decimate(w, b - sorted.cbegin(), e - sorted.cbegin(),
+                    [&sorted](qsizetype i) { return sorted.at(i); });
+}
+
+int Decimator::bucketOf(qint64 timeUs, qint64 fromUs, qint64 toUs, int buckets)
+{
+    Window w{};
+    if (!makeWindow(fromUs, toUs, buckets, &w) || timeUs < fromUs || timeUs > toUs)
+        return -1;
+    return static_cast<int>(w.bucketOf(timeUs));
+}
+
+} // namespace dd

@@ -1,0 +1,45 @@
+#pragma once
+
+#include "trend/trendsample.h"
+
+#include <QList>
+
+namespace dd {
+
+class SampleBuffer;
+
+// Min/max decimation for plotting: the time window [fromUs, toUs] (both ends included) is
+// cut into `buckets` buckets of equal duration (one per pixel column); of the samples in
+// each bucket only the one with the smallest and the one with the largest value are kept,
+// in their time order. A bucket therefore yields 0, 1 (one sample, or the minimum and the
+// maximum are the same sample) or 2 points, so the result never has more than 2 × buckets
+// points, and every peak and trough in the window survives.
+//
+// Exact rules (tests rely on them):
+// - sample time t belongs to bucket floor((t - fromUs) × buckets / (toUs - fromUs + 1));
+// - on equal values the earliest sample is the minimum / maximum;
+// - NaN values are skipped; samples outside the window are ignored;
+// - buckets < 1 counts as 1; toUs < fromUs gives an empty result.
+// A bucket with at most two samples keeps them all, so when the data is sparser than two
+// samples per bucket the output equals the input window: decimation is lossless there.
+// Pure functions. Over a list: a scan, O(samples in the window). Over a SampleBuffer,
+// two strategies with exactly the same result: Scan, or Summaries (per non-empty bucket
+// O(log n) plus SampleBuffer::extremes() over the block summaries, so a 10-minute window
+// at 1 kHz costs about as much as a few seconds of raw samples). Auto scans when buckets
+// hold fewer than ~256 samples on average, where the summaries do not pay off.
+class Decimator
+{
+public:
+    enum class Strategy { Auto, Scan, Summaries };
+
+    static QList<TrendSample> minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs,
+                                     int buckets, Strategy strategy = Strategy::Auto);
+    // The same over samples sorted by time (non-decreasing).
+    static QList<TrendSample> minMax(const QList<TrendSample> &sorted, qint64 fromUs,
+                                     qint64 toUs, int buckets);
+
+    // The bucket of timeUs, or -1 when it lies outside the window.
+    static int bucketOf(qint64 timeUs, qint64 fromUs, qint64 toUs, int buckets);
+};
+
+} // namespace dd

@@ -1,0 +1,33 @@
+#pragma once
+
+#include "trend/samplebuffer.h"
+
+#include <QList>
+#include <QPointF>
+
+namespace dd {
+
+// Turns one channel's buffer into the points a chart series draws for a time window:
+// min/max-decimated to the plot width (Decimator), plus the nearest sample outside each
+// edge so the line reaches the border. x is seconds since originUs, y is
+// value × scale + offset. At most 2 × widthPx points: the window gets widthPx - 1
+// buckets (≤ 2 points each) and the two edge points make up the rest (below 2 px: one
+// bucket, no edge points).
+class TrendPlotBuilder
+{
+public:
+    struct Result
+    {
+        QList<QPointF> points;
+        // Range of y over the points inside the window (edge points excluded);
+        // yMin > yMax when the window holds no sample.
+        double yMin = 0.0;
+        double yMax = -1.0;
+        bool hasData() const { return yMin <= yMax; }
+    };
+
+    static Result build(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, int widthPx,
+                        qint64 originUs, double scale = 1.0, double offset = 0.0);
+};
+
+} // namespace dd

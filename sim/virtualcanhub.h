@@ -1,0 +1,54 @@
+#pragma once
+
+#include <QHostAddress>
+#include <QList>
+#include <QObject>
+
+class QTcpServer;
+class QTcpSocket;
+
+namespace dd {
+
+// A stand-in for the TCP server inside Qt's virtualcan plugin, speaking its line protocol
+// ("connect:can0", "can0:<id>#<flags>#<hex>", "disconnect:can0"; frames are forwarded as
+// "<id>#<flags>#<hex>" to every other client on the same channel).
+//
+// Why: the plugin's own server and client sockets leave Nagle's algorithm on. A frame that
+// follows an unacknowledged one then waits for the peer's delayed ACK — about 40 ms on Linux
+// loopback — so pipelined requests (a 220-parameter backup: ~60 ms of bus time at 1 Mbit/s)
+// stall and time out. Listening on the port before the first QCanBusDevice connects makes
+// the plugin's server step aside ("port already in use": it does not start and its clients
+// connect here); this hub sets TCP_NODELAY on every connection. Clients should do the same
+// on their own socket (setLowDelay()).
+//
+// Use: start(port) before opening any virtualcan device on "tcp://127.0.0.1:<port>/canN";
+// the hub must live as long as the bus.
+class VirtualCanHub : public QObject
+{
+    Q_OBJECT
+public:
+    explicit VirtualCanHub(QObject *parent = nullptr);
+    ~VirtualCanHub() override;
+
+    // Listens on 127.0.0.1:port (0: any free port). Returns false if the port is taken.
+    bool start(quint16 port = 0);
+    quint16 port() const;
+    // "tcp://127.0.0.1:<port>/can<channel>", the interface name for QCanBus::createDevice.
+    QString interfaceName(int channel = 0) const;
+    int clientCount() const { return static_cast<int>(m_clients.size()); }
+    quint64 forwardedLines() const { return m_forwarded; }
+
+    // Sets TCP_NODELAY on the plugin's socket inside `device` (a virtualcan QCanBusDevice,
+    // or any object above it). Returns how many sockets were changed; 0 if none is found.
+    static int setLowDelay(QObject *device);
+
+private:
+    void onNewConnection();
+    void onReadyRead(QTcpSocket *socket);
+
+    QTcpServer *m_server = nullptr;
+    QList<QTcpSocket *> m_clients;
+    quint64 m_forwarded = 0;
+};
+
+} // namespace dd

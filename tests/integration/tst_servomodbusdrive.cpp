@@ -1,0 +1,498 @@
+// The servo-modbus family end to end: ServoModbusBackend (ModbusLink on
+// QModbusRtuSerialClient) over a pty against SimServoModbusDrive on a SimSerialBus, which
+// models the wire time, the baud rate and faults.
+
+#include "drive/servomodbusbackend.h"
+#include "drive/servomodbusdrive.h"
+#include "link/modbuslink.h"
+#include "link/traffictap.h"
+#include "protocol/crc16.h"
+#include "protocol/servomodbus.h"
+#include "ptyendpoint.h"
+#include "simserialbus.h"
+#include "simservomodbusdrive.h"
+
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QtTest>
+#include <memory>
+
+using namespace dd;
+
+namespace {
+
+template <typename R>
+bool waitDone(R *r, int ms = 10000)
+{
+    if (r->isFinished())
+        return true;
+    QEventLoop loop;
+    QTimer guard;
+    guard.setSingleShot(true);
+    QObject::connect(&guard, &QTimer::timeout, &loop, &QEventLoop::quit);
+    QObject::connect(r, &R::finished, &loop, &QEventLoop::quit);
+    guard.start(ms);
+    loop.exec();
+    return r->isFinished();
+}
+
+void spin(int ms)
+{
+    QEventLoop loop;
+    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+    loop.exec();
+}
+
+// A pty, a bus with simulated drives, and the backend on the host side.
+struct Bench
+{
+    SimSerialBus *bus = nullptr;
+    PtyEndpoint *pty = nullptr;
+    QList<SimServoModbusDrive *> drives;
+    TrafficTap tap;
+    QList<TrafficRecord> records;
+    std::unique_ptr<ServoModbusBackend> backend;
+
+    explicit Bench(QList<SimServoModbusDrive::Config> configs)
+    {
+        pty = new PtyEndpoint;
+        if (pty->open().isError())
+            return;
+        bus = new SimSerialBus(pty);
+        for (const auto &c : configs)
+            drives << static_cast<SimServoModbusDrive *>(bus->addDevice(std::make_unique<SimServoModbusDrive>(c)));
+        QObject::connect(&tap, &TrafficTap::frameRecorded, &tap, [this](const TrafficRecord &r) { records << r; });
+    }
+    ~Bench()
+    {
+        backend.reset();
+        delete bus;
+    }
+
+    bool open(int baud, QVariantMap options = {}, int timeoutMs = -1, int retries = -1)
+    {
+        ConnectionSettings cs;
+        cs.family = Family::ServoModbus;
+        cs.port = pty->clientPath();
+        cs.baud = baud;
+        cs.options = options;
+        cs.timeoutMs = timeoutMs;
+        cs.retries = retries;
+        backend = std::make_unique<ServoModbusBackend>();
+        Error e;
+        const bool ok = backend->open(cs, &tap, &e);
+        if (!ok)
+            qWarning() << e.message;
+        return ok;
+    }
+
+    ServoModbusDrive *drive(int address) { return static_cast<ServoModbusDrive *>(backend->drive(address)); }
+    int txCount() const
+    {
+        return int(std::count_if(records.begin(), records.end(),
+                                 [](const TrafficRecord &r) { return r.direction == TrafficRecord::Direction::Tx; }));
+    }
+    QList<QByteArray> txFrames() const
+    {
+        QList<QByteArray> out;
+        for (const auto &r : records)
+            if (r.direction == TrafficRecord::Direction::Tx)
+                out << r.bytes;
+        return out;
+    }
+};
+
+SimServoModbusDrive::Config driveConfig(int address, int baud, quint16 firmware = 7051)
+{
+    SimServoModbusDrive::Config c;
+    c.address = address;
+    c.baud = baud;
+    c.firmware = firmware;
+    return c;
+}
+
+QList<int> allParameters()
+{
+    QList<int> all;
+    for (int n = 0; n < servomodbus::ParameterCount; ++n)
+        all << n;
+    return all;
+}
+
+} // namespace
+
+class TestServoModbusDrive : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        if (!PtyEndpoint::isSupported())
+            QSKIP("no pseudo-terminals on this platform");
+    }
+
+    void identityReadsFirmwareAndAddress()
+    {
+        Bench b({driveConfig(3, 19200)});
+        QVERIFY(b.open(0)); // family default: 19200
+        QCOMPARE(b.backend->link()->settings().baud, ServoModbusBackend::DefaultBaud);
+        ServoModbusDrive *d = b.drive(3);
+        DriveReply *r = d->refreshIdentity();
+        QVERIFY(waitDone(r));
+        QVERIFY2(r->ok(), qPrintable(r->error().message));
+        QCOMPARE(d->identity().firmware, QStringLiteral("7051"));
+        QCOMPARE(r->info().value("pa51").toInt(), 3);
+        QCOMPARE(r->info().value("eeFormat").toString(), QStringLiteral("new"));
+        QCOMPARE(b.txCount(), 2); // PA2 and PA51 are 49 registers apart: two requests
+    }
+
+    void backupOfAllParametersTakesThreeRequests()
+    {
+        Bench b({driveConfig(1, 115200)});
+        QVERIFY(b.open(115200));
+        b.drives[0]->setParameter(17, quint16(-1234));
+        DriveReply *r = b.drive(1)->readParameters(allParameters());
+        QVERIFY(waitDone(r));
+        QVERIFY2(r->ok(), qPrintable(r->error().message));
+        QCOMPARE(r->parameters().size(), 60);
+        for (int n = 0; n < 60; ++n)
+            QCOMPARE(r->parameters().value(n), qint64(qint16(b.drives[0]->parameter(n))));
+        QCOMPARE(r->parameters().value(17), qint64(-1234));
+        const QList<QByteArray> tx = b.txFrames();
+        QCOMPARE(tx.size(), 3);
+        QCOMPARE(tx[0], withCrc16(QByteArray::fromHex("010300640014")));
+        QCOMPARE(tx[1], withCrc16(QByteArray::fromHex("010300780014")));
+        QCOMPARE(tx[2], withCrc16(QByteArray::fromHex("0103008c0014")));
+    }
+
+    void scatteredReadsFollowThePlan()
+    {
+        Bench b({driveConfig(1, 115200)});
+        QVERIFY(b.open(115200));
+        const QList<int> wanted{0, 1, 2, 19, 51, 59};
+        DriveReply *r = b.drive(1)->readParameters(wanted);
+        QVERIFY(waitDone(r));
+        QVERIFY(r->ok());
+        QCOMPARE(r->parameters().keys(), (QList<int>{0, 1, 2, 19, 51, 59}));
+        QCOMPARE(b.txCount(), int(servomodbus::planReads(wanted).size()));
+        QCOMPARE(b.txCount(), 2);
+    }
+
+    void writesAreBatchedAndVerified()
+    {
+        Bench b({driveConfig(1, 115200)});
+        QVERIFY(b.open(115200));
+        const QList<ParameterWrite> writes{{10, 1234}, {11, -5}, {12, 7}, {40, 99}};
+        DriveReply *r = b.drive(1)->writeParameters(writes);
+        QVERIFY(waitDone(r));
+        QVERIFY2(r->ok(), qPrintable(r->error().message));
+        QCOMPARE(b.drives[0]->parameter(10), quint16(1234));
+        QCOMPARE(b.drives[0]->parameter(11), quint16(0xFFFB));
+        QCOMPARE(b.drives[0]->parameter(40), quint16(99));
+        QCOMPARE(r->writeResults().size(), 4);
+        for (const auto &w : r->writeResults()) {
+            QVERIFY(w.written);
+            QVERIFY(w.verified);
+            QCOMPARE(w.readBack, w.requested);
+        }
+        const QList<QByteArray> tx = b.txFrames();
+        // Two 0x10 runs (PA10..PA12, PA40), then the read-back plan.
+        QCOMPARE(tx[0], withCrc16(QByteArray::fromHex("0110006e00030604d2fffb0007")));
+        QCOMPARE(tx[1], withCrc16(QByteArray::fromHex("0110008c000102" "0063")));
+        QCOMPARE(tx.size(), 2 + int(servomodbus::planReads({10, 11, 12, 40}).size()));
+    }
+
+    void badValuesAreRefusedWithNothingOnTheWire()
+    {
+        Bench b({driveConfig(1, 115200)});
+        QVERIFY(b.open(115200));
+        ServoModbusDrive *d = b.drive(1);
+        struct Case { QList<ParameterWrite> writes; ErrorCode code; };
+        const QList<Case> cases = {
+            {{{10, 70000}}, ErrorCode::OutOfRange},
+            {{{10, 1}, {11, 40000}}, ErrorCode::OutOfRange},     // the dictionary: int16
+            {{{51, 300}}, ErrorCode::OutOfRange},                // PA51: 0..255
+            {{{2, 7060}}, ErrorCode::NotSupported},              // firmware: read-only
+            {{{60, 1}}, ErrorCode::InvalidArgument},
+            {{{5, 1}, {5, 2}}, ErrorCode::InvalidArgument},
+        };
+        for (const Case &c : cases) {
+            DriveReply *r = d->writeParameters(c.writes);
+            QVERIFY(waitDone(r));
+            QCOMPARE(r->error().code, c.code);
+        }
+        DriveReply *r = d->readParameters({60});
+        QVERIFY(waitDone(r));
+        QCOMPARE(r->error().code, ErrorCode::InvalidArgument);
+        spin(30);
+        QCOMPARE(b.txCount(), 0);
+        QCOMPARE(b.drives[0]->parameter(10), quint16(110));
+    }
+
+    void eeOperationsNewFormat()
+    {
+        Bench b({driveConfig(1, 115200, 7051)});
+        QVERIFY(b.open(115200));
+        SimServoModbusDrive *sim = b.drives[0];
+        ServoModbusDrive *d = b.drive(1);
+        sim->setParameter(20, 555);
+        DriveReply *r = d->eeOperation(EeOperation::Save);
+        QVERIFY(waitDone(r));
+        QVERIFY2(r->ok(), qPrintable(r->error().message));
+        QCOMPARE(r->info().value("eeFormat").toString(), QStringLiteral("new"));
+        QCOMPARE(sim->eepromParameter(20), quint16(555));
+        const QList<QByteArray> tx = b.txFrames();
+        QCOMPARE(tx.last(), withCrc16(QByteArray::fromHex("0110003a0001020001")));
+        // Backup, change, restore.
+        QVERIFY(waitDone(r = d->eeOperation(EeOperation::Backup)) && r->ok());
+        sim->setParameter(20, 1);
+        QVERIFY(waitDone(r = d->eeOperation(EeOperation::RestoreBackup)) && r->ok());
+        QCOMPARE(sim->parameter(20), quint16(555));
+        // Reload from EEPROM, factory defaults.
+        sim->setParameter(21, 9);
+        QVERIFY(waitDone(r = d->eeOperation(EeOperation::Reload)) && r->ok());
+        QCOMPARE(sim->parameter(21), sim->eepromParameter(21));
+        QVERIFY(waitDone(r = d->eeOperation(EeOperation::FactoryDefaults)) && r->ok());
+        QCOMPARE(sim->parameter(20), quint16(120));
+        QCOMPARE(sim->eepromParameter(20), quint16(120));
+        QCOMPARE(sim->eeOperationsCompleted(), 5);
+    }
+
+    void eeOperationsLegacyFormatArePolledUntilDone()
+    {
+        Bench b({driveConfig(1, 115200, 7041)});
+        b.drives[0]->setEeBusyUs(200000);
+        QVERIFY(b.open(115200));
+        SimServoModbusDrive *sim = b.drives[0];
+        sim->setParameter(30, 4321);
+        QElapsedTimer t;
+        t.start();
+        DriveReply *r = b.drive(1)->eeOperation(EeOperation::Save);
+        QVERIFY(waitDone(r));
+        QVERIFY2(r->ok(), qPrintable(r->error().message));
+        QVERIFY(t.elapsed() >= 200);
+        QCOMPARE(r->info().value("eeFormat").toString(), QStringLiteral("legacy"));
+        QVERIFY(r->info().value("polls").toInt() >= 2);
+        QCOMPARE(sim->eepromParameter(30), quint16(4321));
+        // PA2 was read first (auto format), then 0x06 to register 0 with op 1.
+        const QList<QByteArray> tx = b.txFrames();
+        QCOMPARE(tx.first(), withCrc16(QByteArray::fromHex("010300660001")));
+        QCOMPARE(tx.at(1), withCrc16(QByteArray::fromHex("010600000001")));
+        QVERIFY(!sim->eeRunning());
+    }
+
+    void legacyEeThatNeverFinishesTimesOutClearly()
+    {
+        Bench b({driveConfig(1, 115200, 7041)});
+        b.drives[0]->setEeBusyUs(5000000);
+        QVERIFY(b.open(115200, {{"servo-modbus.eeTimeoutMs", 300}}));
+        DriveReply *r = b.drive(1)->eeOperation(EeOperation::Save);
+        QVERIFY(waitDone(r));
+        QCOMPARE(r->error().code, ErrorCode::Timeout);
+        QVERIFY2(r->error().message.contains(QLatin1String("EE-Set")), qPrintable(r->error().message));
+        QVERIFY2(r->error().message.contains(QLatin1String("still reports it running")),
+                 qPrintable(r->error().message));
+    }
+
+    void eeFormatOverride()
+    {
+        // A legacy drive with the format forced to "new": the drive rejects it.
+        Bench b({driveConfig(1, 115200, 7041)});
+        b.drives[0]->setEeBusyUs(0);
+        QVERIFY(b.open(115200, {{"servo-modbus.eeFormat", "new"}}));
+        DriveReply *r = b.drive(1)->eeOperation(EeOperation::Save);
+        QVERIFY(waitDone(r));
+        QCOMPARE(r->error().code, ErrorCode::DriveException);
+        QCOMPARE(r->error().driveCode, 4);
+        // Forced "legacy": no PA2 read first.
+        Bench l({driveConfig(1, 115200, 7041)});
+        l.drives[0]->setEeBusyUs(0);
+        QVERIFY(l.open(115200, {{"servo-modbus.eeFormat", "legacy"}}));
+        QVERIFY(waitDone(r = l.drive(1)->eeOperation(EeOperation::Backup)));
+        QVERIFY2(r->ok(), qPrintable(r->error().message));
+        QCOMPARE(l.txFrames().first(), withCrc16(QByteArray::fromHex("010600000003")));
+        // Bad option values are refused when opening.
+        Bench bad({driveConfig(1, 115200)});
+        QVERIFY(!bad.open(115200, {{"servo-modbus.eeFormat", "sometimes"}}));
+    }
+
+    void exceptionsAreReportedWithTheirCode()
+    {
+        // The simulated drive answers exceptions with address byte 0x01 (seed), here from 9.
+        Bench b({driveConfig(9, 115200)});
+        QVERIFY(b.open(115200, {}, -1, 0));
+        ModbusLink *link = b.backend->link();
+        LinkReply *r = link->readHoldingRegisters(9, 0x0050, 1); // between the two blocks
+        QVERIFY(waitDone(r));
+        QCOMPARE(r->error().code, ErrorCode::DriveException);
+        QCOMPARE(r->error().driveCode, 4);
+        r = link->readHoldingRegisters(9, 0x0064, 21); // more than 20 registers
+        QVERIFY(waitDone(r));
+        QCOMPARE(r->error().code, ErrorCode::DriveException);
+        QCOMPARE(r->error().driveCode, 4);
+        QCOMPARE(b.drives[0]->exceptionsSent(), quint64(2));
+        // Own-address exceptions (drive option) are reported the same way.
+        b.drives[0]->setExceptionAddressFixed(false);
+        r = link->writeRegisters(9, 0x0000, {1, 2});
+        QVERIFY(waitDone(r));
+        QCOMPARE(r->error().code, ErrorCode::DriveException);
+        QCOMPARE(r->error().driveCode, 4);
+    }
+
+    void channelsReadInFewRequests()
+    {
+        Bench b({driveConfig(1, 115200)});
+        QVERIFY(b.open(115200));
+        SimServoModbusDrive *sim = b.drives[0];
+        ServoModbusDrive *d = b.drive(1);
+        QVERIFY(sim->motor().enable());
+        sim->motor().setPosition(100000);
+        QVERIFY(sim->motor().runSpeed(3000.0 * 10000 / 60.0 / 3.0)); // 1000 r/min
+        spin(400);
+        DriveReply *r = d->readChannels({"speed", "torque", "current"});
+        QVERIFY(waitDone(r));
+        QVERIFY2(r->ok(), qPrintable(r->error().message));
+        QCOMPARE(b.txCount(), 1);
+        QVERIFY2(std::abs(r->samples().value("speed") - 1000.0) < 2.0, qPrintable(QString::number(r->samples().value("speed"))));
+        QVERIFY(r->samples().value("current") > 0.0);
+        // Every channel: 0x00..0x16 is 23 registers, two requests.
+        r = d->readChannels({});
+        QVERIFY(waitDone(r));
+        QVERIFY(r->ok());
+        QCOMPARE(b.txCount(), 3);
+        QCOMPARE(r->samples().size(), d->channels().size());
+        const double pos = r->samples().value("position");
+        QVERIFY(pos > 100000.0);
+        QCOMPARE(r->samples().value("position-high"), std::floor(pos / 65536.0));
+        QCOMPARE(r->samples().value("position-low"), pos - 65536.0 * std::floor(pos / 65536.0));
+        QCOMPARE(r->samples().value("alarm"), 0.0);
+        // Unknown channel: refused, nothing sent.
+        r = d->readChannels({"bus-voltage"});
+        QVERIFY(waitDone(r));
+        QCOMPARE(r->error().code, ErrorCode::InvalidArgument);
+        QCOMPARE(b.txCount(), 3);
+    }
+
+    void alarmIsReadFromDpErr()
+    {
+        Bench b({driveConfig(1, 115200)});
+        QVERIFY(b.open(115200));
+        b.drives[0]->setAlarm(12);
+        ServoModbusDrive *d = b.drive(1);
+        QSignalSpy alarms(d, &Drive::alarmChanged);
+        DriveReply *r = d->readAlarm();
+        QVERIFY(waitDone(r));
+        QVERIFY(r->ok());
+        QCOMPARE(r->status().alarmCode, 12);
+        QCOMPARE(alarms.count(), 1);
+        QCOMPARE(b.txFrames().last(), withCrc16(QByteArray::fromHex("010300130001")));
+        DriveReply *c = d->clearAlarm();
+        QVERIFY(waitDone(c));
+        QCOMPARE(c->error().code, ErrorCode::NotSupported);
+        QVERIFY(!d->unsupportedReason(Capability::ClearAlarm).isEmpty());
+        QVERIFY(!d->hasCapability(Capability::Jog));
+        DriveReply *j = d->jog(100);
+        QVERIFY(waitDone(j));
+        QCOMPARE(j->error().code, ErrorCode::NotSupported);
+    }
+
+    void lateReplyIsNeverTakenForTheNextRequest()
+    {
+        Bench b({driveConfig(1, 115200)});
+        QVERIFY(b.open(115200, {}, 30, 0));
+        SimServoModbusDrive *sim = b.drives[0];
+        ServoModbusDrive *d = b.drive(1);
+        sim->setParameter(5, 1111);
+        sim->faults().setExtraLatency(60); // answers after the 30 ms allowance
+        DriveReply *first = d->readParameters({5});
+        QVERIFY(waitDone(first));
+        QCOMPARE(first->error().code, ErrorCode::Timeout);
+        sim->faults().setExtraLatency(0);
+        sim->setParameter(5, 2222);
+        DriveReply *second = d->readParameters({5});
+        QVERIFY(waitDone(second));
+        QVERIFY2(second->ok(), qPrintable(second->error().message));
+        QCOMPARE(second->parameters().value(5), qint64(2222));
+    }
+
+    void dropsAndCorruptionAreRecovered()
+    {
+        Bench b({driveConfig(1, 115200)});
+        QVERIFY(b.open(115200, {}, 20, 6));
+        SimServoModbusDrive *sim = b.drives[0];
+        FaultSettings f;
+        f.dropRate = 0.2;
+        f.corruptRate = 0.2;
+        f.seed = 11;
+        sim->faults().setSettings(f);
+        for (int round = 0; round < 5; ++round) {
+            DriveReply *r = b.drive(1)->readParameters(allParameters());
+            QVERIFY(waitDone(r));
+            QVERIFY2(r->ok(), qPrintable(r->error().message));
+            for (int n = 0; n < 60; ++n)
+                QCOMPARE(r->parameters().value(n), qint64(qint16(sim->parameter(n))));
+        }
+        QVERIFY(b.backend->link()->retryCount() > 0);
+    }
+
+    void scanFindsDrivesAtUnknownAddressesAndBauds()
+    {
+        Bench b({driveConfig(7, 19200, 7051), driveConfig(23, 9600, 7041)});
+        QVERIFY(b.open(38400));
+        ScanOptions o;
+        o.from = 1;
+        o.to = 30;
+        o.bauds = {9600, 19200, 38400};
+        Discovery *scan = b.backend->createDiscovery(o);
+        QSignalSpy finished(scan, &Discovery::finished);
+        QSignalSpy progress(scan, &Discovery::progress);
+        scan->start();
+        QVERIFY(finished.wait(30000));
+        QVERIFY2(!finished.at(0).at(0).value<Error>().isError(),
+                 qPrintable(finished.at(0).at(0).value<Error>().message));
+        QCOMPARE(scan->results().size(), 2);
+        QCOMPARE(scan->results()[0].address, 23);
+        QCOMPARE(scan->results()[0].baud, 9600);
+        QCOMPARE(scan->results()[0].firmware, QStringLiteral("7041"));
+        QCOMPARE(scan->results()[1].address, 7);
+        QCOMPARE(scan->results()[1].baud, 19200);
+        QCOMPARE(scan->results()[1].firmware, QStringLiteral("7051"));
+        QCOMPARE(progress.last().at(0).toInt(), 90);
+        QCOMPARE(progress.last().at(1).toInt(), 90);
+        QCOMPARE(b.backend->link()->settings().baud, 38400); // restored
+    }
+
+    void scanCanBeCancelled()
+    {
+        Bench b({driveConfig(7, 9600)});
+        QVERIFY(b.open(9600));
+        ScanOptions o;
+        o.bauds = {9600};
+        Discovery *scan = b.backend->createDiscovery(o);
+        QSignalSpy finished(scan, &Discovery::finished);
+        scan->start();
+        spin(100);
+        scan->cancel();
+        QVERIFY(finished.wait(2000));
+        QCOMPARE(finished.at(0).at(0).value<Error>().code, ErrorCode::Cancelled);
+        DriveReply *r = b.drive(7)->readParameters({1});
+        QVERIFY(waitDone(r));
+        QVERIFY2(r->ok(), qPrintable(r->error().message));
+    }
+
+    void lostAdapterIsReported()
+    {
+        Bench b({driveConfig(1, 115200)});
+        QVERIFY(b.open(115200));
+        QSignalSpy lost(b.backend.get(), &FamilyBackend::linkLost);
+        QSignalSpy driveLost(b.drive(1), &Drive::connectionLost);
+        b.pty->close();
+        QVERIFY(lost.wait(2000) || lost.count() == 1);
+        QCOMPARE(lost.at(0).at(0).value<Error>().code, ErrorCode::LinkClosed);
+        QCOMPARE(driveLost.count(), 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestServoModbusDrive)
+#include "tst_servomodbusdrive.moc"

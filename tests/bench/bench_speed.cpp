@@ -76,6 +76,7 @@ struct Row
     double medianMs = 0;
     QString note;
     bool failed = false; // an operation failed: no figure
+    bool complete = true; // scans: every run found every drive
 };
 
 QList<Row> g_rows;
@@ -88,7 +89,7 @@ QString ms(double v)
 
 bool passed(const Row &r)
 {
-    if (r.failed)
+    if (r.failed || !r.complete)
         return false;
     if (r.absoluteMs > 0)
         return r.medianMs < r.absoluteMs;
@@ -122,17 +123,18 @@ void printTable()
 
 // ---- Waiting ------------------------------------------------------------------------------
 
-// Runs the event loop until `done()` or `timeoutMs`; false on timeout.
-bool waitUntil(const std::function<bool()> &done, int timeoutMs)
+// Runs the event loop until `sender` emits `signal` or `timeoutMs` pass (never a polling
+// loop: a spinning client thread would take the CPU from the simulator).
+template<typename Sender, typename Signal>
+void waitForSignal(Sender *sender, Signal signal, int timeoutMs)
 {
-    QElapsedTimer t;
-    t.start();
-    while (!done()) {
-        if (t.elapsed() > timeoutMs)
-            return false;
-        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 5);
-    }
-    return true;
+    QEventLoop loop;
+    QObject::connect(sender, signal, &loop, &QEventLoop::quit);
+    QTimer guard;
+    guard.setSingleShot(true);
+    QObject::connect(&guard, &QTimer::timeout, &loop, &QEventLoop::quit);
+    guard.start(timeoutMs);
+    loop.exec();
 }
 
 // Waits for `reply` to finish; returns its error (Timeout if it never did). Deletes it.
@@ -314,7 +316,7 @@ void addFailure(const QString &name, const QString &floor, double limit, const E
     out(QStringLiteral("  %1: FAILED: %2").arg(name, e.message));
 }
 
-void addTimed(const QString &name, const QList<double> &runsMs, double floorMs, double limit,
+Row &addTimed(const QString &name, const QList<double> &runsMs, double floorMs, double limit,
               double absoluteMs = 0, const QString &note = {})
 {
     const Stats s = statsOf(runsMs);
@@ -332,6 +334,7 @@ void addTimed(const QString &name, const QList<double> &runsMs, double floorMs, 
     for (double v : runsMs)
         each << QString::number(v, 'f', 1);
     out(QStringLiteral("  %1: runs [%2] ms, floor %3").arg(name, each.join(QStringLiteral(", ")), ms(floorMs)));
+    return g_rows.last();
 }
 
 void benchModbusBackup(int baud)
@@ -402,7 +405,7 @@ void benchModbusScan(int baud, double limitMs)
     if (s->error)
         return addFailure(name, ms(floorMs), 0, s->error);
     QList<double> runs;
-    QString note;
+    QStringList misses;
     for (int i = 0; i < g_scanRuns; ++i) {
         ScanOptions so;
         so.from = 1;
@@ -417,7 +420,8 @@ void benchModbusScan(int baud, double limitMs)
         QElapsedTimer t;
         t.start();
         d->start();
-        if (!waitUntil([&] { return finished; }, 300000))
+        waitForSignal(d, &Discovery::finished, 300000);
+        if (!finished)
             result = {ErrorCode::Timeout, QStringLiteral("the scan did not finish in 5 minutes")};
         const double elapsed = double(t.nsecsElapsed()) / 1e6;
         QList<int> found;
@@ -431,13 +435,14 @@ void benchModbusScan(int baud, double limitMs)
             QStringList f;
             for (int a : found)
                 f << QString::number(a);
-            return addFailure(name, ms(floorMs), 0,
-                              {ErrorCode::VerifyMismatch,
-                               QStringLiteral("found [%1], expected 17 and 200").arg(f.join(QLatin1Char(',')))});
+            misses << QStringLiteral("run %1 found [%2]").arg(i + 1).arg(f.join(QLatin1Char(',')));
         }
         runs << elapsed;
     }
-    addTimed(name, runs, floorMs, 0, limitMs, QStringLiteral("both drives (17, 200) found in every run"));
+    Row &r = addTimed(name, runs, floorMs, 0, limitMs,
+                      misses.isEmpty() ? QStringLiteral("both drives (17, 200) found in every run")
+                                       : QStringLiteral("NOT FOUND: %1").arg(misses.join(QStringLiteral("; "))));
+    r.complete = misses.isEmpty();
 }
 
 // Reads the channels back to back (the next read leaves when the previous one is in) for

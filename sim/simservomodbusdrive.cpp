@@ -11,6 +11,7 @@ namespace dd {
 
 namespace {
 constexpr int PolePairs = 4;          // electrical angle for the phase currents and UVW
+constexpr double Pi = 3.14159265358979323846;
 constexpr double DemoRpm = 1000.0;
 
 quint16 s16(double v)
@@ -306,7 +307,7 @@ quint16 SimServoModbusDrive::monitorRegister(int reg) const
     const double countsPerRev = m.config().countsPerRev;
     const double turn = std::fmod(m.positionExact(), countsPerRev);
     const double rotor = turn < 0 ? turn + countsPerRev : turn;
-    const double electrical = 2.0 * M_PI * PolePairs * rotor / countsPerRev;
+    const double electrical = 2.0 * Pi * PolePairs * rotor / countsPerRev;
     const double amps = std::abs(m.current());
     switch (reg) {
     case 0x00: return s16(m.speedRpm());
@@ -328,12 +329,12 @@ quint16 SimServoModbusDrive::monitorRegister(int reg) const
                               | (m.alarmCode() != 0 ? 0x02 : 0x00));
     case 0x11: {
         static const quint16 uvw[6] = {1, 3, 2, 6, 4, 5};
-        const int sector = int(std::fmod(electrical, 2.0 * M_PI) / (M_PI / 3.0)) % 6;
+        const int sector = int(std::fmod(electrical, 2.0 * Pi) / (Pi / 3.0)) % 6;
         return uvw[sector];
     }
     case 0x13: return static_cast<quint16>(m.alarmCode());
     case 0x15: return s16(m.current() * std::cos(electrical) * 100.0);
-    case 0x16: return s16(m.current() * std::cos(electrical + 2.0 * M_PI / 3.0) * 100.0);
+    case 0x16: return s16(m.current() * std::cos(electrical + 2.0 * Pi / 3.0) * 100.0);
     default: return 0;
     }
 }

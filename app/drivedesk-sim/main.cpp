@@ -87,7 +87,10 @@ int main(int argc, char *argv[])
         "character) or the frame's bit time at --bitrate, plus the drive latency.\n"
         "Examples:\n"
         "  drivedesk-sim --family servo-modbus --address 1 --address 2 --pty --link /tmp/rs485\n"
-        "  drivedesk-sim --family servo-can --address 1 --can virtualcan:can0"));
+        "  drivedesk-sim --family servo-can --address 1 --can virtualcan:can0\n"
+        "virtualcan: the simulator hosts a low-delay server on the plugin's default port so that\n"
+        "clients naming plain can0 join it; --can virtualcan:auto uses a private server on a free\n"
+        "port and prints its address (can: virtualcan:tcp://127.0.0.1:PORT/can0)."));
     p.addHelpOption();
     p.addVersionOption();
     const QCommandLineOption family({QStringLiteral("family")}, tr("Drive family: servo-can, servo-modbus or shuoke."), QStringLiteral("FAMILY"));

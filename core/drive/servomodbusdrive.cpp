@@ -413,6 +413,11 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
             toRead.append(w.index);
     const QList<ModbusRequest> requests =
         readRequests(address(), servomodbus::planReads(toRead), QStringLiteral("verify"));
+    QMap<int, quint16> all;
+    for (const ParameterWrite &w : writes)
+        all.insert(w.index, 0);
+    const int writesDone = int(servomodbus::planWrites(all).size());
+    const int total = writesDone + int(requests.size());
     ModbusBatch::run(
         m_link, requests, reply, ModbusBatch::Mode::ContinueOnError,
         [this, reply, requests, writes, writeErrors](const Error &, const QList<ModbusBatch::Result> &results) {
@@ -469,7 +474,8 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
                              .arg(bad ? bad->error : QString())};
             }
             reply->finish(first);
-        });
+        },
+        [reply, writesDone, total](int done, int) { reply->reportProgress(writesDone + done, total); });
 }
 
 // ---- EE operations ----

@@ -23,8 +23,8 @@ struct ModbusRequest
 // Modbus RTU client transport on QModbusRtuSerialClient (servo-modbus, shuoke PLC mode),
 // with the Qt 6.4 pitfalls of DESIGN.md handled:
 //  - requests go one at a time through our own queue; the client's own retries are off;
-//  - after a timeout the line is kept quiet (and the client reconnected) so that a late
-//    reply can never be handed to the next request with the same address and function;
+//  - after a timeout the address is kept quiet (see below) so that a late reply can never
+//    be handed to the next request with the same address and function;
 //  - setInterFrameDelay(-1) before every connectDevice() (baud changes reconnect);
 //  - the response timeout covers the request's and the reply's byte time at the baud;
 //  - a serial error (adapter unplugged) closes the link and fails everything pending.
@@ -39,7 +39,8 @@ struct ModbusRequest
 //    completes sooner than half the wire time of request + reply after the request went out
 //    is discarded as a late answer and the request is repeated after a quiet period.
 //  - Qt's shortest response timeout is 10 ms; shorter timeouts (scans at high baud) and
-//    aborts (see below) are done by disconnecting and reconnecting the client.
+//    aborts (see below) end Qt's wait by disconnecting and reconnecting the client (when a
+//    reconnect, whose cost is measured, is quicker than Qt's own timer).
 //  - Qt drops a CRC-valid reply whose address byte differs (the servo-modbus exception
 //    reply carries 0x01 whatever the drive's address). The raw bytes are seen through a
 //    SerialReadSniffer (Unix): such an exception is reported with its code at once and the

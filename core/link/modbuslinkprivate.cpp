@@ -39,6 +39,7 @@ QString hexByte(int v)
 ModbusLink::Private::Private(ModbusLink *link)
     : QObject(link)
     , q(link)
+    , m_sniffer(this)
     , m_gapTimer(this)
     , m_abortTimer(this)
 {

@@ -154,8 +154,11 @@ private slots:
         QVERIFY(b.open(115200));
         b.drives[0]->setParameter(17, quint16(-1234));
         DriveReply *r = b.drive(1)->readParameters(allParameters());
+        QSignalSpy progress(r, &DriveReply::progress);
         QVERIFY(waitDone(r));
         QVERIFY2(r->ok(), qPrintable(r->error().message));
+        QCOMPARE(progress.size(), 3);
+        QCOMPARE(progress.last().at(0).toInt(), 3);
         QCOMPARE(r->parameters().size(), 60);
         for (int n = 0; n < 60; ++n)
             QCOMPARE(r->parameters().value(n), qint64(qint16(b.drives[0]->parameter(n))));
@@ -186,6 +189,7 @@ private slots:
         QVERIFY(b.open(115200));
         const QList<ParameterWrite> writes{{10, 1234}, {11, -5}, {12, 7}, {40, 99}};
         DriveReply *r = b.drive(1)->writeParameters(writes);
+        QSignalSpy progress(r, &DriveReply::progress);
         QVERIFY(waitDone(r));
         QVERIFY2(r->ok(), qPrintable(r->error().message));
         QCOMPARE(b.drives[0]->parameter(10), quint16(1234));
@@ -202,6 +206,9 @@ private slots:
         QCOMPARE(tx[0], withCrc16(QByteArray::fromHex("0110006e00030604d2fffb0007")));
         QCOMPARE(tx[1], withCrc16(QByteArray::fromHex("0110008c000102" "0063")));
         QCOMPARE(tx.size(), 2 + int(servomodbus::planReads({10, 11, 12, 40}).size()));
+        QCOMPARE(progress.size(), tx.size());
+        QCOMPARE(progress.last().at(0).toInt(), int(tx.size()));
+        QCOMPARE(progress.last().at(1).toInt(), int(tx.size()));
     }
 
     void badValuesAreRefusedWithNothingOnTheWire()

@@ -1,0 +1,199 @@
+// The simulated servo-modbus drive on its own: requests in, reply bytes out (no bus, no pty).
+
+#include "protocol/crc16.h"
+#include "protocol/modbusrtu.h"
+#include "simservomodbusdrive.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QtTest>
+
+using namespace dd;
+
+namespace {
+
+QByteArray adu(const char *hexWithoutCrc)
+{
+    return withCrc16(QByteArray::fromHex(hexWithoutCrc));
+}
+
+SimServoModbusDrive::Config config(int address = 1, quint16 firmware = 7051)
+{
+    SimServoModbusDrive::Config c;
+    c.address = address;
+    c.baud = 19200;
+    c.firmware = firmware;
+    return c;
+}
+
+} // namespace
+
+class TestSimServoModbusDrive : public QObject
+{
+    Q_OBJECT
+
+    qint64 m_now = 0;
+    QList<QByteArray> send(SimServoModbusDrive &d, const QByteArray &bytes, qint64 gapUs = 100000)
+    {
+        m_now += gapUs;
+        return d.onBusBytes(bytes, m_now);
+    }
+
+private slots:
+    void init() { m_now = 0; }
+
+    void readsParameters()
+    {
+        SimServoModbusDrive d(config(1));
+        const auto r = send(d, adu("010300640003"));
+        QCOMPARE(r.size(), 1);
+        QCOMPARE(r[0], adu("010306013b00651b8b")); // PA0 315, PA1 101, PA2 7051
+    }
+
+    void ignoresOtherAddressesAndBadCrc()
+    {
+        SimServoModbusDrive d(config(3));
+        QVERIFY(send(d, adu("010300640001")).isEmpty());
+        QByteArray bad = adu("030300640001");
+        bad[7] = char(bad[7] ^ 1);
+        QVERIFY(send(d, bad).isEmpty());
+        QCOMPARE(send(d, adu("030300640001")).size(), 1);
+        QCOMPARE(d.requestsAnswered(), quint64(1));
+    }
+
+    void exceptionsCarryAddressOneAndCodeFour()
+    {
+        SimServoModbusDrive d(config(7));
+        QCOMPARE(send(d, adu("070300640015")), QList<QByteArray>{adu("018304")});      // 21 registers
+        QCOMPARE(send(d, adu("070300180001")), QList<QByteArray>{adu("018304")});      // past DP-rES
+        QCOMPARE(send(d, adu("070300100010")), QList<QByteArray>{adu("018304")});      // DP into the gap
+        QCOMPARE(send(d, adu("071000000001020005")), QList<QByteArray>{adu("019004")}); // write to DP
+        QCOMPARE(send(d, adu("070600640001")), QList<QByteArray>{adu("018604")});      // 0x06 to a PA
+        d.setExceptionAddressFixed(false);
+        QCOMPARE(send(d, adu("070300640015")), QList<QByteArray>{adu("078304")});
+        QCOMPARE(d.exceptionsSent(), quint64(6));
+    }
+
+    void writesAndReadOnlyFirmware()
+    {
+        SimServoModbusDrive d(config(1));
+        QCOMPARE(send(d, adu("0110006500020404d2fffb")), QList<QByteArray>{adu("011000650002")});
+        QCOMPARE(d.parameter(1), quint16(1234));
+        QCOMPARE(d.parameter(2), quint16(7051)); // PA2 ignores writes
+    }
+
+    void broadcastActsWithoutReply()
+    {
+        SimServoModbusDrive d(config(4));
+        QVERIFY(send(d, adu("00100070000102002a")).isEmpty());
+        QCOMPARE(d.parameter(12), quint16(42));
+        QVERIFY(send(d, adu("000300640001")).isEmpty());
+        QCOMPARE(d.broadcastsHandled(), quint64(2));
+    }
+
+    void legacyEeReportsProgress()
+    {
+        SimServoModbusDrive::Config c = config(1, 7041);
+        c.eeBusyUs = 300000;
+        SimServoModbusDrive d(c);
+        d.setParameter(30, 77);
+        QCOMPARE(send(d, adu("010600000001"), 1000), QList<QByteArray>{adu("010600000000")}); // started
+        QVERIFY(d.eeRunning());
+        QCOMPARE(send(d, adu("010600000001"), 100000), QList<QByteArray>{adu("010600000000")}); // running
+        QCOMPARE(d.eepromParameter(30), quint16(130));
+        QCOMPARE(send(d, adu("010600000001"), 250000), QList<QByteArray>{adu("010600000001")}); // done
+        QCOMPARE(d.eepromParameter(30), quint16(77));
+        QVERIFY(!d.eeRunning());
+        // The new format is not understood by this firmware.
+        QCOMPARE(send(d, adu("0110003a0001020001")), QList<QByteArray>{adu("019004")});
+        // An op code outside 1..5.
+        QCOMPARE(send(d, adu("010600000009")), QList<QByteArray>{adu("018604")});
+    }
+
+    void newEeFormatAndEveryOperation()
+    {
+        SimServoModbusDrive d(config(1, 7051));
+        QCOMPARE(send(d, adu("010600000001")), QList<QByteArray>{adu("018604")}); // legacy refused
+        d.setParameter(20, 5);
+        QCOMPARE(send(d, adu("0110003a0001020003")), QList<QByteArray>{adu("0110003a0001")}); // EE-bA
+        QCOMPARE(d.backupParameter(20), quint16(5));
+        d.setParameter(20, 6);
+        send(d, adu("0110003a0001020001")); // EE-Set
+        QCOMPARE(d.eepromParameter(20), quint16(6));
+        d.setParameter(20, 7);
+        send(d, adu("0110003a0001020002")); // EE-rd
+        QCOMPARE(d.parameter(20), quint16(6));
+        send(d, adu("0110003a0001020004")); // EE-rS
+        QCOMPARE(d.parameter(20), quint16(5));
+        send(d, adu("0110003a0001020005")); // EE-dEF
+        QCOMPARE(d.parameter(20), quint16(120));
+        QCOMPARE(d.eepromParameter(20), quint16(120));
+        QCOMPARE(d.parameter(2), quint16(7051));
+        QCOMPARE(d.eeOperationsCompleted(), 5);
+    }
+
+    void addressChangeTakesEffectAfterSaveAndPowerCycle()
+    {
+        SimServoModbusDrive d(config(1));
+        send(d, adu("011000970001020009")); // PA51 = 9
+        QCOMPARE(d.address(), 1);
+        send(d, adu("0110003a0001020001")); // EE-Set
+        d.powerCycle();
+        QCOMPARE(d.address(), 9);
+        QCOMPARE(send(d, adu("090300970001")), QList<QByteArray>{adu("0903020009")});
+    }
+
+    void framesSplitOrJoinedAndResyncAfterSilence()
+    {
+        SimServoModbusDrive d(config(1));
+        const QByteArray req = adu("010300640001");
+        QVERIFY(send(d, req.left(3)).isEmpty());
+        QCOMPARE(send(d, req.mid(3), 500).size(), 1);          // the rest, right after
+        QCOMPARE(send(d, req + req).size(), 2);               // two in one chunk
+        QVERIFY(send(d, req.left(5)).isEmpty());
+        // A long silence: the half frame is dropped, the next whole one is answered.
+        QCOMPARE(send(d, req, 100000).size(), 1);
+    }
+
+    void monitorFollowsTheMotor()
+    {
+        SimServoModbusDrive d(config(1));
+        d.motor().enable();
+        d.motor().setPosition(-70000);
+        d.setAlarm(0);
+        d.advanceTo(1000);
+        // DP-PoS / DP-PoS.: binary words of -70000 = 0xFFFEEE90.
+        QCOMPARE(d.monitorRegister(0x01), quint16(0xEE90));
+        QCOMPARE(d.monitorRegister(0x02), quint16(0xFFFE));
+        d.setAlarm(12);
+        QCOMPARE(d.monitorRegister(0x13), quint16(12));
+        const auto r = send(d, adu("010300130001"));
+        QCOMPARE(r, QList<QByteArray>{adu("010302000c")});
+    }
+
+    void stateRoundTrip()
+    {
+        SimServoModbusDrive a(config(6));
+        a.setParameter(33, 3333);
+        send(a, adu("0610003a0001020001")); // EE-Set
+        a.setParameter(33, 4444);
+        a.setAlarm(5);
+        const QJsonObject state = a.saveState();
+        const QByteArray json = QJsonDocument(state).toJson();
+
+        SimServoModbusDrive b(config(1));
+        QString error;
+        QVERIFY2(b.loadState(QJsonDocument::fromJson(json).object(), &error), qPrintable(error));
+        QCOMPARE(b.address(), 6);
+        QCOMPARE(b.parameter(33), quint16(4444));
+        QCOMPARE(b.eepromParameter(33), quint16(3333));
+        QCOMPARE(b.alarm(), 5);
+        QJsonObject broken = state;
+        broken.insert(QStringLiteral("eeprom"), QJsonArray{1, 2, 3});
+        QVERIFY(!b.loadState(broken, &error));
+        QVERIFY(error.contains(QLatin1String("eeprom")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSimServoModbusDrive)
+#include "tst_simservomodbusdrive.moc"

@@ -27,13 +27,14 @@
 //  - Scan: each probed address costs its request bytes and a t3.5 silence; the drives that
 //    are present add their latency and reply. How long to wait for an absent address is
 //    a policy, not wire time, so it is not part of the floor (the targets are absolute).
-//  - Monitor: one sample = one read of the channels, the next leaving when the previous
-//    one is in (as the CLI's sampler does when asked for more than the link allows); the
+//  - Monitor: the CLI's ChannelSampler at 1 ms (its --rate 1000) for 2 s: one sample = one
+//    read of the channels, the next leaving when the previous one is in; the
 //    floor is one such read (serial: + t3.5 before the next). The rate is judged; the
 //    median sample interval is printed beside it, since on a loaded machine a few samples
 //    delayed by the scheduler pull the rate down.
-//  - Shuoke (monitor only, speed): RTU adds the 50 ms command gap the seed asks for. These
-//    rows say "skipped" until SimBench simulates shuoke drives.
+//  - Shuoke (monitor only, speed): on RTU the seed's "at least 50 ms between commands"
+//    (the simulated drive ignores a command sooner than 50 ms after the previous one)
+//    makes the floor max(50 ms, one transaction).
 
 #include "drive/drive.h"
 #include "drive/driveconnection.h"
@@ -42,6 +43,7 @@
 #include "simbench.h"
 #include "simcandevice.h"
 #include "simserialdevice.h"
+#include "trend/channelsampler.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -457,8 +459,8 @@ void benchModbusScan(int baud, double limitMs)
     r.complete = misses.isEmpty();
 }
 
-// Reads the channels back to back (the next read leaves when the previous one is in) for
-// `seconds`: the highest sample rate the client achieves.
+// Samples the channels as the CLI's monitor does, asked for more than the link allows, for
+// 2 s: the highest sample rate the client achieves.
 void benchMonitor(const QString &name, const SimBenchOptions &o, const QStringList &channels,
                   double floorUs, const QString &note)
 {
@@ -478,24 +480,30 @@ void benchMonitor(const QString &name, const SimBenchOptions &o, const QStringLi
     }
     if (s->error)
         return addFailure(name, QString(), 1 / 0.9, s->error);
-    constexpr double Seconds = 2.0;
+    constexpr int Ms = 2000;
     QList<double> runs;   // ms per sample
     QList<double> each;   // every sample's interval, ms
     for (int i = 0; i < g_runs; ++i) {
-        int samples = 0;
+        // As the CLI's monitor at --rate 1000 (its most): more than any of these links
+        // allows, so the sampler reads back to back.
+        ChannelSampler sampler(s->drive);
+        sampler.setChannels(channels);
+        sampler.setIntervalMs(1);
+        QList<double> times;
         Error failure;
-        QElapsedTimer t;
-        t.start();
-        while (t.nsecsElapsed() < qint64(Seconds * 1e9)) {
-            double sampleMs = 0;
-            if ((failure = await(s->drive->readChannels(channels), 5000, &sampleMs)))
-                break;
-            each << sampleMs;
-            ++samples;
-        }
+        QObject::connect(&sampler, &ChannelSampler::sampled, &sampler,
+                         [&times](double t, const QMap<QString, double> &) { times << t; });
+        QObject::connect(&sampler, &ChannelSampler::failed, &sampler, [&failure](const Error &e) { failure = e; });
+        sampler.start();
+        waitForSignal(&sampler, &ChannelSampler::failed, Ms);
+        sampler.stop();
         if (failure)
             return addFailure(name, QString(), 1 / 0.9, failure);
-        runs << double(t.nsecsElapsed()) / 1e6 / samples;
+        if (times.size() < 3)
+            return addFailure(name, QString(), 1 / 0.9, {ErrorCode::Timeout, QStringLiteral("fewer than 3 samples")});
+        for (qsizetype k = 1; k < times.size(); ++k)
+            each << (times.at(k) - times.at(k - 1)) * 1000;
+        runs << (times.last() - times.first()) * 1000 / double(times.size() - 1);
     }
     const Stats st = statsOf(runs);
     Row r;
@@ -544,22 +552,22 @@ void benchCanMonitor()
                  floorUs, QStringLiteral("speed, torque, current, bus voltage: 4 pipelined reads"));
 }
 
-// Shuoke steppers report speed but no torque, current or bus voltage. Runs once SimBench
-// simulates shuoke drives (it says NotSupported until then).
+// Shuoke steppers report speed but no torque, current or bus voltage.
 void benchShuokeMonitor()
 {
     const QStringList speed{QStringLiteral("speed")};
     const QString note = QStringLiteral("speed only (no torque, current or bus voltage on these drives)");
     {
-        // RTU: query speed 0x36 = 5-byte request, 9-byte reply; the seed asks for at least
-        // 50 ms between commands (shuoke.minGapMs), which the floor includes.
+        // RTU: query speed 0x36 = 5-byte request, 9-byte reply. The seed asks for at least
+        // 50 ms between commands; the simulated drive ignores a command that arrives less
+        // than 50 ms after the previous one, so commands 50 ms apart is the floor.
         SimBenchOptions o;
         o.family = Family::Shuoke;
         o.baud = 9600;
         o.framing = QStringLiteral("rtu");
-        const double floorUs = WireTime::serialBytesUs(5 + 9, 9600) + SimSerialDevice::DefaultLatencyUs + 50000;
+        const double floorUs = std::max(50000.0, WireTime::serialBytesUs(5 + 9, 9600) + SimSerialDevice::DefaultLatencyUs);
         benchMonitor(QStringLiteral("monitor shuoke RTU @ 9600"), o, speed, floorUs,
-                     note + QStringLiteral("; 50 ms command gap"));
+                     note + QStringLiteral("; commands >= 50 ms apart"));
     }
     {
         SimBenchOptions o;

@@ -1,5 +1,7 @@
 #include "drivepanels.h"
 
+#include "alarmspanel.h"
+#include "motionpanel.h"
 #include "overviewpanel.h"
 
 namespace dd {
@@ -8,7 +10,9 @@ QList<DrivePanel *> createDrivePanels(const DriveContext &context, QWidget *pare
 {
     QList<DrivePanel *> panels;
     panels << new OverviewPanel(context, parent);
-    // Further panels (parameters, backup/restore, EE, motion, trend, alarms) go here.
+    panels << new MotionPanel(context, parent);
+    panels << new AlarmsPanel(context, parent);
+    // Further panels (parameters, backup/restore, EE, trend) go here.
     return panels;
 }
 

@@ -77,14 +77,13 @@ QString FrameDescriber::describeShuokeCan(Origin origin, const CanFrameData &fra
 QString FrameDescriber::describeShuokeFrame(Origin origin, const shuoke::Frame &frame)
 {
     using namespace shuoke;
-    QString who = QStringLiteral("#%1 ").arg(frame.address);
+    const QString who = QStringLiteral("#%1 ").arg(frame.address);
     if (origin == Origin::Host) {
         m_shuokeRequest = frame;
-        if (isBroadcastAddress(frame.address))
-            who = tr("all (broadcast): ");
         const QString value = shuokeValue(frame.command, frame.data, true);
         const QString name = shuokeCommandName(frame.command);
-        return who + (value.isEmpty() ? name : name + QLatin1Char(' ') + value);
+        const QString text = value.isEmpty() ? name : name + QLatin1Char(' ') + value;
+        return isBroadcastAddress(frame.address) ? tr("all (broadcast): %1").arg(text) : who + text;
     }
     // A reply is named after the request it answers (0x42..0x46 answer with 0x41).
     quint8 command = frame.command;

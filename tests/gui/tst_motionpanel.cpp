@@ -1,10 +1,14 @@
 // The Motion tab against simulated drives on their own thread: hold-to-run jog (the motor
 // turns only while the button is held; release, focus loss, window deactivation, a frozen
-// window whose lease is not renewed, a disconnect → stop), and capability-based enabling.
+// window whose lease is not renewed, a disconnect → stop), capability-based enabling, and
+// the Chinese texts of the new panels.
 #include "drive/drivehub.h"
 #include "drivedirectory.h"
 #include "driveworkspace.h"
 #include "jogbutton.h"
+#include "languagemanager.h"
+#include "alarmspanel.h"
+#include "framemonitordock.h"
 #include "motionpanel.h"
 #include "protocol/servocan.h"
 #include "panelrig.h"
@@ -109,6 +113,27 @@ private slots:
         QCOMPARE(MotionPanel::speedRange(Family::Shuoke).maximum, 100000);
         QCOMPARE(MotionPanel::speedRange(Family::ServoCan).maximum, 6000);
         QVERIFY(MotionPanel::speedRange(Family::ServoCan).jogDefault <= 100);
+    }
+
+    void speaksChinese()
+    {
+        DriveContext ctx;
+        ctx.family = Family::Shuoke;
+        MotionPanel motion(ctx);
+        AlarmsPanel alarms(ctx);
+        FrameMonitorDock frames(nullptr);
+        LanguageManager language;
+        QVERIFY(language.apply(LanguageManager::Language::Chinese));
+        QCoreApplication::sendPostedEvents();   // LanguageChange is posted to top-level widgets
+        QCOMPARE(motion.title(), QStringLiteral("运动"));
+        QCOMPARE(motion.jogPositive()->text(), QStringLiteral("正向点动 ▶"));
+        QCOMPARE(motion.findChild<QSpinBox *>(QStringLiteral("jogSpeed"))->suffix(), QStringLiteral(" 脉冲/秒"));
+        QCOMPARE(alarms.title(), QStringLiteral("报警"));
+        QCOMPARE(frames.windowTitle(), QStringLiteral("报文监视"));
+        QVERIFY(language.apply(LanguageManager::Language::English));
+        QCoreApplication::sendPostedEvents();
+        QCOMPARE(motion.title(), QStringLiteral("Motion"));
+        QCOMPARE(frames.windowTitle(), QStringLiteral("Frame monitor"));
     }
 
     void servoCanEnablesItsFunctions()

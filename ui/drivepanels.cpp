@@ -3,6 +3,7 @@
 #include "alarmspanel.h"
 #include "motionpanel.h"
 #include "overviewpanel.h"
+#include "trendpanel.h"
 
 namespace dd {
 
@@ -10,9 +11,10 @@ QList<DrivePanel *> createDrivePanels(const DriveContext &context, QWidget *pare
 {
     QList<DrivePanel *> panels;
     panels << new OverviewPanel(context, parent);
+    panels << new TrendPanel(context, parent);
     panels << new MotionPanel(context, parent);
     panels << new AlarmsPanel(context, parent);
-    // Further panels (parameters, backup/restore, EE, trend) go here.
+    // Further panels (parameters, backup/restore, EE) go here.
     return panels;
 }
 

@@ -10,6 +10,8 @@
 #include "mainwindow.h"
 #include "demobench.h"
 #include "stopaction.h"
+#include "trend/trendrecorder.h"
+#include "trendpanel.h"
 
 #include <QApplication>
 #include <QCanBus>
@@ -87,8 +89,10 @@ private slots:
         QList<Family> families;
         for (const ConnectionSettings &s : links)
             families << s.family;
+        QCOMPARE(families.size(), 3);   // one bus per family
         QVERIFY(families.contains(Family::ServoModbus));
         QVERIFY(families.contains(Family::ServoCan));
+        QVERIFY(families.contains(Family::Shuoke));
         for (const ConnectionSettings &s : links)
             if (s.isCan())
                 QVERIFY2(s.can.startsWith(QLatin1String("virtualcan:tcp://127.0.0.1:")), qPrintable(s.can));
@@ -107,11 +111,12 @@ private slots:
 
         QVERIFY(w.startDemo());
         QVERIFY(w.demo()->isRunning());
-        const int expected = int(w.demo()->connections().size());
-        QVERIFY(expected >= 2);
+        const int expected = 3;   // one drive of each family
+        QCOMPARE(int(w.demo()->connections().size()), expected);
         QVERIFY(waitFor(w.connections(), SIGNAL(finished(QString,bool)),
                         [&] { return driveCount(dir) == expected && !w.connections()->isBusy(); }, 20000));
         QCOMPARE(int(dir->connections().size()), expected);
+        QVERIFY(connectionOf(dir, Family::Shuoke));
         for (int id : dir->connections()) {
             QCOMPARE(dir->drives(id), QList<int>({DemoBench::Address}));
             QVERIFY(w.busTree()->driveItem(id, DemoBench::Address));
@@ -124,6 +129,23 @@ private slots:
         QVERIFY(modbus);
         QVERIFY(waitFor(dir, SIGNAL(driveChanged(int,int)),
                         [&] { return dir->info(modbus, 1).identity.firmware == QLatin1String("7051"); }, 5000));
+
+        // The trend tab samples the drive's channels while it is shown.
+        w.busTree()->selectDrive(modbus, 1);
+        w.workspace()->setPreferredPanel(QStringLiteral("trend"));
+        TrendPanel *trend = nullptr;
+        for (DrivePanel *p : w.workspace()->panelsFor(modbus, 1))
+            if (auto *t = qobject_cast<TrendPanel *>(p))
+                trend = t;
+        QVERIFY(trend);
+        QVERIFY(trend->isActive());
+        QVERIFY(waitFor(dir, SIGNAL(driveChanged(int,int)), [&] {
+            const SampleBuffer *b = trend->recorder()->buffer(QStringLiteral("speed"));
+            return b && b->size() >= 3;
+        }, 5000));
+        // Not shown: no sampling (the link is shared).
+        w.workspace()->setPreferredPanel(QStringLiteral("overview"));
+        QVERIFY(!trend->isActive());
 
         // STOP: a servo-can drive in motion stops when F12 is pressed anywhere in the window.
         const int can = connectionOf(dir, Family::ServoCan);

@@ -204,6 +204,31 @@ private slots:
         QCOMPARE(filter.rowCount(), 6);
     }
 
+    void shuokeRtuTrafficIsDescribed()
+    {
+        SimBenchThread sim;
+        SimBenchOptions o;
+        o.family = Family::Shuoke;   // RTU on a pty
+        QVERIFY(!sim.start(o));
+        DriveHub hub;
+        FrameMonitorModel model;
+        model.setHub(&hub);
+        int id = 0;
+        hub.openConnection(sim.clientSettings(), [&](int newId, const Error &) { id = newId; });
+        QVERIFY(waitUntil([&] { return id > 0; }, 5000));
+        int finished = 0;
+        hub.run(id, 1, [](Drive &d) { return d.jog(-500); }, [&](const DriveResult &) { ++finished; });
+        hub.run(id, 1, [](Drive &d) { return d.stop(false); }, [&](const DriveResult &) { ++finished; });
+        QVERIFY(waitUntil([&] { return finished == 2 && model.rowCount() >= 4; }, 5000));
+        QStringList meanings;
+        for (int i = 0; i < model.rowCount(); ++i)
+            meanings << model.row(i).record.directionText() + QLatin1Char(' ') + model.row(i).meaning;
+        QVERIFY2(meanings.contains(QStringLiteral("TX #1 Run at constant speed (signed) -500")), qPrintable(meanings.join('\n')));
+        QVERIFY2(meanings.contains(QStringLiteral("RX #1 Run at constant speed (signed): OK")), qPrintable(meanings.join('\n')));
+        QVERIFY2(meanings.contains(QStringLiteral("TX #1 Decelerate to stop")), qPrintable(meanings.join('\n')));
+        QVERIFY(!meanings.join('\n').contains(QLatin1String("?")));
+    }
+
     void dockInMainWindowShowsLiveTraffic()
     {
         if (!QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")))

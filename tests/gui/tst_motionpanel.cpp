@@ -324,6 +324,31 @@ private slots:
         QVERIFY(waitUntil([&] { return rig.atRest(); }, 1000));
     }
 
+    void shuokeMovesButHasNoEnable()
+    {
+        Rig rig;
+        SimBenchOptions o;
+        o.family = Family::Shuoke;   // RTU on a pty, an M6505
+        QString why;
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        MotionPanel *p = rig.panel;
+        for (const char *name : {"jogPlus", "jogMinus", "jogSpeed", "moveButton", "setPositionButton",
+                                 "stopDriveButton", "homeButton"}) {
+            auto *w = p->findChild<QWidget *>(QLatin1String(name));
+            QVERIFY2(w && w->isEnabled(), name);
+        }
+        auto *enable = p->findChild<QPushButton *>(QStringLiteral("enableButton"));
+        QVERIFY(!enable->isEnabled());
+        QVERIFY(!p->driveInfo().reason(Capability::Enable).isEmpty());
+        QCOMPARE(enable->toolTip(), p->driveInfo().reason(Capability::Enable));
+        QVERIFY(p->findChild<QLabel *>(QStringLiteral("powerBoxReason"))->isVisible());
+        QVERIFY(!p->findChild<QLabel *>(QStringLiteral("motionUnsupported"))->isVisible());
+        auto *speed = p->findChild<QSpinBox *>(QStringLiteral("jogSpeed"));
+        QCOMPARE(speed->maximum(), 100000);
+        QVERIFY(speed->suffix().contains(QLatin1String("pulses/s")));
+        QVERIFY(p->findChild<QSpinBox *>(QStringLiteral("moveValue"))->suffix().contains(QLatin1String("pulses")));
+    }
+
     void servoModbusShowsEveryMotionDisabledWithTheReason()
     {
         Rig rig;

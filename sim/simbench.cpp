@@ -98,7 +98,7 @@ Error SimBench::startSerial()
         case Family::ServoModbus: {
             SimServoModbusDrive::Config c;
             c.address = address;
-            c.baud = m_options.baud;
+            c.baud = m_options.bauds.value(address, m_options.baud);
             c.demoMotion = m_options.demoMotion;
             device = std::make_unique<SimServoModbusDrive>(c);
             break;

@@ -4,6 +4,7 @@
 #include "faultinjector.h"
 
 #include <QList>
+#include <QMap>
 #include <QString>
 
 namespace dd {
@@ -17,6 +18,7 @@ struct SimBenchOptions
     QString can;              // "plugin:interface" for a CAN bus; empty: a pty
     QString linkPath;         // pty: also make a symbolic link here
     int baud = 0;             // 0: family default
+    QMap<int, int> bauds;     // serial: the baud of the drive at an address, overriding `baud`
     int bitrate = 0;          // 0: family default
     QString framing;          // shuoke: rtu | ascii | can | plc
     int latencyUs = -1;       // drive reply latency; -1: device default

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "cliparser.h"
+#include "drive/connectionsettings.h"
+
+#include <QCoreApplication>
+
+namespace dd {
+
+// The global options, interpreted: which family, which link, which drive, how to print.
+struct CliGlobals
+{
+    Q_DECLARE_TR_FUNCTIONS(dd::Cli)
+public:
+    ConnectionSettings connection;
+    bool addressGiven = false;
+    int address = 1;
+    bool json = false;
+    bool trace = false;
+    QString dictionaryFile;
+    bool sim = false;
+    // --sim-drives ADDR[@BAUD],...: the simulated drives (empty: one at `address`).
+    struct SimDrive { int address = 1; int baud = 0; };
+    QList<SimDrive> simDrives;
+    QString simStateFile;        // --sim-state FILE: the bench's state, loaded and saved
+    QString simDescription;      // set once the bench runs
+
+    // The option table (for the parser and the help).
+    static QList<CliOptionSpec> optionSpecs();
+    // Interprets and checks the global options; false with a translated message.
+    bool load(const CliInvocation &inv, QString *error);
+    // The address a command talks to when --address is not given (as drivedesk-sim's).
+    static int defaultAddress(Family family);
+};
+
+} // namespace dd

@@ -1,0 +1,17 @@
+#pragma once
+
+#include <QCoreApplication>
+#include <QString>
+
+namespace dd {
+
+// The texts of `drivedesk-cli --help` and `drivedesk-cli COMMAND --help`.
+class CliHelp
+{
+    Q_DECLARE_TR_FUNCTIONS(dd::Cli)
+public:
+    static QString general();
+    static QString command(const QString &name);
+};
+
+} // namespace dd

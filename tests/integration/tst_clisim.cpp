@@ -1,0 +1,97 @@
+// drivedesk-cli --sim: the built-in simulated bench, nothing plugged in.
+#include "clirun.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace dd::test;
+
+class TestCliSim : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void info_data();
+    void info();
+    void scanFindsSimulatedDrives();
+    void jogRunsAndStops();
+    void backupOfASimulatedDrive();
+    void simLeavesNoRoomForAPort();
+    void stateCarriesOverBetweenRuns();
+};
+
+void TestCliSim::info_data()
+{
+    QTest::addColumn<QString>("family");
+    QTest::newRow("servo-modbus") << QStringLiteral("servo-modbus");
+    QTest::newRow("servo-can") << QStringLiteral("servo-can");
+}
+
+void TestCliSim::info()
+{
+    QFETCH(QString, family);
+    const CliRun r = runCli({"--sim", "--family", family, "--address", "4", "--json", "info"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QCOMPARE(r.json().value("identity").toObject().value("family").toString(), family);
+    QCOMPARE(r.json().value("identity").toObject().value("address").toInt(), 4);
+    QVERIFY(r.err.contains("simulated"));
+}
+
+void TestCliSim::scanFindsSimulatedDrives()
+{
+    // The simulator shares the CLI's thread: allow the probes more than the adaptive minimum.
+    const CliRun r = runCli({"--sim", "--sim-drives", "5@19200,9@38400", "--timeout", "100", "--json", "scan",
+                             "--to", "12", "--bauds", "19200,38400"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QList<int> found;
+    for (const QJsonValue &v : r.json().value("drives").toArray())
+        found << v.toObject().value("address").toInt();
+    std::sort(found.begin(), found.end());
+    QCOMPARE(found, (QList<int>{5, 9}));
+}
+
+void TestCliSim::jogRunsAndStops()
+{
+    const CliRun r = runCli({"--sim", "--family", "servo-can", "--json", "--trace", "jog", "100", "--duration", "0.3"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QCOMPARE(r.json().value("stoppedBy").toString(), QStringLiteral("duration"));
+    QVERIFY(r.err.contains("065#01 20 00 64 00 00 00 FF"));   // "speed mode +100" (the seed's example, station 1)
+    QVERIFY(r.err.contains("(stop)"));
+}
+
+void TestCliSim::backupOfASimulatedDrive()
+{
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("sim.json"));
+    CliRun r = runCli(QStringList{"--sim", "backup", "-o", file});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    // A fresh simulated drive has the same factory values: nothing to restore.
+    r = runCli(QStringList{"--sim", "--json", "restore", file});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY(r.json().value("selected").toArray().isEmpty());
+}
+
+void TestCliSim::simLeavesNoRoomForAPort()
+{
+    const CliRun r = runCli({"--sim", "--port", "/dev/ttyUSB0", "info"});
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY(r.err.contains("--sim"));
+}
+
+void TestCliSim::stateCarriesOverBetweenRuns()
+{
+    QTemporaryDir dir;
+    const QString state = dir.filePath(QStringLiteral("bench.json"));
+    CliRun r = runCli({"--sim-state", state, "set", "PA12=321"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY(QFile::exists(state));
+    r = runCli({"--sim-state", state, "--json", "get", "PA12"});
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QCOMPARE(r.json().value("parameters").toArray().at(0).toObject().value("value").toInt(), 321);
+    // Without the state file a fresh drive has its factory value again.
+    r = runCli({"--sim", "--json", "get", "PA12"});
+    QVERIFY(r.json().value("parameters").toArray().at(0).toObject().value("value").toInt() != 321);
+}
+
+QTEST_GUILESS_MAIN(TestCliSim)
+#include "tst_clisim.moc"

@@ -1,6 +1,9 @@
 #include "drivepanels.h"
 
+#include "backuppanel.h"
+#include "eepanel.h"
 #include "overviewpanel.h"
+#include "parameterspanel.h"
 
 namespace dd {
 
@@ -8,6 +11,12 @@ QList<DrivePanel *> createDrivePanels(const DriveContext &context, QWidget *pare
 {
     QList<DrivePanel *> panels;
     panels << new OverviewPanel(context, parent);
+    panels << new ParametersPanel(context, parent);
+    panels << new BackupPanel(context, parent);
+    // EEPROM operations: servo-modbus (the capabilities may not be known yet when the tabs
+    // are made; a drive without them shows why).
+    if (context.family == Family::ServoModbus || context.can(Capability::EeOperations))
+        panels << new EePanel(context, parent);
     // Further panels (parameters, backup/restore, EE, motion, trend, alarms) go here.
     return panels;
 }

@@ -6,6 +6,8 @@
 #include "simserialbus.h"
 #include "simservocandrive.h"
 #include "simservomodbusdrive.h"
+#include "simshuokecandevice.h"
+#include "simshuokeserialdevice.h"
 #include "virtualcanhub.h"
 
 #include <QFile>
@@ -106,8 +108,13 @@ Error SimBench::startSerial()
         case Family::ServoCan:
             return {ErrorCode::InvalidArgument,
                     tr("servo-can drives live on a CAN bus: give --can PLUGIN:INTERFACE.")};
-        case Family::Shuoke:
-            return {ErrorCode::NotSupported, tr("The shuoke simulator is not available in this build.")};
+        case Family::Shuoke: {
+            Error e;
+            device = makeShuokeSerialDrive(address, &e);
+            if (!device)
+                return e;
+            break;
+        }
         }
         if (m_options.latencyUs >= 0)
             device->setLatencyUs(m_options.latencyUs);
@@ -117,6 +124,40 @@ Error SimBench::startSerial()
         m_serial->addDevice(std::move(device));
     }
     return Error::none();
+}
+
+std::unique_ptr<SimSerialDevice> SimBench::makeShuokeSerialDrive(int address, Error *error) const
+{
+    SimShuokeSerialDevice::Framing framing = SimShuokeSerialDevice::Framing::Rtu;
+    const QString f = m_options.framing.toLower();
+    if (f == QLatin1String("ascii")) {
+        framing = SimShuokeSerialDevice::Framing::Ascii;
+    } else if (f == QLatin1String("plc")) {
+        framing = SimShuokeSerialDevice::Framing::Plc;
+    } else if (!f.isEmpty() && f != QLatin1String("rtu")) {
+        *error = {ErrorCode::InvalidArgument,
+                  f == QLatin1String("can") ? tr("The shuoke CAN framing needs a CAN bus: give --can PLUGIN:INTERFACE.")
+                                            : tr("Unknown shuoke framing \"%1\": use rtu, ascii, can or plc.").arg(f)};
+        return nullptr;
+    }
+    const int code = shuoke::baudCodeForRate(m_options.baud);
+    if (!shuoke::isUsableBaudCode(code)) {
+        *error = {ErrorCode::InvalidArgument,
+                  tr("A shuoke drive talks at 300, 600, 1200, 2400, 4800, 9600, 19200 or 38400 baud, not %1.")
+                      .arg(m_options.baud)};
+        return nullptr;
+    }
+    if (!shuoke::isUnicastAddress(address)) {
+        *error = {ErrorCode::InvalidArgument, tr("A shuoke address is 1..247, not %1.").arg(address)};
+        return nullptr;
+    }
+    SimShuokeDrive::Config c;
+    c.address = static_cast<quint8>(address);
+    c.baudCode = code;
+    auto device = std::make_unique<SimShuokeSerialDevice>(c, framing);
+    SimSerialBus *bus = m_serial;
+    device->setClock([bus] { return bus->nowUs(); });
+    return device;
 }
 
 Error SimBench::startCan()
@@ -159,8 +200,23 @@ Error SimBench::startCan()
             break;
         case Family::ServoModbus:
             return {ErrorCode::InvalidArgument, tr("servo-modbus drives live on RS485: use --pty.")};
-        case Family::Shuoke:
-            return {ErrorCode::NotSupported, tr("The shuoke simulator is not available in this build.")};
+        case Family::Shuoke: {
+            if (!m_options.framing.isEmpty() && m_options.framing != QLatin1String("can"))
+                return {ErrorCode::InvalidArgument,
+                        tr("The shuoke %1 framing runs on RS232/RS485: use --pty.").arg(m_options.framing)};
+            if (address < 1 || address > 250)
+                return {ErrorCode::InvalidArgument, tr("A shuoke CAN address is 1..250, not %1.").arg(address)};
+            SimShuokeDrive::Config c;
+            c.address = static_cast<quint8>(address);
+            const int code = shuoke::canBitrateCodeFor(m_options.bitrate);
+            if (code > 0)
+                c.canBitrateCode = code;
+            auto shuokeDevice = std::make_unique<SimShuokeCanDevice>(c);
+            SimCanBus *bus = m_can;
+            shuokeDevice->setClock([bus] { return bus->nowUs(); });
+            device = std::move(shuokeDevice);
+            break;
+        }
         }
         if (m_options.latencyUs >= 0)
             device->setLatencyUs(m_options.latencyUs);
@@ -250,10 +306,14 @@ QJsonObject SimBench::stateOf() const
     for (int i = 0; m_serial && i < m_serial->deviceCount(); ++i) {
         if (auto *d = dynamic_cast<SimServoModbusDrive *>(m_serial->device(i)))
             add(m_options.addresses.value(i), d->saveState());
+        else if (auto *k = dynamic_cast<SimShuokeSerialDevice *>(m_serial->device(i)))
+            add(m_options.addresses.value(i), k->drive().saveState());
     }
     for (int i = 0; m_can && i < m_can->deviceCount(); ++i) {
         if (auto *d = dynamic_cast<SimServoCanDrive *>(m_can->device(i)))
             add(m_options.addresses.value(i), d->saveState());
+        else if (auto *k = dynamic_cast<SimShuokeCanDevice *>(m_can->device(i)))
+            add(m_options.addresses.value(i), k->drive().saveState());
     }
     return {{QStringLiteral("format"), QLatin1String(kStateFormat)},
             {QStringLiteral("family"), familyId(m_options.family)},
@@ -277,12 +337,17 @@ Error SimBench::applyState(const QJsonObject &root)
             continue; // a drive not on this bench now
         QString why;
         bool ok = true;
+        const QJsonObject state = o.value(QStringLiteral("state")).toObject();
         if (m_serial) {
             if (auto *d = dynamic_cast<SimServoModbusDrive *>(m_serial->device(i)))
-                ok = d->loadState(o.value(QStringLiteral("state")).toObject(), &why);
+                ok = d->loadState(state, &why);
+            else if (auto *k = dynamic_cast<SimShuokeSerialDevice *>(m_serial->device(i)))
+                ok = k->drive().loadState(state, &why);
         } else if (m_can) {
             if (auto *d = dynamic_cast<SimServoCanDrive *>(m_can->device(i)))
-                ok = d->loadState(o.value(QStringLiteral("state")).toObject(), &why);
+                ok = d->loadState(state, &why);
+            else if (auto *k = dynamic_cast<SimShuokeCanDevice *>(m_can->device(i)))
+                ok = k->drive().loadState(state, &why);
         }
         if (!ok)
             return {ErrorCode::Malformed, tr("%1: drive %2: %3").arg(file).arg(address).arg(why)};

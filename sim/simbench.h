@@ -12,6 +12,7 @@ namespace dd {
 
 class SimCanBus;
 class SimSerialBus;
+class SimSerialDevice;
 class VirtualCanHub;
 
 // One simulated bus with drives of one family on it: a pty (SimSerialBus) or a CAN bus
@@ -47,6 +48,7 @@ public:
 private:
     Error startSerial();
     Error startCan();
+    std::unique_ptr<SimSerialDevice> makeShuokeSerialDrive(int address, Error *error) const;
     QJsonObject stateOf() const;
     Error applyState(const QJsonObject &state);
 

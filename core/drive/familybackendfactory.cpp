@@ -2,6 +2,7 @@
 #include "drive/familybackend.h"
 #include "drive/servocanbackend.h"
 #include "drive/servomodbusbackend.h"
+#include "drive/shuokebackend.h"
 
 namespace dd {
 
@@ -14,7 +15,7 @@ FamilyBackend *createFamilyBackend(Family family, QObject *parent)
     case Family::ServoModbus:
         return new ServoModbusBackend(parent);
     case Family::Shuoke:
-        break;
+        return new ShuokeBackend(parent);
     }
     return nullptr;
 }

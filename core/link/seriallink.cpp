@@ -323,7 +323,8 @@ void SerialLink::enterRecovery(int quietMs)
 {
     const qint64 now = m_clock.nsecsElapsed() / 1000;
     m_recoveryQuietMs = quietMs;
-    m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(quietMs) * 1000);
+    // A retry is a command like any other: the minimum gap applies to it too.
+    m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(std::max(quietMs, m_settings.minGapMs)) * 1000);
 }
 
 void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "common/error.h"
+#include "protocol/shuokeascii.h"
+#include "protocol/shuokecan.h"
+#include "protocol/shuokecommands.h"
+#include "protocol/shuokevalues.h"
+
+#include <QString>
+#include <QVariantMap>
+#include <optional>
+
+namespace dd {
+
+struct ConnectionSettings;
+
+// The four framings of the Shuoke command set (PROTOCOLS.md section 3).
+enum class ShuokeFraming { Rtu, Ascii, Can, Plc };
+QString shuokeFramingId(ShuokeFraming framing); // "rtu", "ascii", "can", "plc"
+std::optional<ShuokeFraming> shuokeFramingFromId(const QString &id);
+
+// The settings of a Shuoke link where the seed is silent or ambiguous (PROTOCOLS.md
+// "Decisions"), read from ConnectionSettings::framing and ::options:
+//   framing                 rtu (serial default) | ascii | can (CAN default) | plc
+//   "shuoke.checksum"       sum (default) | twos-complement     ASCII check byte
+//   "shuoke.byteOrder"      little (default) | big              32-bit data
+//   "shuoke.broadcast"      0 (default) | 255
+//   "shuoke.model"          auto (default) | M6505 | M4505 | M4505S
+//   "shuoke.minGapMs"       50 (default)                        quiet time between commands
+//   "shuoke.plcBase"        0 (default)                         PLC mapping base (0x3F)
+//   "shuoke.canFrame"       standard (default) | extended       CAN identifiers (drive 0x4A)
+//   "shuoke.canExtendedId"  address (default) | zero            extended identifier value
+//   "shuoke.scanSkipSilent" true (default) | false              discovery: see ShuokeDiscovery
+struct ShuokeOptions
+{
+    ShuokeFraming framing = ShuokeFraming::Rtu;
+    shuoke::AsciiCheck checksum = shuoke::AsciiCheck::PlainSum;
+    shuoke::ByteOrder byteOrder = shuoke::ByteOrder::LittleEndian;
+    quint8 broadcast = shuoke::kBroadcastZero;
+    std::optional<shuoke::Model> model; // nullopt: detected by ShuokeDrive::refreshIdentity()
+    int minGapMs = 50;
+    quint16 plcBase = 0;
+    shuoke::CanOptions can;
+    bool scanSkipSilent = true;
+
+    // The options of `settings`; an unknown value is an InvalidArgument error naming the key.
+    static ShuokeOptions fromSettings(const ConnectionSettings &settings, Error *error = nullptr);
+};
+
+} // namespace dd

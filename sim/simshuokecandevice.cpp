@@ -1,0 +1,61 @@
+#include "simshuokecandevice.h"
+
+#include "protocol/shuokecan.h"
+
+namespace dd {
+
+using namespace shuoke;
+
+SimShuokeCanDevice::SimShuokeCanDevice(const SimShuokeDrive::Config &config)
+    : m_drive(config)
+{
+}
+
+QList<CanFrameData> SimShuokeCanDevice::onCanFrame(const CanFrameData &frame, qint64 nowUs)
+{
+    advanceTo(nowUs);
+    const Decoded<Frame> request = decodeCan(frame);
+    if (!request.ok())
+        return {};
+    const std::optional<Frame> reply = m_drive.handle(*request.value, SimShuokeDrive::Medium::Can, nowUs);
+    if (!reply)
+        return {};
+    CanOptions options;
+    options.extended = m_drive.config().canExtended;
+    const Decoded<CanFrameData> out = encodeCan(*reply, options);
+    if (!out.ok())
+        return {};
+    return {*out.value};
+}
+
+SimShuokeDrive &SimShuokeCanDevice::drive()
+{
+    if (m_clock)
+        advanceTo(m_clock());
+    return m_drive;
+}
+
+void SimShuokeCanDevice::powerCycle()
+{
+    m_drive.powerCycle(m_clock ? std::max(m_nowUs, m_clock()) : m_nowUs);
+}
+
+QList<CanFrameData> SimShuokeCanDevice::tick(qint64 nowUs)
+{
+    advanceTo(nowUs);
+    return {};
+}
+
+QString SimShuokeCanDevice::describe() const
+{
+    return QStringLiteral("shuoke %1 addr %2 CAN").arg(modelName(m_drive.model())).arg(m_drive.address());
+}
+
+void SimShuokeCanDevice::advanceTo(qint64 nowUs)
+{
+    if (nowUs > m_nowUs)
+        m_nowUs = nowUs;
+    m_drive.advanceTo(nowUs);
+}
+
+} // namespace dd

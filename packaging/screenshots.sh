@@ -21,12 +21,14 @@ mkdir -p "$out"
 settings="$(mktemp -d)"
 trap 'rm -rf "$settings"' EXIT
 
-shoot() {   # shoot LANG FILE
+shoot() {   # shoot LANG PANEL FILE
   XDG_CONFIG_HOME="$settings/$1" QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" \
-    xvfb-run --auto-servernum --server-args="-screen 0 1400x900x24" \
-    "$app" --demo --lang "$1" --screenshot "$out/$2" --screenshot-delay "$delay"
-  echo "screenshots: $out/$2"
+    xvfb-run --auto-servernum --server-args="-screen 0 1440x900x24" \
+    "$app" -geometry 1400x860+0+0 --demo --lang "$1" --panel "$2" --screenshot "$out/$3" \
+      --screenshot-delay "$delay"
+  echo "screenshots: $out/$3"
 }
 
-shoot en main-window-en.png
-shoot zh_CN main-window-zh_CN.png
+shoot en overview main-window-en.png
+shoot zh_CN overview main-window-zh_CN.png
+shoot en trend trend-en.png

@@ -1,9 +1,10 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
     <name>dd::AlarmDictionary</name>
     <message>
-        <source>%1 is not a DriveDesk alarm table (format "%2", expected "%3")</source>
+        <source>%1 is not a DriveDesk alarm table (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
         <translation>%1 不是 DriveDesk 报警表（格式为“%2”，应为“%3”）</translation>
     </message>
     <message>
@@ -11,7 +12,7 @@
         <translation>%1：不支持报警表格式版本 %2（本版 DriveDesk 读取版本 %3）</translation>
     </message>
     <message>
-        <source>%1: unknown drive family "%2" (known: %3)</source>
+        <source>%1: unknown drive family &quot;%2&quot; (known: %3)</source>
         <translation>%1：未知的驱动器系列“%2”（已知：%3）</translation>
     </message>
     <message>
@@ -19,7 +20,7 @@
         <translation>%1 是 %2 驱动器的报警表，不适用于 %3</translation>
     </message>
     <message>
-        <source>%1: field "fallback.%2" must contain %3 where the code goes</source>
+        <source>%1: field &quot;fallback.%2&quot; must contain %3 where the code goes</source>
         <translation>%1：字段“fallback.%2”必须在代码位置包含 %3</translation>
     </message>
     <message>
@@ -70,19 +71,19 @@
         <translation>%1 大于 %2 字节，不是 DriveDesk 生成的文件</translation>
     </message>
     <message>
-        <source>%1: field "link" has more than %2 entries</source>
+        <source>%1: field &quot;link&quot; has more than %2 entries</source>
         <translation>%1：字段“link”超过 %2 项</translation>
     </message>
     <message>
-        <source>%1: field "%2" has an empty or too long name</source>
+        <source>%1: field &quot;%2&quot; has an empty or too long name</source>
         <translation>%1：字段“%2”的名称为空或过长</translation>
     </message>
     <message>
-        <source>%1: field "%2" must be a string (up to 256 characters), a number within ±2^53 or true/false (found %3)</source>
+        <source>%1: field &quot;%2&quot; must be a string (up to 256 characters), a number within ±2^53 or true/false (found %3)</source>
         <translation>%1：字段“%2”必须是字符串（最多 256 个字符）、±2^53 以内的数值或 true/false（实际为 %3）</translation>
     </message>
     <message>
-        <source>%1 is not a DriveDesk backup file (format "%2", expected "%3")</source>
+        <source>%1 is not a DriveDesk backup file (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
         <translation>%1 不是 DriveDesk 备份文件（格式为“%2”，应为“%3”）</translation>
     </message>
     <message>
@@ -90,7 +91,7 @@
         <translation>%1：不支持备份格式版本 %2，本版 DriveDesk 读取版本 %3。请使用生成该文件的 DriveDesk 版本或更新版本。</translation>
     </message>
     <message>
-        <source>%1: unknown drive family "%2" (known: %3)</source>
+        <source>%1: unknown drive family &quot;%2&quot; (known: %3)</source>
         <translation>%1：未知的驱动器系列“%2”（已知：%3）</translation>
     </message>
     <message>
@@ -98,11 +99,11 @@
         <translation>%1 是 %2 驱动器的备份，但所给参数字典适用于 %3 驱动器</translation>
     </message>
     <message>
-        <source>%1: field "created" = "%2" is not an ISO 8601 date and time</source>
+        <source>%1: field &quot;created&quot; = &quot;%2&quot; is not an ISO 8601 date and time</source>
         <translation>%1：字段“created” = “%2”不是 ISO 8601 日期时间</translation>
     </message>
     <message>
-        <source>%1: field "checksum" must be "sha256:" followed by 64 lower-case hex digits</source>
+        <source>%1: field &quot;checksum&quot; must be &quot;sha256:&quot; followed by 64 lower-case hex digits</source>
         <translation>%1：字段“checksum”必须是“sha256:”后跟 64 位小写十六进制数字</translation>
     </message>
     <message>
@@ -122,19 +123,19 @@
         <translation>%1：%3 驱动器没有参数 %2</translation>
     </message>
     <message>
-        <source>%1: index %2 is %3 in the dictionary, not "%4"</source>
+        <source>%1: index %2 is %3 in the dictionary, not &quot;%4&quot;</source>
         <translation>%1：序号 %2 在参数字典中是 %3，而不是“%4”</translation>
     </message>
     <message>
-        <source>%1: access "%2" differs from the dictionary's "%3"</source>
+        <source>%1: access &quot;%2&quot; differs from the dictionary&apos;s &quot;%3&quot;</source>
         <translation>%1：访问属性“%2”与参数字典中的“%3”不同</translation>
     </message>
     <message>
-        <source>%1: a write-only value must be marked "lastWritten": true</source>
-        <translation>%1：只写参数值必须标注 "lastWritten": true</translation>
+        <source>%1: a write-only value must be marked &quot;lastWritten&quot;: true</source>
+        <translation>%1：只写参数值必须标注 &quot;lastWritten&quot;: true</translation>
     </message>
     <message>
-        <source>%1: "lastWritten" is only allowed on write-only values</source>
+        <source>%1: &quot;lastWritten&quot; is only allowed on write-only values</source>
         <translation>%1：“lastWritten”只能用于只写参数值</translation>
     </message>
     <message>
@@ -146,7 +147,7 @@
         <translation>此备份来自 %1 驱动器，不能恢复到 %2 驱动器</translation>
     </message>
     <message>
-        <source>The backup was taken from firmware %1, but the drive's firmware version is unknown. Parameters may differ between firmware versions: compare them first, then force the restore if you are sure.</source>
+        <source>The backup was taken from firmware %1, but the drive&apos;s firmware version is unknown. Parameters may differ between firmware versions: compare them first, then force the restore if you are sure.</source>
         <translation>备份取自固件 %1，但驱动器的固件版本未知。不同固件版本的参数可能不同：请先比较参数，确认无误后再强制恢复。</translation>
     </message>
     <message>
@@ -160,13 +161,11 @@
 </context>
 <context>
     <name>dd::BusTreeWidget</name>
-    <message>
-        <source>Link lost</source>
-        <translation type="vanished">连接中断</translation>
-    </message>
     <message numerus="yes">
         <source>%n drive(s)</source>
-        <translation><numerusform>%n 台驱动器</numerusform></translation>
+        <translation>
+            <numerusform>%n 台驱动器</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1, address %2</source>
@@ -430,11 +429,11 @@
         <translation>%1，%2</translation>
     </message>
     <message>
-        <source>Unknown family "%1"; use one of: %2, detect.</source>
+        <source>Unknown family &quot;%1&quot;; use one of: %2, detect.</source>
         <translation>未知系列“%1”，请使用：%2、detect。</translation>
     </message>
     <message>
-        <source>Unknown framing "%1"; use one of: %2.</source>
+        <source>Unknown framing &quot;%1&quot;; use one of: %2.</source>
         <translation>未知帧格式“%1”，请使用：%2。</translation>
     </message>
 </context>
@@ -454,7 +453,9 @@
     </message>
     <message numerus="yes">
         <source>Found %n drive(s).</source>
-        <translation><numerusform>找到 %n 台驱动器。</numerusform></translation>
+        <translation>
+            <numerusform>找到 %n 台驱动器。</numerusform>
+        </translation>
     </message>
     <message>
         <source>Scan cancelled.</source>
@@ -467,6 +468,25 @@
     <message>
         <source>No drive answered. Check the wiring and termination, the baud rate or bitrate, the family and the address range.</source>
         <translation>没有驱动器应答。请检查接线和终端电阻、波特率、驱动器系列以及地址范围。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CsvWriter</name>
+    <message>
+        <source>Cannot write the CSV file %1: %2. Check that the folder exists and is writable.</source>
+        <translation>无法写入 CSV 文件 %1：%2。请检查文件夹是否存在且可写。</translation>
+    </message>
+    <message>
+        <source>Writing the CSV file %1 failed: %2. Is the disk full?</source>
+        <translation>写入 CSV 文件 %1 失败：%2。磁盘是否已满？</translation>
+    </message>
+    <message>
+        <source>The CSV file is not open.</source>
+        <translation>CSV 文件未打开。</translation>
+    </message>
+    <message>
+        <source>The sample time is not a valid number.</source>
+        <translation>采样时间不是有效数值。</translation>
     </message>
 </context>
 <context>
@@ -587,7 +607,7 @@
         <translation>没有要写入的参数。</translation>
     </message>
     <message>
-        <source>The %1 drive family has no "%2" operation.</source>
+        <source>The %1 drive family has no &quot;%2&quot; operation.</source>
         <translation>%1 驱动器系列没有“%2”操作。</translation>
     </message>
 </context>
@@ -609,11 +629,11 @@
         <translation>启动模拟试验台（每个系列一台驱动器）并连接。</translation>
     </message>
     <message>
-        <source>User-interface language for this session: en, zh_CN or system (default: the Language menu's choice).</source>
+        <source>User-interface language for this session: en, zh_CN or system (default: the Language menu&apos;s choice).</source>
         <translation>本次运行的界面语言：en、zh_CN 或 system（默认：“语言”菜单中的选择）。</translation>
     </message>
     <message>
-        <source>Connect at start-up and scan: a serial port (/dev/ttyUSB0, COM3), a CAN interface as plugin:interface (socketcan:can0), or 'last' for the connection used last.</source>
+        <source>Connect at start-up and scan: a serial port (/dev/ttyUSB0, COM3), a CAN interface as plugin:interface (socketcan:can0), or &apos;last&apos; for the connection used last.</source>
         <translation>启动时连接并扫描：串口（/dev/ttyUSB0、COM3）、CAN 接口（插件:接口，如 socketcan:can0），或 last 表示上次使用的连接。</translation>
     </message>
     <message>
@@ -621,11 +641,11 @@
         <translation>与 --connect 配合：servo-can、servo-modbus、shuoke 或 detect（默认，自动识别）。</translation>
     </message>
     <message>
-        <source>With --connect on a serial port: the baud rate (default: the family's).</source>
+        <source>With --connect on a serial port: the baud rate (default: the family&apos;s).</source>
         <translation>与 --connect 串口配合：波特率（默认：系列默认值）。</translation>
     </message>
     <message>
-        <source>With --connect on CAN: the bitrate in bit/s (default: the family's).</source>
+        <source>With --connect on CAN: the bitrate in bit/s (default: the family&apos;s).</source>
         <translation>与 --connect CAN 配合：波特率，单位 bit/s（默认：系列默认值）。</translation>
     </message>
     <message>
@@ -641,8 +661,8 @@
         <translation>--screenshot 之前等待的秒数（默认 3）。</translation>
     </message>
     <message>
-        <source>Unknown family '%1'; use one of: %2, detect.</source>
-        <translation type="vanished">未知系列“%1”，请使用：%2、detect。</translation>
+        <source>The tab to show for the selected drive: overview, trend, ...</source>
+        <translation>所选驱动器首先显示的标签页：overview、trend 等。</translation>
     </message>
 </context>
 <context>
@@ -675,17 +695,21 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <name>dd::EtaEstimator</name>
     <message numerus="yes">
         <source>about %n s</source>
-        <translation><numerusform>约 %n 秒</numerusform></translation>
+        <translation>
+            <numerusform>约 %n 秒</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <source>about %n min</source>
-        <translation><numerusform>约 %n 分钟</numerusform></translation>
+        <translation>
+            <numerusform>约 %n 分钟</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>dd::JsonFieldReader</name>
     <message>
-        <source>%1: field "%2"</source>
+        <source>%1: field &quot;%2&quot;</source>
         <translation>%1：字段“%2”</translation>
     </message>
     <message>
@@ -701,7 +725,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>必须是整数（实际为 %1）</translation>
     </message>
     <message>
-        <source>%1: required field "%2" is missing</source>
+        <source>%1: required field &quot;%2&quot; is missing</source>
         <translation>%1：缺少必需字段“%2”</translation>
     </message>
     <message>
@@ -741,15 +765,15 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>超过 %1 项</translation>
     </message>
     <message>
-        <source>%1: "%2" is not a language code (use e.g. "en", "zh", "zh_CN")</source>
+        <source>%1: &quot;%2&quot; is not a language code (use e.g. &quot;en&quot;, &quot;zh&quot;, &quot;zh_CN&quot;)</source>
         <translation>%1：“%2”不是语言代码（例如“en”、“zh”、“zh_CN”）</translation>
     </message>
     <message>
-        <source>%1 needs a non-empty "%2" text</source>
+        <source>%1 needs a non-empty &quot;%2&quot; text</source>
         <translation>%1 需要非空的“%2”文本</translation>
     </message>
     <message>
-        <source>%1: unknown field "%2"</source>
+        <source>%1: unknown field &quot;%2&quot;</source>
         <translation>%1：未知字段“%2”</translation>
     </message>
     <message>
@@ -1050,10 +1074,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>否</translation>
     </message>
     <message>
-        <source>No: %1</source>
-        <translation type="vanished">否：%1</translation>
-    </message>
-    <message>
         <source>Online</source>
         <translation>在线</translation>
     </message>
@@ -1077,19 +1097,19 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1 必须是对象（实际为 %2）</translation>
     </message>
     <message>
-        <source>%1: key "%2" must start with a letter and hold only letters, digits, '_', '.' and '-'</source>
+        <source>%1: key &quot;%2&quot; must start with a letter and hold only letters, digits, &apos;_&apos;, &apos;.&apos; and &apos;-&apos;</source>
         <translation>%1：键名“%2”必须以字母开头，且只能包含字母、数字、“_”、“.”和“-”</translation>
     </message>
     <message>
-        <source>%1: key "%2" names parameter %3 but the index is %4</source>
+        <source>%1: key &quot;%2&quot; names parameter %3 but the index is %4</source>
         <translation>%1：键名“%2”对应参数 %3，但序号为 %4</translation>
     </message>
     <message>
-        <source>%1: field "type" = "%2" is not one of uint8, int16, uint16, int32, uint32</source>
+        <source>%1: field &quot;type&quot; = &quot;%2&quot; is not one of uint8, int16, uint16, int32, uint32</source>
         <translation>%1：字段“type” = “%2”不是 uint8、int16、uint16、int32、uint32 之一</translation>
     </message>
     <message>
-        <source>%1: field "access" = "%2" is not one of rw, ro, wo</source>
+        <source>%1: field &quot;access&quot; = &quot;%2&quot; is not one of rw, ro, wo</source>
         <translation>%1：字段“access” = “%2”不是 rw、ro、wo 之一</translation>
     </message>
     <message>
@@ -1121,7 +1141,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：models[%2] 必须是型号名称</translation>
     </message>
     <message>
-        <source>%1 is not a DriveDesk parameter dictionary (format "%2", expected "%3")</source>
+        <source>%1 is not a DriveDesk parameter dictionary (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
         <translation>%1 不是 DriveDesk 参数字典（格式为“%2”，应为“%3”）</translation>
     </message>
     <message>
@@ -1129,7 +1149,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：不支持参数字典格式版本 %2（本版 DriveDesk 读取版本 %3）</translation>
     </message>
     <message>
-        <source>%1: unknown drive family "%2" (known: %3)</source>
+        <source>%1: unknown drive family &quot;%2&quot; (known: %3)</source>
         <translation>%1：未知的驱动器系列“%2”（已知：%3）</translation>
     </message>
     <message>
@@ -1137,7 +1157,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1 是 %2 驱动器的参数字典，不适用于 %3</translation>
     </message>
     <message>
-        <source>%1: field "valueType" = "%2" is not one of uint8, int16, uint16, int32, uint32</source>
+        <source>%1: field &quot;valueType&quot; = &quot;%2&quot; is not one of uint8, int16, uint16, int32, uint32</source>
         <translation>%1：字段“valueType” = “%2”不是 uint8、int16、uint16、int32、uint32 之一</translation>
     </message>
     <message>
@@ -1149,7 +1169,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：序号 %2 已被 %3 占用</translation>
     </message>
     <message>
-        <source>%1: key "%2" is already used (keys are case-insensitive)</source>
+        <source>%1: key &quot;%2&quot; is already used (keys are case-insensitive)</source>
         <translation>%1：键名“%2”已被使用（键名不区分大小写）</translation>
     </message>
     <message>
@@ -1157,7 +1177,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：寄存器 %2 已被 %3 占用</translation>
     </message>
     <message>
-        <source>Unknown parameter "%1" for %2 drives: give a number (12), a key (%3) or a name</source>
+        <source>Unknown parameter &quot;%1&quot; for %2 drives: give a number (12), a key (%3) or a name</source>
         <translation>%2 驱动器没有参数“%1”：请输入序号（如 12）、键名（如 %3）或名称</translation>
     </message>
     <message>
@@ -1207,7 +1227,9 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
     <message numerus="yes">
         <source>%n drive(s) found</source>
-        <translation><numerusform>已找到 %n 台驱动器</numerusform></translation>
+        <translation>
+            <numerusform>已找到 %n 台驱动器</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1 left · %2</source>
@@ -1233,7 +1255,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>串口未打开。</translation>
     </message>
     <message>
-        <source>The drive's reply on %1 failed its checksum. Check the cable shielding, the bus termination and the baud rate.</source>
+        <source>The drive&apos;s reply on %1 failed its checksum. Check the cable shielding, the bus termination and the baud rate.</source>
         <translation>%1 上驱动器应答的校验失败。请检查电缆屏蔽、总线终端电阻和波特率。</translation>
     </message>
     <message>
@@ -1255,11 +1277,11 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
 <context>
     <name>dd::ServoCanBackend</name>
     <message>
-        <source>"%1" is not a CAN interface: write plugin:interface, e.g. socketcan:can0 or virtualcan:can0.</source>
+        <source>&quot;%1&quot; is not a CAN interface: write plugin:interface, e.g. socketcan:can0 or virtualcan:can0.</source>
         <translation>“%1”不是 CAN 接口：请按“插件:接口”填写，例如 socketcan:can0 或 virtualcan:can0。</translation>
     </message>
     <message>
-        <source>servo-can.emergencyStop must be "disable" or "hold", not "%1".</source>
+        <source>servo-can.emergencyStop must be &quot;disable&quot; or &quot;hold&quot;, not &quot;%1&quot;.</source>
         <translation>servo-can.emergencyStop 必须为“disable”或“hold”，而不是“%1”。</translation>
     </message>
     <message>
@@ -1289,7 +1311,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
 <context>
     <name>dd::ServoCanDrive</name>
     <message>
-        <source>The servo-can protocol has no homing command. Move to the reference point and use "set position" (0x50) instead.</source>
+        <source>The servo-can protocol has no homing command. Move to the reference point and use &quot;set position&quot; (0x50) instead.</source>
         <translation>servo-can 协议没有回零命令。请运动到参考点后使用“设置位置”（0x50）。</translation>
     </message>
     <message>
@@ -1357,7 +1379,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>P%1：写入 %2，但回读为 %3（尝试 %4 次）。驱动器可能限制了该参数，或在当前状态下不接受写入。</translation>
     </message>
     <message>
-        <source>A servo-can drive has no channel "%1".</source>
+        <source>A servo-can drive has no channel &quot;%1&quot;.</source>
         <translation>servo-can 驱动器没有通道“%1”。</translation>
     </message>
     <message>
@@ -1365,7 +1387,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>站号 %1，%2：%3</translation>
     </message>
     <message>
-        <source>A relative move of %1 counts does not fit the drive's 32-bit command.</source>
+        <source>A relative move of %1 counts does not fit the drive&apos;s 32-bit command.</source>
         <translation>相对运动量 %1 超出驱动器 32 位指令的范围。</translation>
     </message>
     <message>
@@ -1373,11 +1395,11 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>运动需要正的定位速度（r/min），给定值为 %1。</translation>
     </message>
     <message>
-        <source>Target %1 does not fit the drive's 32-bit position.</source>
+        <source>Target %1 does not fit the drive&apos;s 32-bit position.</source>
         <translation>目标位置 %1 超出驱动器 32 位位置的范围。</translation>
     </message>
     <message>
-        <source>Position %1 does not fit the drive's 32-bit position.</source>
+        <source>Position %1 does not fit the drive&apos;s 32-bit position.</source>
         <translation>位置 %1 超出驱动器 32 位位置的范围。</translation>
     </message>
     <message>
@@ -1487,7 +1509,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>C 相电流（DP-IC）</translation>
     </message>
     <message>
-        <source>Invalid value "%1" for %2 (allowed: %3).</source>
+        <source>Invalid value &quot;%1&quot; for %2 (allowed: %3).</source>
         <translation>%2 的值“%1”无效（允许：%3）。</translation>
     </message>
 </context>
@@ -1522,7 +1544,9 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
     <message numerus="yes">
         <source>%n link(s) open</source>
-        <translation><numerusform>已打开 %n 个连接</numerusform></translation>
+        <translation>
+            <numerusform>已打开 %n 个连接</numerusform>
+        </translation>
     </message>
     <message>
         <source>%1 frames/s</source>
@@ -1566,6 +1590,208 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source> or </source>
         <translation> 或 </translation>
+    </message>
+</context>
+<context>
+    <name>dd::TrendChannelPanel</name>
+    <message>
+        <source>Scale ×</source>
+        <translation>比例 ×</translation>
+    </message>
+    <message>
+        <source>Offset +</source>
+        <translation>偏移 +</translation>
+    </message>
+    <message>
+        <source>The plot shows value × scale + offset; readouts and exports show the real value.</source>
+        <translation>曲线显示“数值 × 比例 + 偏移”；读数和导出为实际值。</translation>
+    </message>
+    <message>
+        <source>Show %1 in the plot</source>
+        <translation>在曲线中显示 %1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TrendControls</name>
+    <message>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Freeze the plot; recording continues in the background</source>
+        <translation>冻结曲线显示，后台继续记录</translation>
+    </message>
+    <message>
+        <source>Reset zoom</source>
+        <translation>复位缩放</translation>
+    </message>
+    <message>
+        <source>Show the selected time window again</source>
+        <translation>重新显示所选时间窗口</translation>
+    </message>
+    <message>
+        <source>&amp;Window:</source>
+        <translation>时间窗口(&amp;W)：</translation>
+    </message>
+    <message>
+        <source>10 s</source>
+        <translation>10 秒</translation>
+    </message>
+    <message>
+        <source>30 s</source>
+        <translation>30 秒</translation>
+    </message>
+    <message>
+        <source>1 min</source>
+        <translation>1 分钟</translation>
+    </message>
+    <message>
+        <source>2 min</source>
+        <translation>2 分钟</translation>
+    </message>
+    <message>
+        <source>5 min</source>
+        <translation>5 分钟</translation>
+    </message>
+    <message>
+        <source>10 min</source>
+        <translation>10 分钟</translation>
+    </message>
+    <message>
+        <source>Sample &amp;rate:</source>
+        <translation>采样频率(&amp;R)：</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>How often the drive is read</source>
+        <translation>读取驱动器的频率</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>导出 CSV</translation>
+    </message>
+    <message>
+        <source>Save the checked channels&apos; real values as CSV</source>
+        <translation>将勾选通道的实际值保存为 CSV</translation>
+    </message>
+    <message>
+        <source>Whole recording…</source>
+        <translation>全部记录…</translation>
+    </message>
+    <message>
+        <source>Visible window…</source>
+        <translation>当前窗口…</translation>
+    </message>
+    <message>
+        <source>Export PNG…</source>
+        <translation>导出 PNG…</translation>
+    </message>
+    <message>
+        <source>Save the plot as an image</source>
+        <translation>将曲线保存为图片</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TrendPanel</name>
+    <message>
+        <source>Trend</source>
+        <translation>趋势</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s identity…</source>
+        <translation>正在读取驱动器信息…</translation>
+    </message>
+    <message>
+        <source>This drive offers no live values: %1</source>
+        <translation>该驱动器不提供实时数值：%1</translation>
+    </message>
+    <message>
+        <source>This drive reports no live channels.</source>
+        <translation>该驱动器没有报告实时通道。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TrendView</name>
+    <message>
+        <source>Drag to zoom, right click to zoom out</source>
+        <translation>拖动可放大，右键单击可缩小</translation>
+    </message>
+    <message>
+        <source>Time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <source>Scaled value</source>
+        <translation>缩放后的数值</translation>
+    </message>
+    <message>
+        <source>Point at the plot to read values.</source>
+        <translation>将鼠标指向曲线可读取数值。</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3</source>
+        <translation>%1：%2 %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln sample(s) recorded</source>
+        <translation>
+            <numerusform>已记录 %Ln 个采样点</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>recording limit reached: oldest samples dropped</source>
+        <translation>已达记录上限：最早的采样点已丢弃</translation>
+    </message>
+    <message>
+        <source>view paused, still recording</source>
+        <translation>显示已暂停，仍在记录</translation>
+    </message>
+    <message>
+        <source>Cannot save the plot image %1: %2. Check that the folder exists and is writable.</source>
+        <translation>无法保存曲线图片 %1：%2。请检查文件夹是否存在且可写。</translation>
+    </message>
+    <message>
+        <source>Export trend as CSV</source>
+        <translation>将趋势导出为 CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>导出 CSV</translation>
+    </message>
+    <message>
+        <source>Export plot as PNG</source>
+        <translation>将曲线导出为 PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 图片 (*.png)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>导出 PNG</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 #include "eepanel.h"
 #include "overviewpanel.h"
 #include "parameterspanel.h"
+#include "trendpanel.h"
 
 namespace dd {
 
@@ -12,12 +13,13 @@ QList<DrivePanel *> createDrivePanels(const DriveContext &context, QWidget *pare
     QList<DrivePanel *> panels;
     panels << new OverviewPanel(context, parent);
     panels << new ParametersPanel(context, parent);
+    panels << new TrendPanel(context, parent);
     panels << new BackupPanel(context, parent);
     // EEPROM operations: servo-modbus (the capabilities may not be known yet when the tabs
     // are made; a drive without them shows why).
     if (context.family == Family::ServoModbus || context.can(Capability::EeOperations))
         panels << new EePanel(context, parent);
-    // Further panels (parameters, backup/restore, EE, motion, trend, alarms) go here.
+    // Further panels (motion, alarms) go here.
     return panels;
 }
 

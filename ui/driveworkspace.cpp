@@ -80,6 +80,15 @@ QList<DrivePanel *> DriveWorkspace::panelsFor(int id, int address) const
     return out;
 }
 
+void DriveWorkspace::setPreferredPanel(const QString &panelId)
+{
+    m_currentPanelId = panelId;
+    if (QTabWidget *tabs = tabsFor(m_current.first, m_current.second))
+        for (int i = 0; i < tabs->count(); ++i)
+            if (auto *p = qobject_cast<DrivePanel *>(tabs->widget(i)); p && p->panelId() == panelId)
+                tabs->setCurrentIndex(i);
+}
+
 bool DriveWorkspace::openFile(const QString &path)
 {
     QTabWidget *tabs = tabsFor(m_current.first, m_current.second);

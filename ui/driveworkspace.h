@@ -30,6 +30,9 @@ public:
     DriveContext currentDrive() const;
     QTabWidget *tabsFor(int id, int address) const;
     QList<DrivePanel *> panelsFor(int id, int address) const;
+    // The tab to show when a drive is shown (a panel id: "overview", "trend", ...).
+    void setPreferredPanel(const QString &panelId);
+    QString preferredPanel() const { return m_currentPanelId; }
     // Offers a file to the selected drive's panels; shows the panel that took it.
     bool openFile(const QString &path);
 

@@ -2,6 +2,7 @@
 #include "common/coreresources.h"
 #include "connectrequest.h"
 #include "languagemanager.h"
+#include "driveworkspace.h"
 #include "mainwindow.h"
 
 #include <QApplication>
@@ -29,6 +30,7 @@ struct Options
     int baud = 0;
     int bitrate = 0;
     QString framing;
+    QString panel;            // the drive tab to show first
     QString screenshot;       // grab the window into this PNG and quit
     int screenshotDelayMs = 3000;
 };
@@ -64,6 +66,9 @@ Options parseOptions(const QApplication &app)
     const QCommandLineOption framing(QStringLiteral("framing"),
         dd::DriveDeskMain::tr("With --family shuoke: rtu, ascii, plc or can."),
         QStringLiteral("framing"));
+    const QCommandLineOption panel(QStringLiteral("panel"),
+        dd::DriveDeskMain::tr("The tab to show for the selected drive: overview, trend, ..."),
+        QStringLiteral("id"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
         dd::DriveDeskMain::tr("Save a picture of the main window to this PNG file after the delay, "
                                          "then quit (documentation)."),
@@ -71,7 +76,7 @@ Options parseOptions(const QApplication &app)
     const QCommandLineOption delay(QStringLiteral("screenshot-delay"),
         dd::DriveDeskMain::tr("Seconds to wait before --screenshot (default 3)."),
         QStringLiteral("seconds"), QStringLiteral("3"));
-    p.addOptions({demo, lang, connect, family, baud, bitrate, framing, screenshot, delay});
+    p.addOptions({demo, lang, connect, family, baud, bitrate, framing, panel, screenshot, delay});
     p.process(app);
 
     Options o;
@@ -82,6 +87,7 @@ Options parseOptions(const QApplication &app)
     o.baud = p.value(baud).toInt();
     o.bitrate = p.value(bitrate).toInt();
     o.framing = p.value(framing);
+    o.panel = p.value(panel);
     o.screenshot = p.value(screenshot);
     o.screenshotDelayMs = qMax(0, int(p.value(delay).toDouble() * 1000));
     return o;
@@ -135,6 +141,8 @@ int main(int argc, char *argv[])
 
     dd::MainWindow window(&language);   // --lang holds for this session only: not saved
     window.restoreLayout();
+    if (!options.panel.isEmpty())
+        window.workspace()->setPreferredPanel(options.panel);
     window.show();
     if (options.demo)
         window.startDemo();

@@ -10,6 +10,8 @@
 #include "mainwindow.h"
 #include "demobench.h"
 #include "stopaction.h"
+#include "trend/trendrecorder.h"
+#include "trendpanel.h"
 
 #include <QApplication>
 #include <QCanBus>
@@ -124,6 +126,23 @@ private slots:
         QVERIFY(modbus);
         QVERIFY(waitFor(dir, SIGNAL(driveChanged(int,int)),
                         [&] { return dir->info(modbus, 1).identity.firmware == QLatin1String("7051"); }, 5000));
+
+        // The trend tab samples the drive's channels while it is shown.
+        w.busTree()->selectDrive(modbus, 1);
+        w.workspace()->setPreferredPanel(QStringLiteral("trend"));
+        TrendPanel *trend = nullptr;
+        for (DrivePanel *p : w.workspace()->panelsFor(modbus, 1))
+            if (auto *t = qobject_cast<TrendPanel *>(p))
+                trend = t;
+        QVERIFY(trend);
+        QVERIFY(trend->isActive());
+        QVERIFY(waitFor(dir, SIGNAL(driveChanged(int,int)), [&] {
+            const SampleBuffer *b = trend->recorder()->buffer(QStringLiteral("speed"));
+            return b && b->size() >= 3;
+        }, 5000));
+        // Not shown: no sampling (the link is shared).
+        w.workspace()->setPreferredPanel(QStringLiteral("overview"));
+        QVERIFY(!trend->isActive());
 
         // STOP: a servo-can drive in motion stops when F12 is pressed anywhere in the window.
         const int can = connectionOf(dir, Family::ServoCan);

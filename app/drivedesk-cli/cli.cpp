@@ -108,6 +108,7 @@ Error Cli::startBench(SimBench *bench, CliGlobals *globals)
     o.bitrate = c.bitrate;
     o.framing = c.framing;
     o.stateFile = globals->simStateFile;
+    o.demoMotion = globals->simMotion;
     if (c.family == Family::ServoCan || c.framing == QLatin1String("can"))
         o.can = QStringLiteral("virtualcan:auto");   // a private hub: nobody else on this bus
     if (globals->simDrives.isEmpty())

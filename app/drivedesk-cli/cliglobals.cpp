@@ -23,6 +23,7 @@ QList<CliOptionSpec> CliGlobals::optionSpecs()
         {QStringLiteral("sim"), false, {}},
         {QStringLiteral("sim-drives"), true, {}},
         {QStringLiteral("sim-state"), true, {}},
+        {QStringLiteral("sim-motion"), false, {}},
         {QStringLiteral("help"), false, QLatin1Char('h')},
         {QStringLiteral("version"), false, QLatin1Char('V')},
     };
@@ -38,7 +39,8 @@ bool CliGlobals::load(const CliInvocation &inv, QString *error)
     json = inv.has(QStringLiteral("json"));
     trace = inv.has(QStringLiteral("trace"));
     sim = inv.has(QStringLiteral("sim")) || inv.has(QStringLiteral("sim-drives"))
-        || inv.has(QStringLiteral("sim-state"));
+        || inv.has(QStringLiteral("sim-state")) || inv.has(QStringLiteral("sim-motion"));
+    simMotion = inv.has(QStringLiteral("sim-motion"));
     simStateFile = inv.value(QStringLiteral("sim-state"));
     if (inv.has(QStringLiteral("sim-state")) && simStateFile.isEmpty()) {
         *error = tr("--sim-state needs a file name.");

@@ -22,6 +22,7 @@ public:
     // --sim-drives ADDR[@BAUD],...: the simulated drives (empty: one at `address`).
     struct SimDrive { int address = 1; int baud = 0; };
     QList<SimDrive> simDrives;
+    bool simMotion = false;      // --sim-motion: the simulated drives move on their own
     QString simStateFile;        // --sim-state FILE: the bench's state, loaded and saved
     QString simDescription;      // set once the bench runs
 

@@ -66,6 +66,8 @@ QString CliHelp::general()
         "                                 at --baud); e.g. --sim-drives 3@19200,7@38400\n"
         "  --sim-state FILE               keep the simulated drives' state (parameters,\n"
         "                                 EEPROM, position, alarm) in FILE between runs\n"
+        "  --sim-motion                   the simulated drives move on their own (for\n"
+        "                                 monitor demos; where the family's simulator can)\n"
         "\n"
         "Examples:\n"
         "  drivedesk-cli --port /dev/ttyUSB0 scan --bauds 9600,19200,115200\n"

@@ -4,8 +4,25 @@
 #include "clivalues.h"
 
 #include "drive/drive.h"
+#include "params/alarmdictionary.h"
 
 namespace dd {
+
+namespace {
+
+// "12 (Overcurrent: check the motor cable)" from the family's alarm table.
+QString alarmText(Family family, int code)
+{
+    const AlarmDictionary &alarms = AlarmDictionary::bundled(family);
+    const QString text = alarms.text(code);
+    const QString remedy = alarms.remedy(code);
+    QString out = QString::number(code);
+    if (!text.isEmpty() && text != out)
+        out += QStringLiteral(" (%1)").arg(remedy.isEmpty() ? text : text + QStringLiteral(": ") + remedy);
+    return out;
+}
+
+} // namespace
 
 // --- info -------------------------------------------------------------------------------
 
@@ -46,8 +63,11 @@ void InfoCommand::report()
     for (const ChannelInfo &c : d->channels())
         channelIds << c.id;
 
+    QJsonObject status = CliDescribe::status(m_status);
+    if (m_status.alarmCode)
+        status.insert(QStringLiteral("alarmText"), AlarmDictionary::bundled(id.family).text(m_status.alarmCode));
     QJsonObject json{{QStringLiteral("identity"), CliDescribe::identity(id)},
-                     {QStringLiteral("status"), CliDescribe::status(m_status)},
+                     {QStringLiteral("status"), status},
                      {QStringLiteral("capabilities"), QJsonArray::fromStringList(caps)},
                      {QStringLiteral("channels"), CliDescribe::channels(d->channels())},
                      {QStringLiteral("warnings"), QJsonArray::fromStringList(m_warnings)}};
@@ -61,7 +81,7 @@ void InfoCommand::report()
     };
     if (m_status.positionValid)
         rows.append({tr("Position"), QString::number(m_status.position)});
-    rows.append({tr("Alarm"), m_status.alarmCode ? QString::number(m_status.alarmCode) : tr("none")});
+    rows.append({tr("Alarm"), m_status.alarmCode ? alarmText(id.family, m_status.alarmCode) : tr("none")});
     rows.append({tr("Capabilities"), caps.join(QLatin1String(", "))});
     rows.append({tr("Channels"), channelIds.join(QLatin1String(", "))});
     for (const QString &w : std::as_const(m_warnings))
@@ -156,7 +176,8 @@ void ClearAlarmCommand::start()
             if (code != 0)
                 return fail({ErrorCode::DriveException,
                              tr("Alarm %1 is still active: its cause persists. Remove the cause "
-                                "(see the drive's manual), then clear again.").arg(code), code},
+                                "(see the drive's manual), then clear again.")
+                                 .arg(alarmText(drive()->family(), code)), code},
                             {{QStringLiteral("alarm"), code}});
             succeed({{QStringLiteral("alarm"), 0}, {QStringLiteral("verified"), true}},
                     tr("Alarm cleared."));

@@ -119,6 +119,15 @@ void ParameterTransfer::onRead(DriveReply *reply)
     const QMap<int, qint64> &values = reply->parameters();
     for (auto it = values.begin(); it != values.end(); ++it)
         m_driveValues.set(it.key(), it.value(), ValueSource::ReadFromDrive);
+    // Write-only settings cannot be read; a drive that remembers what it last wrote to them
+    // reports that as info "lastWritten" ("index" -> value): it goes into backups marked so.
+    const QVariantMap lastWritten = reply->info().value(QStringLiteral("lastWritten")).toMap();
+    for (auto it = lastWritten.begin(); it != lastWritten.end(); ++it) {
+        bool ok = false;
+        const int index = it.key().toInt(&ok);
+        if (ok && !m_driveValues.contains(index))
+            m_driveValues.set(index, it.value().toLongLong(), ValueSource::LastWritten);
+    }
     afterRead();
 }
 

@@ -18,7 +18,9 @@ class ParameterDictionary;
 
 // Backup, compare and restore of a drive's parameters: the workflow the CLI's backup /
 // diff / restore commands and the GUI's backup page share.
-//  - backup(): identify the drive, read every readable parameter, fill backupFile().
+//  - backup(): identify the drive, read every readable parameter, fill backupFile();
+//    write-only settings the drive reports as last written (reply info "lastWritten")
+//    are kept too, marked as such.
 //  - compare(file): read the drive, diff() = the file against the drive.
 //  - restore(file, options): refuse another family (always) and another firmware (unless
 //    forced); read the drive; select the differences (RestoreOptions::only narrows them);

@@ -389,6 +389,7 @@ void TestCliServoCan::enableStopClearAlarm()
     m_sim1->injectAlarm(12);
     r = runCli(args({"--json", "info"}));
     QCOMPARE(r.json().value("status").toObject().value("alarm").toInt(), 12);
+    QVERIFY(r.json().value("status").toObject().value("alarmText").toString().contains(QLatin1String("12")));
     r = runCli(args({"clear-alarm"}));
     QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
     QCOMPARE(m_sim1->alarmCode(), 0);

@@ -19,19 +19,22 @@ namespace {
 class FakeDrive : public Drive
 {
 public:
-    explicit FakeDrive(QObject *parent = nullptr) : Drive(parent)
+    explicit FakeDrive(Family family = Family::ServoModbus, QObject *parent = nullptr)
+        : Drive(parent)
+        , m_family(family)
     {
         DriveIdentity id;
-        id.family = Family::ServoModbus;
+        id.family = family;
         id.address = 1;
         id.firmware = QStringLiteral("7051");
         id.link = QStringLiteral("fake");
         setIdentity(id);
-        for (const ParameterInfo &p : ParameterDictionary::bundled(Family::ServoModbus).parameters())
-            values.insert(p.index, p.defaultValue.value_or(p.min > 0 ? p.min : 0));
+        for (const ParameterInfo &p : ParameterDictionary::bundled(family).parameters())
+            if (p.isReadable())
+                values.insert(p.index, p.defaultValue.value_or(p.min > 0 ? p.min : 0));
     }
 
-    Family family() const override { return Family::ServoModbus; }
+    Family family() const override { return m_family; }
     Capabilities capabilities() const override
     {
         return Capability::ReadParameters | Capability::WriteParameters;
@@ -52,6 +55,8 @@ public:
         for (int i : indices)
             if (values.contains(i))
                 r->setParameter(i, values.value(i));
+        if (!lastWritten.isEmpty())
+            r->setInfo(QStringLiteral("lastWritten"), lastWritten);
         QTimer::singleShot(0, r, [r] { r->finish(); });
         return r;
     }
@@ -90,7 +95,9 @@ public:
         return r;
     }
 
+    Family m_family;
     QMap<int, qint64> values;
+    QVariantMap lastWritten;   // as a Shuoke drive reports its write-only settings
     QString firmware = QStringLiteral("7051");
     QList<int> stuck;
     QList<int> refuse;
@@ -127,6 +134,7 @@ private slots:
     void dryRunWritesNothing();
     void onlyNarrowsTheSelection();
     void readableIndicesFollowModels();
+    void backupKeepsLastWrittenWriteOnlyValues();
 };
 
 void TestParameterTransfer::backupReadsEveryReadableParameter()
@@ -282,6 +290,28 @@ void TestParameterTransfer::readableIndicesFollowModels()
     for (const ParameterInfo &p : shuoke.parameters())
         if (!p.isReadable())
             QVERIFY(!ParameterTransfer::readableIndices(shuoke, QStringLiteral("M6505")).contains(p.index));
+}
+
+void TestParameterTransfer::backupKeepsLastWrittenWriteOnlyValues()
+{
+    const ParameterDictionary &dict = ParameterDictionary::bundled(Family::Shuoke);
+    const ParameterInfo *writeOnly = nullptr;
+    for (const ParameterInfo &p : dict.parameters())
+        if (!p.isReadable() && p.models.isEmpty() && !writeOnly)
+            writeOnly = &p;
+    QVERIFY(writeOnly);
+    FakeDrive drive(Family::Shuoke);
+    drive.firmware.clear();
+    const qint64 value = writeOnly->max > writeOnly->min ? writeOnly->min + 1 : writeOnly->min;
+    drive.lastWritten.insert(QString::number(writeOnly->index), value);
+    ParameterTransfer t(&drive);
+    QVERIFY(!runJob(t, [&] { t.backup(); }));
+    const ParameterValue v = t.backupFile().values().entry(writeOnly->index);
+    QCOMPARE(v.source, ValueSource::LastWritten);
+    QCOMPARE(v.value, value);
+    QByteArray json;
+    const Error e = t.backupFile().toJson(dict, &json);
+    QVERIFY2(!e, qPrintable(e.message));
 }
 
 QTEST_GUILESS_MAIN(TestParameterTransfer)

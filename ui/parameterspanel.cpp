@@ -162,12 +162,14 @@ void ParametersPanel::readAll()
 {
     if (m_busy || !context().isValid())
         return;
-    const QList<int> indices = m_model->readableIndices();
-    if (indices.isEmpty()) {
+    // Write-only parameters are asked for too: the drive skips them, but may report what
+    // it last wrote to them (reply info "lastWritten").
+    const QList<int> indices = m_model->parameterIndices();
+    if (m_model->readableIndices().isEmpty()) {
         setMessage(tr("This drive has no parameter that can be read."), MessageKind::Info);
         return;
     }
-    setBusy(true, tr("Reading %n parameter(s)…", nullptr, int(indices.size())));
+    setBusy(true, tr("Reading %n parameter(s)…", nullptr, int(m_model->readableIndices().size())));
     auto dictionary = std::make_shared<std::shared_ptr<const ParameterDictionary>>();
     QPointer<ParametersPanel> self(this);
     context().hub->run(
@@ -196,6 +198,11 @@ void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const Pa
         m_model->setDictionary(m_dictionary, m_modelName);
     }
     m_model->setDriveValues(result.parameters);
+    QMap<int, qint64> lastWritten;
+    const QVariantMap reported = result.info.value(QStringLiteral("lastWritten")).toMap();
+    for (auto it = reported.begin(); it != reported.end(); ++it)
+        lastWritten.insert(it.key().toInt(), it.value().toLongLong());
+    m_model->setDriveValues(lastWritten, ValueSource::LastWritten);
     m_view->resizeColumnsToContents();
     if (!reportResult(result)) {
         setMessage(tr("Reading failed after %n parameter(s): %1", nullptr, int(result.parameters.size()))

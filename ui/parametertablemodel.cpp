@@ -71,6 +71,14 @@ const ParameterInfo *ParameterTableModel::info(int parameterIndex) const
     return r ? &r->info : nullptr;
 }
 
+QList<int> ParameterTableModel::parameterIndices() const
+{
+    QList<int> out;
+    for (const Row &r : m_rows)
+        out << r.info.index;
+    return out;
+}
+
 QList<int> ParameterTableModel::readableIndices() const
 {
     QList<int> out;
@@ -136,15 +144,15 @@ QString ParameterTableModel::writeMessage(int parameterIndex) const
     return r ? r->message : QString();
 }
 
-void ParameterTableModel::setDriveValues(const QMap<int, qint64> &values)
+void ParameterTableModel::setDriveValues(const QMap<int, qint64> &values, ValueSource source)
 {
     bool editsDropped = false;
     for (auto it = values.begin(); it != values.end(); ++it) {
         Row *r = rowFor(it.key());
-        if (!r)
+        if (!r || (source == ValueSource::LastWritten && r->info.isReadable()))
             continue;
-        r->drive = {it.value(), ValueSource::ReadFromDrive};
-        if (r->edited && *r->edited == it.value()) {
+        r->drive = {it.value(), source};
+        if (source == ValueSource::ReadFromDrive && r->edited && *r->edited == it.value()) {
             r->edited.reset();
             editsDropped = true;
         }

@@ -49,6 +49,7 @@ public:
     int rowOf(int parameterIndex) const;         // -1 when not shown
     int parameterAt(int row) const;
     const ParameterInfo *info(int parameterIndex) const;
+    QList<int> parameterIndices() const;         // every row, in order
     QList<int> readableIndices() const;          // rows that can be read from the drive
 
     ParameterValue driveValue(int parameterIndex) const;
@@ -61,8 +62,9 @@ public:
     WriteState writeState(int parameterIndex) const;
     QString writeMessage(int parameterIndex) const;
 
-    // Values read from the drive. Edits equal to the new value are dropped.
-    void setDriveValues(const QMap<int, qint64> &values);
+    // Values read from the drive (edits equal to a new value are dropped), or for write-only
+    // parameters the values the drive reports as last written (source LastWritten).
+    void setDriveValues(const QMap<int, qint64> &values, ValueSource source = ValueSource::ReadFromDrive);
     // The outcome of a write of `requested`: verified and written-only values become the
     // drive's and their edits are dropped; failed ones keep their edits; parameters without
     // a result are marked not attempted.

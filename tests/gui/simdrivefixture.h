@@ -1,8 +1,8 @@
 #pragma once
-// For the panel tests: one simulated servo-modbus drive on a pty (a SimBench on the test's
-// thread, so the test can look into the simulated drive directly), a DriveHub connected to
-// it, the drive's DriveInfo and a DriveContext for panels. Every frame the hub's links send
-// is recorded in `traffic`.
+// For the panel tests: one simulated drive on a pty, servo-modbus (start()) or shuoke RTU
+// (startShuoke()) — a SimBench on the test's thread, so the test can look into the
+// simulated drive directly — a DriveHub connected to it, the drive's DriveInfo and a
+// DriveContext for panels. Every frame the hub's links send is recorded in `traffic`.
 
 #include "drive/drivehub.h"
 #include "drivecontext.h"
@@ -11,6 +11,7 @@
 #include "simbench.h"
 #include "simserialbus.h"
 #include "simservomodbusdrive.h"
+#include "simshuokeserialdevice.h"
 
 #include <QList>
 #include <QTest>
@@ -39,6 +40,23 @@ public:
         }
         if (beforeConnect)
             beforeConnect(drive());
+        return connectHub();
+    }
+
+    bool startShuoke()
+    {
+        SimBenchOptions options;
+        options.family = Family::Shuoke;
+        if (Error e = bench.start(options)) {
+            qWarning("SimBench: %s", qPrintable(e.message));
+            return false;
+        }
+        m_family = Family::Shuoke;
+        return connectHub();
+    }
+
+    bool connectHub()
+    {
         bool opened = false;
         hub.openConnection(bench.clientSettings(), [&](int id, const Error &e) {
             connectionId = id;
@@ -53,12 +71,18 @@ public:
             info = i;
             fetched = true;
         });
-        return QTest::qWaitFor([&] { return fetched; }, 5000) && info.valid;
+        return QTest::qWaitFor([&] { return fetched; }, 10000) && info.valid;
     }
 
     SimServoModbusDrive *drive() const
     {
         return bench.serialBus() ? static_cast<SimServoModbusDrive *>(bench.serialBus()->device(0)) : nullptr;
+    }
+
+    SimShuokeDrive *shuokeDrive() const
+    {
+        return bench.serialBus() ? &static_cast<SimShuokeSerialDevice *>(bench.serialBus()->device(0))->drive()
+                                 : nullptr;
     }
 
     DriveContext context() const
@@ -67,7 +91,7 @@ public:
         c.hub = const_cast<DriveHub *>(&hub);
         c.connectionId = connectionId;
         c.address = address;
-        c.family = Family::ServoModbus;
+        c.family = m_family;
         c.capabilities = info.capabilities;
         return c;
     }
@@ -95,6 +119,9 @@ public:
     int address = 1;
     DriveInfo info;
     QList<TrafficRecord> traffic;
+
+private:
+    Family m_family = Family::ServoModbus;
 };
 
 } // namespace dd

@@ -302,6 +302,46 @@ private slots:
         QCOMPARE(model.writeState(skip->index), ParameterTableModel::WriteState::NotAttempted);
     }
 
+    void writeOnlyOnAShuokeDrive()
+    {
+        SimDriveFixture fx;
+        QVERIFY(fx.startShuoke());
+        const QString model = fx.info.identity.model;
+        const ParameterInfo *encoder = ParameterDictionary::bundled(Family::Shuoke).byKey(QStringLiteral("encoder-direction"));
+        QVERIFY(encoder);
+        if (!encoder->models.contains(model))
+            QSKIP("the simulated drive's model has no encoder-direction setting");
+        ParametersPanel panel(fx.context());
+        panel.setDriveInfo(fx.info);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QVERIFY(readAll(panel));
+        QCOMPARE(cell(panel, encoder->index, ParameterTableModel::DriveValue), QStringLiteral("not readable"));
+        QCOMPARE(cell(panel, encoder->index, ParameterTableModel::Value), QString());
+
+        const qint64 before = fx.shuokeDrive()->setting(quint8(encoder->index));
+        const QString wanted = before ? QStringLiteral("0") : QStringLiteral("1");
+        QVERIFY(typeValue(panel, encoder->index, wanted));
+        QVERIFY(QTest::qWaitFor([&] { return panel.model()->isChanged(encoder->index); }, 2000));
+        QSignalSpy done(&panel, &ParametersPanel::operationFinished);
+        panel.writeAllChanged();
+        QVERIFY(done.wait(10000));
+        QVERIFY2(done.last().at(0).toBool(), qPrintable(panel.message()));
+        QCOMPARE(fx.shuokeDrive()->setting(quint8(encoder->index)), wanted.toLongLong());
+        QCOMPARE(panel.model()->writeState(encoder->index), ParameterTableModel::WriteState::WrittenOnly);
+        QCOMPARE(cell(panel, encoder->index, ParameterTableModel::DriveValue),
+                 QStringLiteral("not readable (last written: %1)").arg(wanted));
+        QCOMPARE(cell(panel, encoder->index, ParameterTableModel::Value), wanted);
+        QVERIFY2(panel.message().contains(QLatin1String("write-only")), qPrintable(panel.message()));
+
+        // Another panel on the same connection learns the last written value on Read all.
+        ParametersPanel again(fx.context());
+        again.setDriveInfo(fx.info);
+        QVERIFY(readAll(again));
+        QCOMPARE(cell(again, encoder->index, ParameterTableModel::DriveValue),
+                 QStringLiteral("not readable (last written: %1)").arg(wanted));
+    }
+
     void namesInTheUiLanguage()
     {
         ParameterTableModel model;

@@ -390,6 +390,10 @@ Restore anyway?</source>
         <source>Apply selected</source>
         <translation>应用所选</translation>
     </message>
+    <message>
+        <source>Wait until the drive has answered, then open %1 again.</source>
+        <translation>请等待驱动器应答后，再打开 %1。</translation>
+    </message>
 </context>
 <context>
     <name>dd::BusTreeWidget</name>

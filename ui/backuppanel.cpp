@@ -197,8 +197,11 @@ bool BackupPanel::openFile(const QString &path)
 
 void BackupPanel::loadFile(const QString &path)
 {
-    if (m_busy)
+    if (m_busy) {
+        setMessage(tr("Wait until the drive has answered, then open %1 again.").arg(QDir::toNativeSeparators(path)),
+                   MessageKind::Info);
         return;
+    }
     BackupFile file;
     Error e = file.load(path);
     if (!e)

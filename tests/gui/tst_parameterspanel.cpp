@@ -2,12 +2,16 @@
 // (the simulated drive's value changes, the row is verified), refused values (nothing is
 // sent), undo/redo, search; the table model alone for write-only parameters (shuoke
 // dictionary) and names in the UI language.
+#include "backuppanel.h"
+#include "eepanel.h"
+#include "languagemanager.h"
 #include "parameterspanel.h"
 #include "parametertablemodel.h"
 #include "params/parameterdictionary.h"
 #include "simdrivefixture.h"
 
 #include <QApplication>
+#include <QLabel>
 #include <QLineEdit>
 #include <QLoggingCategory>
 #include <QPushButton>
@@ -354,6 +358,37 @@ private slots:
         QCOMPARE(name.data(Qt::ToolTipRole).toString(), p->description.chinese());
         QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
         QCOMPARE(name.data().toString(), p->name.english());
+    }
+
+    void switchesToChineseLive()
+    {
+        ParametersPanel panel(DriveContext{});
+        EePanel ee(DriveContext{});
+        BackupPanel backup(DriveContext{});
+        panel.show();
+        ee.show();
+        backup.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        auto *read = panel.findChild<QPushButton *>(QStringLiteral("readAllButton"));
+        QCOMPARE(read->text(), QStringLiteral("Read all"));
+        const QModelIndex name = panel.proxy()->index(panel.model()->rowOf(51), ParameterTableModel::Name);
+
+        LanguageManager languages;
+        QVERIFY(languages.apply(LanguageManager::Language::Chinese));
+        QCoreApplication::sendPostedEvents();   // LanguageChange is posted to top-level widgets
+        QCOMPARE(read->text(), QStringLiteral("全部读取"));
+        QCOMPARE(panel.title(), QStringLiteral("参数"));
+        QCOMPARE(panel.model()->headerData(ParameterTableModel::Name, Qt::Horizontal).toString(), QStringLiteral("名称"));
+        QCOMPARE(name.data().toString(),
+                 ParameterDictionary::bundled(Family::ServoModbus).byIndex(51)->name.chinese());
+        QCOMPARE(backup.title(), QStringLiteral("备份"));
+        QCOMPARE(backup.findChild<QPushButton *>(QStringLiteral("saveBackupButton"))->text(), QStringLiteral("保存备份…"));
+        QVERIFY(ee.findChild<QLabel *>(QStringLiteral("eeUnavailableReason"))->text().contains(QStringLiteral("驱动器")));
+
+        QVERIFY(languages.apply(LanguageManager::Language::English));
+        QCoreApplication::sendPostedEvents();
+        QCOMPARE(read->text(), QStringLiteral("Read all"));
+        QCOMPARE(name.data().toString(), QStringLiteral("Drive address"));
     }
 };
 

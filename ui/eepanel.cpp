@@ -213,7 +213,7 @@ void EePanel::retranslate()
     for (EeOperation op : operations()) {
         QString meaning = eeMeaning(op);
         if (eeIsDestructive(op))
-            meaning += QLatin1String(" — ") + tr("asks for confirmation");
+            meaning += QStringLiteral(" — ") + tr("asks for confirmation");
         m_meanings.value(op)->setText(meaning);
         m_explanations.value(op)->setText(explanation(op));
         m_buttons.value(op)->setToolTip(eeMeaning(op));

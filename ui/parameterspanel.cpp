@@ -97,8 +97,8 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     m_view->setAlternatingRowColors(true);
     m_view->verticalHeader()->hide();
     m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 8);
-    m_view->horizontalHeader()->setStretchLastSection(true);
     m_view->horizontalHeader()->setSectionResizeMode(ParameterTableModel::Mark, QHeaderView::ResizeToContents);
+    m_view->horizontalHeader()->setSectionResizeMode(ParameterTableModel::Name, QHeaderView::Stretch);
     m_delegate = new ParameterValueDelegate(m_model, this);
     m_view->setItemDelegateForColumn(ParameterTableModel::Value, m_delegate);
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, &ParametersPanel::updateActions);
@@ -299,6 +299,7 @@ void ParametersPanel::onWritten(const DriveResult &result, const QList<int> &req
 {
     setBusy(false);
     m_model->applyWriteResults(result.writes, requested);
+    m_view->resizeColumnToContents(ParameterTableModel::State);
     int verified = 0;
     int writtenOnly = 0;
     int failed = 0;

@@ -132,6 +132,28 @@ private slots:
         QVERIFY2(panel.message().contains(QLatin1String("1 written and verified")), qPrintable(panel.message()));
     }
 
+    void readQueuedBehindAScanIsNotCancelled()
+    {
+        // The tab may be shown (and read) while the connect dialog's scan still probes the
+        // other addresses: the end of the scan must not cancel the read.
+        SimDriveFixture fx;
+        QVERIFY(fx.start());
+        ParametersPanel panel(fx.context());
+        panel.setDriveInfo(fx.info);
+        bool scanned = false;
+        ScanOptions scan;
+        scan.from = 1;
+        scan.to = 6;
+        scan.timeoutMs = 30;
+        fx.hub.scan(fx.connectionId, scan, {}, {}, [&](const Error &) { scanned = true; });
+        QVERIFY(QTest::qWaitFor([&] { return fx.sentFrames().size() >= 2; }, 2000));
+        QSignalSpy done(&panel, &ParametersPanel::operationFinished);
+        panel.readAll();
+        QVERIFY(done.wait(10000));
+        QVERIFY2(done.last().at(0).toBool(), qPrintable(panel.message()));
+        QVERIFY(QTest::qWaitFor([&] { return scanned; }, 5000));
+    }
+
     void refusedValuesSendNothing()
     {
         SimDriveFixture fx;

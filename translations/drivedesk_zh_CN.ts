@@ -2,6 +2,20 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>QCoreApplication</name>
+    <message>
+        <source>unknown failure code</source>
+        <translation>未知故障代码</translation>
+    </message>
+</context>
+<context>
+    <name>dd</name>
+    <message>
+        <source>%1 = &quot;%2&quot; is not a valid setting; use %3.</source>
+        <translation>%1 = “%2”不是有效设置，请使用 %3。</translation>
+    </message>
+</context>
+<context>
     <name>dd::AlarmDictionary</name>
     <message>
         <source>%1 is not a DriveDesk alarm table (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
@@ -2191,6 +2205,76 @@ Write anyway?</source>
         <source>Invalid value &quot;%1&quot; for %2 (allowed: %3).</source>
         <translation>%2 的值“%1”无效（允许：%3）。</translation>
     </message>
+    <message>
+        <source>The servo-modbus protocol has no command to clear an alarm. Remove the cause, then reset the alarm at the drive (its panel, an alarm-reset input or a power cycle) and read the alarm again.</source>
+        <translation>servo-modbus 协议没有清除报警的命令。请先排除故障原因，再在驱动器上复位报警（操作面板、报警复位输入或重新上电），然后重新读取报警。</translation>
+    </message>
+    <message>
+        <source>The servo-modbus protocol reads and writes parameters and monitor values only; it has no motion, enable or stop commands. The axis runs from the drive&apos;s own control inputs (pulses, analog command, I/O).</source>
+        <translation>servo-modbus 协议只能读写参数和监控值，没有运动、使能或停止命令。轴由驱动器自身的控制输入（脉冲、模拟量指令、I/O）控制运行。</translation>
+    </message>
+    <message>
+        <source>The serial port is not open.</source>
+        <translation>串口未打开。</translation>
+    </message>
+    <message>
+        <source>Address %1 cannot answer: servo drives use 1..247 (0 is broadcast).</source>
+        <translation>地址 %1 无法应答：伺服驱动器地址为 1..247（0 为广播）。</translation>
+    </message>
+    <message>
+        <source>PA%1 does not exist: this drive has PA0..PA59.</source>
+        <translation>PA%1 不存在：该驱动器的参数为 PA0..PA59。</translation>
+    </message>
+    <message>
+        <source>Unknown channel &quot;%1&quot;. This drive offers: %2.</source>
+        <translation>未知通道“%1”。该驱动器提供：%2。</translation>
+    </message>
+    <message>
+        <source>PA%1 does not exist: this drive has PA0..PA59. Nothing was written.</source>
+        <translation>PA%1 不存在：该驱动器的参数为 PA0..PA59。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>PA%1 is given twice. Nothing was written.</source>
+        <translation>PA%1 重复给出。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>PA2 is the firmware version and cannot be written. Nothing was written.</source>
+        <translation>PA2 为固件版本，不能写入。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>%1 does not fit the 16-bit register of PA%2 (-32768..32767, or 0..65535 unsigned). Nothing was written.</source>
+        <translation>%1 超出 PA%2 的 16 位寄存器范围（-32768..32767，无符号为 0..65535）。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>Nothing was written.</source>
+        <translation>未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>Wrote %1, the drive reports %2.</source>
+        <translation>写入 %1，驱动器报告 %2。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) read back with another value than written (first: PA%1: %2). The drive may limit the value, or the parameter may be read-only.</source>
+        <translation>
+            <numerusform>%n 个参数的回读值与写入值不同（第一个：PA%1：%2）。驱动器可能限制了该值，或该参数为只读。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unknown EE operation.</source>
+        <translation>未知的 EE 操作。</translation>
+    </message>
+    <message>
+        <source>The firmware version (PA2) could not be read, so the EE command format is unknown: %1 Choose the format by hand (option servo-modbus.eeFormat = legacy or new).</source>
+        <translation>无法读取固件版本（PA2），因此 EE 命令格式未知：%1 请手动选择格式（选项 servo-modbus.eeFormat = legacy 或 new）。</translation>
+    </message>
+    <message>
+        <source>The drive answered %1 with %2 instead of 0 (running) or %3 (done): the operation failed or another one is running.</source>
+        <translation>驱动器对 %1 的应答为 %2，而不是 0（执行中）或 %3（完成）：操作失败或另一操作正在执行。</translation>
+    </message>
+    <message>
+        <source>%1 did not finish within %2 s: the drive still reports it running after %3 polls. Do not switch the drive off; read its parameters again to see what was stored.</source>
+        <translation>%1 在 %2 秒内未完成：查询 %3 次后驱动器仍报告执行中。请勿关闭驱动器电源；重新读取参数以确认保存的内容。</translation>
+    </message>
 </context>
 <context>
     <name>dd::ServoModbusScanner</name>
@@ -2205,6 +2289,255 @@ Write anyway?</source>
     <message>
         <source>The scan was cancelled.</source>
         <translation>扫描已取消。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeCanTransport</name>
+    <message>
+        <source>&quot;%1&quot; is not a CAN interface: write plugin:interface, e.g. socketcan:can0 or virtualcan:can0.</source>
+        <translation>“%1”不是 CAN 接口：请按“插件:接口”填写，例如 socketcan:can0 或 virtualcan:can0。</translation>
+    </message>
+    <message>
+        <source>%1, %2 kbit/s, Shuoke CAN</source>
+        <translation>%1，%2 kbit/s，硕科 CAN</translation>
+    </message>
+    <message>
+        <source>A command with %1 data bytes does not fit a CAN frame (at most %2).</source>
+        <translation>含 %1 个数据字节的指令放不进一个 CAN 帧（最多 %2 个）。</translation>
+    </message>
+    <message>
+        <source>The command cannot be encoded: %1</source>
+        <translation>无法编码该指令：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeDiscovery</name>
+    <message>
+        <source>The link is not open.</source>
+        <translation>连接未打开。</translation>
+    </message>
+    <message>
+        <source>The scan was cancelled.</source>
+        <translation>扫描已取消。</translation>
+    </message>
+    <message>
+        <source>answers</source>
+        <translation>有应答</translation>
+    </message>
+    <message>
+        <source>The query-address broadcast could not be sent.</source>
+        <translation>无法发送查询地址广播。</translation>
+    </message>
+    <message>
+        <source>The link could not switch to %1 baud (it is busy).</source>
+        <translation>连接无法切换到 %1 波特（连接忙）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeDrive</name>
+    <message>
+        <source>Shuoke drives have no enable command: the drive is enabled by its ENA input (shown as &quot;enable input&quot; in the status).</source>
+        <translation>硕科驱动器没有使能命令：驱动器由 ENA 输入使能（在状态中显示为“使能输入”）。</translation>
+    </message>
+    <message>
+        <source>Shuoke drives keep no alarm to clear: a refused command reports its failure code in the reply, and a limit switch clears when the axis leaves it.</source>
+        <translation>硕科驱动器没有需要清除的报警：被拒绝的指令会在应答中返回故障代码，限位开关在轴离开后自动解除。</translation>
+    </message>
+    <message>
+        <source>Shuoke drives store their settings themselves; there is no EEPROM command.</source>
+        <translation>硕科驱动器会自行保存设置，没有 EEPROM 命令。</translation>
+    </message>
+    <message>
+        <source>The %1 has no homing command (0x3E is for the M6505 and M4505S).</source>
+        <translation>%1 没有回原点命令（0x3E 仅适用于 M6505 和 M4505S）。</translation>
+    </message>
+    <message>
+        <source>0x%1 is not a Shuoke command.</source>
+        <translation>0x%1 不是硕科指令。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; (command 0x%2) is not available on the %3.</source>
+        <translation>%3 不支持“%1”（指令 0x%2）。</translation>
+    </message>
+    <message>
+        <source>The drive has no link.</source>
+        <translation>驱动器没有通讯连接。</translation>
+    </message>
+    <message>
+        <source>Not sent to the drive at address %1: %2.</source>
+        <translation>未发送到地址 %1 的驱动器：%2。</translation>
+    </message>
+    <message>
+        <source>A relative move of %1 pulses is beyond the drive&apos;s 31-bit range.</source>
+        <translation>相对运动 %1 个脉冲超出驱动器 31 位的范围。</translation>
+    </message>
+    <message>
+        <source>The target %1 is beyond the drive&apos;s 31-bit range.</source>
+        <translation>目标位置 %1 超出驱动器 31 位的范围。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s position reply has %1 bytes.</source>
+        <translation>驱动器的位置应答有 %1 个字节。</translation>
+    </message>
+    <message>
+        <source>The move from %1 to %2 is beyond the drive&apos;s range.</source>
+        <translation>从 %1 到 %2 的运动超出驱动器的范围。</translation>
+    </message>
+    <message>
+        <source>This drive can only clear its position counter (set it to 0); only the M6505 sets its closed-loop position to a value.</source>
+        <translation>该驱动器只能将位置计数清零（设为 0）；只有 M6505 可以将闭环位置设为指定值。</translation>
+    </message>
+    <message>
+        <source>The position %1 is beyond the drive&apos;s range.</source>
+        <translation>位置 %1 超出驱动器的范围。</translation>
+    </message>
+    <message>
+        <source>A drive address is 1..247, not %1.</source>
+        <translation>驱动器地址为 1..247，不能是 %1。</translation>
+    </message>
+    <message>
+        <source>%1 is not a Shuoke address.</source>
+        <translation>%1 不是硕科驱动器地址。</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Absolute position</source>
+        <translation>绝对位置</translation>
+    </message>
+    <message>
+        <source>Relative position</source>
+        <translation>相对位置</translation>
+    </message>
+    <message>
+        <source>Status bits (running, left limit, origin, right limit, enable)</source>
+        <translation>状态位（运行、左限位、原点、右限位、使能）</translation>
+    </message>
+    <message>
+        <source>Inputs IO1..IO5</source>
+        <translation>输入 IO1..IO5</translation>
+    </message>
+    <message>
+        <source>Inputs pulse, direction, enable, F1, F2</source>
+        <translation>输入：脉冲、方向、使能、F1、F2</translation>
+    </message>
+    <message>
+        <source>Closed-loop absolute position</source>
+        <translation>闭环绝对位置</translation>
+    </message>
+    <message>
+        <source>Closed-loop relative position</source>
+        <translation>闭环相对位置</translation>
+    </message>
+    <message>
+        <source>Position error (commanded - feedback)</source>
+        <translation>位置偏差（指令 - 反馈）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a Shuoke channel.</source>
+        <translation>“%1”不是硕科驱动器的通道。</translation>
+    </message>
+    <message>
+        <source>The drive answered %1 data bytes for parameter %2 (%3 expected).</source>
+        <translation>驱动器对参数 %2 应答了 %1 个数据字节（应为 %3 个）。</translation>
+    </message>
+    <message>
+        <source>%1 is not a Shuoke parameter (the index is the SET command code).</source>
+        <translation>%1 不是硕科参数（序号为设置指令的代码）。</translation>
+    </message>
+    <message>
+        <source>%1 must be %2..%3; %4 was not sent.</source>
+        <translation>%1 必须在 %2..%3 之间；%4 未发送。</translation>
+    </message>
+    <message>
+        <source>Not readable: the drive cannot report this setting; %1 is kept as the last value written.</source>
+        <translation>不可读：驱动器无法报告该设置；保留最后写入的值 %1。</translation>
+    </message>
+    <message>
+        <source>Written, but reading it back failed: %1</source>
+        <translation>已写入，但回读失败：%1</translation>
+    </message>
+    <message>
+        <source>The drive reports %1 after %2 was written.</source>
+        <translation>写入 %2 后，驱动器报告的值为 %1。</translation>
+    </message>
+    <message>
+        <source>Parameter %1: %2</source>
+        <translation>参数 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeOptions</name>
+    <message>
+        <source>The %1 framing needs a serial port, not a CAN interface.</source>
+        <translation>%1 帧格式需要串口，而不是 CAN 接口。</translation>
+    </message>
+    <message>
+        <source>The can framing needs a CAN interface (plugin:interface), not a serial port.</source>
+        <translation>can 帧格式需要 CAN 接口（插件:接口），而不是串口。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokePlcTransport</name>
+    <message>
+        <source>%1 @ %2 baud, Shuoke PLC mode (Modbus registers from 0x%3)</source>
+        <translation>%1 @ %2 波特，硕科 PLC 模式（Modbus 寄存器起始 0x%3）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has no register in PLC mode; use the RTU framing for it.</source>
+        <translation>“%1”在 PLC 模式下没有寄存器，请使用 RTU 帧格式。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; maps to a read of 0 registers in PLC mode, which Modbus cannot send; use the RTU framing for it.</source>
+        <translation>“%1”在 PLC 模式下对应读取 0 个寄存器，Modbus 无法发送，请使用 RTU 帧格式。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be sent in PLC mode: %2</source>
+        <translation>“%1”无法在 PLC 模式下发送：%2</translation>
+    </message>
+    <message>
+        <source>The command cannot be encoded: %1</source>
+        <translation>无法编码该指令：%1</translation>
+    </message>
+    <message>
+        <source>%1 (PLC mode: Modbus exception %2)</source>
+        <translation>%1（PLC 模式：Modbus 异常 %2）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeSerialTransport</name>
+    <message>
+        <source>%1 @ %2 baud, Shuoke %3</source>
+        <translation>%1 @ %2 波特，硕科 %3</translation>
+    </message>
+    <message>
+        <source>The command cannot be encoded: %1</source>
+        <translation>无法编码该指令：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeTransport</name>
+    <message>
+        <source>&quot;%1&quot; is accepted over RS232/RS485 only, not over CAN.</source>
+        <translation>“%1”只能通过 RS232/RS485 发送，不能通过 CAN。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is accepted over CAN only.</source>
+        <translation>“%1”只能通过 CAN 发送。</translation>
+    </message>
+    <message>
+        <source>The drive at address %1 refused &quot;%2&quot; (command 0x%3): %4 (failure code 0x%5).</source>
+        <translation>地址 %1 的驱动器拒绝了“%2”（指令 0x%3）：%4（故障代码 0x%5）。</translation>
+    </message>
+    <message>
+        <source>The link is not open.</source>
+        <translation>连接未打开。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s reply could not be read: %1</source>
+        <translation>无法读取驱动器的应答：%1</translation>
     </message>
 </context>
 <context>

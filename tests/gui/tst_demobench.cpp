@@ -89,8 +89,10 @@ private slots:
         QList<Family> families;
         for (const ConnectionSettings &s : links)
             families << s.family;
+        QCOMPARE(families.size(), 3);   // one bus per family
         QVERIFY(families.contains(Family::ServoModbus));
         QVERIFY(families.contains(Family::ServoCan));
+        QVERIFY(families.contains(Family::Shuoke));
         for (const ConnectionSettings &s : links)
             if (s.isCan())
                 QVERIFY2(s.can.startsWith(QLatin1String("virtualcan:tcp://127.0.0.1:")), qPrintable(s.can));
@@ -109,11 +111,12 @@ private slots:
 
         QVERIFY(w.startDemo());
         QVERIFY(w.demo()->isRunning());
-        const int expected = int(w.demo()->connections().size());
-        QVERIFY(expected >= 2);
+        const int expected = 3;   // one drive of each family
+        QCOMPARE(int(w.demo()->connections().size()), expected);
         QVERIFY(waitFor(w.connections(), SIGNAL(finished(QString,bool)),
                         [&] { return driveCount(dir) == expected && !w.connections()->isBusy(); }, 20000));
         QCOMPARE(int(dir->connections().size()), expected);
+        QVERIFY(connectionOf(dir, Family::Shuoke));
         for (int id : dir->connections()) {
             QCOMPARE(dir->drives(id), QList<int>({DemoBench::Address}));
             QVERIFY(w.busTree()->driveItem(id, DemoBench::Address));

@@ -1,0 +1,160 @@
+// drivedesk: the commissioning workbench (GUI).
+#include "common/coreresources.h"
+#include "connectrequest.h"
+#include "languagemanager.h"
+#include "driveworkspace.h"
+#include "mainwindow.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSettings>
+#include <QTimer>
+#include <optional>
+
+namespace dd {
+// The translation context of this file's texts.
+struct DriveDeskMain
+{
+    Q_DECLARE_TR_FUNCTIONS(dd::DriveDeskMain)
+};
+} // namespace dd
+
+namespace {
+
+struct Options
+{
+    bool demo = false;
+    QString lang;
+    QString connect;          // a serial port, "plugin:interface", or "last"
+    QString family;           // a family id or "detect"
+    int baud = 0;
+    int bitrate = 0;
+    QString framing;
+    QString panel;            // the drive tab to show first
+    QString screenshot;       // grab the window into this PNG and quit
+    int screenshotDelayMs = 3000;
+};
+
+// Parses the command line; exits (help, version, errors) like any Qt tool.
+Options parseOptions(const QApplication &app)
+{
+    QCommandLineParser p;
+    p.setApplicationDescription(dd::DriveDeskMain::tr(
+        "DriveDesk: commissioning workbench for servo and stepper drives."));
+    p.addHelpOption();
+    p.addVersionOption();
+    const QCommandLineOption demo(QStringLiteral("demo"),
+        dd::DriveDeskMain::tr("Start the simulated bench (one drive of each family) and connect to it."));
+    const QCommandLineOption lang(QStringLiteral("lang"),
+        dd::DriveDeskMain::tr("User-interface language for this session: en, zh_CN or system "
+                                         "(default: the Language menu's choice)."),
+        QStringLiteral("language"));
+    const QCommandLineOption connect(QStringLiteral("connect"),
+        dd::DriveDeskMain::tr("Connect at start-up and scan: a serial port (/dev/ttyUSB0, COM3), "
+                                         "a CAN interface as plugin:interface (socketcan:can0), or 'last' for "
+                                         "the connection used last."),
+        QStringLiteral("link"));
+    const QCommandLineOption family(QStringLiteral("family"),
+        dd::DriveDeskMain::tr("With --connect: servo-can, servo-modbus, shuoke or detect (default)."),
+        QStringLiteral("family"));
+    const QCommandLineOption baud(QStringLiteral("baud"),
+        dd::DriveDeskMain::tr("With --connect on a serial port: the baud rate (default: the family's)."),
+        QStringLiteral("rate"));
+    const QCommandLineOption bitrate(QStringLiteral("bitrate"),
+        dd::DriveDeskMain::tr("With --connect on CAN: the bitrate in bit/s (default: the family's)."),
+        QStringLiteral("rate"));
+    const QCommandLineOption framing(QStringLiteral("framing"),
+        dd::DriveDeskMain::tr("With --family shuoke: rtu, ascii, plc or can."),
+        QStringLiteral("framing"));
+    const QCommandLineOption panel(QStringLiteral("panel"),
+        dd::DriveDeskMain::tr("The tab to show for the selected drive: overview, trend, ..."),
+        QStringLiteral("id"));
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+        dd::DriveDeskMain::tr("Save a picture of the main window to this PNG file after the delay, "
+                                         "then quit (documentation)."),
+        QStringLiteral("file"));
+    const QCommandLineOption delay(QStringLiteral("screenshot-delay"),
+        dd::DriveDeskMain::tr("Seconds to wait before --screenshot (default 3)."),
+        QStringLiteral("seconds"), QStringLiteral("3"));
+    p.addOptions({demo, lang, connect, family, baud, bitrate, framing, panel, screenshot, delay});
+    p.process(app);
+
+    Options o;
+    o.demo = p.isSet(demo);
+    o.lang = p.value(lang);
+    o.connect = p.value(connect);
+    o.family = p.value(family);
+    o.baud = p.value(baud).toInt();
+    o.bitrate = p.value(bitrate).toInt();
+    o.framing = p.value(framing);
+    o.panel = p.value(panel);
+    o.screenshot = p.value(screenshot);
+    o.screenshotDelayMs = qMax(0, int(p.value(delay).toDouble() * 1000));
+    return o;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("DriveDesk"));
+    QCoreApplication::setOrganizationDomain(QStringLiteral("drivedesk.invalid"));
+    QCoreApplication::setApplicationName(QStringLiteral("drivedesk"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
+    QGuiApplication::setApplicationDisplayName(QStringLiteral("DriveDesk"));
+    dd::ensureCoreResources();
+
+    // The language first, so that --help is translated too (QCommandLineParser has not run
+    // yet: look for "--lang X" / "--lang=X" by hand).
+    QString langArg;
+    const QStringList args = app.arguments();
+    for (int i = 1; i < args.size(); ++i) {
+        if (args.at(i) == QLatin1String("--lang") && i + 1 < args.size())
+            langArg = args.at(i + 1);
+        else if (args.at(i).startsWith(QLatin1String("--lang=")))
+            langArg = args.at(i).mid(7);
+    }
+    bool langOk = true;
+    const auto chosen = dd::LanguageManager::languageFromId(langArg, &langOk);
+    dd::LanguageManager language;
+    language.apply(langArg.isEmpty() ? dd::LanguageManager::savedLanguage() : chosen);
+    const Options options = parseOptions(app);
+    if (!langOk)
+        qWarning("Unknown language '%s': use en, zh_CN or system", qPrintable(langArg));
+
+    // --connect is checked before any window opens.
+    std::optional<dd::ConnectRequest> request;
+    if (options.connect == QLatin1String("last")) {
+        QSettings settings;
+        request = dd::ConnectRequest::load(settings);
+    } else if (!options.connect.isEmpty()) {
+        dd::ConnectRequest r;
+        QString error;
+        if (!dd::ConnectRequest::fromCommandLine(options.connect, options.family, options.baud,
+                                                 options.bitrate, options.framing, &r, &error)) {
+            qCritical("%s", qPrintable(error));
+            return 2;
+        }
+        request = r;
+    }
+
+    dd::MainWindow window(&language);   // --lang holds for this session only: not saved
+    window.restoreLayout();
+    if (!options.panel.isEmpty())
+        window.workspace()->setPreferredPanel(options.panel);
+    window.show();
+    if (options.demo)
+        window.startDemo();
+    if (request)
+        window.connectTo(*request);
+    if (!options.screenshot.isEmpty()) {
+        QTimer::singleShot(options.screenshotDelayMs, &window, [&window, &options] {
+            const bool ok = window.grab().save(options.screenshot, "PNG");
+            if (!ok)
+                qCritical("Could not write %s", qPrintable(options.screenshot));
+            QCoreApplication::exit(ok ? 0 : 1);
+        });
+    }
+    return app.exec();
+}

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Takes the documentation screenshots: the main window in demo mode (simulated drives, no
+# hardware), in English and in Chinese, under a virtual X server (xvfb-run), into
+# docs/screenshots/. The application grabs its own window (--screenshot FILE after
+# --screenshot-delay seconds) and quits, so the pictures are the same on every run.
+# Settings go to a temporary directory: the user's own are neither read nor changed.
+#   packaging/screenshots.sh [build-dir]
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-${DRIVEDESK_BUILD_DIR:-$here/build}}"
+app="$build/app/drivedesk"
+out="$here/docs/screenshots"
+delay="${DRIVEDESK_SCREENSHOT_DELAY:-6}"
+
+if [ ! -x "$app" ]; then
+  echo "screenshots: $app not found; build first (packaging/build.sh)" >&2
+  exit 1
+fi
+command -v xvfb-run >/dev/null || { echo "screenshots: xvfb-run is missing (apt install xvfb)" >&2; exit 1; }
+mkdir -p "$out"
+settings="$(mktemp -d)"
+trap 'rm -rf "$settings"' EXIT
+
+shoot() {   # shoot LANG PANEL FILE
+  XDG_CONFIG_HOME="$settings/$1" QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" \
+    xvfb-run --auto-servernum --server-args="-screen 0 1440x900x24" \
+    "$app" -geometry 1400x860+0+0 --demo --lang "$1" --panel "$2" --screenshot "$out/$3" \
+      --screenshot-delay "$delay"
+  echo "screenshots: $out/$3"
+}
+
+shoot en overview main-window-en.png
+shoot zh_CN overview main-window-zh_CN.png
+shoot en trend trend-en.png

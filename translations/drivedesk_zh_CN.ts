@@ -1,0 +1,2583 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>QCoreApplication</name>
+    <message>
+        <source>unknown failure code</source>
+        <translation>未知故障代码</translation>
+    </message>
+</context>
+<context>
+    <name>dd</name>
+    <message>
+        <source>%1 = &quot;%2&quot; is not a valid setting; use %3.</source>
+        <translation>%1 = “%2”不是有效设置，请使用 %3。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::AlarmDictionary</name>
+    <message>
+        <source>%1 is not a DriveDesk alarm table (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
+        <translation>%1 不是 DriveDesk 报警表（格式为“%2”，应为“%3”）</translation>
+    </message>
+    <message>
+        <source>%1: alarm table format version %2 is not supported (this DriveDesk reads version %3)</source>
+        <translation>%1：不支持报警表格式版本 %2（本版 DriveDesk 读取版本 %3）</translation>
+    </message>
+    <message>
+        <source>%1: unknown drive family &quot;%2&quot; (known: %3)</source>
+        <translation>%1：未知的驱动器系列“%2”（已知：%3）</translation>
+    </message>
+    <message>
+        <source>%1 is an alarm table for %2 drives, not for %3</source>
+        <translation>%1 是 %2 驱动器的报警表，不适用于 %3</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;fallback.%2&quot; must contain %3 where the code goes</source>
+        <translation>%1：字段“fallback.%2”必须在代码位置包含 %3</translation>
+    </message>
+    <message>
+        <source>%1 must be an object (found %2)</source>
+        <translation>%1 必须是对象（实际为 %2）</translation>
+    </message>
+    <message>
+        <source>%1: code %2 is listed twice</source>
+        <translation>%1：代码 %2 重复出现</translation>
+    </message>
+    <message>
+        <source>Alarm %1</source>
+        <translation>报警 %1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::BackupFile</name>
+    <message>
+        <source>The backup has no drive family</source>
+        <translation>备份中没有驱动器系列</translation>
+    </message>
+    <message>
+        <source>The dictionary does not belong to %1 drives</source>
+        <translation>该参数字典不属于 %1 驱动器</translation>
+    </message>
+    <message>
+        <source>Drive address %1 is outside 0 to 255</source>
+        <translation>驱动器地址 %1 超出 0 到 255</translation>
+    </message>
+    <message>
+        <source>Parameter %1 is not in the %2 dictionary</source>
+        <translation>参数 %1 不在 %2 参数字典中</translation>
+    </message>
+    <message>
+        <source>the backup</source>
+        <translation>备份</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2. Is the folder writable and the disk not full?</source>
+        <translation>无法写入 %1：%2。请检查文件夹是否可写、磁盘是否已满。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2. The previous file, if any, is unchanged.</source>
+        <translation>无法写入 %1：%2。原有文件（如有）保持不变。</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 bytes; it is not a file DriveDesk wrote</source>
+        <translation>%1 大于 %2 字节，不是 DriveDesk 生成的文件</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;link&quot; has more than %2 entries</source>
+        <translation>%1：字段“link”超过 %2 项</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;%2&quot; has an empty or too long name</source>
+        <translation>%1：字段“%2”的名称为空或过长</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;%2&quot; must be a string (up to 256 characters), a number within ±2^53 or true/false (found %3)</source>
+        <translation>%1：字段“%2”必须是字符串（最多 256 个字符）、±2^53 以内的数值或 true/false（实际为 %3）</translation>
+    </message>
+    <message>
+        <source>%1 is not a DriveDesk backup file (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
+        <translation>%1 不是 DriveDesk 备份文件（格式为“%2”，应为“%3”）</translation>
+    </message>
+    <message>
+        <source>%1: backup format version %2 is not supported; this DriveDesk reads version %3. Use the DriveDesk version that wrote the file, or a newer one.</source>
+        <translation>%1：不支持备份格式版本 %2，本版 DriveDesk 读取版本 %3。请使用生成该文件的 DriveDesk 版本或更新版本。</translation>
+    </message>
+    <message>
+        <source>%1: unknown drive family &quot;%2&quot; (known: %3)</source>
+        <translation>%1：未知的驱动器系列“%2”（已知：%3）</translation>
+    </message>
+    <message>
+        <source>%1 is a backup of a %2 drive, but the dictionary given is for %3 drives</source>
+        <translation>%1 是 %2 驱动器的备份，但所给参数字典适用于 %3 驱动器</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;created&quot; = &quot;%2&quot; is not an ISO 8601 date and time</source>
+        <translation>%1：字段“created” = “%2”不是 ISO 8601 日期时间</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;checksum&quot; must be &quot;sha256:&quot; followed by 64 lower-case hex digits</source>
+        <translation>%1：字段“checksum”必须是“sha256:”后跟 64 位小写十六进制数字</translation>
+    </message>
+    <message>
+        <source>%1 must be an object (found %2)</source>
+        <translation>%1 必须是对象（实际为 %2）</translation>
+    </message>
+    <message>
+        <source>%1: index %2 appears more than once</source>
+        <translation>%1：序号 %2 出现多次</translation>
+    </message>
+    <message>
+        <source>%1: the checksum does not match the values: the file was changed or damaged after DriveDesk wrote it. Restore refuses it; use an intact copy.</source>
+        <translation>%1：校验和与参数值不符，文件在 DriveDesk 写入后被修改或已损坏。无法用于恢复，请使用完好的副本。</translation>
+    </message>
+    <message>
+        <source>%1: there is no parameter %2 for %3 drives</source>
+        <translation>%1：%3 驱动器没有参数 %2</translation>
+    </message>
+    <message>
+        <source>%1: index %2 is %3 in the dictionary, not &quot;%4&quot;</source>
+        <translation>%1：序号 %2 在参数字典中是 %3，而不是“%4”</translation>
+    </message>
+    <message>
+        <source>%1: access &quot;%2&quot; differs from the dictionary&apos;s &quot;%3&quot;</source>
+        <translation>%1：访问属性“%2”与参数字典中的“%3”不同</translation>
+    </message>
+    <message>
+        <source>%1: a write-only value must be marked &quot;lastWritten&quot;: true</source>
+        <translation>%1：只写参数值必须标注 &quot;lastWritten&quot;: true</translation>
+    </message>
+    <message>
+        <source>%1: &quot;lastWritten&quot; is only allowed on write-only values</source>
+        <translation>%1：“lastWritten”只能用于只写参数值</translation>
+    </message>
+    <message>
+        <source>%1: value %2 is outside the allowed range %3 to %4</source>
+        <translation>%1：数值 %2 超出允许范围 %3 到 %4</translation>
+    </message>
+    <message>
+        <source>This backup is of a %1 drive; it cannot be restored to a %2 drive</source>
+        <translation>此备份来自 %1 驱动器，不能恢复到 %2 驱动器</translation>
+    </message>
+    <message>
+        <source>The backup was taken from firmware %1, but the drive&apos;s firmware version is unknown. Parameters may differ between firmware versions: compare them first, then force the restore if you are sure.</source>
+        <translation>备份取自固件 %1，但驱动器的固件版本未知。不同固件版本的参数可能不同：请先比较参数，确认无误后再强制恢复。</translation>
+    </message>
+    <message>
+        <source>The backup does not record a firmware version; the drive has firmware %1. Compare the parameters first, then force the restore if you are sure.</source>
+        <translation>备份未记录固件版本，驱动器固件为 %1。请先比较参数，确认无误后再强制恢复。</translation>
+    </message>
+    <message>
+        <source>The backup was taken from firmware %1; the drive has firmware %2. Parameters may differ between firmware versions: compare them first, then force the restore if you are sure.</source>
+        <translation>备份取自固件 %1，驱动器固件为 %2。不同固件版本的参数可能不同：请先比较参数，确认无误后再强制恢复。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::BusTreeWidget</name>
+    <message numerus="yes">
+        <source>%n drive(s)</source>
+        <translation>
+            <numerusform>%n 台驱动器</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1, address %2</source>
+        <translation>%1，地址 %2</translation>
+    </message>
+    <message>
+        <source>Model: %1</source>
+        <translation>型号：%1</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1，%2</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>使能</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>未使能</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>Refresh identity</source>
+        <translation>重新读取设备信息</translation>
+    </message>
+    <message>
+        <source>Scan again</source>
+        <translation>重新扫描</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>断开连接</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>驱动器</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>连接中断</translation>
+    </message>
+    <message>
+        <source>%1 — %2 (%3)</source>
+        <translation>%1 — %2（%3）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CanLink</name>
+    <message>
+        <source>The CAN link was destroyed.</source>
+        <translation>CAN 连接已被销毁。</translation>
+    </message>
+    <message>
+        <source>Cannot create CAN device %1:%2: %3. Available plugins: %4.</source>
+        <translation>无法创建 CAN 设备 %1:%2：%3。可用插件：%4。</translation>
+    </message>
+    <message>
+        <source>Cannot connect to CAN interface %1: %2. Is the interface up (ip link set %3 up type can bitrate %4)?</source>
+        <translation>无法连接 CAN 接口 %1：%2。接口是否已启用（ip link set %3 up type can bitrate %4）？</translation>
+    </message>
+    <message>
+        <source>The CAN link %1 was closed.</source>
+        <translation>CAN 连接 %1 已关闭。</translation>
+    </message>
+    <message>
+        <source>The CAN link is not open.</source>
+        <translation>CAN 连接未打开。</translation>
+    </message>
+    <message>
+        <source>Cannot write to CAN interface %1: %2</source>
+        <translation>无法向 CAN 接口 %1 发送：%2</translation>
+    </message>
+    <message>
+        <source>No reply on %1 within %2 ms after %3 attempts. Check the station number, the bitrate and the bus termination.</source>
+        <translation>%1 上尝试 %3 次，%2 ms 内均无应答。请检查站号、波特率和总线终端电阻。</translation>
+    </message>
+    <message>
+        <source>The CAN bus %1 went away. Check the adapter and the bus.</source>
+        <translation>CAN 总线 %1 已断开。请检查适配器和总线。</translation>
+    </message>
+    <message>
+        <source>CAN interface %1: %2</source>
+        <translation>CAN 接口 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ConnectDialog</name>
+    <message>
+        <source>%1 kbit/s</source>
+        <translation>%1 kbit/s</translation>
+    </message>
+    <message>
+        <source>No CAN plugin is installed.</source>
+        <translation>未安装 CAN 插件。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>The %1 plugin reports no interface; type its name.</source>
+        <translation>%1 插件未报告任何接口，请输入接口名称。</translation>
+    </message>
+    <message>
+        <source>CAN</source>
+        <translation>CAN</translation>
+    </message>
+    <message>
+        <source>RTU (binary)</source>
+        <translation>RTU（二进制）</translation>
+    </message>
+    <message>
+        <source>ASCII</source>
+        <translation>ASCII</translation>
+    </message>
+    <message>
+        <source>PLC mode (Modbus registers)</source>
+        <translation>PLC 模式（Modbus 寄存器）</translation>
+    </message>
+    <message>
+        <source>Choose a serial port, or type its name.</source>
+        <translation>请选择串口，或输入串口名称。</translation>
+    </message>
+    <message>
+        <source>Choose a CAN plugin and an interface.</source>
+        <translation>请选择 CAN 插件和接口。</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>通讯链路</translation>
+    </message>
+    <message>
+        <source>&amp;Serial port (RS485 / RS232)</source>
+        <translation>串口（RS485 / RS232）(&amp;S)</translation>
+    </message>
+    <message>
+        <source>C&amp;AN bus</source>
+        <translation>CAN 总线(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>端口(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>Adapters are listed as they are plugged in. Virtual ports: links to pseudo-terminals in the temp directory (drivedesk-sim --link).</source>
+        <translation>插入适配器后会自动列出。虚拟端口：临时目录中指向伪终端的链接（drivedesk-sim --link）。</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>波特率(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>Family default</source>
+        <translation>系列默认值</translation>
+    </message>
+    <message>
+        <source>Try all common baud rates when scanning</source>
+        <translation>扫描时尝试所有常用波特率</translation>
+    </message>
+    <message>
+        <source>P&amp;lugin:</source>
+        <translation>插件(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>&amp;Interface:</source>
+        <translation>接口(&amp;I)：</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>刷新</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>驱动器</translation>
+    </message>
+    <message>
+        <source>&amp;Family:</source>
+        <translation>系列(&amp;F)：</translation>
+    </message>
+    <message>
+        <source>F&amp;raming:</source>
+        <translation>帧格式(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>Shuoke drives only: how the drive is set to talk</source>
+        <translation>仅适用于硕科驱动器：驱动器设定的通讯方式</translation>
+    </message>
+    <message>
+        <source>Detect automatically</source>
+        <translation>自动识别</translation>
+    </message>
+    <message>
+        <source>Detect tries each family in turn (serial: servo-modbus, then shuoke RTU and ASCII; CAN: servo-can, then shuoke) and keeps the first that finds a drive.</source>
+        <translation>自动识别会依次尝试各系列（串口：先 servo-modbus，再 shuoke RTU 和 ASCII；CAN：先 servo-can，再 shuoke），采用第一个找到驱动器的系列。</translation>
+    </message>
+    <message>
+        <source>S&amp;can for drives after connecting</source>
+        <translation>连接后扫描驱动器(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Addresses:</source>
+        <translation>地址范围：</translation>
+    </message>
+    <message>
+        <source>C&amp;onnect</source>
+        <translation>连接(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Bi&amp;trate:</source>
+        <translation>波特率(&amp;T)：</translation>
+    </message>
+    <message>
+        <source>Probe ti&amp;meout:</source>
+        <translation>应答超时(&amp;M)：</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Automatic (fast, direct RS485 only)</source>
+        <translation>自动（较快，仅适用于直连 RS485）</translation>
+    </message>
+    <message>
+        <source>How long to wait for each address to answer. USB adapters add up to 16 ms of latency: keep 50 ms or more unless the port is a native RS485 interface.</source>
+        <translation>每个地址等待应答的时间。USB 转换器会增加最多 16 ms 的延迟：除非是原生 RS485 接口，否则请保持 50 ms 或以上。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ConnectRequest</name>
+    <message>
+        <source>auto-detect</source>
+        <translation>自动识别</translation>
+    </message>
+    <message>
+        <source>%1 on %2</source>
+        <translation>%1，%2</translation>
+    </message>
+    <message>
+        <source>Unknown family &quot;%1&quot;; use one of: %2, detect.</source>
+        <translation>未知系列“%1”，请使用：%2、detect。</translation>
+    </message>
+    <message>
+        <source>Unknown framing &quot;%1&quot;; use one of: %2.</source>
+        <translation>未知帧格式“%1”，请使用：%2。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ConnectionController</name>
+    <message>
+        <source>Scanning %1 for %2 drives, addresses %3–%4…</source>
+        <translation>正在 %1 上扫描%2驱动器，地址 %3–%4…</translation>
+    </message>
+    <message>
+        <source>Opening %1 (%2)…</source>
+        <translation>正在打开 %1（%2）…</translation>
+    </message>
+    <message>
+        <source>(try %1 of %2)</source>
+        <translation>（第 %1 次，共 %2 次）</translation>
+    </message>
+    <message numerus="yes">
+        <source>Found %n drive(s).</source>
+        <translation>
+            <numerusform>找到 %n 台驱动器。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scan cancelled.</source>
+        <translation>扫描已取消。</translation>
+    </message>
+    <message>
+        <source>Connected.</source>
+        <translation>已连接。</translation>
+    </message>
+    <message>
+        <source>No drive answered. Check the wiring and termination, the baud rate or bitrate, the family and the address range.</source>
+        <translation>没有驱动器应答。请检查接线和终端电阻、波特率、驱动器系列以及地址范围。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CsvWriter</name>
+    <message>
+        <source>Cannot write the CSV file %1: %2. Check that the folder exists and is writable.</source>
+        <translation>无法写入 CSV 文件 %1：%2。请检查文件夹是否存在且可写。</translation>
+    </message>
+    <message>
+        <source>Writing the CSV file %1 failed: %2. Is the disk full?</source>
+        <translation>写入 CSV 文件 %1 失败：%2。磁盘是否已满？</translation>
+    </message>
+    <message>
+        <source>The CSV file is not open.</source>
+        <translation>CSV 文件未打开。</translation>
+    </message>
+    <message>
+        <source>The sample time is not a valid number.</source>
+        <translation>采样时间不是有效数值。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DisplayText</name>
+    <message>
+        <source>Servo (CAN)</source>
+        <translation>伺服（CAN）</translation>
+    </message>
+    <message>
+        <source>Servo (Modbus)</source>
+        <translation>伺服（Modbus）</translation>
+    </message>
+    <message>
+        <source>Shuoke stepper</source>
+        <translation>硕科步进</translation>
+    </message>
+    <message>
+        <source>%1 #%2</source>
+        <translation>%1 #%2</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Offline</source>
+        <translation>离线</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>Idle</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Enabled</source>
+        <translation>已使能</translation>
+    </message>
+    <message>
+        <source>Disabled</source>
+        <translation>未使能</translation>
+    </message>
+    <message>
+        <source>Alarm %1</source>
+        <translation>报警 %1</translation>
+    </message>
+    <message>
+        <source>No alarm</source>
+        <translation>无报警</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1，%2</translation>
+    </message>
+    <message>
+        <source>Read parameters</source>
+        <translation>读取参数</translation>
+    </message>
+    <message>
+        <source>Write parameters</source>
+        <translation>写入参数</translation>
+    </message>
+    <message>
+        <source>Live monitor</source>
+        <translation>实时监控</translation>
+    </message>
+    <message>
+        <source>Jog</source>
+        <translation>点动</translation>
+    </message>
+    <message>
+        <source>Relative move</source>
+        <translation>相对运动</translation>
+    </message>
+    <message>
+        <source>Absolute move</source>
+        <translation>绝对运动</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <source>Set position</source>
+        <translation>设置位置</translation>
+    </message>
+    <message>
+        <source>Enable / disable</source>
+        <translation>使能 / 取消使能</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>Read alarm</source>
+        <translation>读取报警</translation>
+    </message>
+    <message>
+        <source>Clear alarm</source>
+        <translation>清除报警</translation>
+    </message>
+    <message>
+        <source>EEPROM operations</source>
+        <translation>EEPROM 操作</translation>
+    </message>
+</context>
+<context>
+    <name>dd::Drive</name>
+    <message>
+        <source>No parameter to write.</source>
+        <translation>没有要写入的参数。</translation>
+    </message>
+    <message>
+        <source>The %1 drive family has no &quot;%2&quot; operation.</source>
+        <translation>%1 驱动器系列没有“%2”操作。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DriveConnection</name>
+    <message>
+        <source>The %1 family is not available in this build.</source>
+        <translation>此版本不支持 %1 系列。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DriveDeskMain</name>
+    <message>
+        <source>DriveDesk: commissioning workbench for servo and stepper drives.</source>
+        <translation>DriveDesk：伺服和步进驱动器调试工具。</translation>
+    </message>
+    <message>
+        <source>Start the simulated bench (one drive of each family) and connect to it.</source>
+        <translation>启动模拟试验台（每个系列一台驱动器）并连接。</translation>
+    </message>
+    <message>
+        <source>User-interface language for this session: en, zh_CN or system (default: the Language menu&apos;s choice).</source>
+        <translation>本次运行的界面语言：en、zh_CN 或 system（默认：“语言”菜单中的选择）。</translation>
+    </message>
+    <message>
+        <source>Connect at start-up and scan: a serial port (/dev/ttyUSB0, COM3), a CAN interface as plugin:interface (socketcan:can0), or &apos;last&apos; for the connection used last.</source>
+        <translation>启动时连接并扫描：串口（/dev/ttyUSB0、COM3）、CAN 接口（插件:接口，如 socketcan:can0），或 last 表示上次使用的连接。</translation>
+    </message>
+    <message>
+        <source>With --connect: servo-can, servo-modbus, shuoke or detect (default).</source>
+        <translation>与 --connect 配合：servo-can、servo-modbus、shuoke 或 detect（默认，自动识别）。</translation>
+    </message>
+    <message>
+        <source>With --connect on a serial port: the baud rate (default: the family&apos;s).</source>
+        <translation>与 --connect 串口配合：波特率（默认：系列默认值）。</translation>
+    </message>
+    <message>
+        <source>With --connect on CAN: the bitrate in bit/s (default: the family&apos;s).</source>
+        <translation>与 --connect CAN 配合：波特率，单位 bit/s（默认：系列默认值）。</translation>
+    </message>
+    <message>
+        <source>With --family shuoke: rtu, ascii, plc or can.</source>
+        <translation>与 --family shuoke 配合：rtu、ascii、plc 或 can。</translation>
+    </message>
+    <message>
+        <source>Save a picture of the main window to this PNG file after the delay, then quit (documentation).</source>
+        <translation>延时后将主窗口截图保存为此 PNG 文件，然后退出（用于文档）。</translation>
+    </message>
+    <message>
+        <source>Seconds to wait before --screenshot (default 3).</source>
+        <translation>--screenshot 之前等待的秒数（默认 3）。</translation>
+    </message>
+    <message>
+        <source>The tab to show for the selected drive: overview, trend, ...</source>
+        <translation>所选驱动器首先显示的标签页：overview、trend 等。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DriveHub</name>
+    <message>
+        <source>The connection is closed.</source>
+        <translation>连接已关闭。</translation>
+    </message>
+    <message>
+        <source>There is no drive at address %1.</source>
+        <translation>地址 %1 上没有驱动器。</translation>
+    </message>
+    <message>
+        <source>The operation was not started.</source>
+        <translation>操作未能启动。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DriveWorkspace</name>
+    <message>
+        <source>Select a drive in the bus tree.
+
+No drive yet? Use File → Connect… to open a serial port or a CAN interface and scan it, or File → Demo bench to try DriveDesk with simulated drives.</source>
+        <translation>请在总线树中选择一台驱动器。
+
+还没有驱动器？使用“文件 → 连接…”打开串口或 CAN 接口并扫描，或使用“文件 → 演示试验台”以模拟驱动器试用 DriveDesk。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::EtaEstimator</name>
+    <message numerus="yes">
+        <source>about %n s</source>
+        <translation>
+            <numerusform>约 %n 秒</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>about %n min</source>
+        <translation>
+            <numerusform>约 %n 分钟</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::JsonFieldReader</name>
+    <message>
+        <source>%1: field &quot;%2&quot;</source>
+        <translation>%1：字段“%2”</translation>
+    </message>
+    <message>
+        <source>must be an integer (found %1)</source>
+        <translation>必须是整数（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>holds a number too large to be exact (the limit is ±%1)</source>
+        <translation>数值过大，无法精确表示（上限为 ±%1）</translation>
+    </message>
+    <message>
+        <source>must be a whole number (found %1)</source>
+        <translation>必须是整数（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>%1: required field &quot;%2&quot; is missing</source>
+        <translation>%1：缺少必需字段“%2”</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the allowed range %3 to %4</source>
+        <translation>%1 = %2 超出允许范围 %3 到 %4</translation>
+    </message>
+    <message>
+        <source>must be a number (found %1)</source>
+        <translation>必须是数值（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>must be a string (found %1)</source>
+        <translation>必须是字符串（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>is longer than %1 characters</source>
+        <translation>超过 %1 个字符</translation>
+    </message>
+    <message>
+        <source>must not be empty</source>
+        <translation>不能为空</translation>
+    </message>
+    <message>
+        <source>must be true or false (found %1)</source>
+        <translation>必须是 true 或 false（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>must be an object (found %1)</source>
+        <translation>必须是对象（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>must be an array (found %1)</source>
+        <translation>必须是数组（实际为 %1）</translation>
+    </message>
+    <message>
+        <source>has more than %1 entries</source>
+        <translation>超过 %1 项</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a language code (use e.g. &quot;en&quot;, &quot;zh&quot;, &quot;zh_CN&quot;)</source>
+        <translation>%1：“%2”不是语言代码（例如“en”、“zh”、“zh_CN”）</translation>
+    </message>
+    <message>
+        <source>%1 needs a non-empty &quot;%2&quot; text</source>
+        <translation>%1 需要非空的“%2”文本</translation>
+    </message>
+    <message>
+        <source>%1: unknown field &quot;%2&quot;</source>
+        <translation>%1：未知字段“%2”</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 bytes; it is not a file DriveDesk wrote</source>
+        <translation>%1 大于 %2 字节，不是 DriveDesk 生成的文件</translation>
+    </message>
+    <message>
+        <source> (is the file empty or truncated?)</source>
+        <translation>（文件是否为空或不完整？）</translation>
+    </message>
+    <message>
+        <source>%1 is not valid JSON: %2 at byte %3%4</source>
+        <translation>%1 不是有效的 JSON：第 %3 字节处%2%4</translation>
+    </message>
+    <message>
+        <source>%1: the top level must be a JSON object</source>
+        <translation>%1：顶层必须是 JSON 对象</translation>
+    </message>
+</context>
+<context>
+    <name>dd::MainWindow</name>
+    <message>
+        <source>STOP sent to all drives.</source>
+        <translation>已向所有驱动器发送停止命令。</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>正在连接…</translation>
+    </message>
+    <message>
+        <source>Demo bench</source>
+        <translation>演示试验台</translation>
+    </message>
+    <message>
+        <source>Select a drive first: %1 is opened in one of its tabs.</source>
+        <translation>请先选择驱动器：%1 将在该驱动器的某个标签页中打开。</translation>
+    </message>
+    <message>
+        <source>About DriveDesk</source>
+        <translation>关于 DriveDesk</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;Commissioning and tuning workbench for servo and stepper drives over RS485 / RS232 and CAN.&lt;/p&gt;&lt;p&gt;Drive families: servo-can, servo-modbus, shuoke.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;通过 RS485 / RS232 和 CAN 调试、整定伺服和步进驱动器的工具。&lt;/p&gt;&lt;p&gt;驱动器系列：servo-can、servo-modbus、shuoke。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>DriveDesk — commissioning workbench</source>
+        <translation>DriveDesk — 驱动器调试工具</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Recent files</source>
+        <translation>最近的文件(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Connect…</source>
+        <translation>连接(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Open a serial port or a CAN interface and scan it for drives (%1)</source>
+        <translation>打开串口或 CAN 接口并扫描驱动器（%1）</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>断开连接(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Close the selected connection</source>
+        <translation>关闭所选连接</translation>
+    </message>
+    <message>
+        <source>Disconnect &amp;all</source>
+        <translation>全部断开(&amp;A)</translation>
+    </message>
+    <message>
+        <source>De&amp;mo bench</source>
+        <translation>演示试验台(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Start simulated drives of every family and connect to them</source>
+        <translation>启动各系列的模拟驱动器并连接</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;About DriveDesk</source>
+        <translation>关于 DriveDesk(&amp;A)</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>关于 Qt(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;System language</source>
+        <translation>跟随系统(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation>总线</translation>
+    </message>
+    <message>
+        <source>&amp;Bus tree</source>
+        <translation>总线树(&amp;B)</translation>
+    </message>
+    <message>
+        <source>Main tool bar</source>
+        <translation>主工具栏</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ModbusLink</name>
+    <message>
+        <source>The Modbus link was destroyed.</source>
+        <translation>Modbus 连接已被销毁。</translation>
+    </message>
+    <message>
+        <source>The serial port %1 was closed.</source>
+        <translation>串口 %1 已关闭。</translation>
+    </message>
+    <message>
+        <source>The Modbus link was reopened.</source>
+        <translation>Modbus 连接已重新打开。</translation>
+    </message>
+    <message>
+        <source>Cannot open serial port %1: %2. Check the device name, that no other program is using it, and that you may access it (dialout group).</source>
+        <translation>无法打开串口 %1：%2。请检查设备名称、是否被其他程序占用，以及是否有访问权限（dialout 组）。</translation>
+    </message>
+    <message>
+        <source>The serial port %1 could not be reopened: %2. Was the adapter unplugged?</source>
+        <translation>无法重新打开串口 %1：%2。适配器是否已拔出？</translation>
+    </message>
+    <message>
+        <source>The serial port is not open.</source>
+        <translation>串口未打开。</translation>
+    </message>
+    <message>
+        <source>Invalid Modbus request (function %1, address %2, %3 registers): nothing was sent.</source>
+        <translation>无效的 Modbus 请求（功能码 %1，地址 %2，%3 个寄存器）：未发送任何数据。</translation>
+    </message>
+    <message>
+        <source>The Modbus client refused the request: %1</source>
+        <translation>Modbus 客户端拒绝了请求：%1</translation>
+    </message>
+    <message>
+        <source>The serial port %1 failed (%2). Was the adapter unplugged?</source>
+        <translation>串口 %1 出错（%2）。适配器是否已拔出？</translation>
+    </message>
+    <message>
+        <source>The broadcast could not be sent on %1: %2</source>
+        <translation>无法在 %1 上发送广播：%2</translation>
+    </message>
+    <message>
+        <source>The drive at address %1 rejected the request (Modbus exception %2: %3).</source>
+        <translation>地址 %1 的驱动器拒绝了请求（Modbus 异常 %2：%3）。</translation>
+    </message>
+    <message>
+        <source>The Modbus request to address %1 on %2 failed: %3</source>
+        <translation>%2 上发往地址 %1 的 Modbus 请求失败：%3</translation>
+    </message>
+    <message>
+        <source>The reply from address %1 on %2 does not fit the request (%3).</source>
+        <translation>%2 上地址 %1 的应答与请求不符（%3）。</translation>
+    </message>
+    <message>
+        <source>Only a late answer to an earlier request came from address %1 on %2. The drive answers more slowly than the timeout allows: raise the timeout.</source>
+        <translation>%2 上地址 %1 只返回了对先前请求的迟到应答。驱动器的应答慢于超时设定，请加大超时时间。</translation>
+    </message>
+    <message>
+        <source>The reply from address %1 on %2 failed its CRC. Check the cable shielding, the bus termination and the baud rate.</source>
+        <translation>%2 上地址 %1 的应答 CRC 校验失败。请检查电缆屏蔽、总线终端电阻和波特率。</translation>
+    </message>
+    <message>
+        <source>No reply from address %1 on %2 within %3 ms. Check the drive address (PA51), the baud rate, the wiring (A/B swapped?) and the bus termination.</source>
+        <translation>%2 上地址 %1 在 %3 ms 内无应答。请检查驱动器地址（PA51）、波特率、接线（A/B 是否接反？）和总线终端电阻。</translation>
+    </message>
+    <message>
+        <source>A frame with another address arrived meanwhile; servo drives send exception replies with address 1, so the drive may have rejected the request.</source>
+        <translation>期间收到了其他地址的帧；伺服驱动器的异常应答使用地址 1，驱动器可能拒绝了该请求。</translation>
+    </message>
+    <message>
+        <source>The drive at address %1 rejected the request (Modbus exception %2: %3; the reply carried address byte %4).</source>
+        <translation>地址 %1 的驱动器拒绝了请求（Modbus 异常 %2：%3；应答中的地址字节为 %4）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::OverviewPanel</name>
+    <message>
+        <source>Overview</source>
+        <translation>概览</translation>
+    </message>
+    <message>
+        <source>Identity</source>
+        <translation>设备信息</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Capabilities</source>
+        <translation>支持的功能</translation>
+    </message>
+    <message>
+        <source>Family:</source>
+        <translation>系列：</translation>
+    </message>
+    <message>
+        <source>Address:</source>
+        <translation>地址：</translation>
+    </message>
+    <message>
+        <source>Model:</source>
+        <translation>型号：</translation>
+    </message>
+    <message>
+        <source>Firmware:</source>
+        <translation>固件：</translation>
+    </message>
+    <message>
+        <source>Link:</source>
+        <translation>通讯链路：</translation>
+    </message>
+    <message>
+        <source>Communication:</source>
+        <translation>通讯：</translation>
+    </message>
+    <message>
+        <source>Motion:</source>
+        <translation>运动：</translation>
+    </message>
+    <message>
+        <source>Power stage:</source>
+        <translation>使能：</translation>
+    </message>
+    <message>
+        <source>Position:</source>
+        <translation>位置：</translation>
+    </message>
+    <message>
+        <source>Alarm:</source>
+        <translation>报警：</translation>
+    </message>
+    <message>
+        <source>Last update:</source>
+        <translation>最后更新：</translation>
+    </message>
+    <message>
+        <source>Function</source>
+        <translation>功能</translation>
+    </message>
+    <message>
+        <source>Available</source>
+        <translation>可用</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>刷新</translation>
+    </message>
+    <message>
+        <source>Read the identity and the status of the drive again</source>
+        <translation>重新读取驱动器的设备信息和状态</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>No</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <source>Online</source>
+        <translation>在线</translation>
+    </message>
+    <message>
+        <source>No answer</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>Not polled yet</source>
+        <translation>尚未查询</translation>
+    </message>
+    <message>
+        <source>No (%1)</source>
+        <translation>否（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterDictionary</name>
+    <message>
+        <source>%1 must be an object (found %2)</source>
+        <translation>%1 必须是对象（实际为 %2）</translation>
+    </message>
+    <message>
+        <source>%1: key &quot;%2&quot; must start with a letter and hold only letters, digits, &apos;_&apos;, &apos;.&apos; and &apos;-&apos;</source>
+        <translation>%1：键名“%2”必须以字母开头，且只能包含字母、数字、“_”、“.”和“-”</translation>
+    </message>
+    <message>
+        <source>%1: key &quot;%2&quot; names parameter %3 but the index is %4</source>
+        <translation>%1：键名“%2”对应参数 %3，但序号为 %4</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;type&quot; = &quot;%2&quot; is not one of uint8, int16, uint16, int32, uint32</source>
+        <translation>%1：字段“type” = “%2”不是 uint8、int16、uint16、int32、uint32 之一</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;access&quot; = &quot;%2&quot; is not one of rw, ro, wo</source>
+        <translation>%1：字段“access” = “%2”不是 rw、ro、wo 之一</translation>
+    </message>
+    <message>
+        <source>%1: min %2 is greater than max %3</source>
+        <translation>%1：最小值 %2 大于最大值 %3</translation>
+    </message>
+    <message>
+        <source>%1: the range %2 to %3 does not fit the type %4 (%5 to %6)</source>
+        <translation>%1：范围 %2 到 %3 超出类型 %4 的取值范围（%5 到 %6）</translation>
+    </message>
+    <message>
+        <source>%1: default %2 is outside the range %3 to %4</source>
+        <translation>%1：默认值 %2 超出范围 %3 到 %4</translation>
+    </message>
+    <message>
+        <source>%1: a write-only parameter cannot have a readCommand</source>
+        <translation>%1：只写参数不能有 readCommand</translation>
+    </message>
+    <message>
+        <source>%1: a readable shuoke parameter needs a readCommand</source>
+        <translation>%1：可读的硕科参数需要 readCommand</translation>
+    </message>
+    <message>
+        <source>%1: a servo-modbus parameter needs a register</source>
+        <translation>%1：servo-modbus 参数需要寄存器地址</translation>
+    </message>
+    <message>
+        <source>%1: models[%2] must be a model name</source>
+        <translation>%1：models[%2] 必须是型号名称</translation>
+    </message>
+    <message>
+        <source>%1 is not a DriveDesk parameter dictionary (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
+        <translation>%1 不是 DriveDesk 参数字典（格式为“%2”，应为“%3”）</translation>
+    </message>
+    <message>
+        <source>%1: dictionary format version %2 is not supported (this DriveDesk reads version %3)</source>
+        <translation>%1：不支持参数字典格式版本 %2（本版 DriveDesk 读取版本 %3）</translation>
+    </message>
+    <message>
+        <source>%1: unknown drive family &quot;%2&quot; (known: %3)</source>
+        <translation>%1：未知的驱动器系列“%2”（已知：%3）</translation>
+    </message>
+    <message>
+        <source>%1 is a dictionary for %2 drives, not for %3</source>
+        <translation>%1 是 %2 驱动器的参数字典，不适用于 %3</translation>
+    </message>
+    <message>
+        <source>%1: field &quot;valueType&quot; = &quot;%2&quot; is not one of uint8, int16, uint16, int32, uint32</source>
+        <translation>%1：字段“valueType” = “%2”不是 uint8、int16、uint16、int32、uint32 之一</translation>
+    </message>
+    <message>
+        <source>%1: the dictionary has no parameters</source>
+        <translation>%1：参数字典中没有参数</translation>
+    </message>
+    <message>
+        <source>%1: index %2 is already used by %3</source>
+        <translation>%1：序号 %2 已被 %3 占用</translation>
+    </message>
+    <message>
+        <source>%1: key &quot;%2&quot; is already used (keys are case-insensitive)</source>
+        <translation>%1：键名“%2”已被使用（键名不区分大小写）</translation>
+    </message>
+    <message>
+        <source>%1: register %2 is already used by %3</source>
+        <translation>%1：寄存器 %2 已被 %3 占用</translation>
+    </message>
+    <message>
+        <source>Unknown parameter &quot;%1&quot; for %2 drives: give a number (12), a key (%3) or a name</source>
+        <translation>%2 驱动器没有参数“%1”：请输入序号（如 12）、键名（如 %3）或名称</translation>
+    </message>
+    <message>
+        <source>There is no parameter %1 for %2 drives</source>
+        <translation>%2 驱动器没有参数 %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the allowed range %3 to %4</source>
+        <translation>%1：%2 超出允许范围 %3 到 %4</translation>
+    </message>
+    <message>
+        <source>%1: %2 %5 is outside the allowed range %3 to %4 %5</source>
+        <translation>%1：%2 %5 超出允许范围 %3 到 %4 %5</translation>
+    </message>
+    <message>
+        <source>%1 is read-only: the drive does not accept a new value</source>
+        <translation>%1 为只读参数：驱动器不接受新值</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterDiff</name>
+    <message>
+        <source>Parameter %1 has no value in the backup file, so it cannot be restored</source>
+        <translation>参数 %1 在备份文件中没有数值，无法恢复</translation>
+    </message>
+    <message>
+        <source>Parameter %1 is read-only, so it cannot be restored</source>
+        <translation>参数 %1 为只读，无法恢复</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecentFiles</name>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>&amp;Clear list</source>
+        <translation>清除列表(&amp;C)</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ScanProgressWidget</name>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) found</source>
+        <translation>
+            <numerusform>已找到 %n 台驱动器</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 left · %2</source>
+        <translation>剩余%1 · %2</translation>
+    </message>
+</context>
+<context>
+    <name>dd::SerialLink</name>
+    <message>
+        <source>The serial link was destroyed.</source>
+        <translation>串口连接已被销毁。</translation>
+    </message>
+    <message>
+        <source>Cannot open serial port %1: %2. Check the device name, that no other program is using it, and that you may access it (dialout group).</source>
+        <translation>无法打开串口 %1：%2。请检查设备名称、是否被其他程序占用，以及是否有访问权限（dialout 组）。</translation>
+    </message>
+    <message>
+        <source>The serial port %1 was closed.</source>
+        <translation>串口 %1 已关闭。</translation>
+    </message>
+    <message>
+        <source>The serial port is not open.</source>
+        <translation>串口未打开。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s reply on %1 failed its checksum. Check the cable shielding, the bus termination and the baud rate.</source>
+        <translation>%1 上驱动器应答的校验失败。请检查电缆屏蔽、总线终端电阻和波特率。</translation>
+    </message>
+    <message>
+        <source>No reply on %1 within %2 ms. Check the drive address, the baud rate, the wiring (A/B swapped?) and the bus termination.</source>
+        <translation>%1 上 %2 ms 内无应答。请检查驱动器地址、波特率、接线（A/B 是否接反？）和总线终端电阻。</translation>
+    </message>
+    <message>
+        <source>The serial port %1 failed (%2). Was the adapter unplugged?</source>
+        <translation>串口 %1 出错（%2）。适配器是否已拔出？</translation>
+    </message>
+</context>
+<context>
+    <name>dd::SerialPortWatcher</name>
+    <message>
+        <source>Virtual port (pseudo-terminal)</source>
+        <translation>虚拟端口（伪终端）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoCanBackend</name>
+    <message>
+        <source>&quot;%1&quot; is not a CAN interface: write plugin:interface, e.g. socketcan:can0 or virtualcan:can0.</source>
+        <translation>“%1”不是 CAN 接口：请按“插件:接口”填写，例如 socketcan:can0 或 virtualcan:can0。</translation>
+    </message>
+    <message>
+        <source>servo-can.emergencyStop must be &quot;disable&quot; or &quot;hold&quot;, not &quot;%1&quot;.</source>
+        <translation>servo-can.emergencyStop 必须为“disable”或“hold”，而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>servo-can.maxInFlight must be at least 1.</source>
+        <translation>servo-can.maxInFlight 至少为 1。</translation>
+    </message>
+    <message>
+        <source>%1, %2 kbit/s</source>
+        <translation>%1，%2 kbit/s</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoCanDiscovery</name>
+    <message>
+        <source>The CAN link is not open.</source>
+        <translation>CAN 连接未打开。</translation>
+    </message>
+    <message>
+        <source>The CAN link was closed.</source>
+        <translation>CAN 连接已关闭。</translation>
+    </message>
+    <message>
+        <source>The scan was cancelled.</source>
+        <translation>扫描已取消。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoCanDrive</name>
+    <message>
+        <source>The servo-can protocol has no homing command. Move to the reference point and use &quot;set position&quot; (0x50) instead.</source>
+        <translation>servo-can 协议没有回零命令。请运动到参考点后使用“设置位置”（0x50）。</translation>
+    </message>
+    <message>
+        <source>The servo-can protocol has no EEPROM command.</source>
+        <translation>servo-can 协议没有 EEPROM 命令。</translation>
+    </message>
+    <message>
+        <source>The CAN link to station %1 is not open.</source>
+        <translation>到站号 %1 的 CAN 连接未打开。</translation>
+    </message>
+    <message>
+        <source>%1 reads of P%2 gave no two equal values.</source>
+        <translation>读取 P%2 共 %1 次，没有两次结果相同。</translation>
+    </message>
+    <message>
+        <source>Station %1 did not start within %2 ms. Is an alarm active? Is parameter 4 = 8 (internal run control) and parameter 74 = 1 (CAN)?</source>
+        <translation>站号 %1 在 %2 ms 内未启动。是否有报警？参数 4 是否为 8（内部运行控制）、参数 74 是否为 1（CAN）？</translation>
+    </message>
+    <message>
+        <source>No heartbeat from station %1. Is the drive powered, is parameter 74 = 1 (CAN mode) and is the station number right?</source>
+        <translation>未收到站号 %1 的心跳。驱动器是否上电？参数 74 是否为 1（CAN 模式）？站号是否正确？</translation>
+    </message>
+    <message>
+        <source>Parameter 75 (station) is %1 but the drive answers as station %2.</source>
+        <translation>参数 75（站号）为 %1，但驱动器以站号 %2 应答。</translation>
+    </message>
+    <message>
+        <source>Parameter 74 is %1: set it to 1 for CAN communication mode.</source>
+        <translation>参数 74 为 %1：CAN 通讯模式需设为 1。</translation>
+    </message>
+    <message>
+        <source>Parameter 4 is %1: set it to 8 (internal run control) to move the axis over CAN.</source>
+        <translation>参数 4 为 %1：要通过 CAN 控制运动，需设为 8（内部运行控制）。</translation>
+    </message>
+    <message>
+        <source>Status of station %1</source>
+        <translation>站号 %1 的状态</translation>
+    </message>
+    <message>
+        <source>Alarm of station %1</source>
+        <translation>站号 %1 的报警</translation>
+    </message>
+    <message>
+        <source>Station %1 still reports alarm %2 after the clear command. Remove the cause of the alarm first.</source>
+        <translation>发送清除命令后，站号 %1 仍报警 %2。请先排除报警原因。</translation>
+    </message>
+    <message>
+        <source>Parameter %1 does not exist: servo-can parameters are 0 to %2.</source>
+        <translation>参数 %1 不存在：servo-can 参数为 0 到 %2。</translation>
+    </message>
+    <message>
+        <source>Station %1, P%2: %3</source>
+        <translation>站号 %1，P%2：%3</translation>
+    </message>
+    <message>
+        <source>P%1 = %2 is out of range: servo-can parameters are 16-bit values from -32768 to 32767. Nothing was written.</source>
+        <translation>P%1 = %2 超出范围：servo-can 参数为 -32768 到 32767 的 16 位数值。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>P%1 was written but could not be read back: %2</source>
+        <translation>P%1 已写入，但无法回读：%2</translation>
+    </message>
+    <message>
+        <source>P%1: wrote %2 but the drive reads back %3 (%4 attempts). The drive may limit this parameter or not accept writes in its present state.</source>
+        <translation>P%1：写入 %2，但回读为 %3（尝试 %4 次）。驱动器可能限制了该参数，或在当前状态下不接受写入。</translation>
+    </message>
+    <message>
+        <source>A servo-can drive has no channel &quot;%1&quot;.</source>
+        <translation>servo-can 驱动器没有通道“%1”。</translation>
+    </message>
+    <message>
+        <source>Station %1, %2: %3</source>
+        <translation>站号 %1，%2：%3</translation>
+    </message>
+    <message>
+        <source>A relative move of %1 counts does not fit the drive&apos;s 32-bit command.</source>
+        <translation>相对运动量 %1 超出驱动器 32 位指令的范围。</translation>
+    </message>
+    <message>
+        <source>A move needs a positive positioning speed (r/min); %1 was given.</source>
+        <translation>运动需要正的定位速度（r/min），给定值为 %1。</translation>
+    </message>
+    <message>
+        <source>Target %1 does not fit the drive&apos;s 32-bit position.</source>
+        <translation>目标位置 %1 超出驱动器 32 位位置的范围。</translation>
+    </message>
+    <message>
+        <source>Position %1 does not fit the drive&apos;s 32-bit position.</source>
+        <translation>位置 %1 超出驱动器 32 位位置的范围。</translation>
+    </message>
+    <message>
+        <source>Station %1: position set to %2 but it reads back %3.</source>
+        <translation>站号 %1：位置设为 %2，但回读为 %3。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoModbusBackend</name>
+    <message>
+        <source>servo-modbus drives are reached over a serial port (RS485): give a port.</source>
+        <translation>servo-modbus 驱动器通过串口（RS485）通讯：请指定端口。</translation>
+    </message>
+    <message>
+        <source>%1 @ %2 baud, Modbus RTU (servo-modbus)</source>
+        <translation>%1 @ %2 波特，Modbus RTU（servo-modbus）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoModbusDrive</name>
+    <message>
+        <source>Speed (DP-SPd)</source>
+        <translation>速度（DP-SPd）</translation>
+    </message>
+    <message>
+        <source>Position (DP-PoS)</source>
+        <translation>位置（DP-PoS）</translation>
+    </message>
+    <message>
+        <source>Position, low register (DP-PoS)</source>
+        <translation>位置，低位寄存器（DP-PoS）</translation>
+    </message>
+    <message>
+        <source>Position, high register (DP-PoS.)</source>
+        <translation>位置，高位寄存器（DP-PoS.）</translation>
+    </message>
+    <message>
+        <source>Command position (DP-CPo)</source>
+        <translation>指令位置（DP-CPo）</translation>
+    </message>
+    <message>
+        <source>Command position, low register (DP-CPo)</source>
+        <translation>指令位置，低位寄存器（DP-CPo）</translation>
+    </message>
+    <message>
+        <source>Command position, high register (DP-CPo.)</source>
+        <translation>指令位置，高位寄存器（DP-CPo.）</translation>
+    </message>
+    <message>
+        <source>Position error (DP-EPo)</source>
+        <translation>位置偏差（DP-EPo）</translation>
+    </message>
+    <message>
+        <source>Position error, low register (DP-EPo)</source>
+        <translation>位置偏差，低位寄存器（DP-EPo）</translation>
+    </message>
+    <message>
+        <source>Position error, high register (DP-EPo.)</source>
+        <translation>位置偏差，高位寄存器（DP-EPo.）</translation>
+    </message>
+    <message>
+        <source>Torque (DP-trq)</source>
+        <translation>转矩（DP-trq）</translation>
+    </message>
+    <message>
+        <source>Current (DP-I)</source>
+        <translation>电流（DP-I）</translation>
+    </message>
+    <message>
+        <source>Pulse frequency (DP-Frq)</source>
+        <translation>脉冲频率（DP-Frq）</translation>
+    </message>
+    <message>
+        <source>Speed command (DP-CS)</source>
+        <translation>速度指令（DP-CS）</translation>
+    </message>
+    <message>
+        <source>Torque command (DP-Ct)</source>
+        <translation>转矩指令（DP-Ct）</translation>
+    </message>
+    <message>
+        <source>Rotor absolute position (DP-APo)</source>
+        <translation>转子绝对位置（DP-APo）</translation>
+    </message>
+    <message>
+        <source>Input terminals (DP-In)</source>
+        <translation>输入端子（DP-In）</translation>
+    </message>
+    <message>
+        <source>Output terminals (DP-oUt)</source>
+        <translation>输出端子（DP-oUt）</translation>
+    </message>
+    <message>
+        <source>Encoder signals (DP-Cod)</source>
+        <translation>编码器信号（DP-Cod）</translation>
+    </message>
+    <message>
+        <source>Alarm (DP-Err)</source>
+        <translation>报警（DP-Err）</translation>
+    </message>
+    <message>
+        <source>Phase A current (DP-IA)</source>
+        <translation>A 相电流（DP-IA）</translation>
+    </message>
+    <message>
+        <source>Phase C current (DP-IC)</source>
+        <translation>C 相电流（DP-IC）</translation>
+    </message>
+    <message>
+        <source>Invalid value &quot;%1&quot; for %2 (allowed: %3).</source>
+        <translation>%2 的值“%1”无效（允许：%3）。</translation>
+    </message>
+    <message>
+        <source>The servo-modbus protocol has no command to clear an alarm. Remove the cause, then reset the alarm at the drive (its panel, an alarm-reset input or a power cycle) and read the alarm again.</source>
+        <translation>servo-modbus 协议没有清除报警的命令。请先排除故障原因，再在驱动器上复位报警（操作面板、报警复位输入或重新上电），然后重新读取报警。</translation>
+    </message>
+    <message>
+        <source>The servo-modbus protocol reads and writes parameters and monitor values only; it has no motion, enable or stop commands. The axis runs from the drive&apos;s own control inputs (pulses, analog command, I/O).</source>
+        <translation>servo-modbus 协议只能读写参数和监控值，没有运动、使能或停止命令。轴由驱动器自身的控制输入（脉冲、模拟量指令、I/O）控制运行。</translation>
+    </message>
+    <message>
+        <source>The serial port is not open.</source>
+        <translation>串口未打开。</translation>
+    </message>
+    <message>
+        <source>Address %1 cannot answer: servo drives use 1..247 (0 is broadcast).</source>
+        <translation>地址 %1 无法应答：伺服驱动器地址为 1..247（0 为广播）。</translation>
+    </message>
+    <message>
+        <source>PA%1 does not exist: this drive has PA0..PA59.</source>
+        <translation>PA%1 不存在：该驱动器的参数为 PA0..PA59。</translation>
+    </message>
+    <message>
+        <source>Unknown channel &quot;%1&quot;. This drive offers: %2.</source>
+        <translation>未知通道“%1”。该驱动器提供：%2。</translation>
+    </message>
+    <message>
+        <source>PA%1 does not exist: this drive has PA0..PA59. Nothing was written.</source>
+        <translation>PA%1 不存在：该驱动器的参数为 PA0..PA59。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>PA%1 is given twice. Nothing was written.</source>
+        <translation>PA%1 重复给出。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>PA2 is the firmware version and cannot be written. Nothing was written.</source>
+        <translation>PA2 为固件版本，不能写入。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>%1 does not fit the 16-bit register of PA%2 (-32768..32767, or 0..65535 unsigned). Nothing was written.</source>
+        <translation>%1 超出 PA%2 的 16 位寄存器范围（-32768..32767，无符号为 0..65535）。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>Nothing was written.</source>
+        <translation>未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>Wrote %1, the drive reports %2.</source>
+        <translation>写入 %1，驱动器报告 %2。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) read back with another value than written (first: PA%1: %2). The drive may limit the value, or the parameter may be read-only.</source>
+        <translation>
+            <numerusform>%n 个参数的回读值与写入值不同（第一个：PA%1：%2）。驱动器可能限制了该值，或该参数为只读。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unknown EE operation.</source>
+        <translation>未知的 EE 操作。</translation>
+    </message>
+    <message>
+        <source>The firmware version (PA2) could not be read, so the EE command format is unknown: %1 Choose the format by hand (option servo-modbus.eeFormat = legacy or new).</source>
+        <translation>无法读取固件版本（PA2），因此 EE 命令格式未知：%1 请手动选择格式（选项 servo-modbus.eeFormat = legacy 或 new）。</translation>
+    </message>
+    <message>
+        <source>The drive answered %1 with %2 instead of 0 (running) or %3 (done): the operation failed or another one is running.</source>
+        <translation>驱动器对 %1 的应答为 %2，而不是 0（执行中）或 %3（完成）：操作失败或另一操作正在执行。</translation>
+    </message>
+    <message>
+        <source>%1 did not finish within %2 s: the drive still reports it running after %3 polls. Do not switch the drive off; read its parameters again to see what was stored.</source>
+        <translation>%1 在 %2 秒内未完成：查询 %3 次后驱动器仍报告执行中。请勿关闭驱动器电源；重新读取参数以确认保存的内容。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ServoModbusScanner</name>
+    <message>
+        <source>The serial port is not open.</source>
+        <translation>串口未打开。</translation>
+    </message>
+    <message>
+        <source>Cannot switch the port to %1 baud: the link is busy or closed. Stop other operations on this port before scanning.</source>
+        <translation>无法将端口切换到 %1 波特：连接忙或已关闭。扫描前请停止该端口上的其他操作。</translation>
+    </message>
+    <message>
+        <source>The scan was cancelled.</source>
+        <translation>扫描已取消。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeCanTransport</name>
+    <message>
+        <source>&quot;%1&quot; is not a CAN interface: write plugin:interface, e.g. socketcan:can0 or virtualcan:can0.</source>
+        <translation>“%1”不是 CAN 接口：请按“插件:接口”填写，例如 socketcan:can0 或 virtualcan:can0。</translation>
+    </message>
+    <message>
+        <source>%1, %2 kbit/s, Shuoke CAN</source>
+        <translation>%1，%2 kbit/s，硕科 CAN</translation>
+    </message>
+    <message>
+        <source>A command with %1 data bytes does not fit a CAN frame (at most %2).</source>
+        <translation>含 %1 个数据字节的指令放不进一个 CAN 帧（最多 %2 个）。</translation>
+    </message>
+    <message>
+        <source>The command cannot be encoded: %1</source>
+        <translation>无法编码该指令：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeDiscovery</name>
+    <message>
+        <source>The link is not open.</source>
+        <translation>连接未打开。</translation>
+    </message>
+    <message>
+        <source>The scan was cancelled.</source>
+        <translation>扫描已取消。</translation>
+    </message>
+    <message>
+        <source>answers</source>
+        <translation>有应答</translation>
+    </message>
+    <message>
+        <source>The query-address broadcast could not be sent.</source>
+        <translation>无法发送查询地址广播。</translation>
+    </message>
+    <message>
+        <source>The link could not switch to %1 baud (it is busy).</source>
+        <translation>连接无法切换到 %1 波特（连接忙）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeDrive</name>
+    <message>
+        <source>Shuoke drives have no enable command: the drive is enabled by its ENA input (shown as &quot;enable input&quot; in the status).</source>
+        <translation>硕科驱动器没有使能命令：驱动器由 ENA 输入使能（在状态中显示为“使能输入”）。</translation>
+    </message>
+    <message>
+        <source>Shuoke drives keep no alarm to clear: a refused command reports its failure code in the reply, and a limit switch clears when the axis leaves it.</source>
+        <translation>硕科驱动器没有需要清除的报警：被拒绝的指令会在应答中返回故障代码，限位开关在轴离开后自动解除。</translation>
+    </message>
+    <message>
+        <source>Shuoke drives store their settings themselves; there is no EEPROM command.</source>
+        <translation>硕科驱动器会自行保存设置，没有 EEPROM 命令。</translation>
+    </message>
+    <message>
+        <source>The %1 has no homing command (0x3E is for the M6505 and M4505S).</source>
+        <translation>%1 没有回原点命令（0x3E 仅适用于 M6505 和 M4505S）。</translation>
+    </message>
+    <message>
+        <source>0x%1 is not a Shuoke command.</source>
+        <translation>0x%1 不是硕科指令。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; (command 0x%2) is not available on the %3.</source>
+        <translation>%3 不支持“%1”（指令 0x%2）。</translation>
+    </message>
+    <message>
+        <source>The drive has no link.</source>
+        <translation>驱动器没有通讯连接。</translation>
+    </message>
+    <message>
+        <source>Not sent to the drive at address %1: %2.</source>
+        <translation>未发送到地址 %1 的驱动器：%2。</translation>
+    </message>
+    <message>
+        <source>A relative move of %1 pulses is beyond the drive&apos;s 31-bit range.</source>
+        <translation>相对运动 %1 个脉冲超出驱动器 31 位的范围。</translation>
+    </message>
+    <message>
+        <source>The target %1 is beyond the drive&apos;s 31-bit range.</source>
+        <translation>目标位置 %1 超出驱动器 31 位的范围。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s position reply has %1 bytes.</source>
+        <translation>驱动器的位置应答有 %1 个字节。</translation>
+    </message>
+    <message>
+        <source>The move from %1 to %2 is beyond the drive&apos;s range.</source>
+        <translation>从 %1 到 %2 的运动超出驱动器的范围。</translation>
+    </message>
+    <message>
+        <source>This drive can only clear its position counter (set it to 0); only the M6505 sets its closed-loop position to a value.</source>
+        <translation>该驱动器只能将位置计数清零（设为 0）；只有 M6505 可以将闭环位置设为指定值。</translation>
+    </message>
+    <message>
+        <source>The position %1 is beyond the drive&apos;s range.</source>
+        <translation>位置 %1 超出驱动器的范围。</translation>
+    </message>
+    <message>
+        <source>A drive address is 1..247, not %1.</source>
+        <translation>驱动器地址为 1..247，不能是 %1。</translation>
+    </message>
+    <message>
+        <source>%1 is not a Shuoke address.</source>
+        <translation>%1 不是硕科驱动器地址。</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Absolute position</source>
+        <translation>绝对位置</translation>
+    </message>
+    <message>
+        <source>Relative position</source>
+        <translation>相对位置</translation>
+    </message>
+    <message>
+        <source>Status bits (running, left limit, origin, right limit, enable)</source>
+        <translation>状态位（运行、左限位、原点、右限位、使能）</translation>
+    </message>
+    <message>
+        <source>Inputs IO1..IO5</source>
+        <translation>输入 IO1..IO5</translation>
+    </message>
+    <message>
+        <source>Inputs pulse, direction, enable, F1, F2</source>
+        <translation>输入：脉冲、方向、使能、F1、F2</translation>
+    </message>
+    <message>
+        <source>Closed-loop absolute position</source>
+        <translation>闭环绝对位置</translation>
+    </message>
+    <message>
+        <source>Closed-loop relative position</source>
+        <translation>闭环相对位置</translation>
+    </message>
+    <message>
+        <source>Position error (commanded - feedback)</source>
+        <translation>位置偏差（指令 - 反馈）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a Shuoke channel.</source>
+        <translation>“%1”不是硕科驱动器的通道。</translation>
+    </message>
+    <message>
+        <source>The drive answered %1 data bytes for parameter %2 (%3 expected).</source>
+        <translation>驱动器对参数 %2 应答了 %1 个数据字节（应为 %3 个）。</translation>
+    </message>
+    <message>
+        <source>%1 is not a Shuoke parameter (the index is the SET command code).</source>
+        <translation>%1 不是硕科参数（序号为设置指令的代码）。</translation>
+    </message>
+    <message>
+        <source>%1 must be %2..%3; %4 was not sent.</source>
+        <translation>%1 必须在 %2..%3 之间；%4 未发送。</translation>
+    </message>
+    <message>
+        <source>Not readable: the drive cannot report this setting; %1 is kept as the last value written.</source>
+        <translation>不可读：驱动器无法报告该设置；保留最后写入的值 %1。</translation>
+    </message>
+    <message>
+        <source>Written, but reading it back failed: %1</source>
+        <translation>已写入，但回读失败：%1</translation>
+    </message>
+    <message>
+        <source>The drive reports %1 after %2 was written.</source>
+        <translation>写入 %2 后，驱动器报告的值为 %1。</translation>
+    </message>
+    <message>
+        <source>Parameter %1: %2</source>
+        <translation>参数 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeOptions</name>
+    <message>
+        <source>The %1 framing needs a serial port, not a CAN interface.</source>
+        <translation>%1 帧格式需要串口，而不是 CAN 接口。</translation>
+    </message>
+    <message>
+        <source>The can framing needs a CAN interface (plugin:interface), not a serial port.</source>
+        <translation>can 帧格式需要 CAN 接口（插件:接口），而不是串口。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokePlcTransport</name>
+    <message>
+        <source>%1 @ %2 baud, Shuoke PLC mode (Modbus registers from 0x%3)</source>
+        <translation>%1 @ %2 波特，硕科 PLC 模式（Modbus 寄存器起始 0x%3）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has no register in PLC mode; use the RTU framing for it.</source>
+        <translation>“%1”在 PLC 模式下没有寄存器，请使用 RTU 帧格式。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; maps to a read of 0 registers in PLC mode, which Modbus cannot send; use the RTU framing for it.</source>
+        <translation>“%1”在 PLC 模式下对应读取 0 个寄存器，Modbus 无法发送，请使用 RTU 帧格式。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be sent in PLC mode: %2</source>
+        <translation>“%1”无法在 PLC 模式下发送：%2</translation>
+    </message>
+    <message>
+        <source>The command cannot be encoded: %1</source>
+        <translation>无法编码该指令：%1</translation>
+    </message>
+    <message>
+        <source>%1 (PLC mode: Modbus exception %2)</source>
+        <translation>%1（PLC 模式：Modbus 异常 %2）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeSerialTransport</name>
+    <message>
+        <source>%1 @ %2 baud, Shuoke %3</source>
+        <translation>%1 @ %2 波特，硕科 %3</translation>
+    </message>
+    <message>
+        <source>The command cannot be encoded: %1</source>
+        <translation>无法编码该指令：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShuokeTransport</name>
+    <message>
+        <source>&quot;%1&quot; is accepted over RS232/RS485 only, not over CAN.</source>
+        <translation>“%1”只能通过 RS232/RS485 发送，不能通过 CAN。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is accepted over CAN only.</source>
+        <translation>“%1”只能通过 CAN 发送。</translation>
+    </message>
+    <message>
+        <source>The drive at address %1 refused &quot;%2&quot; (command 0x%3): %4 (failure code 0x%5).</source>
+        <translation>地址 %1 的驱动器拒绝了“%2”（指令 0x%3）：%4（故障代码 0x%5）。</translation>
+    </message>
+    <message>
+        <source>The link is not open.</source>
+        <translation>连接未打开。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s reply could not be read: %1</source>
+        <translation>无法读取驱动器的应答：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StatusBarWidget</name>
+    <message>
+        <source>Not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>Link lost: %1</source>
+        <translation>连接中断：%1</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>已连接：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n link(s) open</source>
+        <translation>
+            <numerusform>已打开 %n 个连接</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 frames/s</source>
+        <translation>%1 帧/秒</translation>
+    </message>
+    <message>
+        <source>Errors: %1</source>
+        <translation>错误：%1</translation>
+    </message>
+    <message>
+        <source>Retries: %1</source>
+        <translation>重试：%1</translation>
+    </message>
+    <message>
+        <source>Reset error and retry counts</source>
+        <translation>错误和重试计数清零</translation>
+    </message>
+    <message>
+        <source>Frames sent and received per second, all links</source>
+        <translation>所有连接每秒收发的帧数</translation>
+    </message>
+    <message>
+        <source>Discarded frames (bad checksum, garbage, late replies), lost links and failed operations. Right-click to reset.</source>
+        <translation>丢弃的帧（校验错误、乱码、迟到的应答）、连接中断和失败的操作。右键单击可清零。</translation>
+    </message>
+    <message>
+        <source>Requests sent again after a timeout or a corrupt reply</source>
+        <translation>因超时或应答错误而重发的请求</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StopAction</name>
+    <message>
+        <source>STOP</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Stop all drives on all connections (%1)</source>
+        <translation>停止所有连接上的全部驱动器（%1）</translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+</context>
+<context>
+    <name>dd::TrendChannelPanel</name>
+    <message>
+        <source>Scale ×</source>
+        <translation>比例 ×</translation>
+    </message>
+    <message>
+        <source>Offset +</source>
+        <translation>偏移 +</translation>
+    </message>
+    <message>
+        <source>The plot shows value × scale + offset; readouts and exports show the real value.</source>
+        <translation>曲线显示“数值 × 比例 + 偏移”；读数和导出为实际值。</translation>
+    </message>
+    <message>
+        <source>Show %1 in the plot</source>
+        <translation>在曲线中显示 %1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TrendControls</name>
+    <message>
+        <source>Resume</source>
+        <translation>继续</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Freeze the plot; recording continues in the background</source>
+        <translation>冻结曲线显示，后台继续记录</translation>
+    </message>
+    <message>
+        <source>Reset zoom</source>
+        <translation>复位缩放</translation>
+    </message>
+    <message>
+        <source>Show the selected time window again</source>
+        <translation>重新显示所选时间窗口</translation>
+    </message>
+    <message>
+        <source>&amp;Window:</source>
+        <translation>时间窗口(&amp;W)：</translation>
+    </message>
+    <message>
+        <source>10 s</source>
+        <translation>10 秒</translation>
+    </message>
+    <message>
+        <source>30 s</source>
+        <translation>30 秒</translation>
+    </message>
+    <message>
+        <source>1 min</source>
+        <translation>1 分钟</translation>
+    </message>
+    <message>
+        <source>2 min</source>
+        <translation>2 分钟</translation>
+    </message>
+    <message>
+        <source>5 min</source>
+        <translation>5 分钟</translation>
+    </message>
+    <message>
+        <source>10 min</source>
+        <translation>10 分钟</translation>
+    </message>
+    <message>
+        <source>Sample &amp;rate:</source>
+        <translation>采样频率(&amp;R)：</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>How often the drive is read</source>
+        <translation>读取驱动器的频率</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>导出 CSV</translation>
+    </message>
+    <message>
+        <source>Save the checked channels&apos; real values as CSV</source>
+        <translation>将勾选通道的实际值保存为 CSV</translation>
+    </message>
+    <message>
+        <source>Whole recording…</source>
+        <translation>全部记录…</translation>
+    </message>
+    <message>
+        <source>Visible window…</source>
+        <translation>当前窗口…</translation>
+    </message>
+    <message>
+        <source>Export PNG…</source>
+        <translation>导出 PNG…</translation>
+    </message>
+    <message>
+        <source>Save the plot as an image</source>
+        <translation>将曲线保存为图片</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TrendPanel</name>
+    <message>
+        <source>Trend</source>
+        <translation>趋势</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s identity…</source>
+        <translation>正在读取驱动器信息…</translation>
+    </message>
+    <message>
+        <source>This drive offers no live values: %1</source>
+        <translation>该驱动器不提供实时数值：%1</translation>
+    </message>
+    <message>
+        <source>This drive reports no live channels.</source>
+        <translation>该驱动器没有报告实时通道。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TrendView</name>
+    <message>
+        <source>Drag to zoom, right click to zoom out</source>
+        <translation>拖动可放大，右键单击可缩小</translation>
+    </message>
+    <message>
+        <source>Time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <source>Scaled value</source>
+        <translation>缩放后的数值</translation>
+    </message>
+    <message>
+        <source>Point at the plot to read values.</source>
+        <translation>将鼠标指向曲线可读取数值。</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3</source>
+        <translation>%1：%2 %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln sample(s) recorded</source>
+        <translation>
+            <numerusform>已记录 %Ln 个采样点</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>recording limit reached: oldest samples dropped</source>
+        <translation>已达记录上限：最早的采样点已丢弃</translation>
+    </message>
+    <message>
+        <source>view paused, still recording</source>
+        <translation>显示已暂停，仍在记录</translation>
+    </message>
+    <message>
+        <source>Cannot save the plot image %1: %2. Check that the folder exists and is writable.</source>
+        <translation>无法保存曲线图片 %1：%2。请检查文件夹是否存在且可写。</translation>
+    </message>
+    <message>
+        <source>Export trend as CSV</source>
+        <translation>将趋势导出为 CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>导出 CSV</translation>
+    </message>
+    <message>
+        <source>Export plot as PNG</source>
+        <translation>将曲线导出为 PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 图片 (*.png)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>导出 PNG</translation>
+    </message>
+</context>
+<context>
+    <name>dd::servocan</name>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>r/min</source>
+        <translation>r/min</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>pulses</source>
+        <translation>脉冲</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>Position command</source>
+        <translation>位置指令</translation>
+    </message>
+    <message>
+        <source>Position error</source>
+        <translation>位置偏差</translation>
+    </message>
+    <message>
+        <source>Torque</source>
+        <translation>转矩</translation>
+    </message>
+    <message>
+        <source>Output current</source>
+        <translation>输出电流</translation>
+    </message>
+    <message>
+        <source>Speed command</source>
+        <translation>速度指令</translation>
+    </message>
+    <message>
+        <source>Torque command</source>
+        <translation>转矩指令</translation>
+    </message>
+    <message>
+        <source>Rotor position</source>
+        <translation>转子位置</translation>
+    </message>
+    <message>
+        <source>Input IO</source>
+        <translation>输入 IO</translation>
+    </message>
+    <message>
+        <source>Output IO</source>
+        <translation>输出 IO</translation>
+    </message>
+    <message>
+        <source>Alarm code</source>
+        <translation>报警代码</translation>
+    </message>
+    <message>
+        <source>Bus voltage</source>
+        <translation>母线电压</translation>
+    </message>
+</context>
+<context>
+    <name>dd::servomodbus</name>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Position, low part</source>
+        <translation>位置（低位）</translation>
+    </message>
+    <message>
+        <source>Position, high part</source>
+        <translation>位置（高位）</translation>
+    </message>
+    <message>
+        <source>Command position, low part</source>
+        <translation>指令位置（低位）</translation>
+    </message>
+    <message>
+        <source>Command position, high part</source>
+        <translation>指令位置（高位）</translation>
+    </message>
+    <message>
+        <source>Position error, low part</source>
+        <translation>位置偏差（低位）</translation>
+    </message>
+    <message>
+        <source>Position error, high part</source>
+        <translation>位置偏差（高位）</translation>
+    </message>
+    <message>
+        <source>Torque</source>
+        <translation>转矩</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>电流</translation>
+    </message>
+    <message>
+        <source>Pulse frequency</source>
+        <translation>脉冲频率</translation>
+    </message>
+    <message>
+        <source>Speed command</source>
+        <translation>速度指令</translation>
+    </message>
+    <message>
+        <source>Torque command</source>
+        <translation>转矩指令</translation>
+    </message>
+    <message>
+        <source>Rotor absolute position</source>
+        <translation>转子绝对位置</translation>
+    </message>
+    <message>
+        <source>Input terminals</source>
+        <translation>输入端子</translation>
+    </message>
+    <message>
+        <source>Output terminals</source>
+        <translation>输出端子</translation>
+    </message>
+    <message>
+        <source>Encoder signals</source>
+        <translation>编码器信号</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>报警</translation>
+    </message>
+    <message>
+        <source>Phase A current</source>
+        <translation>A 相电流</translation>
+    </message>
+    <message>
+        <source>Phase C current</source>
+        <translation>C 相电流</translation>
+    </message>
+    <message>
+        <source>Reserved</source>
+        <translation>保留</translation>
+    </message>
+    <message>
+        <source>Store parameters to EEPROM</source>
+        <translation>参数写入 EEPROM</translation>
+    </message>
+    <message>
+        <source>Reload parameters from EEPROM</source>
+        <translation>从 EEPROM 重新读取参数</translation>
+    </message>
+    <message>
+        <source>Back up parameters</source>
+        <translation>备份参数</translation>
+    </message>
+    <message>
+        <source>Restore the parameter backup</source>
+        <translation>恢复参数备份</translation>
+    </message>
+    <message>
+        <source>Restore factory defaults</source>
+        <translation>恢复出厂设置</translation>
+    </message>
+</context>
+<context>
+    <name>dd::shuoke</name>
+    <message>
+        <source>Handshake</source>
+        <translation>握手</translation>
+    </message>
+    <message>
+        <source>Query address</source>
+        <translation>查询地址</translation>
+    </message>
+    <message>
+        <source>Change address</source>
+        <translation>更改地址</translation>
+    </message>
+    <message>
+        <source>Get baud code</source>
+        <translation>读取波特率代号</translation>
+    </message>
+    <message>
+        <source>Set baud code</source>
+        <translation>设置波特率代号</translation>
+    </message>
+    <message>
+        <source>Set start speed</source>
+        <translation>设置起始速度</translation>
+    </message>
+    <message>
+        <source>Get start speed</source>
+        <translation>读取起始速度</translation>
+    </message>
+    <message>
+        <source>Set maximum speed</source>
+        <translation>设置最大速度</translation>
+    </message>
+    <message>
+        <source>Get maximum speed</source>
+        <translation>读取最大速度</translation>
+    </message>
+    <message>
+        <source>Set stop speed</source>
+        <translation>设置停止速度</translation>
+    </message>
+    <message>
+        <source>Get stop speed</source>
+        <translation>读取停止速度</translation>
+    </message>
+    <message>
+        <source>Set acceleration</source>
+        <translation>设置加速度</translation>
+    </message>
+    <message>
+        <source>Get acceleration</source>
+        <translation>读取加速度</translation>
+    </message>
+    <message>
+        <source>Set deceleration</source>
+        <translation>设置减速度</translation>
+    </message>
+    <message>
+        <source>Get deceleration</source>
+        <translation>读取减速度</translation>
+    </message>
+    <message>
+        <source>Set homing speed</source>
+        <translation>设置回零速度</translation>
+    </message>
+    <message>
+        <source>Get homing speed</source>
+        <translation>读取回零速度</translation>
+    </message>
+    <message>
+        <source>Move relative (signed pulses)</source>
+        <translation>相对运动（带符号脉冲数）</translation>
+    </message>
+    <message>
+        <source>Move relative (direction + 24-bit pulses)</source>
+        <translation>相对运动（方向 + 24 位脉冲数）</translation>
+    </message>
+    <message>
+        <source>Run at constant speed (signed)</source>
+        <translation>恒速运行（带符号）</translation>
+    </message>
+    <message>
+        <source>Run at constant speed (direction + 24-bit)</source>
+        <translation>恒速运行（方向 + 24 位）</translation>
+    </message>
+    <message>
+        <source>Change speed while running</source>
+        <translation>运行中变速</translation>
+    </message>
+    <message>
+        <source>Query speed</source>
+        <translation>查询速度</translation>
+    </message>
+    <message>
+        <source>Query absolute position</source>
+        <translation>查询绝对位置</translation>
+    </message>
+    <message>
+        <source>Clear absolute position</source>
+        <translation>绝对位置清零</translation>
+    </message>
+    <message>
+        <source>Query relative position</source>
+        <translation>查询相对位置</translation>
+    </message>
+    <message>
+        <source>Clear relative position</source>
+        <translation>相对位置清零</translation>
+    </message>
+    <message>
+        <source>Query status</source>
+        <translation>查询状态</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>Decelerate to stop</source>
+        <translation>减速停止</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>回原点</translation>
+    </message>
+    <message>
+        <source>Set PLC mapping base</source>
+        <translation>设置 PLC 映射地址</translation>
+    </message>
+    <message>
+        <source>Set IO substitution entry</source>
+        <translation>设置 IO 替换项</translation>
+    </message>
+    <message>
+        <source>Read IO substitution entry</source>
+        <translation>读取 IO 替换项</translation>
+    </message>
+    <message>
+        <source>Read inputs IO1..IO5</source>
+        <translation>读取输入 IO1..IO5</translation>
+    </message>
+    <message>
+        <source>Read pulse, direction, enable, F1, F2 inputs</source>
+        <translation>读取脉冲、方向、使能、F1、F2 输入</translation>
+    </message>
+    <message>
+        <source>Set speed step F</source>
+        <translation>设置调速步长 F</translation>
+    </message>
+    <message>
+        <source>Increase speed by F</source>
+        <translation>速度增加 F</translation>
+    </message>
+    <message>
+        <source>Decrease speed by F</source>
+        <translation>速度减少 F</translation>
+    </message>
+    <message>
+        <source>Factory reset</source>
+        <translation>恢复出厂设置</translation>
+    </message>
+    <message>
+        <source>Skip CRC check of received commands</source>
+        <translation>接收指令时不校验 CRC</translation>
+    </message>
+    <message>
+        <source>Fixed-length replies</source>
+        <translation>定长应答</translation>
+    </message>
+    <message>
+        <source>CAN frame format</source>
+        <translation>CAN 帧格式</translation>
+    </message>
+    <message>
+        <source>CAN bitrate code</source>
+        <translation>CAN 波特率代号</translation>
+    </message>
+    <message>
+        <source>Serial to CAN test echo</source>
+        <translation>串口转 CAN 测试回显</translation>
+    </message>
+    <message>
+        <source>CAN to serial test echo</source>
+        <translation>CAN 转串口测试回显</translation>
+    </message>
+    <message>
+        <source>Home (variant 2) / S-curve move (signed pulses)</source>
+        <translation>回原点（方式 2）/ S 曲线运动（带符号脉冲数）</translation>
+    </message>
+    <message>
+        <source>Home (variant 3) / S-curve move (direction + 24-bit)</source>
+        <translation>回原点（方式 3）/ S 曲线运动（方向 + 24 位）</translation>
+    </message>
+    <message>
+        <source>Closed loop: move by feedback pulses</source>
+        <translation>闭环：按反馈脉冲数运动</translation>
+    </message>
+    <message>
+        <source>Closed loop: move by geared pulses</source>
+        <translation>闭环：按电子齿轮换算脉冲数运动</translation>
+    </message>
+    <message>
+        <source>Closed loop: move to absolute position</source>
+        <translation>闭环：运动到绝对位置</translation>
+    </message>
+    <message>
+        <source>Closed loop: read absolute position</source>
+        <translation>闭环：读取绝对位置</translation>
+    </message>
+    <message>
+        <source>Closed loop: set or clear absolute position</source>
+        <translation>闭环：设置或清零绝对位置</translation>
+    </message>
+    <message>
+        <source>Closed loop: read relative position</source>
+        <translation>闭环：读取相对位置</translation>
+    </message>
+    <message>
+        <source>Closed loop: set or clear relative position</source>
+        <translation>闭环：设置或清零相对位置</translation>
+    </message>
+    <message>
+        <source>Encoder direction</source>
+        <translation>编码器方向</translation>
+    </message>
+    <message>
+        <source>Motion direction</source>
+        <translation>运动方向</translation>
+    </message>
+    <message>
+        <source>Accumulated-error correction</source>
+        <translation>累计误差修正</translation>
+    </message>
+    <message>
+        <source>Set gear numerator</source>
+        <translation>设置电子齿轮分子</translation>
+    </message>
+    <message>
+        <source>Get gear numerator</source>
+        <translation>读取电子齿轮分子</translation>
+    </message>
+    <message>
+        <source>Set gear denominator</source>
+        <translation>设置电子齿轮分母</translation>
+    </message>
+    <message>
+        <source>Get gear denominator</source>
+        <translation>读取电子齿轮分母</translation>
+    </message>
+    <message>
+        <source>Encoder A/B error tolerance</source>
+        <translation>编码器 A/B 误差容限</translation>
+    </message>
+    <message>
+        <source>Maximum pulses without encoder signal</source>
+        <translation>无编码器信号时最大动作脉冲数</translation>
+    </message>
+    <message>
+        <source>Receive timeout or wrong data length</source>
+        <translation>接收超时或数据长度错误</translation>
+    </message>
+    <message>
+        <source>Checksum error</source>
+        <translation>校验错误</translation>
+    </message>
+    <message>
+        <source>Unknown command</source>
+        <translation>未知指令</translation>
+    </message>
+    <message>
+        <source>Value out of range</source>
+        <translation>数值超出范围</translation>
+    </message>
+    <message>
+        <source>Command does not support broadcast</source>
+        <translation>该指令不支持广播</translation>
+    </message>
+</context>
+</TS>

@@ -3210,4 +3210,683 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>该指令不支持广播</translation>
     </message>
 </context>
+<context>
+    <name>dd::BackupDiffTable</name>
+    <message>
+        <source>same</source>
+        <translation>相同</translation>
+    </message>
+    <message>
+        <source>different</source>
+        <translation>不同</translation>
+    </message>
+    <message>
+        <source>only in the file (not read from the drive)</source>
+        <translation>仅在文件中（未从驱动器读到）</translation>
+    </message>
+    <message>
+        <source>not in the file</source>
+        <translation>文件中没有</translation>
+    </message>
+    <message>
+        <source>write-only: the drive cannot report its value</source>
+        <translation>只写：驱动器无法报告其数值</translation>
+    </message>
+    <message>
+        <source>Read-only: a restore cannot change it.</source>
+        <translation>只读：恢复时无法修改。</translation>
+    </message>
+    <message>
+        <source>Changes how the drive communicates (address, baud rate): tick it to restore it too; then connect again with the new settings.</source>
+        <translation>会改变驱动器的通讯方式（地址、波特率）：勾选后才会一并恢复；恢复后请用新设置重新连接。</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>不可读取</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>In the file</source>
+        <translation>文件中的值</translation>
+    </message>
+    <message>
+        <source>On the drive</source>
+        <translation>驱动器中的值</translation>
+    </message>
+    <message>
+        <source>Difference</source>
+        <translation>差异</translation>
+    </message>
+</context>
+<context>
+    <name>dd::BackupPanel</name>
+    <message>
+        <source>Backup</source>
+        <translation>备份</translation>
+    </message>
+    <message>
+        <source>Save backup</source>
+        <translation>保存备份</translation>
+    </message>
+    <message>
+        <source>DriveDesk backups (*.json)</source>
+        <translation>DriveDesk 备份文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s parameters…</source>
+        <translation>正在读取驱动器参数…</translation>
+    </message>
+    <message>
+        <source>No backup was saved:</source>
+        <translation>未保存备份：</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n parameter(s) to %1.</source>
+        <translation>
+            <numerusform>已将 %n 个参数保存到 %1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open backup</source>
+        <translation>打开备份</translation>
+    </message>
+    <message>
+        <source>DriveDesk backups (*.json);;All files (*)</source>
+        <translation>DriveDesk 备份文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>This file cannot be used, nothing was sent to the drive:</source>
+        <translation>此文件无法使用，未向驱动器发送任何数据：</translation>
+    </message>
+    <message>
+        <source>Reading the drive to compare it with the file…</source>
+        <translation>正在读取驱动器，与文件比较…</translation>
+    </message>
+    <message>
+        <source>The drive could not be compared with the file:</source>
+        <translation>无法将驱动器与文件比较：</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n different</source>
+        <translation>
+            <numerusform>%n 个不同</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n write-only (cannot be compared)</source>
+        <translation>
+            <numerusform>%n 个只写（无法比较）</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n not read from the drive</source>
+        <translation>
+            <numerusform>%n 个未从驱动器读到</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n the same</source>
+        <translation>
+            <numerusform>%n 个相同</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Compared with the drive: %1.</source>
+        <translation>与驱动器比较结果：%1。</translation>
+    </message>
+    <message>
+        <source>Tick the parameters to restore first.</source>
+        <translation>请先勾选要恢复的参数。</translation>
+    </message>
+    <message>
+        <source>Restore cancelled: nothing was sent to the drive.</source>
+        <translation>已取消恢复：未向驱动器发送任何数据。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Restoring %n parameter(s)…</source>
+        <translation>
+            <numerusform>正在恢复 %n 个参数…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Another firmware</source>
+        <translation>固件版本不同</translation>
+    </message>
+    <message>
+        <source>Restore the ticked parameters anyway?</source>
+        <translation>仍要恢复所勾选的参数吗？</translation>
+    </message>
+    <message>
+        <source>Change communication settings?</source>
+        <translation>更改通讯设置？</translation>
+    </message>
+    <message>
+        <source>%1 changes how the drive communicates (address, baud rate or framing). After the restore DriveDesk may no longer reach the drive with the current connection settings: connect again with the new ones.
+
+Restore anyway?</source>
+        <translation>%1 会改变驱动器的通讯方式（地址、波特率或帧格式）。恢复后 DriveDesk 可能无法再用当前连接设置访问驱动器，请用新设置重新连接。
+
+仍要恢复吗？</translation>
+    </message>
+    <message>
+        <source>Nothing was restored:</source>
+        <translation>未恢复任何参数：</translation>
+    </message>
+    <message>
+        <source>Write the ticked values from the file; the drive reads each back</source>
+        <translation>写入文件中勾选的数值；驱动器逐个回读校验</translation>
+    </message>
+    <message>
+        <source>%1 of %2 ticked</source>
+        <translation>已勾选 %1 / %2</translation>
+    </message>
+    <message>
+        <source>No file open.</source>
+        <translation>未打开文件。</translation>
+    </message>
+    <message>
+        <source>%1 — cannot be used: %2</source>
+        <translation>%1 — 无法使用：%2</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 — %2 drive at address %3, firmware %4, %n value(s), saved %5</source>
+        <translation>
+            <numerusform>%1 — %2 驱动器，地址 %3，固件 %4，%n 个数值，保存于 %5</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drive has firmware %1: a restore asks for confirmation.</source>
+        <translation>驱动器固件为 %1：恢复前会要求确认。</translation>
+    </message>
+    <message>
+        <source>Back up</source>
+        <translation>备份</translation>
+    </message>
+    <message>
+        <source>Read every parameter of the drive and save them to a file, to compare or restore them later — to this drive or to its replacement.</source>
+        <translation>读取驱动器的全部参数并保存到文件，以便日后比较或恢复——恢复到本驱动器或替换它的新驱动器。</translation>
+    </message>
+    <message>
+        <source>Save backup…</source>
+        <translation>保存备份…</translation>
+    </message>
+    <message>
+        <source>Compare and restore</source>
+        <translation>比较与恢复</translation>
+    </message>
+    <message>
+        <source>Open backup…</source>
+        <translation>打开备份…</translation>
+    </message>
+    <message>
+        <source>Show identical parameters</source>
+        <translation>显示相同的参数</translation>
+    </message>
+    <message>
+        <source>Tick all</source>
+        <translation>全部勾选</translation>
+    </message>
+    <message>
+        <source>Tick none</source>
+        <translation>全部取消</translation>
+    </message>
+    <message>
+        <source>Apply selected</source>
+        <translation>应用所选</translation>
+    </message>
+    <message>
+        <source>Wait until the drive has answered, then open %1 again.</source>
+        <translation>请等待驱动器应答后，再打开 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::EePanel</name>
+    <message>
+        <source>EEPROM</source>
+        <translation>EEPROM</translation>
+    </message>
+    <message>
+        <source>Makes the working values permanent: the drive keeps them after a power cycle. Do this after changing parameters.</source>
+        <translation>将当前工作参数永久保存：断电重启后驱动器仍保留这些值。修改参数后请执行此操作。</translation>
+    </message>
+    <message>
+        <source>Replaces the working values with those stored in EEPROM. Changes not yet stored are lost.</source>
+        <translation>用 EEPROM 中保存的值替换当前工作参数。尚未保存的修改将丢失。</translation>
+    </message>
+    <message>
+        <source>Copies the working values into the drive&apos;s own backup area, replacing the previous copy there.</source>
+        <translation>将当前工作参数复制到驱动器自身的备份区，覆盖备份区中原有的副本。</translation>
+    </message>
+    <message>
+        <source>Replaces the working values with the copy in the drive&apos;s backup area. Changes not yet stored are lost; store the result with EE-Set to keep it after a power cycle.</source>
+        <translation>用驱动器备份区中的副本替换当前工作参数。尚未保存的修改将丢失；如需断电后仍保留，请再执行 EE-Set。</translation>
+    </message>
+    <message>
+        <source>Sets the working values and the EEPROM to the factory defaults. Every setting made on this drive is lost, possibly its address and baud rate too: save a backup file first (Backup tab).</source>
+        <translation>将工作参数和 EEPROM 恢复为出厂设置。在本驱动器上做过的所有设置都将丢失，可能包括地址和波特率：请先保存备份文件（“备份”页）。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Run %1 on drive %2 now?</source>
+        <translation>现在对驱动器 %2 执行 %1 吗？</translation>
+    </message>
+    <message>
+        <source>%1 cancelled: nothing was sent to the drive.</source>
+        <translation>已取消 %1：未向驱动器发送任何数据。</translation>
+    </message>
+    <message>
+        <source>%1 running (%2 s): waiting for the drive to report completion. Do not switch the drive off.</source>
+        <translation>%1 执行中（%2 秒）：等待驱动器报告完成。请勿断开驱动器电源。</translation>
+    </message>
+    <message>
+        <source>%1 failed after %2 s: %3</source>
+        <translation>%1 在 %2 秒后失败：%3</translation>
+    </message>
+    <message>
+        <source>%1 done (%2 s): %3.</source>
+        <translation>%1 已完成（%2 秒）：%3。</translation>
+    </message>
+    <message>
+        <source>The drive now works with other values: read the parameters again (Parameters tab) to see them.</source>
+        <translation>驱动器现在使用的是另一组参数值：请重新读取参数（“参数”页）查看。</translation>
+    </message>
+    <message>
+        <source>This drive has no EEPROM operations.</source>
+        <translation>此驱动器没有 EEPROM 操作。</translation>
+    </message>
+    <message>
+        <source>Waiting for the drive&apos;s identity…</source>
+        <translation>正在等待驱动器的识别信息…</translation>
+    </message>
+    <message>
+        <source>The drive works with its working values; EEPROM keeps a copy over a power cycle, and a backup area holds a second copy. Parameter writes change only the working values.</source>
+        <translation>驱动器按工作参数运行；EEPROM 保存一份断电后仍保留的副本，备份区另存一份副本。写参数只改变工作参数。</translation>
+    </message>
+    <message>
+        <source>EEPROM operations</source>
+        <translation>EEPROM 操作</translation>
+    </message>
+    <message>
+        <source>asks for confirmation</source>
+        <translation>需要确认</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterEditCommand</name>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>Edit %1</source>
+        <translation>编辑 %1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterTableModel</name>
+    <message>
+        <source>the drive reads back %1</source>
+        <translation>驱动器回读值为 %1</translation>
+    </message>
+    <message>
+        <source>the drive did not accept the value</source>
+        <translation>驱动器未接受该值</translation>
+    </message>
+    <message>
+        <source>not written: the write stopped before this parameter</source>
+        <translation>未写入：写入在此参数之前已中止</translation>
+    </message>
+    <message>
+        <source>No parameter dictionary is loaded for this drive.</source>
+        <translation>此驱动器未加载参数字典。</translation>
+    </message>
+    <message>
+        <source>Read-only: the drive does not accept a new value.</source>
+        <translation>只读：驱动器不接受新值。</translation>
+    </message>
+    <message>
+        <source>Edited: the drive has %1. Write it to send the new value.</source>
+        <translation>已修改：驱动器中为 %1。写入后才会发送新值。</translation>
+    </message>
+    <message>
+        <source>Edited: not yet written to the drive.</source>
+        <translation>已修改：尚未写入驱动器。</translation>
+    </message>
+    <message>
+        <source>Double-click to edit (%1 to %2).</source>
+        <translation>双击编辑（%1 至 %2）。</translation>
+    </message>
+    <message>
+        <source>The drive cannot report this parameter: DriveDesk shows the value it last wrote.</source>
+        <translation>驱动器无法报告此参数：DriveDesk 显示的是上次写入的值。</translation>
+    </message>
+    <message>
+        <source>read/write</source>
+        <translation>读写</translation>
+    </message>
+    <message>
+        <source>read-only</source>
+        <translation>只读</translation>
+    </message>
+    <message>
+        <source>write-only</source>
+        <translation>只写</translation>
+    </message>
+    <message>
+        <source>not readable (last written: %1)</source>
+        <translation>不可读取（上次写入：%1）</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>不可读取</translation>
+    </message>
+    <message>
+        <source>written, verified</source>
+        <translation>已写入，已校验</translation>
+    </message>
+    <message>
+        <source>written (cannot be read back)</source>
+        <translation>已写入（无法回读）</translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
+        <translation>失败：%1</translation>
+    </message>
+    <message>
+        <source>not written</source>
+        <translation>未写入</translation>
+    </message>
+    <message>
+        <source>%1 marks a value edited here that differs from the drive&apos;s</source>
+        <translation>%1 表示此处修改的值与驱动器中的值不同</translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation>编号</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>代号</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>On the drive</source>
+        <translation>驱动器中</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation>范围</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>访问</translation>
+    </message>
+    <message>
+        <source>Last write</source>
+        <translation>上次写入</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterTransfer</name>
+    <message>
+        <source>A backup or restore is already running on this drive.</source>
+        <translation>此驱动器上已有备份或恢复正在进行。</translation>
+    </message>
+    <message>
+        <source>The drive is gone.</source>
+        <translation>驱动器已断开。</translation>
+    </message>
+    <message>
+        <source>The parameter dictionary lists no readable parameter.</source>
+        <translation>参数字典中没有可读取的参数。</translation>
+    </message>
+    <message>
+        <source>Not every parameter was restored: %1.</source>
+        <translation>并非所有参数都已恢复：%1。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterValueValidator</name>
+    <message>
+        <source>No parameter dictionary is loaded for this drive.</source>
+        <translation>此驱动器未加载参数字典。</translation>
+    </message>
+    <message>
+        <source>Enter a value.</source>
+        <translation>请输入数值。</translation>
+    </message>
+    <message>
+        <source>“%1” is not a whole number (write it in decimal, or in hexadecimal as 0x…).</source>
+        <translation>“%1”不是整数（请用十进制，或以 0x… 表示十六进制）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParametersPanel</name>
+    <message>
+        <source>Not accepted: %1 Nothing was sent to the drive.</source>
+        <translation>不接受：%1 未向驱动器发送任何数据。</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>This drive has no parameter that can be read.</source>
+        <translation>此驱动器没有可读取的参数。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n parameter(s)…</source>
+        <translation>
+            <numerusform>正在读取 %n 个参数…</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading failed after %n parameter(s): %1</source>
+        <translation>
+            <numerusform>读取 %n 个参数后失败：%1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Read %n parameter(s) from the drive.</source>
+        <translation>
+            <numerusform>已从驱动器读取 %n 个参数。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) not yet written.</source>
+        <translation>
+            <numerusform>%n 个修改的值尚未写入。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing to write: no selected row has an edited value.</source>
+        <translation>无需写入：所选行中没有修改过的值。</translation>
+    </message>
+    <message>
+        <source>Nothing to write: no value was edited.</source>
+        <translation>无需写入：没有修改任何值。</translation>
+    </message>
+    <message>
+        <source>Not written: %1 Nothing was sent to the drive.</source>
+        <translation>未写入：%1 未向驱动器发送任何数据。</translation>
+    </message>
+    <message>
+        <source>Not written: cancelled.</source>
+        <translation>未写入：已取消。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Writing %n parameter(s)…</source>
+        <translation>
+            <numerusform>正在写入 %n 个参数…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Change communication settings?</source>
+        <translation>更改通讯设置？</translation>
+    </message>
+    <message>
+        <source>%1 changes how the drive communicates (address, baud rate or framing). After the change DriveDesk may no longer reach the drive with the current connection settings: connect again with the new ones.
+
+Write anyway?</source>
+        <translation>%1 会改变驱动器的通讯方式（地址、波特率或帧格式）。修改后 DriveDesk 可能无法再用当前连接设置访问驱动器，请用新设置重新连接。
+
+仍要写入吗？</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n written and verified</source>
+        <translation>
+            <numerusform>%n 个已写入并校验</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n written (write-only, cannot be read back)</source>
+        <translation>
+            <numerusform>%n 个已写入（只写参数，无法回读）</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n failed or not written</source>
+        <translation>
+            <numerusform>%n 个失败或未写入</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Read every parameter from the drive</source>
+        <translation>从驱动器读取全部参数</translation>
+    </message>
+    <message>
+        <source>Write the edited values of the selected rows; the drive reads each back</source>
+        <translation>写入所选行中修改过的值；驱动器逐个回读校验</translation>
+    </message>
+    <message>
+        <source>Write every edited value; the drive reads each back</source>
+        <translation>写入全部修改过的值；驱动器逐个回读校验</translation>
+    </message>
+    <message>
+        <source>Undo: %1</source>
+        <translation>撤销：%1</translation>
+    </message>
+    <message>
+        <source>Redo: %1</source>
+        <translation>重做：%1</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>Search by index, key or name</source>
+        <translation>按编号、代号或名称搜索</translation>
+    </message>
+    <message>
+        <source>Read all</source>
+        <translation>全部读取</translation>
+    </message>
+    <message>
+        <source>Write selected</source>
+        <translation>写入所选</translation>
+    </message>
+    <message>
+        <source>Write all changed</source>
+        <translation>写入全部修改</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>撤销</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RestoreReportDialog</name>
+    <message>
+        <source>Restore report</source>
+        <translation>恢复报告</translation>
+    </message>
+    <message>
+        <source>Restore of %1:</source>
+        <translation>%1 的恢复结果：</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>In the file</source>
+        <translation>文件中的值</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>回读值</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>Detail</source>
+        <translation>详情</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>不可读取</translation>
+    </message>
+    <message>
+        <source>%1 selected: %2 written, %3 verified, %4 failed, %5 not attempted.</source>
+        <translation>选中 %1 个：写入 %2 个，校验通过 %3 个，失败 %4 个，未执行 %5 个。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n write-only parameter(s) written; the drive cannot report them back.</source>
+        <translation>
+            <numerusform>已写入 %n 个只写参数；驱动器无法回报其数值。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>written, verified</source>
+        <translation>已写入，已校验</translation>
+    </message>
+    <message>
+        <source>written (cannot be read back)</source>
+        <translation>已写入（无法回读）</translation>
+    </message>
+    <message>
+        <source>written, but the drive reads back another value</source>
+        <translation>已写入，但驱动器回读的值不同</translation>
+    </message>
+    <message>
+        <source>failed: the drive did not accept it</source>
+        <translation>失败：驱动器未接受</translation>
+    </message>
+    <message>
+        <source>not attempted</source>
+        <translation>未执行</translation>
+    </message>
+</context>
 </TS>

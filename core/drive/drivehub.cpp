@@ -138,9 +138,9 @@ void DriveHub::watchDrive(int id, int address, Drive *drive)
             [this, id, address] { emit jogLeaseExpired(id, address); });
 }
 
-void DriveHub::run(int id, int address, Operation op, Done done)
+void DriveHub::run(int id, int address, Operation op, Done done, Progress progress)
 {
-    post(m_ioContext, [this, id, address, op, done] {
+    post(m_ioContext, [this, id, address, op, done, progress] {
         auto fail = [this, done](const Error &e) {
             DriveResult r;
             r.error = e;
@@ -162,6 +162,10 @@ void DriveHub::run(int id, int address, Operation op, Done done)
             fail({ErrorCode::NotSupported, tr("The operation was not started.")});
             return;
         }
+        if (progress)
+            connect(reply, &DriveReply::progress, reply, [this, progress](int n, int total) {
+                post(this, [progress, n, total] { progress(n, total); });
+            });
         connect(reply, &DriveReply::finished, reply, [this, reply, done] {
             const DriveResult r = DriveResult::from(*reply);
             reply->deleteLater();

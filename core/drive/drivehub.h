@@ -29,6 +29,7 @@ class DriveHub : public QObject
 public:
     using Done = std::function<void(const DriveResult &)>;
     using Operation = std::function<DriveReply *(Drive &)>;
+    using Progress = std::function<void(int done, int total)>;
 
     explicit DriveHub(QObject *parent = nullptr);
     ~DriveHub() override;   // closes every connection and stops the thread
@@ -44,8 +45,9 @@ public:
     QList<int> connectionIds() const { return m_settings.keys(); }
     ConnectionSettings connectionSettings(int id) const { return m_settings.value(id); }
 
-    // Runs `op` on the drive at `address` of connection `id`, on the I/O thread.
-    void run(int id, int address, Operation op, Done done = {});
+    // Runs `op` on the drive at `address` of connection `id`, on the I/O thread. `progress`
+    // gets the reply's progress() (long reads and writes, backups) on this thread.
+    void run(int id, int address, Operation op, Done done = {}, Progress progress = {});
     // Runs a scan; found/progress/finished arrive on this thread.
     void scan(int id, const ScanOptions &options,
               std::function<void(const DiscoveredDrive &)> found,

@@ -278,11 +278,15 @@ void ServoModbusScanner::endScan(const Error &error)
     m_finishingBaud = false;
     if (m_link)
         disconnect(m_link, &ModbusLink::strayBytes, this, &ServoModbusScanner::onStrayBytes);
+    // Only a scan that stops with probes still under way aborts the link's queue; at the
+    // normal end the queue holds other users' requests (a parameter read, a status poll)
+    // that must go on.
+    const bool probesUnderWay = !m_inFlight.isEmpty();
     for (auto &r : m_inFlight)
         delete r.data();
     m_inFlight.clear();
     if (m_link && m_link->isOpen()) {
-        if (!m_link->isIdle())
+        if (probesUnderWay && !m_link->isIdle())
             m_link->cancelAll({ErrorCode::Cancelled, tr("The scan was cancelled.")});
         if (m_link->settings().baud != m_originalBaud)
             m_link->setBaudRate(m_originalBaud);

@@ -134,6 +134,8 @@ void TestCliUsage::usageErrors_data()
     QTest::newRow("diff missing file") << a({"diff", "/nonexistent-dir/b.json"}) << "/nonexistent-dir/b.json";
     QTest::newRow("restore missing file") << a({"restore", "/nonexistent-dir/b.json"}) << "/nonexistent-dir/b.json";
     QTest::newRow("missing dictionary") << a({"--dictionary", "/nonexistent-dir/d.json", "get", "PA1"}) << "/nonexistent-dir/d.json";
+    QTest::newRow("option without =") << a({"--option", "shuoke.checksum", "info"}) << "FAMILY.KEY=VALUE";
+    QTest::newRow("option without family") << a({"--option", "checksum=sum", "info"}) << "FAMILY.KEY=VALUE";
     QTest::newRow("sim drives malformed") << QStringList{"--sim-drives", "1@2@3", "info"} << "--sim-drives";
 }
 

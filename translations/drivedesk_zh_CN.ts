@@ -51,6 +51,97 @@
     </message>
 </context>
 <context>
+    <name>dd::AlarmsPanel</name>
+    <message>
+        <source>Alarms</source>
+        <translation>报警</translation>
+    </message>
+    <message>
+        <source>No alarm</source>
+        <translation>无报警</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>无法写入 %1：%2。</translation>
+    </message>
+    <message>
+        <source>Export alarm history</source>
+        <translation>导出报警历史</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Not read yet.</source>
+        <translation>尚未读取。</translation>
+    </message>
+    <message>
+        <source>Alarm %1</source>
+        <translation>报警 %1</translation>
+    </message>
+    <message>
+        <source>The drive reports no alarm.</source>
+        <translation>驱动器未报告报警。</translation>
+    </message>
+    <message>
+        <source>What to check: %1</source>
+        <translation>检查建议：%1</translation>
+    </message>
+    <message>
+        <source>Alarm cleared</source>
+        <translation>报警已清除</translation>
+    </message>
+    <message>
+        <source>Waiting for the drive&apos;s description…</source>
+        <translation>正在等待驱动器信息…</translation>
+    </message>
+    <message>
+        <source>Ask the drive for its current alarm code</source>
+        <translation>向驱动器读取当前报警代码</translation>
+    </message>
+    <message>
+        <source>Reset the drive&apos;s alarm (the cause must be gone)</source>
+        <translation>复位驱动器报警（须先排除报警原因）</translation>
+    </message>
+    <message>
+        <source>Current alarm</source>
+        <translation>当前报警</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>历史记录</translation>
+    </message>
+    <message>
+        <source>&amp;Read alarm</source>
+        <translation>读取报警(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Clear alarm</source>
+        <translation>清除报警(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>导出(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>Clear &amp;list</source>
+        <translation>清空列表(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>代码</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>报警</translation>
+    </message>
+</context>
+<context>
     <name>dd::BackupFile</name>
     <message>
         <source>The backup has no drive family</source>
@@ -721,6 +812,307 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
 </context>
 <context>
+    <name>dd::FrameDescriber</name>
+    <message>
+        <source>alarm %1</source>
+        <translation>报警 %1</translation>
+    </message>
+    <message>
+        <source>no alarm</source>
+        <translation>无报警</translation>
+    </message>
+    <message>
+        <source>keep-alive</source>
+        <translation>保活</translation>
+    </message>
+    <message>
+        <source>heartbeat: idle, position %1</source>
+        <translation>心跳：停止，位置 %1</translation>
+    </message>
+    <message>
+        <source>heartbeat: running, position %1</source>
+        <translation>心跳：运行中，位置 %1</translation>
+    </message>
+    <message>
+        <source>read P%1</source>
+        <translation>读 P%1</translation>
+    </message>
+    <message>
+        <source>P%1 = %2</source>
+        <translation>P%1 = %2</translation>
+    </message>
+    <message>
+        <source>read %1</source>
+        <translation>读 %1</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>write P%1 = %2</source>
+        <translation>写 P%1 = %2</translation>
+    </message>
+    <message>
+        <source>run at %1 r/min</source>
+        <translation>以 %1 r/min 运行</translation>
+    </message>
+    <message>
+        <source>run at 0 r/min (halt)</source>
+        <translation>以 0 r/min 运行（停住）</translation>
+    </message>
+    <message>
+        <source>move by %1</source>
+        <translation>相对移动 %1</translation>
+    </message>
+    <message>
+        <source>move to %1</source>
+        <translation>移动到 %1</translation>
+    </message>
+    <message>
+        <source>positioning speed %1 r/min</source>
+        <translation>定位速度 %1 r/min</translation>
+    </message>
+    <message>
+        <source>servo on</source>
+        <translation>伺服使能</translation>
+    </message>
+    <message>
+        <source>servo off</source>
+        <translation>伺服关闭</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>stop and disable</source>
+        <translation>停止并取消使能</translation>
+    </message>
+    <message>
+        <source>set position to %1</source>
+        <translation>设置位置为 %1</translation>
+    </message>
+    <message>
+        <source>clear alarm</source>
+        <translation>清除报警</translation>
+    </message>
+    <message>
+        <source>EE operation %1</source>
+        <translation>EE 操作 %1</translation>
+    </message>
+    <message>
+        <source>write %1 = %2</source>
+        <translation>写 %1 = %2</translation>
+    </message>
+    <message>
+        <source>all (broadcast): %1</source>
+        <translation>全部（广播）：%1</translation>
+    </message>
+    <message>
+        <source>exception %1: %2</source>
+        <translation>异常 %1：%2</translation>
+    </message>
+    <message>
+        <source>… (%1 values)</source>
+        <translation>…（共 %1 个值）</translation>
+    </message>
+    <message>
+        <source>EE operation running</source>
+        <translation>EE 操作进行中</translation>
+    </message>
+    <message>
+        <source>EE operation %1 done</source>
+        <translation>EE 操作 %1 完成</translation>
+    </message>
+    <message>
+        <source>written %1 = %2</source>
+        <translation>已写 %1 = %2</translation>
+    </message>
+    <message>
+        <source>EE operation accepted</source>
+        <translation>EE 操作已接受</translation>
+    </message>
+    <message>
+        <source>written %1</source>
+        <translation>已写 %1</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 失败：%2</translation>
+    </message>
+    <message>
+        <source>%1: OK</source>
+        <translation>%1：成功</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>left limit</source>
+        <translation>左限位</translation>
+    </message>
+    <message>
+        <source>origin</source>
+        <translation>原点</translation>
+    </message>
+    <message>
+        <source>right limit</source>
+        <translation>右限位</translation>
+    </message>
+    <message>
+        <source>enable input</source>
+        <translation>使能输入</translation>
+    </message>
+    <message>
+        <source>inputs %1</source>
+        <translation>输入 %1</translation>
+    </message>
+    <message>
+        <source>positive first</source>
+        <translation>先正向</translation>
+    </message>
+    <message>
+        <source>negative first</source>
+        <translation>先负向</translation>
+    </message>
+    <message>
+        <source>code %1 (%2 baud)</source>
+        <translation>代码 %1（%2 波特）</translation>
+    </message>
+    <message>
+        <source>code %1 (%2 kbit/s)</source>
+        <translation>代码 %1（%2 kbit/s）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::FrameMonitorDock</name>
+    <message>
+        <source>Save frames</source>
+        <translation>保存报文</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;Text files (*.txt *.log)</source>
+        <translation>CSV 文件 (*.csv);;文本文件 (*.txt *.log)</translation>
+    </message>
+    <message>
+        <source>%1 frames, %2 shown</source>
+        <translation>共 %1 帧，显示 %2 帧</translation>
+    </message>
+    <message>
+        <source>paused: %1 new frames wait</source>
+        <translation>已暂停：%1 帧新报文待显示</translation>
+    </message>
+    <message>
+        <source>%1 oldest frames dropped (the monitor keeps the last %2)</source>
+        <translation>已丢弃最早的 %1 帧（监视器只保留最近 %2 帧）</translation>
+    </message>
+    <message>
+        <source>Frame monitor</source>
+        <translation>报文监视</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>暂停(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Hold the view still. Frames are still recorded and appear when you resume.</source>
+        <translation>冻结显示。报文仍在记录，继续后显示。</translation>
+    </message>
+    <message>
+        <source>C&amp;lear</source>
+        <translation>清空(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Forget every recorded frame</source>
+        <translation>清除所有已记录的报文</translation>
+    </message>
+    <message>
+        <source>&amp;Save…</source>
+        <translation>保存(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Save the frames shown (with the filter applied) as CSV or text</source>
+        <translation>将当前显示（已过滤）的报文保存为 CSV 或文本</translation>
+    </message>
+    <message>
+        <source>Filter: hex bytes, meaning, link…</source>
+        <translation>过滤：十六进制字节、含义、链路…</translation>
+    </message>
+    <message>
+        <source>All directions</source>
+        <translation>所有方向</translation>
+    </message>
+    <message>
+        <source>TX and RX</source>
+        <translation>发送和接收</translation>
+    </message>
+    <message>
+        <source>TX only</source>
+        <translation>仅发送</translation>
+    </message>
+    <message>
+        <source>RX only</source>
+        <translation>仅接收</translation>
+    </message>
+    <message>
+        <source>Discarded only</source>
+        <translation>仅丢弃</translation>
+    </message>
+    <message>
+        <source>TX: sent by DriveDesk; RX: received; discarded: bytes that were not a valid reply</source>
+        <translation>TX：DriveDesk 发送；RX：接收；丢弃：不是有效应答的字节</translation>
+    </message>
+    <message>
+        <source>All links</source>
+        <translation>所有链路</translation>
+    </message>
+    <message>
+        <source>&amp;Follow</source>
+        <translation>跟随(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Keep the newest frame in view</source>
+        <translation>始终显示最新报文</translation>
+    </message>
+</context>
+<context>
+    <name>dd::FrameMonitorModel</name>
+    <message>
+        <source>discarded</source>
+        <translation>已丢弃</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>链路</translation>
+    </message>
+    <message>
+        <source>Dir.</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>Frame (hex)</source>
+        <translation>报文（十六进制）</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>含义</translation>
+    </message>
+</context>
+<context>
     <name>dd::JsonFieldReader</name>
     <message>
         <source>%1: field &quot;%2&quot;</source>
@@ -995,6 +1387,233 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>The drive at address %1 rejected the request (Modbus exception %2: %3; the reply carried address byte %4).</source>
         <translation>地址 %1 的驱动器拒绝了请求（Modbus 异常 %2：%3；应答中的地址字节为 %4）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::MotionPanel</name>
+    <message>
+        <source>Enable</source>
+        <translation>使能</translation>
+    </message>
+    <message>
+        <source>Disable</source>
+        <translation>取消使能</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <source>Set position</source>
+        <translation>设置位置</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>运动</translation>
+    </message>
+    <message>
+        <source>pulses/s</source>
+        <translation>脉冲/秒</translation>
+    </message>
+    <message>
+        <source>r/min</source>
+        <translation>r/min</translation>
+    </message>
+    <message>
+        <source>pulses</source>
+        <translation>脉冲</translation>
+    </message>
+    <message>
+        <source>counts</source>
+        <translation>计数</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>%1: done.</source>
+        <translation>%1：完成。</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 失败：%2</translation>
+    </message>
+    <message>
+        <source>Move to %1</source>
+        <translation>移动到 %1</translation>
+    </message>
+    <message>
+        <source>Move by %1</source>
+        <translation>相对移动 %1</translation>
+    </message>
+    <message>
+        <source>Jogging at %1 %2 — let go to stop.</source>
+        <translation>正在以 %1 %2 点动 — 松开即停止。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the button was released.</source>
+        <translation>点动已停止：按钮已松开。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the pointer left the button.</source>
+        <translation>点动已停止：鼠标离开了按钮。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the button lost the keyboard focus.</source>
+        <translation>点动已停止：按钮失去了键盘焦点。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the window was deactivated.</source>
+        <translation>点动已停止：窗口不再处于活动状态。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: DriveDesk is no longer the active application.</source>
+        <translation>点动已停止：DriveDesk 不再是活动应用程序。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the Motion tab was hidden.</source>
+        <translation>点动已停止：“运动”页已隐藏。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: jogging was disabled.</source>
+        <translation>点动已停止：点动已被禁用。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the connection was lost.</source>
+        <translation>点动已停止：连接已断开。</translation>
+    </message>
+    <message>
+        <source>Jog stopped by the drive link: DriveDesk did not confirm the held button in time.</source>
+        <translation>点动已由通讯链路停止：DriveDesk 未能及时确认按钮仍被按住。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the drive did not start.</source>
+        <translation>点动已停止：驱动器未启动。</translation>
+    </message>
+    <message>
+        <source>Jog stopped.</source>
+        <translation>点动已停止。</translation>
+    </message>
+    <message>
+        <source>The jog of %1 was stopped because its hold was not renewed in time (the window was busy or frozen). Press the jog button again to continue.</source>
+        <translation>%1 的点动已停止，因为按住状态未能及时续期（窗口忙碌或无响应）。请重新按下点动按钮继续。</translation>
+    </message>
+    <message>
+        <source>%1 is not available on this drive.</source>
+        <translation>此驱动器不支持“%1”。</translation>
+    </message>
+    <message>
+        <source>Waiting for the drive&apos;s description…</source>
+        <translation>正在等待驱动器信息…</translation>
+    </message>
+    <message>
+        <source>State: %1</source>
+        <translation>状态：%1</translation>
+    </message>
+    <message>
+        <source>Position: %1 %2</source>
+        <translation>位置：%1 %2</translation>
+    </message>
+    <message>
+        <source>Power stage</source>
+        <translation>使能</translation>
+    </message>
+    <message>
+        <source>&amp;Enable</source>
+        <translation>使能(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Switch the power stage on: the motor holds its position.</source>
+        <translation>打开功率级：电机保持当前位置。</translation>
+    </message>
+    <message>
+        <source>&amp;Disable</source>
+        <translation>取消使能(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Switch the power stage off: the shaft turns freely.</source>
+        <translation>关闭功率级：电机轴可自由转动。</translation>
+    </message>
+    <message>
+        <source>Jog (hold to run)</source>
+        <translation>点动（按住运行）</translation>
+    </message>
+    <message>
+        <source>Jog &amp;speed:</source>
+        <translation>点动速度(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>◀ Jog −</source>
+        <translation>◀ 负向点动</translation>
+    </message>
+    <message>
+        <source>Jog + ▶</source>
+        <translation>正向点动 ▶</translation>
+    </message>
+    <message>
+        <source>Hold a jog button (or focus it and hold Space): the axis turns only while it is held and stops when you let go, when the window loses the focus or when the connection drops.</source>
+        <translation>按住点动按钮（或选中后按住空格键）：只有按住时轴才转动；松开、窗口失去焦点或连接断开时立即停止。</translation>
+    </message>
+    <message>
+        <source>Not jogging.</source>
+        <translation>未在点动。</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>定位运动</translation>
+    </message>
+    <message>
+        <source>&amp;Relative by</source>
+        <translation>相对移动(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Absolute to</source>
+        <translation>绝对移动到(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Positioning speed:</source>
+        <translation>定位速度：</translation>
+    </message>
+    <message>
+        <source>&amp;Move</source>
+        <translation>运动(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <source>Search positive direction first</source>
+        <translation>先向正方向搜索</translation>
+    </message>
+    <message>
+        <source>Search negative direction first</source>
+        <translation>先向负方向搜索</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>回零(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Set the current position to:</source>
+        <translation>将当前位置设为：</translation>
+    </message>
+    <message>
+        <source>Se&amp;t</source>
+        <translation>设置(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Stop this drive</source>
+        <translation>停止此驱动器</translation>
+    </message>
+    <message>
+        <source>STOP in the tool bar (Esc or F12) stops every drive on every connection.</source>
+        <translation>工具栏上的“停止”（Esc 或 F12）会停止所有连接上的所有驱动器。</translation>
     </message>
 </context>
 <context>
@@ -1923,6 +2542,17 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source> or </source>
         <translation> 或 </translation>
+    </message>
+</context>
+<context>
+    <name>dd::TrafficLog</name>
+    <message>
+        <source>Cannot write %1: %2. Is the folder writable and the disk not full?</source>
+        <translation>无法写入 %1：%2。请检查文件夹是否可写、磁盘是否已满。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2. The previous file, if any, is unchanged.</source>
+        <translation>无法写入 %1：%2。原有文件（如有）保持不变。</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,7 @@
 #include "drivepanels.h"
 
+#include "alarmspanel.h"
+#include "motionpanel.h"
 #include "overviewpanel.h"
 #include "trendpanel.h"
 
@@ -10,7 +12,9 @@ QList<DrivePanel *> createDrivePanels(const DriveContext &context, QWidget *pare
     QList<DrivePanel *> panels;
     panels << new OverviewPanel(context, parent);
     panels << new TrendPanel(context, parent);
-    // Further panels (parameters, backup/restore, EE, motion, alarms) go here.
+    panels << new MotionPanel(context, parent);
+    panels << new AlarmsPanel(context, parent);
+    // Further panels (parameters, backup/restore, EE) go here.
     return panels;
 }
 

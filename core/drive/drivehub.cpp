@@ -7,6 +7,7 @@
 
 #include <QPointer>
 #include <QThread>
+#include <QTimer>
 
 namespace dd {
 
@@ -44,6 +45,8 @@ DriveHub::~DriveHub()
             m_scans.clear();
             qDeleteAll(m_connections);
             m_connections.clear();
+            qDeleteAll(m_closing);
+            m_closing.clear();
         },
         Qt::BlockingQueuedConnection);
     m_thread->quit();
@@ -87,13 +90,30 @@ void DriveHub::closeConnection(int id)
     post(m_ioContext, [this, id] {
         if (Discovery *s = m_scans.take(id))
             s->cancel();
-        delete m_connections.take(id);
+        DriveConnection *c = m_connections.take(id);
+        bool stopping = false;
         for (auto it = m_watched.begin(); it != m_watched.end();) {
-            if (it.key().first == id)
-                it = m_watched.erase(it);
-            else
+            if (it.key().first != id) {
                 ++it;
+                continue;
+            }
+            // A held jog must not outlive its link (nothing could stop it from here on).
+            if (Drive *d = c ? c->drive(it.key().second) : nullptr; d && d->isJogging()) {
+                DriveReply *r = d->stop(false);
+                connect(r, &DriveReply::finished, r, &QObject::deleteLater);
+                stopping = true;
+            }
+            it = m_watched.erase(it);
         }
+        if (!stopping) {
+            delete c;
+            return;
+        }
+        m_closing.insert(c);
+        QTimer::singleShot(StopGraceMs, m_ioContext, [this, c] {
+            if (m_closing.remove(c))
+                delete c;
+        });
     });
 }
 

@@ -7,6 +7,7 @@
 #include "link/trafficrecord.h"
 
 #include <QHash>
+#include <QSet>
 #include <QObject>
 #include <functional>
 
@@ -35,7 +36,10 @@ public:
     // Opens a connection on the I/O thread; `done` gets the id (> 0) or an error.
     void openConnection(const ConnectionSettings &settings,
                         std::function<void(int id, const Error &error)> done);
+    // A drive still jogging on it (its button goes away with the tab) is stopped first; the
+    // link then stays open for StopGraceMs so that the stop reaches the wire.
     void closeConnection(int id);
+    static constexpr int StopGraceMs = 100;
     void closeAll();
     QList<int> connectionIds() const { return m_settings.keys(); }
     ConnectionSettings connectionSettings(int id) const { return m_settings.value(id); }
@@ -71,6 +75,7 @@ private:
     QThread *m_thread = nullptr;
     QObject *m_ioContext = nullptr;                  // lives on the I/O thread
     QHash<int, DriveConnection *> m_connections;     // objects live on the I/O thread
+    QSet<DriveConnection *> m_closing;               // I/O thread: closed, stopping a jog
     QHash<int, ConnectionSettings> m_settings;       // GUI-side copy
     QHash<int, Discovery *> m_scans;                 // I/O thread objects
     QHash<QPair<int, int>, bool> m_watched;          // I/O thread only

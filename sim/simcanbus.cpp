@@ -184,7 +184,8 @@ void SimCanBus::onStateChanged(int state)
         emit connected();
     } else if (state == QCanBusDevice::UnconnectedState && m_wasConnected) {
         m_wasConnected = false;
-        m_tickTimer.stop();
+        // The drives live on without the bus (their watchdogs trip, motors coast to rest):
+        // keep ticking; what they send waits in the bounded outbox.
         qCWarning(lcSim).noquote() << "CAN bus disconnected:" << description();
         emit disconnected();
     }

@@ -3,6 +3,7 @@
 #include "params/parameterdictionary.h"
 
 #include <QDateTime>
+#include <QSet>
 
 namespace dd {
 
@@ -11,6 +12,7 @@ Drive::Drive(QObject *parent)
     , m_jogLease(this)
 {
     qRegisterMetaType<dd::DriveStatus>();
+    qRegisterMetaType<dd::JogEnd>();
     m_jogLease.setSingleShot(true);
     m_jogLease.setTimerType(Qt::PreciseTimer);
     connect(&m_jogLease, &QTimer::timeout, this, &Drive::onJogLeaseTimeout);
@@ -39,10 +41,15 @@ Error Drive::validateWrites(const QList<ParameterWrite> &writes) const
 {
     if (writes.isEmpty())
         return {ErrorCode::InvalidArgument, tr("No parameter to write.")};
+    QSet<int> seen;
     for (const ParameterWrite &w : writes) {
         const Error e = validateWrite(w);
         if (e.isError())
             return e;
+        if (seen.contains(w.index))
+            return {ErrorCode::InvalidArgument,
+                    tr("%1 is given twice. Nothing was written.").arg(parameterDictionary().label(w.index))};
+        seen.insert(w.index);
     }
     return Error::none();
 }
@@ -110,10 +117,52 @@ DriveReply *Drive::jog(qint32 speed)
 
 DriveReply *Drive::stop(bool emergency)
 {
+    const bool wasJogging = m_jogging;
+    const bool leaseExpired = m_leaseStopping;
     endJogLease();
-    if (emergency && !hasCapability(Capability::EmergencyStop))
-        return doStop(false); // the strongest stop this family has
-    return doStop(emergency);
+    // the strongest stop this family has
+    DriveReply *inner = doStop(emergency && hasCapability(Capability::EmergencyStop));
+    // The caller's reply says what stops the axis; it finishes right after the family's.
+    DriveReply *reply = newReply();
+    connect(inner, &DriveReply::finished, reply, [this, inner, reply, wasJogging, leaseExpired] {
+        inner->deleteLater();
+        const JogEnd end = describeStop(inner->error(), leaseExpired);
+        reply->setStatus(inner->status());
+        for (auto it = inner->info().cbegin(); it != inner->info().cend(); ++it)
+            reply->setInfo(it.key(), it.value());
+        reply->setInfo(QStringLiteral("stoppedBy"), stoppedById(end.stoppedBy));
+        reply->finish(inner->error());
+        if (wasJogging)
+            emit jogEnded(end);
+    });
+    return reply;
+}
+
+JogEnd Drive::describeStop(const Error &stopError, bool leaseExpired) const
+{
+    JogEnd end;
+    end.leaseExpired = leaseExpired;
+    const QString lead = leaseExpired
+        ? tr("The jog lease was not renewed within %1 ms.").arg(m_jogLeaseMs) + QLatin1Char(' ')
+        : QString();
+    if (!stopError.isError()) {
+        end.stoppedBy = JogEnd::StoppedBy::Command;
+        end.message = lead + tr("The axis was stopped by a stop command.");
+    } else if (watchdogMs() > 0) {
+        end.stoppedBy = JogEnd::StoppedBy::DriveWatchdog;
+        end.message = lead
+            + tr("%1 The drive's own watchdog stops the axis %2 ms after it last heard from "
+                 "DriveDesk.")
+                  .arg(stopError.message)
+                  .arg(watchdogMs());
+    } else {
+        end.stoppedBy = JogEnd::StoppedBy::Nothing;
+        end.message = lead
+            + tr("%1 This drive has no watchdog: the axis may still be moving. Use the "
+                 "machine's emergency stop.")
+                  .arg(stopError.message);
+    }
+    return end;
 }
 
 void Drive::renewJogLease()
@@ -128,11 +177,28 @@ void Drive::endJogLease()
     m_jogLease.stop();
 }
 
+void Drive::endJogLeaseLinkLost(const Error &why)
+{
+    if (!m_jogging)
+        return;
+    endJogLease();
+    Error e = why;
+    if (e.message.isEmpty())
+        e.message = tr("The link to the drive was closed.");
+    if (!e.isError())
+        e.code = ErrorCode::LinkClosed;
+    JogEnd end = describeStop(e, false);
+    end.linkLost = true;
+    emit jogEnded(end);
+}
+
 void Drive::onJogLeaseTimeout()
 {
     if (!m_jogging)
         return;
+    m_leaseStopping = true;
     DriveReply *r = stop(false);
+    m_leaseStopping = false;
     connect(r, &DriveReply::finished, r, &QObject::deleteLater);
     emit jogLeaseExpired();
 }

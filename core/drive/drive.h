@@ -20,7 +20,11 @@ class ParameterDictionary;
 // Jog is a lease: jog() starts motion and a lease of jogLeaseMs() (300 ms by default);
 // whoever holds it calls renewJogLease() at least every 100 ms. If the lease runs out the
 // drive is stopped from this (I/O) side and jogLeaseExpired() is emitted. Any stop()
-// ends the lease. A Drive lives in the thread of its link.
+// ends the lease. However a jog ends, jogEnded() says what stops the axis: a stop command
+// the drive received, or — when the stop could not be sent or confirmed (link gone, drive
+// silent) — the drive's own watchdog (watchdogMs() > 0), or nothing (the user must use
+// the machine's emergency stop). Every stop reply carries the same as info "stoppedBy"
+// ("command", "drive-watchdog", "nothing"). A Drive lives in the thread of its link.
 class Drive : public QObject
 {
     Q_OBJECT
@@ -73,6 +77,9 @@ public:
     // The jog lease.
     void renewJogLease();
     bool isJogging() const { return m_jogging; }
+    // How long the drive keeps moving without its host before it stops by itself (servo-can:
+    // 2000 ms without a keep-alive); 0 when it has no such watchdog.
+    virtual int watchdogMs() const { return 0; }
     int jogLeaseMs() const { return m_jogLeaseMs; }
     void setJogLeaseMs(int ms) { m_jogLeaseMs = ms; }
 
@@ -85,6 +92,7 @@ signals:
     void statusChanged(const dd::DriveStatus &status);
     void alarmChanged(int code);                 // 0 = cleared
     void jogLeaseExpired();                      // the axis was stopped by the lease
+    void jogEnded(const dd::JogEnd &end);        // after the stop of a jog, or a lost link
     void connectionLost(const dd::Error &why);   // the link went away
 
 protected:
@@ -100,15 +108,20 @@ protected:
     void updateStatus(const DriveStatus &status);
     // Ends the jog lease without a stop (the link is gone, or a stop is already underway).
     void endJogLease();
+    // The link is gone: ends the jog lease and, if a jog was running, emits jogEnded() (the
+    // drive's watchdog, if it has one, stops the axis).
+    void endJogLeaseLinkLost(const Error &why);
 
 private:
     void onJogLeaseTimeout();
+    JogEnd describeStop(const Error &stopError, bool leaseExpired) const;
 
     DriveIdentity m_identity;
     DriveStatus m_status;
     std::shared_ptr<const ParameterDictionary> m_dictionary;
     QTimer m_jogLease;
     bool m_jogging = false;
+    bool m_leaseStopping = false;  // stop() called by the lease timer
     int m_jogLeaseMs = 300;
 };
 

@@ -28,6 +28,7 @@ DriveHub::DriveHub(QObject *parent)
     qRegisterMetaType<dd::DriveResult>();
     qRegisterMetaType<dd::Error>();
     qRegisterMetaType<dd::DiscoveredDrive>();
+    qRegisterMetaType<dd::JogEnd>();
     m_thread = new QThread;
     m_thread->setObjectName(QStringLiteral("drivedesk-io"));
     m_ioContext = new QObject;
@@ -136,6 +137,8 @@ void DriveHub::watchDrive(int id, int address, Drive *drive)
             [this, id, address](int code) { emit alarmChanged(id, address, code); });
     connect(drive, &Drive::jogLeaseExpired, drive,
             [this, id, address] { emit jogLeaseExpired(id, address); });
+    connect(drive, &Drive::jogEnded, drive,
+            [this, id, address](const JogEnd &end) { emit jogEnded(id, address, end); });
 }
 
 void DriveHub::run(int id, int address, Operation op, Done done, Progress progress)

@@ -68,6 +68,7 @@ signals:
     void statusChanged(int id, int address, const dd::DriveStatus &status);
     void alarmChanged(int id, int address, int code);
     void jogLeaseExpired(int id, int address);
+    void jogEnded(int id, int address, const dd::JogEnd &end);
     void linkLost(int id, const dd::Error &why);
 
 private:

@@ -27,6 +27,16 @@ QString capabilityId(Capability c)
     return {};
 }
 
+QString stoppedById(JogEnd::StoppedBy by)
+{
+    switch (by) {
+    case JogEnd::StoppedBy::Command: return QStringLiteral("command");
+    case JogEnd::StoppedBy::DriveWatchdog: return QStringLiteral("drive-watchdog");
+    case JogEnd::StoppedBy::Nothing: return QStringLiteral("nothing");
+    }
+    return {};
+}
+
 QStringList capabilityIds(Capabilities caps)
 {
     QStringList out;

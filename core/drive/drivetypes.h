@@ -83,6 +83,22 @@ struct ParameterWriteResult
     QString error;             // translated reason when !written or !verified
 };
 
+// How a jog ended and what brings the axis to rest (Drive::jogEnded(), the "stoppedBy" info
+// of a stop reply).
+struct JogEnd
+{
+    enum class StoppedBy {
+        Command,        // a stop command reached the drive (it was heard from after the stop)
+        DriveWatchdog,  // no stop could be sent or confirmed: the drive's own watchdog stops it
+        Nothing         // no stop could be sent or confirmed and the drive has no watchdog
+    };
+    StoppedBy stoppedBy = StoppedBy::Command;
+    bool leaseExpired = false;   // the holder stopped renewing the jog lease
+    bool linkLost = false;       // the link went away while jogging
+    QString message;             // translated: what happened, what to do
+};
+QString stoppedById(JogEnd::StoppedBy by);   // "command", "drive-watchdog", "nothing"
+
 // servo-modbus EEPROM operations (op codes of the seed).
 enum class EeOperation { Save = 1, Reload = 2, Backup = 3, RestoreBackup = 4, FactoryDefaults = 5 };
 QString eeMnemonic(EeOperation op);       // "EE-Set", "EE-rd", "EE-bA", "EE-rS", "EE-dEF"
@@ -107,3 +123,4 @@ struct DiscoveredDrive
 
 Q_DECLARE_METATYPE(dd::DriveStatus)
 Q_DECLARE_METATYPE(dd::DiscoveredDrive)
+Q_DECLARE_METATYPE(dd::JogEnd)

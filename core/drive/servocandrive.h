@@ -25,8 +25,12 @@ class ServoCanStationTracker;
 //     running (or already on the target), or with DriveException after motionStartMs();
 //   - set position (0x50): position read back (0xFD) when the axis is idle;
 //   - clear alarm (0x81): alarm code read back (0xAA) until 0 or alarmClearMs();
-//   - enable (0x25), stop (0x26 / 0x28): not readable (the heartbeat has no enable bit);
-//     they finish when the frame is on the bus; status().enabled is what was last commanded.
+//   - enable (0x25): not readable (the heartbeat has no enable bit); it finishes when the
+//     frame is on the bus; status().enabled is what was last commanded;
+//   - stop (0x26 / 0x28): finishes when a heartbeat of the station arrives after it (the
+//     drive is alive, so it heard the stop), or with Timeout after stopConfirmMs(): then its
+//     watchdog (watchdogMs(), 2 s without keep-alive) is what stops the axis. A station that
+//     goes offline during a jog is stopped the same way (jogEnded() says which happened).
 // A stop jumps the queue: it is written at once (ahead of reads waiting for the link's
 // window) and once more behind everything already queued, so that a motion command still
 // waiting in the queue cannot restart the axis after the stop.
@@ -37,8 +41,8 @@ class ServoCanStationTracker;
 // Emergency stop: 0x28 by default (stop, then torque off: IEC 60204-1 stop category 1),
 // or 0x26 (stop and hold the shaft: for vertical axes without a brake) with
 // setEmergencyStopHolds(true) — option "servo-can.emergencyStop" = "disable" | "hold".
-// Confirmed reads (option "servo-can.confirmReads"): each parameter is read until two
-// answers agree. Real CAN hardware never delivers a damaged frame (CRC), so this is off by
+// Confirmed reads (option "servo-can.confirmReads"): each parameter is read until three
+// answers agree (up to eight reads). Real CAN hardware never delivers a damaged frame (CRC), so this is off by
 // default; it defends against a drive (or a simulator) that answers wrong values.
 class ServoCanDrive : public Drive
 {
@@ -75,6 +79,9 @@ public:
     void setMotionStartMs(int ms) { m_motionStartMs = ms; }
     int alarmClearMs() const { return m_alarmClearMs; }
     void setAlarmClearMs(int ms) { m_alarmClearMs = ms; }
+    int stopConfirmMs() const { return m_stopConfirmMs; }
+    void setStopConfirmMs(int ms) { m_stopConfirmMs = ms; }
+    int watchdogMs() const override;
 
     // The frame doStop(emergency) sends (for the backend's stopAll()).
     CanFrameData stopFrame(bool emergency) const;
@@ -89,7 +96,7 @@ private:
 
     // One 0x12 read (retried by the link on timeout); value is the int16 parameter or int32.
     void readRaw(servocan::ReadType type, quint8 index, const ReadDone &done);
-    // A parameter read; with confirmReads() read until two answers agree.
+    // A parameter read; with confirmReads() read until three answers agree.
     void readParameterValue(quint8 index, const ReadDone &done);
     struct ConfirmState;
     void confirmRead(quint8 index, const std::shared_ptr<ConfirmState> &state);
@@ -119,6 +126,7 @@ private:
     bool m_confirmReads = false;
     int m_motionStartMs = 300;
     int m_alarmClearMs = 300;
+    int m_stopConfirmMs = 150;   // five heartbeat periods
 };
 
 } // namespace dd

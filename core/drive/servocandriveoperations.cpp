@@ -196,7 +196,24 @@ DriveReply *ServoCanDrive::doStop(bool emergency)
     sendCommand(stopFrame(emergency), note + QStringLiteral(" (behind queued frames)"));
     if (disables)
         setEnabledState(false);
-    return finishedReply(Error::none());
+    // Nothing acknowledges a stop; a heartbeat sent after it shows the drive heard it.
+    DriveReply *reply = newReply();
+    awaitHeartbeat([](quint8, qint32) { return true; }, m_stopConfirmMs, [this, reply](const Error &e) {
+        if (e.code == ErrorCode::LinkClosed) {
+            reply->finish(e);
+            return;
+        }
+        if (e.isError()) {
+            reply->finish({ErrorCode::Timeout,
+                           tr("The stop command was sent, but station %1 has sent no heartbeat "
+                              "since (%2 ms): it may not have received it.")
+                               .arg(m_station)
+                               .arg(m_stopConfirmMs)});
+            return;
+        }
+        reply->finish();
+    });
+    return reply;
 }
 
 DriveReply *ServoCanDrive::startMotion(const QList<CanFrameData> &frames, const QString &what,

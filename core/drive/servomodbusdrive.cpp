@@ -407,9 +407,11 @@ void ServoModbusDrive::writeThenVerify(DriveReply *reply, const QList<ParameterW
 void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrite> &writes,
                                     const QHash<int, Error> &writeErrors)
 {
+    // Read back everything the drive did not refuse: a write whose answer was lost or
+    // damaged may have been carried out, and only the read-back can tell.
     QList<int> toRead;
     for (const ParameterWrite &w : writes)
-        if (!writeErrors.contains(w.index))
+        if (writeErrors.value(w.index).code != ErrorCode::DriveException)
             toRead.append(w.index);
     const QList<ModbusRequest> requests =
         readRequests(address(), servomodbus::planReads(toRead), QStringLiteral("verify"));
@@ -441,8 +443,19 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
                 r.requested = w.value;
                 r.written = !writeErrors.contains(w.index);
                 const quint16 reg = servomodbus::parameterRegister(w.index);
-                if (!r.written) {
+                const bool readBack = regs.contains(reg);
+                if (!r.written && readBack && regs.value(reg) == static_cast<quint16>(w.value)) {
+                    // The answer to the write was lost or damaged, but the drive holds the value.
+                    r.written = true;
+                    r.verified = true;
+                    r.readBack = w.value;
+                } else if (!r.written) {
                     r.error = writeErrors.value(w.index).message;
+                    if (readBack)
+                        r.readBack = w.value > 32767 ? qint64(regs.value(reg)) : parameterValue(w.index, regs.value(reg));
+                    else if (writeErrors.value(w.index).code != ErrorCode::DriveException)
+                        r.error += QLatin1Char(' ')
+                                 + trDrive("Whether the drive took the value is unknown: read it again.");
                     if (!first)
                         first = writeErrors.value(w.index);
                 } else if (readErrors.contains(w.index)) {

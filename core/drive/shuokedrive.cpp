@@ -20,6 +20,11 @@ ShuokeDrive::ShuokeDrive(ShuokeTransport *transport, int address, QObject *paren
     id.model = m_model ? modelName(*m_model) : QString();
     id.link = transport ? transport->description() : QString();
     setIdentity(id);
+    if (transport)
+        connect(transport, &ShuokeTransport::linkLost, this, [this](const Error &why) {
+            endJogLeaseLinkLost(why); // the drive has no watchdog: jogEnded() says so
+            emit connectionLost(why);
+        });
 }
 
 ShuokeDrive::~ShuokeDrive() = default;

@@ -99,9 +99,12 @@ DriveReply *ShuokeDrive::readParameters(const QList<int> &indices)
     const int total = state->pending;
     for (const ShuokeParameter *p : std::as_const(readable)) {
         const int index = p->index();
-        readOneParameter(reply, *p, [reply, state, index, total](const Error &e, qint64 value) {
-            if (e && !state->first)
+        const QString key = QString::fromLatin1(p->key);
+        readOneParameter(reply, *p, [reply, state, index, total, key](const Error &e, qint64 value) {
+            if (e && !state->first) {
                 state->first = e;
+                state->first.message = tr("%1: %2").arg(key, e.message);
+            }
             if (!e)
                 reply->setParameter(index, value);
             reply->reportProgress(++state->done, total);
@@ -169,6 +172,26 @@ void ShuokeDrive::writeNext(DriveReply *reply, QList<ParameterWrite> writes, int
         res.index = w.index;
         res.requested = w.value;
         res.readable = p.isReadable();
+        if (e && e.code != ErrorCode::DriveException && p.isReadable() && e.code != ErrorCode::LinkClosed) {
+            // The answer was lost or damaged; the write may have been carried out: the
+            // read-back tells.
+            readOneParameter(reply, p, [res, e, first, next, w](const Error &e2, qint64 value) mutable {
+                if (!e2 && value == w.value) {
+                    res.written = true;
+                    res.verified = true;
+                    res.readBack = value;
+                    next(res, first);
+                    return;
+                }
+                res.error = e.message;
+                if (!e2)
+                    res.readBack = value;
+                else
+                    res.error += QLatin1Char(' ') + tr("Whether the drive took the value is unknown: read it again.");
+                next(res, first ? first : e);
+            });
+            return;
+        }
         if (e) {
             res.error = e.message;
             next(res, first ? first : e);

@@ -102,6 +102,7 @@ private:
     void recordRx(const QByteArray &adu, const QString &note = {});
     void recordDiscarded(const QByteArray &bytes, const QString &note);
     QByteArray exceptionInSniffedBytes() const;
+    QByteArray strayFrameInSniffedBytes() const;
     void handleTimeout(int timeoutMs);
     int quietAfterTimeoutMs(int timeoutMs) const;
     int silenceMs() const;

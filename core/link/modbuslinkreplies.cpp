@@ -149,6 +149,16 @@ void ModbusLink::Private::handleTimeout(int timeoutMs)
                             "shielding, the bus termination and the baud rate.")
                  .arg(address)
                  .arg(m_settings.portName)};
+    } else if (!m_mismatchSeen && !m_rxSinceSend.isEmpty()) {
+        e = {ErrorCode::Timeout,
+             ModbusLink::tr("No complete reply from address %1 on %2 within %3 ms: only %4 "
+                            "byte(s) arrived, which form no valid frame (an incomplete or "
+                            "garbled reply). Check the baud rate, the wiring and the bus "
+                            "termination.")
+                 .arg(address)
+                 .arg(m_settings.portName)
+                 .arg(timeoutMs)
+                 .arg(m_rxSinceSend.size())};
     } else {
         e = {ErrorCode::Timeout,
              ModbusLink::tr("No reply from address %1 on %2 within %3 ms. Check the drive address "
@@ -157,13 +167,44 @@ void ModbusLink::Private::handleTimeout(int timeoutMs)
                  .arg(address)
                  .arg(m_settings.portName)
                  .arg(timeoutMs)};
-        if (m_mismatchSeen)
+        const QByteArray stray = strayFrameInSniffedBytes();
+        if (m_mismatchSeen && !stray.isEmpty() && quint8(stray.at(0)) == address)
+            e.message += QLatin1Char(' ')
+                       + ModbusLink::tr("A frame with function %1 came from that address instead, "
+                                        "which does not answer this request (function %2).")
+                             .arg(hexByte(quint8(stray.at(1))), hexByte(m_current->request.pdu.function));
+        else if (m_mismatchSeen && !stray.isEmpty())
+            e.message += QLatin1Char(' ')
+                       + ModbusLink::tr("A frame from address %1 arrived instead: do two drives "
+                                        "share an address, or does another master talk on the "
+                                        "bus?")
+                             .arg(quint8(stray.at(0)));
+        else if (m_mismatchSeen)
             e.message += QLatin1Char(' ')
                        + ModbusLink::tr("A frame with another address arrived meanwhile; servo "
                                         "drives send exception replies with address 1, so the "
                                         "drive may have rejected the request.");
     }
     retryOrFail(e, quiet);
+}
+
+QByteArray ModbusLink::Private::strayFrameInSniffedBytes() const
+{
+    // The first CRC-valid frame among the raw bytes, its length taken from its function code.
+    const QByteArray &b = m_rxSinceSend;
+    for (qsizetype i = 0; i + 4 <= b.size(); ++i) {
+        const quint8 fc = quint8(b.at(i + 1));
+        qsizetype n = 0;
+        if (fc & modbusrtu::ExceptionFlag)
+            n = modbusrtu::ExceptionReplySize;
+        else if (fc == 0x05 || fc == 0x06 || fc == 0x0F || fc == 0x10)
+            n = 8;
+        else if (fc >= 0x01 && fc <= 0x04)
+            n = 5 + quint8(b.at(i + 2));
+        if (n > 0 && i + n <= b.size() && hasValidCrc16(b.mid(i, n)))
+            return b.mid(i, n);
+    }
+    return {};
 }
 
 void ModbusLink::Private::onQtIntermediateError(QModbusReply *reply, QModbusDevice::IntermediateError error)

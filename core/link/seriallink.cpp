@@ -157,8 +157,10 @@ void SerialLink::scheduleNext()
         m_gapTimer.start(static_cast<int>((m_quietUntilUs - now + 999) / 1000));
         return;
     }
-    if (!m_current)
+    if (!m_current) {
         m_current = m_queue.dequeue();
+        m_lateForCurrent = false;
+    }
     transmit();
 }
 
@@ -220,6 +222,8 @@ void SerialLink::onReadyRead()
                                 QStringLiteral("unsolicited or late bytes"));
         if (m_recoveryQuietMs > 0)
             m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(m_recoveryQuietMs) * 1000);
+        if (m_current && m_state == State::Gap)
+            m_lateForCurrent = true; // after a timeout of the current request: its late answer
         return;
     }
     m_rx += data;
@@ -314,6 +318,15 @@ void SerialLink::retryOrFail(const Error &error, int quietMs)
         ++m_retryCount;
         m_state = State::Gap;
         scheduleNext();
+        return;
+    }
+    if (error.code == ErrorCode::Timeout && m_lateForCurrent) {
+        Error e = error;
+        e.message += QLatin1Char(' ')
+                   + tr("Answers came after the timeout: the drive is slower than the response "
+                        "allowance (%1 ms): raise the timeout.")
+                         .arg(m_settings.responseTimeoutMs);
+        finishCurrent(e);
         return;
     }
     finishCurrent(error);

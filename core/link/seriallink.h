@@ -118,6 +118,7 @@ private:
     qint64 m_quietUntilUs = 0;   // no transmission before this (gap / recovery)
     qint64 m_lastRxUs = 0;
     int m_recoveryQuietMs = 0;
+    bool m_lateForCurrent = false;   // bytes came between attempts of the current request
     quint64 m_timeouts = 0;
     quint64 m_retryCount = 0;
     quint64 m_checksumErrors = 0;

@@ -1,0 +1,261 @@
+// Fault injection against the shuoke host stack in RTU framing at 38400 baud (ShuokeBackend, SerialLink on
+// QSerialPort over a pty; tests/support ShuokeSerialBench) and SimShuokeDrive:
+//  - 5-10 % dropped, corrupted and late replies: a backup holds every true value or fails
+//    clearly with no file;
+//  - silent mid-backup: no file; silent mid-restore: the report matches the drive;
+//  - the adapter vanishing mid-backup: LinkClosed at once;
+//  - jogging: the drive answers its stop, so "stopped by command" is confirmed; a silent
+//    drive or a lost link cannot be stopped and the drive has no watchdog: jogEnded says
+//    "nothing" stops it and tells the user to use the machine's emergency stop — and the
+//    simulated axis is indeed still turning.
+// The 50 ms command gap of the protocol is switched off on both sides to keep this short;
+// the host's own tests keep it.
+#include <QtTest>
+
+#include "drive/driveconnection.h"
+#include "drive/shuokebackend.h"
+#include "drive/shuokedrive.h"
+#include "faultcheck.h"
+#include "protocol/shuokecommands.h"
+#include "shuokeserialbench.h"
+#include "simserialbus.h"
+
+#include <QTemporaryDir>
+
+#include <memory>
+#include <random>
+
+using namespace dd;
+using namespace dd::faultcheck;
+using namespace dd::shuoke;
+
+namespace {
+
+// The readable settings that do not change the link (the baud code does).
+const QList<int> kSettings = {CmdSetStartSpeed, CmdSetMaxSpeed, CmdSetStopSpeed, CmdSetAcceleration,
+                              CmdSetDeceleration, CmdSetHomingSpeed, CmdSetGearNumerator, CmdSetGearDenominator};
+
+} // namespace
+
+class TestFaultShuoke : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { QVERIFY(m_dir.isValid()); }
+    void cleanup() { m_bench.reset(); }
+    void backupUnderFaults_data();
+    void backupUnderFaults();
+    void silentMidBackup();
+    void silentMidRestore();
+    void adapterGoneMidBackup();
+    void stopIsConfirmedByTheDrive();
+    void silentMidJogNothingStopsIt();
+    void adapterGoneMidJog();
+
+private:
+    bool setUp(int timeoutMs = 30);
+    SimShuokeDrive &sim() { return m_sim->drive(); }
+
+    QTemporaryDir m_dir;
+    std::unique_ptr<ShuokeSerialBench> m_bench;
+    SimShuokeSerialDevice *m_sim = nullptr;
+    ShuokeDrive *m_drive = nullptr;
+};
+
+bool TestFaultShuoke::setUp(int timeoutMs)
+{
+    m_bench = std::make_unique<ShuokeSerialBench>();
+    QString error;
+    if (!m_bench->start(&error)) {
+        qWarning() << error;
+        return false;
+    }
+    SimShuokeDrive::Config c;
+    c.powerUpWindowMs = 0;
+    c.minCommandGapMs = 0;
+    c.baudCode = baudCodeForRate(38400);
+    m_sim = m_bench->addDrive(c);
+    ConnectionSettings s;
+    s.framing = QStringLiteral("rtu");
+    s.baud = 38400;
+    s.timeoutMs = timeoutMs;
+    s.options = {{QStringLiteral("shuoke.minGapMs"), 0}, {QStringLiteral("shuoke.model"), QStringLiteral("M6505")}};
+    if (!m_bench->connectHost(s, &error)) {
+        qWarning() << error;
+        return false;
+    }
+    m_drive = m_bench->drive(1);
+    return m_drive != nullptr;
+}
+
+void TestFaultShuoke::backupUnderFaults_data()
+{
+    QTest::addColumn<QString>("faults");
+    QTest::newRow("drop 10%") << "drop=0.10,seed=41";
+    QTest::newRow("corrupt 10%") << "corrupt=0.10,seed=42";
+    // A reply needs about 6 ms of wire and turnaround at 38400 baud; the allowance is 30 ms
+    // beyond the wire time: 0..31 ms extra makes about one in ten late.
+    QTest::newRow("late 10%") << "jitter=31,seed=43";
+    QTest::newRow("mixed 5%") << "drop=0.05,corrupt=0.05,jitter=29,seed=44";
+}
+
+void TestFaultShuoke::backupUnderFaults()
+{
+    QFETCH(QString, faults);
+    QVERIFY(setUp());
+    m_sim->faults().setSettings(*FaultSettings::parse(faults));
+    std::mt19937 rng(5);
+    const int rounds = 5;
+    int ok = 0;
+    for (int round = 0; round < rounds; ++round) {
+        for (int p : kSettings)
+            sim().setSetting(quint8(p), p == CmdSetGearNumerator || p == CmdSetGearDenominator
+                                            ? 1 + qint64(rng() % 60000) : qint64(rng() % 100000));
+        const QString path = m_dir.filePath(QStringLiteral("s-%1-%2.json").arg(QTest::currentDataTag()).arg(round));
+        const BackupOutcome o = backupToFile(m_drive, path);
+        QVERIFY2(o.finished, "a backup must never hang");
+        if (o.error.isError()) {
+            QVERIFY2(isClearError(o.error), qPrintable(o.error.message));
+            if (faults.startsWith(QLatin1String("jitter")))
+                QVERIFY2(o.error.message.contains(QStringLiteral("raise the timeout")), qPrintable(o.error.message));
+            QVERIFY(!QFile::exists(path));
+            qInfo().noquote() << "failed backup:" << o.error.message;
+            continue;
+        }
+        ++ok;
+        BackupFile loaded;
+        const Error le = loaded.load(path);
+        QVERIFY2(!le.isError(), qPrintable(le.message));
+        for (int p : kSettings)
+            QCOMPARE(*loaded.values().value(p), sim().setting(quint8(p)));
+    }
+    const SimSerialBusStats &s = m_bench->bus()->stats();
+    qInfo("%s: %d of %d backups complete; %llu replies dropped, %llu corrupted", qPrintable(faults), ok, rounds,
+          static_cast<unsigned long long>(s.framesDropped), static_cast<unsigned long long>(s.framesCorrupted));
+    QVERIFY2(ok >= 1, "retries make backups complete despite the faults");
+}
+
+void TestFaultShuoke::silentMidBackup()
+{
+    QVERIFY(setUp());
+    int replies = 0;
+    connect(m_bench->bus(), &SimSerialBus::replyWritten, this, [&] {
+        if (++replies == 6)
+            m_sim->faults().setSilent(true);
+    });
+    const QString path = m_dir.filePath(QStringLiteral("silent.json"));
+    const BackupOutcome o = backupToFile(m_drive, path);
+    QVERIFY(o.finished);
+    QCOMPARE(o.error.code, ErrorCode::Timeout);
+    QVERIFY(isClearError(o.error));
+    QVERIFY2(o.error.message.contains(QStringLiteral("speed")), qPrintable(o.error.message)); // which one
+    QVERIFY(!QFile::exists(path));
+    qInfo("silent mid-backup: failed after %lld ms: %s", static_cast<long long>(o.elapsedMs), qPrintable(o.error.message));
+}
+
+void TestFaultShuoke::silentMidRestore()
+{
+    QVERIFY(setUp());
+    QList<ParameterWrite> writes;
+    QMap<int, qint64> old;
+    for (int p : kSettings.mid(0, 6)) {
+        old.insert(p, sim().setting(quint8(p)));
+        writes.append({p, (sim().setting(quint8(p)) + 1234) % 100000});
+    }
+    int replies = 0;
+    connect(m_bench->bus(), &SimSerialBus::replyWritten, this, [&] {
+        if (++replies == 4) // two writes and their read-backs, then power loss
+            m_sim->faults().setSilent(true);
+    });
+    DriveReply *r = m_drive->writeParameters(writes);
+    QVERIFY(waitFinished(r, 8000));
+    QVERIFY(isClearError(r->error()));
+    QCOMPARE(r->writeResults().size(), writes.size());
+    const QString lie = dishonesty(
+        r->writeResults(), [&](int p) { return sim().setting(quint8(p)); }, [&](int p) { return old.value(p); });
+    QVERIFY2(lie.isEmpty(), qPrintable(lie));
+    for (int k = 0; k < writes.size(); ++k) {
+        const ParameterWriteResult &w = r->writeResults().at(k);
+        QCOMPARE(w.verified, k < 2);
+        QCOMPARE(w.written, k < 2);
+        QCOMPARE(sim().setting(quint8(w.index)), k < 2 ? writes.at(k).value : old.value(w.index));
+    }
+}
+
+void TestFaultShuoke::adapterGoneMidBackup()
+{
+    QVERIFY(setUp(100));
+    QSignalSpy lost(m_drive, &Drive::connectionLost);
+    int chunks = 0;
+    connect(m_bench->bus(), &SimSerialBus::bytesReceived, this, [&] {
+        if (++chunks == 3)
+            QMetaObject::invokeMethod(this, [this] { m_bench->bus()->endpoint()->close(); }, Qt::QueuedConnection);
+    });
+    const QString path = m_dir.filePath(QStringLiteral("unplugged.json"));
+    const BackupOutcome o = backupToFile(m_drive, path, 3000);
+    QVERIFY2(o.finished, "the backup must not hang when the adapter goes");
+    QCOMPARE(o.error.code, ErrorCode::LinkClosed);
+    QVERIFY(isClearError(o.error));
+    QVERIFY(!QFile::exists(path));
+    QVERIFY2(o.elapsedMs < 1000, "LinkClosed is reported at once");
+    QVERIFY(lost.size() == 1 || lost.wait(1000));
+    qInfo("adapter gone mid-backup: failed after %lld ms: %s", static_cast<long long>(o.elapsedMs),
+          qPrintable(o.error.message));
+}
+
+void TestFaultShuoke::stopIsConfirmedByTheDrive()
+{
+    QVERIFY(setUp());
+    QSignalSpy ended(m_drive, &Drive::jogEnded);
+    DriveReply *j = m_drive->jog(4000);
+    QVERIFY(waitFinished(j, 2000) && j->ok());
+    QVERIFY(waitUntil([this] { return sim().axis().isRunning(); }, 1000));
+    DriveReply *s = m_drive->stop();
+    QVERIFY(waitFinished(s, 2000));
+    QVERIFY2(s->ok(), qPrintable(s->error().message));
+    QCOMPARE(s->info().value(QStringLiteral("stoppedBy")).toString(), QStringLiteral("command"));
+    QCOMPARE(ended.size(), 1);
+    QCOMPARE(ended.first().first().value<JogEnd>().stoppedBy, JogEnd::StoppedBy::Command);
+}
+
+void TestFaultShuoke::silentMidJogNothingStopsIt()
+{
+    QVERIFY(setUp());
+    QSignalSpy ended(m_drive, &Drive::jogEnded);
+    QSignalSpy expired(m_drive, &Drive::jogLeaseExpired);
+    DriveReply *j = m_drive->jog(4000);
+    QVERIFY(waitFinished(j, 2000) && j->ok());
+    m_sim->faults().setSilent(true);
+    // Nobody renews: the lease runs out, the stop gets no answer.
+    QVERIFY(ended.wait(3000));
+    QCOMPARE(expired.size(), 1);
+    const JogEnd e = ended.first().first().value<JogEnd>();
+    QCOMPARE(e.stoppedBy, JogEnd::StoppedBy::Nothing);
+    QVERIFY(e.leaseExpired);
+    QVERIFY2(e.message.contains(QStringLiteral("emergency stop")), qPrintable(e.message));
+    m_sim->drive().advanceTo(m_bench->bus()->nowUs());
+    QVERIFY2(sim().axis().isRunning(), "the report is true: nothing stopped the silent drive");
+}
+
+void TestFaultShuoke::adapterGoneMidJog()
+{
+    QVERIFY(setUp());
+    m_drive->setJogLeaseMs(5000);
+    QSignalSpy ended(m_drive, &Drive::jogEnded);
+    DriveReply *j = m_drive->jog(-3000);
+    QVERIFY(waitFinished(j, 2000) && j->ok());
+    // The host polls (as the GUI's monitor does); the adapter goes.
+    m_bench->bus()->endpoint()->close();
+    DriveReply *poll = m_drive->readStatus();
+    QVERIFY(waitFinished(poll, 2000));
+    QVERIFY(ended.size() == 1 || ended.wait(2000));
+    const JogEnd e = ended.first().first().value<JogEnd>();
+    QCOMPARE(e.stoppedBy, JogEnd::StoppedBy::Nothing);
+    QVERIFY(e.linkLost);
+    QVERIFY2(e.message.contains(QStringLiteral("emergency stop")), qPrintable(e.message));
+    QVERIFY(!m_drive->isJogging());
+}
+
+QTEST_GUILESS_MAIN(TestFaultShuoke)
+#include "tst_faultshuoke.moc"

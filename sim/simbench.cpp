@@ -140,11 +140,12 @@ std::unique_ptr<SimSerialDevice> SimBench::makeShuokeSerialDrive(int address, Er
                                             : tr("Unknown shuoke framing \"%1\": use rtu, ascii, can or plc.").arg(f)};
         return nullptr;
     }
-    const int code = shuoke::baudCodeForRate(m_options.baud);
+    const int baud = m_options.bauds.value(address, m_options.baud);
+    const int code = shuoke::baudCodeForRate(baud);
     if (!shuoke::isUsableBaudCode(code)) {
         *error = {ErrorCode::InvalidArgument,
                   tr("A shuoke drive talks at 300, 600, 1200, 2400, 4800, 9600, 19200 or 38400 baud, not %1.")
-                      .arg(m_options.baud)};
+                      .arg(baud)};
         return nullptr;
     }
     if (!shuoke::isUnicastAddress(address)) {

@@ -23,15 +23,13 @@ QCanBusFrame toQt(const CanFrameData &f)
 }
 } // namespace
 
-SimCanBus::SimCanBus(QObject *parent) : QObject(parent)
+SimCanBus::SimCanBus(QObject *parent) : QObject(parent), m_busTimer(this)
 {
     m_clock.start();
     m_tickTimer.setInterval(TickIntervalMs);
     m_tickTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_tickTimer, &QTimer::timeout, this, &SimCanBus::onTick);
-    m_busTimer.setSingleShot(true);
-    m_busTimer.setTimerType(Qt::PreciseTimer);
-    connect(&m_busTimer, &QTimer::timeout, this, &SimCanBus::pump);
+    connect(&m_busTimer, &MicroTimer::timeout, this, &SimCanBus::pump);
 }
 
 SimCanBus::~SimCanBus()
@@ -318,8 +316,7 @@ void SimCanBus::pump()
         m_busTimer.stop();
         return;
     }
-    const qint64 waitUs = next - now;
-    m_busTimer.start(waitUs <= 0 ? 0 : static_cast<int>((waitUs + 999) / 1000));
+    m_busTimer.start(next - now);
 }
 
 void SimCanBus::transmit(const CanFrameData &frame, int device, qint64 atUs)

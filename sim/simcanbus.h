@@ -1,6 +1,7 @@
 #pragma once
 
 #include "common/error.h"
+#include "microtimer.h"
 #include "simcandevice.h"
 
 #include <QCanBusDevice>
@@ -37,7 +38,8 @@ struct SimCanBusStats
 //   - a device frame becomes ready at rxEnd + latency + injected latency (ticked frames: at
 //     the tick time + injected latency); when the bus is free the lowest ID among the ready
 //     frames wins, occupies the bus for its bit time and is written when its bits end (a
-//     Qt::PreciseTimer, never earlier).
+//     MicroTimer: to the microsecond on Linux, never earlier; late wake-ups catch up on
+//     the modelled timeline).
 // With nothing else on the bus a reply thus leaves at rxEnd + latency, the issue's
 // "max(now, busFreeAt) + latency", and arrives one frame time later.
 //
@@ -125,7 +127,7 @@ private:
 
     QElapsedTimer m_clock;
     QTimer m_tickTimer;
-    QTimer m_busTimer;
+    MicroTimer m_busTimer;
     qint64 m_busFreeUs = 0;
     quint64 m_seq = 0;
     std::vector<Queued> m_ready;

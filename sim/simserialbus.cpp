@@ -36,12 +36,10 @@ QByteArray collide(const QList<Candidate> &frames)
 } // namespace
 
 SimSerialBus::SimSerialBus(ByteEndpoint *endpoint, QObject *parent)
-    : QObject(parent), m_endpoint(endpoint)
+    : QObject(parent), m_endpoint(endpoint), m_timer(this)
 {
     m_clock.start();
-    m_timer.setSingleShot(true);
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &SimSerialBus::onTimer);
+    connect(&m_timer, &MicroTimer::timeout, this, &SimSerialBus::onTimer);
     if (m_endpoint) {
         m_endpoint->setParent(this);
         connect(m_endpoint, &ByteEndpoint::received, this, &SimSerialBus::onReceived);
@@ -173,9 +171,7 @@ void SimSerialBus::arm()
         m_timer.stop();
         return;
     }
-    const qint64 waitUs = m_pending.front().dueUs - nowUs();
-    const int waitMs = waitUs <= 0 ? 0 : static_cast<int>((waitUs + 999) / 1000);
-    m_timer.start(waitMs);
+    m_timer.start(m_pending.front().dueUs - nowUs());
 }
 
 void SimSerialBus::onTimer()

@@ -1,11 +1,11 @@
 #pragma once
 
 #include "byteendpoint.h"
+#include "microtimer.h"
 #include "simserialdevice.h"
 
 #include <QElapsedTimer>
 #include <QObject>
-#include <QTimer>
 
 #include <memory>
 #include <vector>
@@ -33,7 +33,8 @@ struct SimSerialBusStats
 //   device gets the chunk (garbled if its baud differs) at rxEnd
 //   replyGo  = max(rxEnd + device latency + injected extra latency, lineFreeAt)
 //   replyEnd = replyGo + replyBytes · charTime(device baud);  lineFreeAt = replyEnd
-//   the reply is written to the host whole at replyEnd (Qt::PreciseTimer, never earlier).
+//   the reply is written to the host whole at replyEnd (MicroTimer: to the microsecond on
+//   Linux, never earlier).
 // When the endpoint cannot tell the host's baud (hostBaud() == 0) every device is assumed
 // to match it.
 class SimSerialBus : public QObject
@@ -88,7 +89,7 @@ private:
     std::vector<std::unique_ptr<SimSerialDevice>> m_devices;
     std::vector<Pending> m_pending; // sorted by dueUs
     QElapsedTimer m_clock;
-    QTimer m_timer;
+    MicroTimer m_timer;
     qint64 m_lineFreeUs = 0;
     bool m_collisions = true;
     SimSerialBusStats m_stats;

@@ -51,6 +51,97 @@
     </message>
 </context>
 <context>
+    <name>dd::AlarmsPanel</name>
+    <message>
+        <source>Alarms</source>
+        <translation>报警</translation>
+    </message>
+    <message>
+        <source>No alarm</source>
+        <translation>无报警</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2.</source>
+        <translation>无法写入 %1：%2。</translation>
+    </message>
+    <message>
+        <source>Export alarm history</source>
+        <translation>导出报警历史</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Not read yet.</source>
+        <translation>尚未读取。</translation>
+    </message>
+    <message>
+        <source>Alarm %1</source>
+        <translation>报警 %1</translation>
+    </message>
+    <message>
+        <source>The drive reports no alarm.</source>
+        <translation>驱动器未报告报警。</translation>
+    </message>
+    <message>
+        <source>What to check: %1</source>
+        <translation>检查建议：%1</translation>
+    </message>
+    <message>
+        <source>Alarm cleared</source>
+        <translation>报警已清除</translation>
+    </message>
+    <message>
+        <source>Waiting for the drive&apos;s description…</source>
+        <translation>正在等待驱动器信息…</translation>
+    </message>
+    <message>
+        <source>Ask the drive for its current alarm code</source>
+        <translation>向驱动器读取当前报警代码</translation>
+    </message>
+    <message>
+        <source>Reset the drive&apos;s alarm (the cause must be gone)</source>
+        <translation>复位驱动器报警（须先排除报警原因）</translation>
+    </message>
+    <message>
+        <source>Current alarm</source>
+        <translation>当前报警</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>历史记录</translation>
+    </message>
+    <message>
+        <source>&amp;Read alarm</source>
+        <translation>读取报警(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Clear alarm</source>
+        <translation>清除报警(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>导出(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>Clear &amp;list</source>
+        <translation>清空列表(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>代码</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>报警</translation>
+    </message>
+</context>
+<context>
     <name>dd::BackupFile</name>
     <message>
         <source>The backup has no drive family</source>
@@ -752,6 +843,307 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
 </context>
 <context>
+    <name>dd::FrameDescriber</name>
+    <message>
+        <source>alarm %1</source>
+        <translation>报警 %1</translation>
+    </message>
+    <message>
+        <source>no alarm</source>
+        <translation>无报警</translation>
+    </message>
+    <message>
+        <source>keep-alive</source>
+        <translation>保活</translation>
+    </message>
+    <message>
+        <source>heartbeat: idle, position %1</source>
+        <translation>心跳：停止，位置 %1</translation>
+    </message>
+    <message>
+        <source>heartbeat: running, position %1</source>
+        <translation>心跳：运行中，位置 %1</translation>
+    </message>
+    <message>
+        <source>read P%1</source>
+        <translation>读 P%1</translation>
+    </message>
+    <message>
+        <source>P%1 = %2</source>
+        <translation>P%1 = %2</translation>
+    </message>
+    <message>
+        <source>read %1</source>
+        <translation>读 %1</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>write P%1 = %2</source>
+        <translation>写 P%1 = %2</translation>
+    </message>
+    <message>
+        <source>run at %1 r/min</source>
+        <translation>以 %1 r/min 运行</translation>
+    </message>
+    <message>
+        <source>run at 0 r/min (halt)</source>
+        <translation>以 0 r/min 运行（停住）</translation>
+    </message>
+    <message>
+        <source>move by %1</source>
+        <translation>相对移动 %1</translation>
+    </message>
+    <message>
+        <source>move to %1</source>
+        <translation>移动到 %1</translation>
+    </message>
+    <message>
+        <source>positioning speed %1 r/min</source>
+        <translation>定位速度 %1 r/min</translation>
+    </message>
+    <message>
+        <source>servo on</source>
+        <translation>伺服使能</translation>
+    </message>
+    <message>
+        <source>servo off</source>
+        <translation>伺服关闭</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>stop and disable</source>
+        <translation>停止并取消使能</translation>
+    </message>
+    <message>
+        <source>set position to %1</source>
+        <translation>设置位置为 %1</translation>
+    </message>
+    <message>
+        <source>clear alarm</source>
+        <translation>清除报警</translation>
+    </message>
+    <message>
+        <source>EE operation %1</source>
+        <translation>EE 操作 %1</translation>
+    </message>
+    <message>
+        <source>write %1 = %2</source>
+        <translation>写 %1 = %2</translation>
+    </message>
+    <message>
+        <source>all (broadcast): %1</source>
+        <translation>全部（广播）：%1</translation>
+    </message>
+    <message>
+        <source>exception %1: %2</source>
+        <translation>异常 %1：%2</translation>
+    </message>
+    <message>
+        <source>… (%1 values)</source>
+        <translation>…（共 %1 个值）</translation>
+    </message>
+    <message>
+        <source>EE operation running</source>
+        <translation>EE 操作进行中</translation>
+    </message>
+    <message>
+        <source>EE operation %1 done</source>
+        <translation>EE 操作 %1 完成</translation>
+    </message>
+    <message>
+        <source>written %1 = %2</source>
+        <translation>已写 %1 = %2</translation>
+    </message>
+    <message>
+        <source>EE operation accepted</source>
+        <translation>EE 操作已接受</translation>
+    </message>
+    <message>
+        <source>written %1</source>
+        <translation>已写 %1</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 失败：%2</translation>
+    </message>
+    <message>
+        <source>%1: OK</source>
+        <translation>%1：成功</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>left limit</source>
+        <translation>左限位</translation>
+    </message>
+    <message>
+        <source>origin</source>
+        <translation>原点</translation>
+    </message>
+    <message>
+        <source>right limit</source>
+        <translation>右限位</translation>
+    </message>
+    <message>
+        <source>enable input</source>
+        <translation>使能输入</translation>
+    </message>
+    <message>
+        <source>inputs %1</source>
+        <translation>输入 %1</translation>
+    </message>
+    <message>
+        <source>positive first</source>
+        <translation>先正向</translation>
+    </message>
+    <message>
+        <source>negative first</source>
+        <translation>先负向</translation>
+    </message>
+    <message>
+        <source>code %1 (%2 baud)</source>
+        <translation>代码 %1（%2 波特）</translation>
+    </message>
+    <message>
+        <source>code %1 (%2 kbit/s)</source>
+        <translation>代码 %1（%2 kbit/s）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::FrameMonitorDock</name>
+    <message>
+        <source>Save frames</source>
+        <translation>保存报文</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;Text files (*.txt *.log)</source>
+        <translation>CSV 文件 (*.csv);;文本文件 (*.txt *.log)</translation>
+    </message>
+    <message>
+        <source>%1 frames, %2 shown</source>
+        <translation>共 %1 帧，显示 %2 帧</translation>
+    </message>
+    <message>
+        <source>paused: %1 new frames wait</source>
+        <translation>已暂停：%1 帧新报文待显示</translation>
+    </message>
+    <message>
+        <source>%1 oldest frames dropped (the monitor keeps the last %2)</source>
+        <translation>已丢弃最早的 %1 帧（监视器只保留最近 %2 帧）</translation>
+    </message>
+    <message>
+        <source>Frame monitor</source>
+        <translation>报文监视</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>暂停(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Hold the view still. Frames are still recorded and appear when you resume.</source>
+        <translation>冻结显示。报文仍在记录，继续后显示。</translation>
+    </message>
+    <message>
+        <source>C&amp;lear</source>
+        <translation>清空(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Forget every recorded frame</source>
+        <translation>清除所有已记录的报文</translation>
+    </message>
+    <message>
+        <source>&amp;Save…</source>
+        <translation>保存(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Save the frames shown (with the filter applied) as CSV or text</source>
+        <translation>将当前显示（已过滤）的报文保存为 CSV 或文本</translation>
+    </message>
+    <message>
+        <source>Filter: hex bytes, meaning, link…</source>
+        <translation>过滤：十六进制字节、含义、链路…</translation>
+    </message>
+    <message>
+        <source>All directions</source>
+        <translation>所有方向</translation>
+    </message>
+    <message>
+        <source>TX and RX</source>
+        <translation>发送和接收</translation>
+    </message>
+    <message>
+        <source>TX only</source>
+        <translation>仅发送</translation>
+    </message>
+    <message>
+        <source>RX only</source>
+        <translation>仅接收</translation>
+    </message>
+    <message>
+        <source>Discarded only</source>
+        <translation>仅丢弃</translation>
+    </message>
+    <message>
+        <source>TX: sent by DriveDesk; RX: received; discarded: bytes that were not a valid reply</source>
+        <translation>TX：DriveDesk 发送；RX：接收；丢弃：不是有效应答的字节</translation>
+    </message>
+    <message>
+        <source>All links</source>
+        <translation>所有链路</translation>
+    </message>
+    <message>
+        <source>&amp;Follow</source>
+        <translation>跟随(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Keep the newest frame in view</source>
+        <translation>始终显示最新报文</translation>
+    </message>
+</context>
+<context>
+    <name>dd::FrameMonitorModel</name>
+    <message>
+        <source>discarded</source>
+        <translation>已丢弃</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>链路</translation>
+    </message>
+    <message>
+        <source>Dir.</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>Frame (hex)</source>
+        <translation>报文（十六进制）</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>含义</translation>
+    </message>
+</context>
+<context>
     <name>dd::JsonFieldReader</name>
     <message>
         <source>%1: field &quot;%2&quot;</source>
@@ -1038,6 +1430,233 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>A frame from address %1 arrived instead: do two drives share an address, or does another master talk on the bus?</source>
         <translation>收到的是地址 %1 的帧：是否有两台驱动器使用同一地址，或总线上有另一个主站？</translation>
+    </message>
+</context>
+<context>
+    <name>dd::MotionPanel</name>
+    <message>
+        <source>Enable</source>
+        <translation>使能</translation>
+    </message>
+    <message>
+        <source>Disable</source>
+        <translation>取消使能</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <source>Set position</source>
+        <translation>设置位置</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>运动</translation>
+    </message>
+    <message>
+        <source>pulses/s</source>
+        <translation>脉冲/秒</translation>
+    </message>
+    <message>
+        <source>r/min</source>
+        <translation>r/min</translation>
+    </message>
+    <message>
+        <source>pulses</source>
+        <translation>脉冲</translation>
+    </message>
+    <message>
+        <source>counts</source>
+        <translation>计数</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>%1: done.</source>
+        <translation>%1：完成。</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 失败：%2</translation>
+    </message>
+    <message>
+        <source>Move to %1</source>
+        <translation>移动到 %1</translation>
+    </message>
+    <message>
+        <source>Move by %1</source>
+        <translation>相对移动 %1</translation>
+    </message>
+    <message>
+        <source>Jogging at %1 %2 — let go to stop.</source>
+        <translation>正在以 %1 %2 点动 — 松开即停止。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the button was released.</source>
+        <translation>点动已停止：按钮已松开。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the pointer left the button.</source>
+        <translation>点动已停止：鼠标离开了按钮。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the button lost the keyboard focus.</source>
+        <translation>点动已停止：按钮失去了键盘焦点。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the window was deactivated.</source>
+        <translation>点动已停止：窗口不再处于活动状态。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: DriveDesk is no longer the active application.</source>
+        <translation>点动已停止：DriveDesk 不再是活动应用程序。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the Motion tab was hidden.</source>
+        <translation>点动已停止：“运动”页已隐藏。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: jogging was disabled.</source>
+        <translation>点动已停止：点动已被禁用。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the connection was lost.</source>
+        <translation>点动已停止：连接已断开。</translation>
+    </message>
+    <message>
+        <source>Jog stopped by the drive link: DriveDesk did not confirm the held button in time.</source>
+        <translation>点动已由通讯链路停止：DriveDesk 未能及时确认按钮仍被按住。</translation>
+    </message>
+    <message>
+        <source>Jog stopped: the drive did not start.</source>
+        <translation>点动已停止：驱动器未启动。</translation>
+    </message>
+    <message>
+        <source>Jog stopped.</source>
+        <translation>点动已停止。</translation>
+    </message>
+    <message>
+        <source>The jog of %1 was stopped because its hold was not renewed in time (the window was busy or frozen). Press the jog button again to continue.</source>
+        <translation>%1 的点动已停止，因为按住状态未能及时续期（窗口忙碌或无响应）。请重新按下点动按钮继续。</translation>
+    </message>
+    <message>
+        <source>%1 is not available on this drive.</source>
+        <translation>此驱动器不支持“%1”。</translation>
+    </message>
+    <message>
+        <source>Waiting for the drive&apos;s description…</source>
+        <translation>正在等待驱动器信息…</translation>
+    </message>
+    <message>
+        <source>State: %1</source>
+        <translation>状态：%1</translation>
+    </message>
+    <message>
+        <source>Position: %1 %2</source>
+        <translation>位置：%1 %2</translation>
+    </message>
+    <message>
+        <source>Power stage</source>
+        <translation>使能</translation>
+    </message>
+    <message>
+        <source>&amp;Enable</source>
+        <translation>使能(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Switch the power stage on: the motor holds its position.</source>
+        <translation>打开功率级：电机保持当前位置。</translation>
+    </message>
+    <message>
+        <source>&amp;Disable</source>
+        <translation>取消使能(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Switch the power stage off: the shaft turns freely.</source>
+        <translation>关闭功率级：电机轴可自由转动。</translation>
+    </message>
+    <message>
+        <source>Jog (hold to run)</source>
+        <translation>点动（按住运行）</translation>
+    </message>
+    <message>
+        <source>Jog &amp;speed:</source>
+        <translation>点动速度(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>◀ Jog −</source>
+        <translation>◀ 负向点动</translation>
+    </message>
+    <message>
+        <source>Jog + ▶</source>
+        <translation>正向点动 ▶</translation>
+    </message>
+    <message>
+        <source>Hold a jog button (or focus it and hold Space): the axis turns only while it is held and stops when you let go, when the window loses the focus or when the connection drops.</source>
+        <translation>按住点动按钮（或选中后按住空格键）：只有按住时轴才转动；松开、窗口失去焦点或连接断开时立即停止。</translation>
+    </message>
+    <message>
+        <source>Not jogging.</source>
+        <translation>未在点动。</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>定位运动</translation>
+    </message>
+    <message>
+        <source>&amp;Relative by</source>
+        <translation>相对移动(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Absolute to</source>
+        <translation>绝对移动到(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Positioning speed:</source>
+        <translation>定位速度：</translation>
+    </message>
+    <message>
+        <source>&amp;Move</source>
+        <translation>运动(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <source>Search positive direction first</source>
+        <translation>先向正方向搜索</translation>
+    </message>
+    <message>
+        <source>Search negative direction first</source>
+        <translation>先向负方向搜索</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>回零(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Set the current position to:</source>
+        <translation>将当前位置设为：</translation>
+    </message>
+    <message>
+        <source>Se&amp;t</source>
+        <translation>设置(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Stop this drive</source>
+        <translation>停止此驱动器</translation>
+    </message>
+    <message>
+        <source>STOP in the tool bar (Esc or F12) stops every drive on every connection.</source>
+        <translation>工具栏上的“停止”（Esc 或 F12）会停止所有连接上的所有驱动器。</translation>
     </message>
 </context>
 <context>
@@ -2020,6 +2639,17 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
 </context>
 <context>
+    <name>dd::TrafficLog</name>
+    <message>
+        <source>Cannot write %1: %2. Is the folder writable and the disk not full?</source>
+        <translation>无法写入 %1：%2。请检查文件夹是否可写、磁盘是否已满。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2. The previous file, if any, is unchanged.</source>
+        <translation>无法写入 %1：%2。原有文件（如有）保持不变。</translation>
+    </message>
+</context>
+<context>
     <name>dd::TrendChannelPanel</name>
     <message>
         <source>Scale ×</source>
@@ -2672,6 +3302,685 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Command does not support broadcast</source>
         <translation>该指令不支持广播</translation>
+    </message>
+</context>
+<context>
+    <name>dd::BackupDiffTable</name>
+    <message>
+        <source>same</source>
+        <translation>相同</translation>
+    </message>
+    <message>
+        <source>different</source>
+        <translation>不同</translation>
+    </message>
+    <message>
+        <source>only in the file (not read from the drive)</source>
+        <translation>仅在文件中（未从驱动器读到）</translation>
+    </message>
+    <message>
+        <source>not in the file</source>
+        <translation>文件中没有</translation>
+    </message>
+    <message>
+        <source>write-only: the drive cannot report its value</source>
+        <translation>只写：驱动器无法报告其数值</translation>
+    </message>
+    <message>
+        <source>Read-only: a restore cannot change it.</source>
+        <translation>只读：恢复时无法修改。</translation>
+    </message>
+    <message>
+        <source>Changes how the drive communicates (address, baud rate): tick it to restore it too; then connect again with the new settings.</source>
+        <translation>会改变驱动器的通讯方式（地址、波特率）：勾选后才会一并恢复；恢复后请用新设置重新连接。</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>不可读取</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>In the file</source>
+        <translation>文件中的值</translation>
+    </message>
+    <message>
+        <source>On the drive</source>
+        <translation>驱动器中的值</translation>
+    </message>
+    <message>
+        <source>Difference</source>
+        <translation>差异</translation>
+    </message>
+</context>
+<context>
+    <name>dd::BackupPanel</name>
+    <message>
+        <source>Backup</source>
+        <translation>备份</translation>
+    </message>
+    <message>
+        <source>Save backup</source>
+        <translation>保存备份</translation>
+    </message>
+    <message>
+        <source>DriveDesk backups (*.json)</source>
+        <translation>DriveDesk 备份文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s parameters…</source>
+        <translation>正在读取驱动器参数…</translation>
+    </message>
+    <message>
+        <source>No backup was saved:</source>
+        <translation>未保存备份：</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n parameter(s) to %1.</source>
+        <translation>
+            <numerusform>已将 %n 个参数保存到 %1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open backup</source>
+        <translation>打开备份</translation>
+    </message>
+    <message>
+        <source>DriveDesk backups (*.json);;All files (*)</source>
+        <translation>DriveDesk 备份文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>This file cannot be used, nothing was sent to the drive:</source>
+        <translation>此文件无法使用，未向驱动器发送任何数据：</translation>
+    </message>
+    <message>
+        <source>Reading the drive to compare it with the file…</source>
+        <translation>正在读取驱动器，与文件比较…</translation>
+    </message>
+    <message>
+        <source>The drive could not be compared with the file:</source>
+        <translation>无法将驱动器与文件比较：</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n different</source>
+        <translation>
+            <numerusform>%n 个不同</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n write-only (cannot be compared)</source>
+        <translation>
+            <numerusform>%n 个只写（无法比较）</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n not read from the drive</source>
+        <translation>
+            <numerusform>%n 个未从驱动器读到</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n the same</source>
+        <translation>
+            <numerusform>%n 个相同</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Compared with the drive: %1.</source>
+        <translation>与驱动器比较结果：%1。</translation>
+    </message>
+    <message>
+        <source>Tick the parameters to restore first.</source>
+        <translation>请先勾选要恢复的参数。</translation>
+    </message>
+    <message>
+        <source>Restore cancelled: nothing was sent to the drive.</source>
+        <translation>已取消恢复：未向驱动器发送任何数据。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Restoring %n parameter(s)…</source>
+        <translation>
+            <numerusform>正在恢复 %n 个参数…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Another firmware</source>
+        <translation>固件版本不同</translation>
+    </message>
+    <message>
+        <source>Restore the ticked parameters anyway?</source>
+        <translation>仍要恢复所勾选的参数吗？</translation>
+    </message>
+    <message>
+        <source>Change communication settings?</source>
+        <translation>更改通讯设置？</translation>
+    </message>
+    <message>
+        <source>%1 changes how the drive communicates (address, baud rate or framing). After the restore DriveDesk may no longer reach the drive with the current connection settings: connect again with the new ones.
+
+Restore anyway?</source>
+        <translation>%1 会改变驱动器的通讯方式（地址、波特率或帧格式）。恢复后 DriveDesk 可能无法再用当前连接设置访问驱动器，请用新设置重新连接。
+
+仍要恢复吗？</translation>
+    </message>
+    <message>
+        <source>Nothing was restored:</source>
+        <translation>未恢复任何参数：</translation>
+    </message>
+    <message>
+        <source>Write the ticked values from the file; the drive reads each back</source>
+        <translation>写入文件中勾选的数值；驱动器逐个回读校验</translation>
+    </message>
+    <message>
+        <source>%1 of %2 ticked</source>
+        <translation>已勾选 %1 / %2</translation>
+    </message>
+    <message>
+        <source>No file open.</source>
+        <translation>未打开文件。</translation>
+    </message>
+    <message>
+        <source>%1 — cannot be used: %2</source>
+        <translation>%1 — 无法使用：%2</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 — %2 drive at address %3, firmware %4, %n value(s), saved %5</source>
+        <translation>
+            <numerusform>%1 — %2 驱动器，地址 %3，固件 %4，%n 个数值，保存于 %5</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drive has firmware %1: a restore asks for confirmation.</source>
+        <translation>驱动器固件为 %1：恢复前会要求确认。</translation>
+    </message>
+    <message>
+        <source>Back up</source>
+        <translation>备份</translation>
+    </message>
+    <message>
+        <source>Read every parameter of the drive and save them to a file, to compare or restore them later — to this drive or to its replacement.</source>
+        <translation>读取驱动器的全部参数并保存到文件，以便日后比较或恢复——恢复到本驱动器或替换它的新驱动器。</translation>
+    </message>
+    <message>
+        <source>Save backup…</source>
+        <translation>保存备份…</translation>
+    </message>
+    <message>
+        <source>Compare and restore</source>
+        <translation>比较与恢复</translation>
+    </message>
+    <message>
+        <source>Open backup…</source>
+        <translation>打开备份…</translation>
+    </message>
+    <message>
+        <source>Show identical parameters</source>
+        <translation>显示相同的参数</translation>
+    </message>
+    <message>
+        <source>Tick all</source>
+        <translation>全部勾选</translation>
+    </message>
+    <message>
+        <source>Tick none</source>
+        <translation>全部取消</translation>
+    </message>
+    <message>
+        <source>Apply selected</source>
+        <translation>应用所选</translation>
+    </message>
+    <message>
+        <source>Wait until the drive has answered, then open %1 again.</source>
+        <translation>请等待驱动器应答后，再打开 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::EePanel</name>
+    <message>
+        <source>EEPROM</source>
+        <translation>EEPROM</translation>
+    </message>
+    <message>
+        <source>Makes the working values permanent: the drive keeps them after a power cycle. Do this after changing parameters.</source>
+        <translation>将当前工作参数永久保存：断电重启后驱动器仍保留这些值。修改参数后请执行此操作。</translation>
+    </message>
+    <message>
+        <source>Replaces the working values with those stored in EEPROM. Changes not yet stored are lost.</source>
+        <translation>用 EEPROM 中保存的值替换当前工作参数。尚未保存的修改将丢失。</translation>
+    </message>
+    <message>
+        <source>Copies the working values into the drive&apos;s own backup area, replacing the previous copy there.</source>
+        <translation>将当前工作参数复制到驱动器自身的备份区，覆盖备份区中原有的副本。</translation>
+    </message>
+    <message>
+        <source>Replaces the working values with the copy in the drive&apos;s backup area. Changes not yet stored are lost; store the result with EE-Set to keep it after a power cycle.</source>
+        <translation>用驱动器备份区中的副本替换当前工作参数。尚未保存的修改将丢失；如需断电后仍保留，请再执行 EE-Set。</translation>
+    </message>
+    <message>
+        <source>Sets the working values and the EEPROM to the factory defaults. Every setting made on this drive is lost, possibly its address and baud rate too: save a backup file first (Backup tab).</source>
+        <translation>将工作参数和 EEPROM 恢复为出厂设置。在本驱动器上做过的所有设置都将丢失，可能包括地址和波特率：请先保存备份文件（“备份”页）。</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Run %1 on drive %2 now?</source>
+        <translation>现在对驱动器 %2 执行 %1 吗？</translation>
+    </message>
+    <message>
+        <source>%1 cancelled: nothing was sent to the drive.</source>
+        <translation>已取消 %1：未向驱动器发送任何数据。</translation>
+    </message>
+    <message>
+        <source>%1 running (%2 s): waiting for the drive to report completion. Do not switch the drive off.</source>
+        <translation>%1 执行中（%2 秒）：等待驱动器报告完成。请勿断开驱动器电源。</translation>
+    </message>
+    <message>
+        <source>%1 failed after %2 s: %3</source>
+        <translation>%1 在 %2 秒后失败：%3</translation>
+    </message>
+    <message>
+        <source>%1 done (%2 s): %3.</source>
+        <translation>%1 已完成（%2 秒）：%3。</translation>
+    </message>
+    <message>
+        <source>The drive now works with other values: read the parameters again (Parameters tab) to see them.</source>
+        <translation>驱动器现在使用的是另一组参数值：请重新读取参数（“参数”页）查看。</translation>
+    </message>
+    <message>
+        <source>This drive has no EEPROM operations.</source>
+        <translation>此驱动器没有 EEPROM 操作。</translation>
+    </message>
+    <message>
+        <source>Waiting for the drive&apos;s identity…</source>
+        <translation>正在等待驱动器的识别信息…</translation>
+    </message>
+    <message>
+        <source>The drive works with its working values; EEPROM keeps a copy over a power cycle, and a backup area holds a second copy. Parameter writes change only the working values.</source>
+        <translation>驱动器按工作参数运行；EEPROM 保存一份断电后仍保留的副本，备份区另存一份副本。写参数只改变工作参数。</translation>
+    </message>
+    <message>
+        <source>EEPROM operations</source>
+        <translation>EEPROM 操作</translation>
+    </message>
+    <message>
+        <source>asks for confirmation</source>
+        <translation>需要确认</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterEditCommand</name>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>Edit %1</source>
+        <translation>编辑 %1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterTableModel</name>
+    <message>
+        <source>the drive reads back %1</source>
+        <translation>驱动器回读值为 %1</translation>
+    </message>
+    <message>
+        <source>the drive did not accept the value</source>
+        <translation>驱动器未接受该值</translation>
+    </message>
+    <message>
+        <source>not written: the write stopped before this parameter</source>
+        <translation>未写入：写入在此参数之前已中止</translation>
+    </message>
+    <message>
+        <source>No parameter dictionary is loaded for this drive.</source>
+        <translation>此驱动器未加载参数字典。</translation>
+    </message>
+    <message>
+        <source>Read-only: the drive does not accept a new value.</source>
+        <translation>只读：驱动器不接受新值。</translation>
+    </message>
+    <message>
+        <source>Edited: the drive has %1. Write it to send the new value.</source>
+        <translation>已修改：驱动器中为 %1。写入后才会发送新值。</translation>
+    </message>
+    <message>
+        <source>Edited: not yet written to the drive.</source>
+        <translation>已修改：尚未写入驱动器。</translation>
+    </message>
+    <message>
+        <source>Double-click to edit (%1 to %2).</source>
+        <translation>双击编辑（%1 至 %2）。</translation>
+    </message>
+    <message>
+        <source>The drive cannot report this parameter: DriveDesk shows the value it last wrote.</source>
+        <translation>驱动器无法报告此参数：DriveDesk 显示的是上次写入的值。</translation>
+    </message>
+    <message>
+        <source>read/write</source>
+        <translation>读写</translation>
+    </message>
+    <message>
+        <source>read-only</source>
+        <translation>只读</translation>
+    </message>
+    <message>
+        <source>write-only</source>
+        <translation>只写</translation>
+    </message>
+    <message>
+        <source>not readable (last written: %1)</source>
+        <translation>不可读取（上次写入：%1）</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>不可读取</translation>
+    </message>
+    <message>
+        <source>written, verified</source>
+        <translation>已写入，已校验</translation>
+    </message>
+    <message>
+        <source>written (cannot be read back)</source>
+        <translation>已写入（无法回读）</translation>
+    </message>
+    <message>
+        <source>failed: %1</source>
+        <translation>失败：%1</translation>
+    </message>
+    <message>
+        <source>not written</source>
+        <translation>未写入</translation>
+    </message>
+    <message>
+        <source>%1 marks a value edited here that differs from the drive&apos;s</source>
+        <translation>%1 表示此处修改的值与驱动器中的值不同</translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation>编号</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>代号</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>On the drive</source>
+        <translation>驱动器中</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation>范围</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>访问</translation>
+    </message>
+    <message>
+        <source>Last write</source>
+        <translation>上次写入</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterTransfer</name>
+    <message>
+        <source>A backup or restore is already running on this drive.</source>
+        <translation>此驱动器上已有备份或恢复正在进行。</translation>
+    </message>
+    <message>
+        <source>The drive is gone.</source>
+        <translation>驱动器已断开。</translation>
+    </message>
+    <message>
+        <source>The parameter dictionary lists no readable parameter.</source>
+        <translation>参数字典中没有可读取的参数。</translation>
+    </message>
+    <message>
+        <source>Not every parameter was restored: %1.</source>
+        <translation>并非所有参数都已恢复：%1。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterValueValidator</name>
+    <message>
+        <source>No parameter dictionary is loaded for this drive.</source>
+        <translation>此驱动器未加载参数字典。</translation>
+    </message>
+    <message>
+        <source>Enter a value.</source>
+        <translation>请输入数值。</translation>
+    </message>
+    <message>
+        <source>“%1” is not a whole number (write it in decimal, or in hexadecimal as 0x…).</source>
+        <translation>“%1”不是整数（请用十进制，或以 0x… 表示十六进制）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParametersPanel</name>
+    <message>
+        <source>Not accepted: %1 Nothing was sent to the drive.</source>
+        <translation>不接受：%1 未向驱动器发送任何数据。</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>This drive has no parameter that can be read.</source>
+        <translation>此驱动器没有可读取的参数。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n parameter(s)…</source>
+        <translation>
+            <numerusform>正在读取 %n 个参数…</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading failed after %n parameter(s): %1</source>
+        <translation>
+            <numerusform>读取 %n 个参数后失败：%1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Read %n parameter(s) from the drive.</source>
+        <translation>
+            <numerusform>已从驱动器读取 %n 个参数。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) not yet written.</source>
+        <translation>
+            <numerusform>%n 个修改的值尚未写入。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing to write: no selected row has an edited value.</source>
+        <translation>无需写入：所选行中没有修改过的值。</translation>
+    </message>
+    <message>
+        <source>Nothing to write: no value was edited.</source>
+        <translation>无需写入：没有修改任何值。</translation>
+    </message>
+    <message>
+        <source>Not written: %1 Nothing was sent to the drive.</source>
+        <translation>未写入：%1 未向驱动器发送任何数据。</translation>
+    </message>
+    <message>
+        <source>Not written: cancelled.</source>
+        <translation>未写入：已取消。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Writing %n parameter(s)…</source>
+        <translation>
+            <numerusform>正在写入 %n 个参数…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Change communication settings?</source>
+        <translation>更改通讯设置？</translation>
+    </message>
+    <message>
+        <source>%1 changes how the drive communicates (address, baud rate or framing). After the change DriveDesk may no longer reach the drive with the current connection settings: connect again with the new ones.
+
+Write anyway?</source>
+        <translation>%1 会改变驱动器的通讯方式（地址、波特率或帧格式）。修改后 DriveDesk 可能无法再用当前连接设置访问驱动器，请用新设置重新连接。
+
+仍要写入吗？</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n written and verified</source>
+        <translation>
+            <numerusform>%n 个已写入并校验</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n written (write-only, cannot be read back)</source>
+        <translation>
+            <numerusform>%n 个已写入（只写参数，无法回读）</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n failed or not written</source>
+        <translation>
+            <numerusform>%n 个失败或未写入</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Read every parameter from the drive</source>
+        <translation>从驱动器读取全部参数</translation>
+    </message>
+    <message>
+        <source>Write the edited values of the selected rows; the drive reads each back</source>
+        <translation>写入所选行中修改过的值；驱动器逐个回读校验</translation>
+    </message>
+    <message>
+        <source>Write every edited value; the drive reads each back</source>
+        <translation>写入全部修改过的值；驱动器逐个回读校验</translation>
+    </message>
+    <message>
+        <source>Undo: %1</source>
+        <translation>撤销：%1</translation>
+    </message>
+    <message>
+        <source>Redo: %1</source>
+        <translation>重做：%1</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>Search by index, key or name</source>
+        <translation>按编号、代号或名称搜索</translation>
+    </message>
+    <message>
+        <source>Read all</source>
+        <translation>全部读取</translation>
+    </message>
+    <message>
+        <source>Write selected</source>
+        <translation>写入所选</translation>
+    </message>
+    <message>
+        <source>Write all changed</source>
+        <translation>写入全部修改</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>撤销</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RestoreReportDialog</name>
+    <message>
+        <source>Restore report</source>
+        <translation>恢复报告</translation>
+    </message>
+    <message>
+        <source>Restore of %1:</source>
+        <translation>%1 的恢复结果：</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>In the file</source>
+        <translation>文件中的值</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>回读值</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>Detail</source>
+        <translation>详情</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>不可读取</translation>
+    </message>
+    <message>
+        <source>%1 selected: %2 written, %3 verified, %4 failed, %5 not attempted.</source>
+        <translation>选中 %1 个：写入 %2 个，校验通过 %3 个，失败 %4 个，未执行 %5 个。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n write-only parameter(s) written; the drive cannot report them back.</source>
+        <translation>
+            <numerusform>已写入 %n 个只写参数；驱动器无法回报其数值。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>written, verified</source>
+        <translation>已写入，已校验</translation>
+    </message>
+    <message>
+        <source>written (cannot be read back)</source>
+        <translation>已写入（无法回读）</translation>
+    </message>
+    <message>
+        <source>written, but the drive reads back another value</source>
+        <translation>已写入，但驱动器回读的值不同</translation>
+    </message>
+    <message>
+        <source>failed: the drive did not accept it</source>
+        <translation>失败：驱动器未接受</translation>
+    </message>
+    <message>
+        <source>not attempted</source>
+        <translation>未执行</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,11 @@
 #include "drivepanels.h"
 
+#include "alarmspanel.h"
+#include "backuppanel.h"
+#include "eepanel.h"
+#include "motionpanel.h"
 #include "overviewpanel.h"
+#include "parameterspanel.h"
 #include "trendpanel.h"
 
 namespace dd {
@@ -9,8 +14,15 @@ QList<DrivePanel *> createDrivePanels(const DriveContext &context, QWidget *pare
 {
     QList<DrivePanel *> panels;
     panels << new OverviewPanel(context, parent);
+    panels << new ParametersPanel(context, parent);
     panels << new TrendPanel(context, parent);
-    // Further panels (parameters, backup/restore, EE, motion, alarms) go here.
+    panels << new MotionPanel(context, parent);
+    panels << new AlarmsPanel(context, parent);
+    panels << new BackupPanel(context, parent);
+    // EEPROM operations: servo-modbus (the capabilities may not be known yet when the tabs
+    // are made; a drive without them shows why).
+    if (context.family == Family::ServoModbus || context.can(Capability::EeOperations))
+        panels << new EePanel(context, parent);
     return panels;
 }
 

@@ -7,6 +7,7 @@
 #include "drive/drivehub.h"
 #include "drivedirectory.h"
 #include "driveworkspace.h"
+#include "framemonitordock.h"
 #include "languagemanager.h"
 #include "recentfiles.h"
 #include "scanprogresswidget.h"
@@ -42,6 +43,11 @@ MainWindow::MainWindow(LanguageManager *language, QWidget *parent)
     createMenus();
     createToolBar();
     wireParts();
+    // The frame monitor records from the start; View → Frame monitor shows it.
+    auto *frames = new FrameMonitorDock(m_hub, this);
+    addDock(frames, Qt::BottomDockWidgetArea);
+    frames->hide();
+    connect(frames, &FrameMonitorDock::errorOccurred, m_statusBar, &StatusBarWidget::countError);
     m_recent->load();
     retranslate();
     emit m_language->languageChanged();   // check the current language in the menu

@@ -109,7 +109,7 @@ Error Cli::startBench(SimBench *bench, CliGlobals *globals)
     o.framing = c.framing;
     o.stateFile = globals->simStateFile;
     o.demoMotion = globals->simMotion;
-    if (c.family == Family::ServoCan || c.framing == QLatin1String("can"))
+    if (globals->isCanLink())
         o.can = QStringLiteral("virtualcan:auto");   // a private hub: nobody else on this bus
     if (globals->simDrives.isEmpty())
         o.addresses = {globals->address};
@@ -156,7 +156,8 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
             if (e.message.isEmpty())
                 e.message = tr("Could not open %1.").arg(context.globals.connection.linkName());
             const CliExit code = e.code == ErrorCode::OpenFailed || e.code == ErrorCode::LinkClosed
-                ? CliExit::OpenFailed : CliExit::DriveFailed;
+                ? CliExit::OpenFailed
+                : e.code == ErrorCode::InvalidArgument ? CliExit::Usage : CliExit::DriveFailed;
             out.failure(command->name(), int(code), e);
             return int(code);
         }

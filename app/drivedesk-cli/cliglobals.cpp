@@ -20,6 +20,7 @@ QList<CliOptionSpec> CliGlobals::optionSpecs()
         {QStringLiteral("json"), false, {}},
         {QStringLiteral("trace"), false, {}},
         {QStringLiteral("dictionary"), true, {}},
+        {QStringLiteral("option"), true, {}, true},
         {QStringLiteral("sim"), false, {}},
         {QStringLiteral("sim-drives"), true, {}},
         {QStringLiteral("sim-state"), true, {}},
@@ -27,6 +28,12 @@ QList<CliOptionSpec> CliGlobals::optionSpecs()
         {QStringLiteral("help"), false, QLatin1Char('h')},
         {QStringLiteral("version"), false, QLatin1Char('V')},
     };
+}
+
+bool CliGlobals::isCanLink() const
+{
+    return connection.isCan() || connection.family == Family::ServoCan
+        || connection.framing == QLatin1String("can");
 }
 
 int CliGlobals::defaultAddress(Family)
@@ -174,6 +181,19 @@ bool CliGlobals::load(const CliInvocation &inv, QString *error)
         if (!v)
             return false;
         c.retries = int(*v);
+    }
+
+    // Family settings where the protocol documents are ambiguous (PROTOCOLS.md "Decisions"):
+    // --option shuoke.checksum=twos-complement, repeatable. The backend checks them.
+    for (const QString &item : inv.values(QStringLiteral("option"))) {
+        const int eq = item.indexOf(QLatin1Char('='));
+        const QString key = item.left(eq).trimmed();
+        if (eq <= 0 || key.isEmpty() || !key.contains(QLatin1Char('.'))) {
+            *error = tr("--option: write FAMILY.KEY=VALUE, e.g. --option shuoke.checksum=twos-complement "
+                        "(got \"%1\").").arg(item);
+            return false;
+        }
+        c.options.insert(key, item.mid(eq + 1).trimmed());
     }
 
     addressGiven = inv.has(QStringLiteral("address"));

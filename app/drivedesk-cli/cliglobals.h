@@ -30,6 +30,8 @@ public:
     static QList<CliOptionSpec> optionSpecs();
     // Interprets and checks the global options; false with a translated message.
     bool load(const CliInvocation &inv, QString *error);
+    // Whether the link is a CAN bus (also with --sim, before the bench has named it).
+    bool isCanLink() const;
     // The address a command talks to when --address is not given (as drivedesk-sim's).
     static int defaultAddress(Family family);
 };

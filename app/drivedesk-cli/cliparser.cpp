@@ -139,6 +139,8 @@ bool CliParser::parse(const QStringList &arguments, CliInvocation *out, QString 
             inlineValue = arguments.at(++i);
         }
         out->options.insert(spec->name, inlineValue);
+        if (spec->repeatable)
+            out->lists[spec->name].append(inlineValue);
     }
     return true;
 }

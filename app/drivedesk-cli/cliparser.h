@@ -15,6 +15,7 @@ struct CliOptionSpec
     QString name;
     bool takesValue = false;
     QChar shortName;
+    bool repeatable = false;   // every value is kept (CliInvocation::values)
 };
 
 // A command and the options it accepts besides the global ones.
@@ -30,9 +31,11 @@ struct CliInvocation
     QString command;
     QStringList positionals;              // the command's arguments, in order
     QHash<QString, QString> options;      // long name → value ("" for flags); last one wins
+    QHash<QString, QStringList> lists;    // repeatable options: every value, in order
 
     bool has(const QString &name) const { return options.contains(name); }
     QString value(const QString &name) const { return options.value(name); }
+    QStringList values(const QString &name) const { return lists.value(name); }
 };
 
 // Splits argv into global options, the command, its options and its arguments. Global

@@ -27,11 +27,12 @@ bool ScanCommand::prepare(const CliInvocation &inv, QString *error)
     if (!expectArguments(inv, 0, 0, QString(), error))
         return false;
     const ConnectionSettings &c = context()->globals.connection;
+    const bool can = context()->globals.isCanLink();
     int lo = 1, hi = 247;
     if (c.family == Family::ServoCan) {
         lo = 0;
         hi = 99;
-    } else if (c.family == Family::Shuoke && c.isCan()) {
+    } else if (c.family == Family::Shuoke && can) {
         hi = 250;
     }
     m_options.from = lo;
@@ -53,7 +54,7 @@ bool ScanCommand::prepare(const CliInvocation &inv, QString *error)
         return false;
     }
     if (inv.has(QStringLiteral("bauds"))) {
-        if (c.isCan() && !context()->globals.sim) {
+        if (can) {
             *error = tr("scan: --bauds is for serial links; a CAN bus runs at one bitrate (--bitrate).");
             return false;
         }
@@ -64,7 +65,7 @@ bool ScanCommand::prepare(const CliInvocation &inv, QString *error)
         for (qint64 b : *list)
             if (!m_options.bauds.contains(int(b)))
                 m_options.bauds << int(b);
-    } else if (!c.isCan() && c.baud == 0) {
+    } else if (!can && c.baud == 0) {
         m_options.bauds = usualBauds(c.family);
     }
     if (c.timeoutMs > 0)

@@ -7,6 +7,7 @@
 
 #include <QPointer>
 #include <QThread>
+#include <QTimer>
 
 namespace dd {
 
@@ -45,6 +46,8 @@ DriveHub::~DriveHub()
             m_scans.clear();
             qDeleteAll(m_connections);
             m_connections.clear();
+            qDeleteAll(m_closing);
+            m_closing.clear();
         },
         Qt::BlockingQueuedConnection);
     m_thread->quit();
@@ -88,13 +91,30 @@ void DriveHub::closeConnection(int id)
     post(m_ioContext, [this, id] {
         if (Discovery *s = m_scans.take(id))
             s->cancel();
-        delete m_connections.take(id);
+        DriveConnection *c = m_connections.take(id);
+        bool stopping = false;
         for (auto it = m_watched.begin(); it != m_watched.end();) {
-            if (it.key().first == id)
-                it = m_watched.erase(it);
-            else
+            if (it.key().first != id) {
                 ++it;
+                continue;
+            }
+            // A held jog must not outlive its link (nothing could stop it from here on).
+            if (Drive *d = c ? c->drive(it.key().second) : nullptr; d && d->isJogging()) {
+                DriveReply *r = d->stop(false);
+                connect(r, &DriveReply::finished, r, &QObject::deleteLater);
+                stopping = true;
+            }
+            it = m_watched.erase(it);
         }
+        if (!stopping) {
+            delete c;
+            return;
+        }
+        m_closing.insert(c);
+        QTimer::singleShot(StopGraceMs, m_ioContext, [this, c] {
+            if (m_closing.remove(c))
+                delete c;
+        });
     });
 }
 
@@ -121,9 +141,9 @@ void DriveHub::watchDrive(int id, int address, Drive *drive)
             [this, id, address](const JogEnd &end) { emit jogEnded(id, address, end); });
 }
 
-void DriveHub::run(int id, int address, Operation op, Done done)
+void DriveHub::run(int id, int address, Operation op, Done done, Progress progress)
 {
-    post(m_ioContext, [this, id, address, op, done] {
+    post(m_ioContext, [this, id, address, op, done, progress] {
         auto fail = [this, done](const Error &e) {
             DriveResult r;
             r.error = e;
@@ -145,6 +165,10 @@ void DriveHub::run(int id, int address, Operation op, Done done)
             fail({ErrorCode::NotSupported, tr("The operation was not started.")});
             return;
         }
+        if (progress)
+            connect(reply, &DriveReply::progress, reply, [this, progress](int n, int total) {
+                post(this, [progress, n, total] { progress(n, total); });
+            });
         connect(reply, &DriveReply::finished, reply, [this, reply, done] {
             const DriveResult r = DriveResult::from(*reply);
             reply->deleteLater();

@@ -7,6 +7,7 @@
 #include "link/trafficrecord.h"
 
 #include <QHash>
+#include <QSet>
 #include <QObject>
 #include <functional>
 
@@ -28,6 +29,7 @@ class DriveHub : public QObject
 public:
     using Done = std::function<void(const DriveResult &)>;
     using Operation = std::function<DriveReply *(Drive &)>;
+    using Progress = std::function<void(int done, int total)>;
 
     explicit DriveHub(QObject *parent = nullptr);
     ~DriveHub() override;   // closes every connection and stops the thread
@@ -35,13 +37,17 @@ public:
     // Opens a connection on the I/O thread; `done` gets the id (> 0) or an error.
     void openConnection(const ConnectionSettings &settings,
                         std::function<void(int id, const Error &error)> done);
+    // A drive still jogging on it (its button goes away with the tab) is stopped first; the
+    // link then stays open for StopGraceMs so that the stop reaches the wire.
     void closeConnection(int id);
+    static constexpr int StopGraceMs = 100;
     void closeAll();
     QList<int> connectionIds() const { return m_settings.keys(); }
     ConnectionSettings connectionSettings(int id) const { return m_settings.value(id); }
 
-    // Runs `op` on the drive at `address` of connection `id`, on the I/O thread.
-    void run(int id, int address, Operation op, Done done = {});
+    // Runs `op` on the drive at `address` of connection `id`, on the I/O thread. `progress`
+    // gets the reply's progress() (long reads and writes, backups) on this thread.
+    void run(int id, int address, Operation op, Done done = {}, Progress progress = {});
     // Runs a scan; found/progress/finished arrive on this thread.
     void scan(int id, const ScanOptions &options,
               std::function<void(const DiscoveredDrive &)> found,
@@ -72,6 +78,7 @@ private:
     QThread *m_thread = nullptr;
     QObject *m_ioContext = nullptr;                  // lives on the I/O thread
     QHash<int, DriveConnection *> m_connections;     // objects live on the I/O thread
+    QSet<DriveConnection *> m_closing;               // I/O thread: closed, stopping a jog
     QHash<int, ConnectionSettings> m_settings;       // GUI-side copy
     QHash<int, Discovery *> m_scans;                 // I/O thread objects
     QHash<QPair<int, int>, bool> m_watched;          // I/O thread only

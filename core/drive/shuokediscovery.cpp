@@ -49,7 +49,10 @@ void ShuokeDiscovery::start()
         return;
     m_running = true;
     m_cancelled = false;
-    if (!m_transport || !m_transport->isOpen()) {
+    // A CAN bus may still be connecting (virtualcan connects asynchronously): its CanLink
+    // queues the broadcast until then, and startCan() fails if the link is really closed.
+    const bool can = m_transport && m_transport->framing() == ShuokeFraming::Can;
+    if (!m_transport || (!can && !m_transport->isOpen())) {
         QTimer::singleShot(0, this, [this] {
             finish({ErrorCode::LinkClosed, tr("The link is not open.")});
         });

@@ -93,6 +93,11 @@ signals:
     void opened();
     void closed(const dd::Error &reason);
     void idle();
+    // Raw bytes no request took (Unix, where the raw bytes are visible): bytes that arrived
+    // with no request waiting, bytes that formed no reply before a timeout, a CRC-valid
+    // frame from another address. Typically a late reply to an earlier request; the
+    // scanner uses them to ask such an address again. Emitted from the event loop.
+    void strayBytes(const QByteArray &bytes);
 
 private:
     class Private;

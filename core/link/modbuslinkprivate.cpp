@@ -82,8 +82,10 @@ bool ModbusLink::Private::open(const SerialSettings &settings, Error *error)
     m_client = client;
     connect(m_client, &QModbusDevice::errorOccurred, this, &Private::onClientError,
             Qt::QueuedConnection);
-    if (QIODevice *dev = m_client->device())
+    if (QIODevice *dev = m_client->device()) {
         connect(dev, &QIODevice::readyRead, this, &Private::onDeviceReadyRead);
+        connect(dev, &QIODevice::bytesWritten, this, &Private::onBytesWritten);
+    }
     m_sniffer.attach(m_client->device());
     m_taintedUntilUs.clear();
     m_quietUntilUs = 0;
@@ -287,6 +289,8 @@ void ModbusLink::Private::transmit()
     Pending &p = *m_current;
     ++p.attempts;
     m_rxSinceSend.clear();
+    m_writtenUs = 0;
+    m_lastRxUs = 0;
     m_mismatchSeen = false;
     m_crcErrorSeen = false;
     const modbusrtu::Request &pdu = p.request.pdu;
@@ -355,6 +359,7 @@ void ModbusLink::Private::onSniffed(const QByteArray &bytes)
 {
     // Called from inside the port's read handling: only record.
     if (m_state == State::Awaiting) {
+        m_lastRxUs = nowUs();
         m_rxSinceSend += bytes;
         if (m_rxSinceSend.size() > MaxSniffedBytes)
             m_rxSinceSend.remove(0, m_rxSinceSend.size() - MaxSniffedBytes);
@@ -363,6 +368,22 @@ void ModbusLink::Private::onSniffed(const QByteArray &bytes)
     recordDiscarded(bytes, QStringLiteral("late or unsolicited bytes (no request pending)"));
     ++m_strayBursts;
     noteStrayActivity();
+    reportStray(bytes);
+}
+
+void ModbusLink::Private::onBytesWritten()
+{
+    // Qt writes only the request it was handed: this is when it reached the port.
+    if (m_state == State::Awaiting && m_writtenUs == 0)
+        m_writtenUs = nowUs();
+}
+
+void ModbusLink::Private::reportStray(const QByteArray &bytes)
+{
+    // From the event loop: the sniffer calls us from inside the port's read handling, and a
+    // receiver may send the next request.
+    QMetaObject::invokeMethod(q, [link = q, bytes] { emit link->strayBytes(bytes); },
+                              Qt::QueuedConnection);
 }
 
 void ModbusLink::Private::onDeviceReadyRead()

@@ -63,6 +63,8 @@ public:
     QElapsedTimer m_clock;
 
     qint64 m_sentLowerBoundUs = 0; // the request cannot have left before this
+    qint64 m_writtenUs = 0;        // Qt handed the current request to the port (0: not yet)
+    qint64 m_lastRxUs = 0;         // the last sniffed bytes while awaiting (0: none)
     qint64 m_lastFinishUs = 0;
     qint64 m_quietUntilUs = 0;     // no request before this (stray bytes, broadcast turnaround)
     QByteArray m_rxSinceSend;      // sniffed bytes since the current request went to Qt
@@ -86,6 +88,8 @@ private:
     void onAbortTimer();
     void onClientError(QModbusDevice::Error error);
     void onSniffed(const QByteArray &bytes);
+    void onBytesWritten();
+    void reportStray(const QByteArray &bytes);
     void onDeviceReadyRead();
     bool abortInFlight();
     void handleSuccess(const QModbusResponse &response);

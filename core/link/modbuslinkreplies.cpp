@@ -138,8 +138,10 @@ void ModbusLink::Private::handleTimeout(int timeoutMs)
     const int address = m_current->request.pdu.address;
     const int quiet = quietAfterTimeoutMs(timeoutMs);
     taint(address, nowUs() + qint64(quiet) * 1000);
-    if (!m_rxSinceSend.isEmpty())
+    if (!m_rxSinceSend.isEmpty()) {
         recordDiscarded(m_rxSinceSend, QStringLiteral("bytes that formed no reply"));
+        reportStray(m_rxSinceSend);
+    }
     Error e;
     if (m_crcErrorSeen) {
         e = {ErrorCode::ChecksumError,
@@ -221,8 +223,12 @@ void ModbusLink::Private::onQtIntermediateError(QModbusReply *reply, QModbusDevi
         return;
     m_mismatchSeen = true;
     const QByteArray adu = exceptionInSniffedBytes();
-    if (adu.isEmpty())
-        return; // someone else's frame (or raw bytes not visible): keep waiting
+    if (adu.isEmpty()) {
+        // Someone else's frame (a late reply to an earlier request?): keep waiting.
+        if (!m_rxSinceSend.isEmpty())
+            reportStray(m_rxSinceSend);
+        return;
+    }
     const modbusrtu::Request pdu = m_current->request.pdu;
     if (!abortInFlight())
         return;
@@ -317,7 +323,10 @@ void ModbusLink::Private::finishCurrent(const Error &error, const QList<quint16>
     const qint64 now = nowUs();
     if (p.reply) {
         p.reply->setAttempts(p.attempts);
-        p.reply->setRoundTripUs(now - m_sentLowerBoundUs);
+        // From the request reaching the port to the reply's last byte when both were seen,
+        // not to this (later, queued) call: the scanner sizes its timeouts from it.
+        const bool precise = m_writtenUs > 0 && m_lastRxUs >= m_writtenUs;
+        p.reply->setRoundTripUs(precise ? m_lastRxUs - m_writtenUs : now - m_sentLowerBoundUs);
         if (error.isError())
             p.reply->finishWithError(error);
         else

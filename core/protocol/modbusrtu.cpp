@@ -2,6 +2,8 @@
 
 #include "protocol/crc16.h"
 
+#include <algorithm>
+
 namespace dd::modbusrtu {
 
 namespace {
@@ -31,11 +33,12 @@ QByteArray header(quint8 address, quint8 function)
 QString hex2(quint32 v) { return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0')); }
 QString hex4(quint32 v) { return QStringLiteral("0x%1").arg(v, 4, 16, QLatin1Char('0')); }
 
+// A caller's limit never widens the Modbus one: 124 or 125 registers of 0x10 would not fit
+// an ADU (and the encoders refuse them), so "maxCount 125 for both functions" means 123 for 0x10.
 int limitFor(quint8 function, int maxCount)
 {
-    if (maxCount > 0)
-        return maxCount;
-    return function == WriteMultipleRegisters ? StandardMaxWriteCount : StandardMaxReadCount;
+    const int standard = function == WriteMultipleRegisters ? StandardMaxWriteCount : StandardMaxReadCount;
+    return maxCount > 0 ? std::min(maxCount, standard) : standard;
 }
 
 template <typename T>

@@ -126,7 +126,8 @@ int expectedReplySize(const Request &request);
 // (UseStandardLimit = Modbus limits; servo-modbus passes 20). The address is not judged:
 // the caller decides whether the request is for it (or a broadcast).
 // Checks, in order: size >= 4, CRC, function code, length for the function, 0x10 byte
-// count (against the frame and against 2 * count), count in 1..maxCount.
+// count (against the frame and against 2 * count), count in 1..maxCount. A maxCount above
+// the Modbus limit of the function is lowered to it.
 // `reason`, when given, receives the DecodeError (None on success).
 Decoded<Request> decodeRequest(const QByteArray &adu, int maxCount = UseStandardLimit,
                                DecodeError *reason = nullptr);

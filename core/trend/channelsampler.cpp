@@ -31,6 +31,7 @@ void ChannelSampler::start()
     m_running = true;
     m_samples = 0;
     m_skipped = 0;
+    m_behind = false;
     m_clock.start();
     m_timer.start();
     tick();
@@ -48,8 +49,15 @@ void ChannelSampler::tick()
         return;
     if (m_pending) {
         ++m_skipped;
+        m_behind = true;
         return;
     }
+    read();
+}
+
+void ChannelSampler::read()
+{
+    m_behind = false;
     if (!m_drive) {
         stop();
         emit failed({ErrorCode::LinkClosed, tr("The drive is gone; sampling stopped.")});
@@ -68,7 +76,11 @@ void ChannelSampler::tick()
             return;
         }
         ++m_samples;
-        emit sampled(elapsedSeconds(), reply->samples());
+        const double timeS = elapsedSeconds();
+        // Behind the rate: the next read goes out now, before the sample is handled.
+        if (m_behind && m_drive)
+            read();
+        emit sampled(timeS, reply->samples());
     });
 }
 

@@ -16,8 +16,11 @@ class Drive;
 // Reads a drive's live values (Drive::readChannels) at a fixed rate, for trends and the
 // CLI's monitor. One read is outstanding at a time: a tick that comes while the previous
 // read is still on the wire is skipped and counted (the link is slower than the rate), so
-// the sampler never queues up work. Times are seconds since start(), taken when each
-// reply arrives. The first error stops sampling and is reported by failed().
+// the sampler never queues up work; the next read then leaves as soon as that one is in,
+// so a sampler asked for more than the link allows reads back to back (waiting for the
+// next tick would lose up to an interval per sample). Times are seconds since start(),
+// taken when each reply arrives. The first error stops sampling and is reported by
+// failed().
 class ChannelSampler : public QObject
 {
     Q_OBJECT
@@ -43,6 +46,7 @@ signals:
 
 private:
     void tick();
+    void read();
 
     QPointer<Drive> m_drive;
     QStringList m_channels;
@@ -50,6 +54,7 @@ private:
     QElapsedTimer m_clock;
     bool m_running = false;
     bool m_pending = false;
+    bool m_behind = false;     // a tick was skipped while the read was out
     quint64 m_samples = 0;
     quint64 m_skipped = 0;
 };

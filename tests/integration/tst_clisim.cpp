@@ -25,6 +25,7 @@ void TestCliSim::info_data()
     QTest::addColumn<QString>("family");
     QTest::newRow("servo-modbus") << QStringLiteral("servo-modbus");
     QTest::newRow("servo-can") << QStringLiteral("servo-can");
+    QTest::newRow("shuoke") << QStringLiteral("shuoke");
 }
 
 void TestCliSim::info()

@@ -4,6 +4,7 @@
 
 #include "drive/servomodbusbackend.h"
 #include "drive/servomodbusdrive.h"
+#include "drive/servomodbusscanner.h"
 #include "link/modbuslink.h"
 #include "link/traffictap.h"
 #include "protocol/crc16.h"
@@ -468,6 +469,35 @@ private slots:
         QCOMPARE(progress.last().at(0).toInt(), 90);
         QCOMPARE(progress.last().at(1).toInt(), 90);
         QCOMPARE(b.backend->link()->settings().baud, 38400); // restored
+    }
+
+    void scanAsksADriveAgainWhoseReplyCameLate()
+    {
+        Bench b({driveConfig(5, 115200, 7051), driveConfig(9, 115200, 7041)});
+        QVERIFY(b.open(115200));
+        if (!b.backend->link()->seesRawBytes())
+            QSKIP("late replies are only visible where the link sees raw bytes");
+        // Drive 5 answers 15 ms late: after its probe's timeout (wire time + 4 ms, at least
+        // Qt's 10 ms), so only its late reply shows that it is there.
+        b.drives[0]->faults().setExtraLatency(15);
+        ScanOptions o;
+        o.from = 1;
+        o.to = 12;
+        auto *scan = qobject_cast<ServoModbusScanner *>(b.backend->createDiscovery(o));
+        QVERIFY(scan);
+        QVERIFY(scan->probeTimeoutMs() < 15);
+        QSignalSpy finished(scan, &Discovery::finished);
+        QSignalSpy progress(scan, &Discovery::progress);
+        scan->start();
+        QVERIFY(finished.wait(10000));
+        QVERIFY(!finished.at(0).at(0).value<Error>().isError());
+        QList<int> found;
+        for (const DiscoveredDrive &d : scan->results())
+            found << d.address;
+        std::sort(found.begin(), found.end());
+        QCOMPARE(found, (QList<int>{5, 9}));
+        QCOMPARE(scan->probesSent(), 13); // 12 addresses + drive 5 once more
+        QCOMPARE(progress.last().at(0).toInt(), 12);
     }
 
     void scanCanBeCancelled()

@@ -47,6 +47,7 @@ class TestChannelSampler : public QObject
 private slots:
     void samplesAtTheRate();
     void slowLinkSkipsTicks();
+    void behindTheRateReadsBackToBack();
     void firstErrorStops();
 };
 
@@ -89,6 +90,26 @@ void TestChannelSampler::slowLinkSkipsTicks()
     s.stop();
     QVERIFY(s.skippedCount() >= 2);
     QVERIFY(drive.reads <= spy.count() + 1);   // never more than one read outstanding
+}
+
+void TestChannelSampler::behindTheRateReadsBackToBack()
+{
+    // Reads take 250 ms, ticks come every 200 ms: the tick at 200 ms is skipped, and the
+    // next read must leave when the first one is in (250 ms), not at the tick at 400 ms.
+    ChannelDrive drive;
+    drive.latencyMs = 250;
+    ChannelSampler s(&drive);
+    s.setIntervalMs(200);
+    int readsWhenSampled = -1;
+    connect(&s, &ChannelSampler::sampled, &s, [&] {
+        if (readsWhenSampled < 0)
+            readsWhenSampled = drive.reads;
+    });
+    s.start();
+    QTRY_VERIFY_WITH_TIMEOUT(readsWhenSampled >= 0, 2000);
+    s.stop();
+    QVERIFY(s.skippedCount() >= 1);
+    QCOMPARE(readsWhenSampled, 2);   // the second read was already out
 }
 
 void TestChannelSampler::firstErrorStops()

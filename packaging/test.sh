@@ -1,0 +1,181 @@
+#!/usr/bin/env bash
+# The project's test entry point (README, .ci/run). Three stages, each a CMake preset
+# (CMakePresets.json), all with two jobs:
+#
+#   default  build/       RelWithDebInfo build, the whole ctest suite
+#   asan     build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer (LeakSanitizer on),
+#                         the whole ctest suite again
+#   fuzz     build-fuzz/  clang libFuzzer targets (tests/fuzz), each fuzzed for a bounded
+#                         time on a copy of its corpus (default 25 s; --fuzz-seconds N or
+#                         DRIVEDESK_FUZZ_SECONDS)
+#
+# Usage: packaging/test.sh [--stage default|asan|fuzz|all[,...]] [--fuzz-seconds N]
+# Every stage runs even when an earlier one failed; a stage that does not configure or build
+# counts as one failure and says that its tests did not run. The exit status is non-zero when
+# anything failed. The last line is always "N passed, N failed" (ctest tests of every stage
+# plus one per fuzz target, plus one failure per stage that did not build).
+set -uo pipefail
+
+here="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$here"
+
+stages="all"
+fuzz_seconds="${DRIVEDESK_FUZZ_SECONDS:-25}"
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --stage) stages="${2:-}"; shift 2 ;;
+    --stage=*) stages="${1#--stage=}"; shift ;;
+    --fuzz-seconds) fuzz_seconds="${2:-}"; shift 2 ;;
+    --fuzz-seconds=*) fuzz_seconds="${1#--fuzz-seconds=}"; shift ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+    *) echo "test.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
+  esac
+done
+[ "$stages" = "all" ] && stages="default,asan,fuzz"
+case "$fuzz_seconds" in ''|*[!0-9]*) echo "test.sh: --fuzz-seconds needs a whole number" >&2; exit 2 ;; esac
+IFS=',' read -r -a stage_list <<< "$stages"
+for s in "${stage_list[@]}"; do
+  case "$s" in default|asan|fuzz) ;; *) echo "test.sh: unknown stage '$s' (default, asan, fuzz, all)" >&2; exit 2 ;; esac
+done
+
+passed=0
+failed=0
+summary=()
+note() { summary+=("$1"); }
+banner() { printf '\n==== %s ====\n' "$*"; }
+seconds_since() { echo $(( $(date +%s) - $1 )); }
+
+# configure + build a preset; 0 when both worked
+build_preset() {
+  local preset="$1"
+  banner "$preset: configure and build"
+  if ! cmake --preset "$preset"; then
+    failed=$((failed + 1)); note "$preset: configure FAILED, nothing of this stage ran"; return 1
+  fi
+  if ! cmake --build --preset "$preset"; then
+    failed=$((failed + 1)); note "$preset: build FAILED, its tests did not run"; return 1
+  fi
+  return 0
+}
+
+# ctest with a preset; adds its counts
+run_ctest() {
+  local preset="$1" log rc line total bad
+  log="$(mktemp)"
+  banner "$preset: ctest"
+  ctest --preset "$preset" --no-tests=error 2>&1 | tee "$log"
+  rc=${PIPESTATUS[0]}
+  line="$(grep -E '[0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1)"
+  rm -f "$log"
+  if [ -z "$line" ]; then
+    failed=$((failed + 1)); note "$preset: ctest reported no results (exit $rc)"; return
+  fi
+  bad="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<< "$line")"
+  total="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<< "$line")"
+  passed=$((passed + total - bad))
+  failed=$((failed + bad))
+  if [ "$rc" -ne 0 ] && [ "$bad" -eq 0 ]; then
+    failed=$((failed + 1)); note "$preset: ctest exited with $rc"
+  fi
+  note "$preset: $((total - bad)) of $total tests passed"
+}
+
+stage_ctest() {
+  local preset="$1" start
+  start=$(date +%s)
+  if build_preset "$preset"; then
+    run_ctest "$preset"
+  fi
+  note "$preset: stage took $(seconds_since "$start") s"
+}
+
+# One fuzz target: runs in the background, writes <run>/<name>.result ("ok ..." or "FAILED ...").
+fuzz_one() {
+  local name="$1" bin="$2" dict="$3"; shift 3
+  local run="$here/build-fuzz/fuzz-run/$name" log rc units added
+  rm -rf "$run"; mkdir -p "$run/corpus"
+  # The committed corpus is copied: libFuzzer adds new inputs to the first folder only.
+  cp -R "$1/." "$run/corpus/"; shift
+  log="$run/fuzz.log"
+  local args=(-max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
+              -artifact_prefix="$run/")
+  [ -n "$dict" ] && args+=(-dict="$dict")
+  "$bin" "${args[@]}" "$run/corpus" "$@" > "$log" 2>&1
+  rc=$?
+  units="$(grep -Eo 'stat::number_of_executed_units:[[:space:]]*[0-9]+' "$log" | grep -Eo '[0-9]+$')"
+  added="$(grep -Eo 'stat::new_units_added:[[:space:]]*[0-9]+' "$log" | grep -Eo '[0-9]+$')"
+  if [ "$rc" -eq 0 ]; then
+    echo "ok $name: ${units:-?} inputs in ${fuzz_seconds} s, ${added:-?} new" > "$run.result"
+  else
+    {
+      echo "FAILED $name (exit $rc), log: $log"
+      tail -n 60 "$log"
+      for a in "$run"/crash-* "$run"/leak-* "$run"/timeout-* "$run"/oom-*; do
+        [ -e "$a" ] || continue
+        echo "  reproduce: $bin $a"
+        echo "  keep it as a regression seed: cp $a tests/fuzz/corpus/$name/<what-it-caught>"
+      done
+    } > "$run.result"
+  fi
+  head -n 1 "$run.result"
+}
+
+stage_fuzz() {
+  local start list name bin dict seeds running=0
+  start=$(date +%s)
+  build_preset fuzz || { note "fuzz: stage took $(seconds_since "$start") s"; return; }
+  list="$here/build-fuzz/fuzz-targets.txt"
+  if [ ! -s "$list" ]; then
+    failed=$((failed + 1)); note "fuzz: no fuzz targets were configured ($list missing)"; return
+  fi
+  banner "fuzz: each target for ${fuzz_seconds} s, two at a time"
+  export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:print_summary=1"
+  export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:report_error_type=1"
+  rm -rf "$here/build-fuzz/fuzz-run"; mkdir -p "$here/build-fuzz/fuzz-run"
+  local names=() bins=() dicts=() seedsets=()
+  while read -r key value; do
+    case "$key" in
+      target) bins+=("$value"); names+=("$(basename "$value")"); dicts+=(""); seedsets+=("") ;;
+      seeds) seedsets[-1]="${seedsets[-1]}${value}"$'\n' ;;
+      dict) dicts[-1]="$value" ;;
+    esac
+  done < "$list"
+  local i
+  for i in "${!names[@]}"; do
+    name="${names[$i]}"; bin="${bins[$i]}"; dict="${dicts[$i]}"
+    mapfile -t seeds <<< "${seedsets[$i]%$'\n'}"
+    if [ ! -x "$bin" ]; then
+      echo "FAILED $name: $bin was not built" > "$here/build-fuzz/fuzz-run/$name.result"
+      continue
+    fi
+    if [ "$running" -ge 2 ]; then wait -n; running=$((running - 1)); fi
+    fuzz_one "$name" "$bin" "$dict" "${seeds[@]}" &
+    running=$((running + 1))
+  done
+  wait
+  banner "fuzz: results"
+  for name in "${names[@]}"; do
+    local result="$here/build-fuzz/fuzz-run/$name.result"
+    if [ -f "$result" ] && head -n 1 "$result" | grep -q '^ok '; then
+      passed=$((passed + 1))
+      head -n 1 "$result"
+    else
+      failed=$((failed + 1))
+      if [ -f "$result" ]; then cat "$result"; else echo "FAILED $name: no result"; fi
+      note "fuzz: $name FAILED"
+    fi
+  done
+  note "fuzz: ${#names[@]} targets, ${fuzz_seconds} s each; stage took $(seconds_since "$start") s"
+}
+
+for s in "${stage_list[@]}"; do
+  case "$s" in
+    default|asan) stage_ctest "$s" ;;
+    fuzz) stage_fuzz ;;
+  esac
+done
+
+banner "summary"
+for line in "${summary[@]}"; do echo "$line"; done
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,383 @@
+// The Motion tab against simulated drives on their own thread: hold-to-run jog (the motor
+// turns only while the button is held; release, focus loss, window deactivation, a frozen
+// window whose lease is not renewed, a disconnect → stop), capability-based enabling, and
+// the Chinese texts of the new panels.
+#include "drive/drivehub.h"
+#include "drivedirectory.h"
+#include "driveworkspace.h"
+#include "jogbutton.h"
+#include "languagemanager.h"
+#include "alarmspanel.h"
+#include "framemonitordock.h"
+#include "motionpanel.h"
+#include "protocol/servocan.h"
+#include "panelrig.h"
+
+#include <QApplication>
+#include <QCanBus>
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QLoggingCategory>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QTest>
+#include <atomic>
+#include <memory>
+
+using namespace dd;
+
+namespace {
+
+// What the simulated drive received, kept alive by the hook that fills it.
+struct SimFrames
+{
+    QElapsedTimer clock;
+    std::atomic<qint64> stopAtMs{-1};   // first stop (0x26 / 0x28)
+    std::atomic<int> jogs{0};           // speed-mode commands (0x20)
+};
+
+// A servo-can (or servo-modbus) bench with the drive's Motion tab shown.
+struct Rig : PanelRig
+{
+    std::shared_ptr<SimFrames> frames = std::make_shared<SimFrames>();
+    MotionPanel *panel = nullptr;
+
+    bool start(const SimBenchOptions &options, QString *why)
+    {
+        frames->clock.start();
+        std::shared_ptr<SimFrames> f = frames;
+        auto hook = [f](const CanFrameData &frame) {
+            const auto m = servocan::decode(frame);
+            if (!m.ok())
+                return;
+            const auto c = m.value->command;
+            if ((c == servocan::Command::Stop || c == servocan::Command::StopAndDisable) && f->stopAtMs.load() < 0)
+                f->stopAtMs = f->clock.elapsed();
+            if (c == servocan::Command::RunSpeed)
+                ++f->jogs;
+        };
+        if (!PanelRig::start(options, why, hook))
+            return false;
+        panel = show<MotionPanel>(why);
+        return panel != nullptr;
+    }
+    qint64 now() const { return frames->clock.elapsed(); }
+    qint64 stopAt() const { return frames->stopAtMs.load(); }
+    int jogs() const { return frames->jogs.load(); }
+
+    double motorSpeed()
+    {
+        return sim.call([this] {
+            SimServoCanDrive *d = sim.canDrive();
+            return d ? d->motor().speed() : 0.0;
+        });
+    }
+    double motorTarget()
+    {
+        return sim.call([this] {
+            SimServoCanDrive *d = sim.canDrive();
+            return d ? d->motor().targetSpeed() : 0.0;
+        });
+    }
+    bool turning() { return motorSpeed() > 1000.0; }   // counts/s; 100 r/min = 16667
+    bool atRest() { return motorTarget() == 0.0 && qAbs(motorSpeed()) < 1.0; }
+};
+
+SimBenchOptions servoCanBench()
+{
+    SimBenchOptions o;
+    o.family = Family::ServoCan;
+    o.can = QStringLiteral("virtualcan:auto");
+    return o;
+}
+
+} // namespace
+
+class TestMotionPanel : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.virtualcan.info=false\n"
+                                                        "drivedesk.*.debug=false"));
+        if (!QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")))
+            QSKIP("Qt's virtualcan plugin is not installed");
+    }
+
+    void speedRangesByFamily()
+    {
+        QCOMPARE(MotionPanel::speedRange(Family::Shuoke).maximum, 100000);
+        QCOMPARE(MotionPanel::speedRange(Family::ServoCan).maximum, 6000);
+        QVERIFY(MotionPanel::speedRange(Family::ServoCan).jogDefault <= 100);
+    }
+
+    void speaksChinese()
+    {
+        DriveContext ctx;
+        ctx.family = Family::Shuoke;
+        MotionPanel motion(ctx);
+        AlarmsPanel alarms(ctx);
+        FrameMonitorDock frames(nullptr);
+        LanguageManager language;
+        QVERIFY(language.apply(LanguageManager::Language::Chinese));
+        QCoreApplication::sendPostedEvents();   // LanguageChange is posted to top-level widgets
+        QCOMPARE(motion.title(), QStringLiteral("运动"));
+        QCOMPARE(motion.jogPositive()->text(), QStringLiteral("正向点动 ▶"));
+        QCOMPARE(motion.findChild<QSpinBox *>(QStringLiteral("jogSpeed"))->suffix(), QStringLiteral(" 脉冲/秒"));
+        QCOMPARE(alarms.title(), QStringLiteral("报警"));
+        QCOMPARE(frames.windowTitle(), QStringLiteral("报文监视"));
+        QVERIFY(language.apply(LanguageManager::Language::English));
+        QCoreApplication::sendPostedEvents();
+        QCOMPARE(motion.title(), QStringLiteral("Motion"));
+        QCOMPARE(frames.windowTitle(), QStringLiteral("Frame monitor"));
+    }
+
+    void servoCanEnablesItsFunctions()
+    {
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why), qPrintable(why));
+        MotionPanel *p = rig.panel;
+        for (const char *name : {"jogPlus", "jogMinus", "jogSpeed", "enableButton", "disableButton",
+                                 "moveButton", "moveRelative", "moveAbsolute", "setPositionButton",
+                                 "stopDriveButton"}) {
+            auto *w = p->findChild<QWidget *>(QLatin1String(name));
+            QVERIFY2(w, name);
+            QVERIFY2(w->isEnabled(), name);
+        }
+        // servo-can has no homing: disabled, and the reason is given.
+        auto *home = p->findChild<QPushButton *>(QStringLiteral("homeButton"));
+        QVERIFY(!home->isEnabled());
+        QVERIFY(!home->toolTip().isEmpty());
+        QCOMPARE(home->toolTip(), p->driveInfo().reason(Capability::Home));
+        auto *reason = p->findChild<QLabel *>(QStringLiteral("homeBoxReason"));
+        QVERIFY(reason->isVisible());
+        QCOMPARE(reason->text(), home->toolTip());
+        QVERIFY(!p->findChild<QLabel *>(QStringLiteral("motionUnsupported"))->isVisible());
+        auto *speed = p->findChild<QSpinBox *>(QStringLiteral("jogSpeed"));
+        QCOMPARE(speed->maximum(), 6000);
+        QVERIFY(speed->suffix().contains(QLatin1String("r/min")));
+    }
+
+    void jogTurnsWhileHeldAndStopsOnRelease()
+    {
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why), qPrintable(why));
+        JogButton *jog = rig.panel->jogPositive();
+        QSignalSpy stopped(jog, &JogButton::jogStopped);
+        QVERIFY(rig.atRest());
+
+        QTest::mousePress(jog, Qt::LeftButton);
+        QVERIFY(jog->isHolding());
+        QVERIFY(jog->isDown());
+        QVERIFY2(waitUntil([&] { return rig.turning(); }, 2000), "the motor does not turn");
+        QVERIFY(rig.motorTarget() > 0);   // + button: positive
+        // Held for well over the 300 ms lease: the renewals keep it going.
+        waitUntil([] { return false; }, 800);
+        QVERIFY(jog->isHolding());
+        QVERIFY2(rig.turning(), "the jog stopped while the button was held");
+        QCOMPARE(rig.stopAt(), qint64(-1));
+        QCOMPARE(rig.jogs(), 1);
+
+        const qint64 releasedAt = rig.now();
+        QTest::mouseRelease(jog, Qt::LeftButton);
+        QVERIFY(!jog->isHolding());
+        QVERIFY(!jog->isDown());
+        QCOMPARE(stopped.count(), 1);
+        QCOMPARE(stopped.at(0).at(0).value<JogButton::StopReason>(), JogButton::StopReason::Released);
+        QVERIFY2(waitUntil([&] { return rig.stopAt() >= 0; }, 1000), "no stop reached the drive");
+        const qint64 latency = rig.stopAt() - releasedAt;
+        QVERIFY2(latency <= 200, qPrintable(QStringLiteral("stop after %1 ms").arg(latency)));
+        QVERIFY2(waitUntil([&] { return rig.atRest(); }, 1000), "the motor did not come to rest");
+        QCOMPARE(rig.jogs(), 1);
+
+        // The minus button turns the other way.
+        QTest::mousePress(rig.panel->jogNegative(), Qt::LeftButton);
+        QVERIFY(waitUntil([&] { return rig.motorSpeed() < -1000.0; }, 2000));
+        QTest::mouseRelease(rig.panel->jogNegative(), Qt::LeftButton);
+        QVERIFY(waitUntil([&] { return rig.atRest(); }, 1000));
+    }
+
+    void keyboardHoldIgnoresAutoRepeatAndStopsOnFocusLoss()
+    {
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why), qPrintable(why));
+        JogButton *jog = rig.panel->jogPositive();
+        QSignalSpy stopped(jog, &JogButton::jogStopped);
+        jog->setFocus(Qt::TabFocusReason);
+        QVERIFY(jog->hasFocus());
+        QTest::keyPress(jog, Qt::Key_Space);
+        QVERIFY(jog->isHolding());
+        QVERIFY(waitUntil([&] { return rig.turning(); }, 2000));
+        // A held key auto-repeats as release/press pairs: one jog, still held.
+        for (int i = 0; i < 5; ++i) {
+            QKeyEvent release(QEvent::KeyRelease, Qt::Key_Space, Qt::NoModifier, QStringLiteral(" "), true);
+            QApplication::sendEvent(jog, &release);
+            QKeyEvent press(QEvent::KeyPress, Qt::Key_Space, Qt::NoModifier, QStringLiteral(" "), true);
+            QApplication::sendEvent(jog, &press);
+            waitUntil([] { return false; }, 30);
+        }
+        QVERIFY(jog->isHolding());
+        QCOMPARE(stopped.count(), 0);
+        QCOMPARE(rig.jogs(), 1);
+        QVERIFY(rig.turning());
+
+        // The focus moves elsewhere (a click, Tab, a dialog): stop.
+        const qint64 lostAt = rig.now();
+        rig.panel->findChild<QSpinBox *>(QStringLiteral("jogSpeed"))->setFocus(Qt::OtherFocusReason);
+        QVERIFY(!jog->isHolding());
+        QCOMPARE(stopped.count(), 1);
+        QCOMPARE(stopped.at(0).at(0).value<JogButton::StopReason>(), JogButton::StopReason::FocusLost);
+        QVERIFY(waitUntil([&] { return rig.stopAt() >= 0; }, 1000));
+        QVERIFY(rig.stopAt() - lostAt <= 200);
+        QVERIFY(waitUntil([&] { return rig.atRest(); }, 1000));
+        // The late key release changes nothing.
+        QTest::keyRelease(jog, Qt::Key_Space);
+        QCOMPARE(stopped.count(), 1);
+    }
+
+    void windowDeactivationStops()
+    {
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why), qPrintable(why));
+        JogButton *jog = rig.panel->jogPositive();
+        QSignalSpy stopped(jog, &JogButton::jogStopped);
+        QTest::mousePress(jog, Qt::LeftButton);
+        QVERIFY(waitUntil([&] { return rig.turning(); }, 2000));
+
+        QWidget other;
+        other.resize(200, 100);
+        other.show();
+        const qint64 switchedAt = rig.now();
+        QApplication::setActiveWindow(&other);
+        QVERIFY(QTest::qWaitForWindowActive(&other));
+        QVERIFY(!jog->isHolding());
+        QVERIFY(stopped.count() >= 1);
+        QCOMPARE(stopped.at(0).at(0).value<JogButton::StopReason>(), JogButton::StopReason::WindowDeactivated);
+        QVERIFY(waitUntil([&] { return rig.stopAt() >= 0; }, 1000));
+        QVERIFY(rig.stopAt() - switchedAt <= 200);
+        QVERIFY(waitUntil([&] { return rig.atRest(); }, 1000));
+        // The mouse button let go in the other window: nothing restarts.
+        QTest::mouseRelease(jog, Qt::LeftButton);
+        QCOMPARE(rig.jogs(), 1);
+    }
+
+    void frozenWindowLetsTheLeaseExpire()
+    {
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why), qPrintable(why));
+        JogButton *jog = rig.panel->jogPositive();
+        QSignalSpy stopped(jog, &JogButton::jogStopped);
+        QSignalSpy errors(rig.panel, &DrivePanel::errorOccurred);
+        QTest::mousePress(jog, Qt::LeftButton);
+        QVERIFY(waitUntil([&] { return rig.turning(); }, 2000));
+        waitUntil([] { return false; }, 200);   // renewals running
+        QCOMPARE(rig.stopAt(), qint64(-1));
+
+        // The GUI thread hangs: no renewal reaches the I/O thread, which stops the axis by
+        // itself once the 300 ms lease has run out.
+        const qint64 frozenAt = rig.now();
+        QThread::msleep(800);
+        const qint64 stopAt = rig.stopAt();
+        QVERIFY2(stopAt >= 0, "the I/O side did not stop the jog");
+        QVERIFY2(stopAt - frozenAt >= 200 && stopAt - frozenAt <= 600,
+                 qPrintable(QStringLiteral("stopped %1 ms into the freeze").arg(stopAt - frozenAt)));
+        QVERIFY(rig.atRest() || rig.motorTarget() == 0.0);
+
+        // When the window wakes up the button lets go, even though the mouse is still down.
+        QVERIFY(waitUntil([&] { return !jog->isHolding(); }, 1000));
+        QCOMPARE(stopped.count(), 1);
+        QCOMPARE(stopped.at(0).at(0).value<JogButton::StopReason>(), JogButton::StopReason::LeaseExpired);
+        QCOMPARE(errors.count(), 1);
+        QCOMPARE(errors.at(0).at(0).value<Error>().code, ErrorCode::Timeout);
+        QVERIFY(waitUntil([&] { return rig.atRest(); }, 1000));
+        waitUntil([] { return false; }, 200);
+        QVERIFY(rig.atRest());
+        QTest::mouseRelease(jog, Qt::LeftButton);
+        QCOMPARE(rig.jogs(), 1);
+    }
+
+    void disconnectWhileHeldStops()
+    {
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why), qPrintable(why));
+        JogButton *jog = rig.panel->jogPositive();
+        QTest::mousePress(jog, Qt::LeftButton);
+        QVERIFY(waitUntil([&] { return rig.turning(); }, 2000));
+        // As ConnectionController::disconnectLink does it: close, then forget (the tab goes).
+        const qint64 closedAt = rig.now();
+        rig.hub->closeConnection(rig.id);
+        rig.directory->removeConnection(rig.id);
+        QVERIFY(rig.workspace->panelsFor(rig.id, 1).isEmpty());
+        QVERIFY2(waitUntil([&] { return rig.stopAt() >= 0; }, 1000), "no stop reached the drive");
+        QVERIFY2(rig.stopAt() - closedAt <= 200,
+                 qPrintable(QStringLiteral("stop after %1 ms").arg(rig.stopAt() - closedAt)));
+        QVERIFY(waitUntil([&] { return rig.atRest(); }, 1000));
+    }
+
+    void shuokeMovesButHasNoEnable()
+    {
+        Rig rig;
+        SimBenchOptions o;
+        o.family = Family::Shuoke;   // RTU on a pty, an M6505
+        QString why;
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        MotionPanel *p = rig.panel;
+        for (const char *name : {"jogPlus", "jogMinus", "jogSpeed", "moveButton", "setPositionButton",
+                                 "stopDriveButton", "homeButton"}) {
+            auto *w = p->findChild<QWidget *>(QLatin1String(name));
+            QVERIFY2(w && w->isEnabled(), name);
+        }
+        auto *enable = p->findChild<QPushButton *>(QStringLiteral("enableButton"));
+        QVERIFY(!enable->isEnabled());
+        QVERIFY(!p->driveInfo().reason(Capability::Enable).isEmpty());
+        QCOMPARE(enable->toolTip(), p->driveInfo().reason(Capability::Enable));
+        QVERIFY(p->findChild<QLabel *>(QStringLiteral("powerBoxReason"))->isVisible());
+        QVERIFY(!p->findChild<QLabel *>(QStringLiteral("motionUnsupported"))->isVisible());
+        auto *speed = p->findChild<QSpinBox *>(QStringLiteral("jogSpeed"));
+        QCOMPARE(speed->maximum(), 100000);
+        QVERIFY(speed->suffix().contains(QLatin1String("pulses/s")));
+        QVERIFY(p->findChild<QSpinBox *>(QStringLiteral("moveValue"))->suffix().contains(QLatin1String("pulses")));
+    }
+
+    void servoModbusShowsEveryMotionDisabledWithTheReason()
+    {
+        Rig rig;
+        SimBenchOptions o;
+        o.family = Family::ServoModbus;
+        QString why;
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        MotionPanel *p = rig.panel;
+        const QString reason = p->driveInfo().reason(Capability::Jog);
+        QVERIFY(!reason.isEmpty());
+        for (const char *name : {"jogPlus", "jogMinus", "jogSpeed", "enableButton", "disableButton",
+                                 "moveButton", "homeButton", "setPositionButton", "stopDriveButton"}) {
+            auto *w = p->findChild<QWidget *>(QLatin1String(name));
+            QVERIFY2(w, name);
+            QVERIFY2(!w->isEnabled(), name);
+            QVERIFY2(!w->toolTip().isEmpty(), name);
+        }
+        QCOMPARE(p->jogPositive()->toolTip(), reason);
+        // One reason for the whole family, written once above the controls.
+        auto *banner = p->findChild<QLabel *>(QStringLiteral("motionUnsupported"));
+        QVERIFY(banner->isVisible());
+        QCOMPARE(banner->text(), reason);
+        QVERIFY(!p->findChild<QLabel *>(QStringLiteral("jogBoxReason"))->isVisible());
+        // A disabled jog button cannot be held.
+        QTest::mousePress(p->jogPositive(), Qt::LeftButton);
+        QVERIFY(!p->jogPositive()->isHolding());
+        QTest::mouseRelease(p->jogPositive(), Qt::LeftButton);
+    }
+};
+
+QTEST_MAIN(TestMotionPanel)
+#include "tst_motionpanel.moc"

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <QCoreApplication>
+#include <QPointer>
+#include <QUndoCommand>
+#include <optional>
+
+namespace dd {
+
+class ParameterTableModel;
+
+// One edit of a parameter value in the Parameters tab, for its undo stack: redo sets the
+// new edit, undo puts the old one back (nullopt: the row showed the drive's value).
+class ParameterEditCommand : public QUndoCommand
+{
+    Q_DECLARE_TR_FUNCTIONS(dd::ParameterEditCommand)
+public:
+    ParameterEditCommand(ParameterTableModel *model, int parameterIndex, std::optional<qint64> before,
+                         std::optional<qint64> after);
+
+    void undo() override;
+    void redo() override;
+
+private:
+    QPointer<ParameterTableModel> m_model;
+    int m_index;
+    std::optional<qint64> m_before;
+    std::optional<qint64> m_after;
+};
+
+} // namespace dd

@@ -3921,6 +3921,16 @@ Write anyway?</source>
 <context>
     <name>dd::RestoreReportDialog</name>
     <message>
+        <source>unknown: no answer to the read-back</source>
+        <translation>未知：回读没有应答</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) could not be read back: what the drive holds is unknown; compare again.</source>
+        <translation>
+            <numerusform>%n 个参数无法回读：驱动器中的值未知，请重新比较。</numerusform>
+        </translation>
+    </message>
+    <message>
         <source>Restore report</source>
         <translation>恢复报告</translation>
     </message>

@@ -42,7 +42,7 @@ RestoreReportDialog::RestoreReportDialog(const RestoreReport &report, const Para
         m_table->setItem(row, 0, name);
         m_table->setItem(row, 1, new QTableWidgetItem(e.fileValue ? QString::number(*e.fileValue) : QString()));
         QString readBack = QStringLiteral("—");
-        if (r && r->written)
+        if (r && r->written && !r->readBackFailed)
             readBack = r->readable ? QString::number(r->readBack) : tr("not readable");
         m_table->setItem(row, 2, new QTableWidgetItem(readBack));
         auto *outcomeItem = new QTableWidgetItem(outcomeText(outcome));
@@ -75,6 +75,10 @@ QString RestoreReportDialog::summary() const
                        .arg(m_report.indices(O::Verified).size())
                        .arg(failed)
                        .arg(m_report.indices(O::NotAttempted).size());
+    if (const int unconfirmed = int(m_report.indices(O::Unconfirmed).size()))
+        text += QLatin1Char(' ') + tr("%n parameter(s) could not be read back: what the drive holds is unknown; "
+                                      "compare again.",
+                                      nullptr, unconfirmed);
     if (const int writeOnly = int(m_report.indices(O::WrittenOnly).size()))
         text += QLatin1Char(' ') + tr("%n write-only parameter(s) written; the drive cannot report them back.",
                                       nullptr, writeOnly);
@@ -89,6 +93,7 @@ QString RestoreReportDialog::outcomeText(RestoreReport::Outcome outcome)
     case RestoreReport::Outcome::Mismatch: return tr("written, but the drive reads back another value");
     case RestoreReport::Outcome::Failed: return tr("failed: the drive did not accept it");
     case RestoreReport::Outcome::NotAttempted: return tr("not attempted");
+    case RestoreReport::Outcome::Unconfirmed: return tr("unknown: no answer to the read-back");
     }
     return {};
 }

@@ -1435,6 +1435,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
 <context>
     <name>dd::MotionPanel</name>
     <message>
+        <source>Jog ended: the drive stopped answering.</source>
+        <translation>点动已结束：驱动器不再应答。</translation>
+    </message>
+    <message>
         <source>Enable</source>
         <translation>使能</translation>
     </message>

@@ -54,6 +54,11 @@ void JogButton::setDrive(DriveHub *hub, int connectionId, int address)
         if (id == m_connectionId && address == m_address)
             endHold(StopReason::LeaseExpired, false);
     });
+    // The I/O side ended the jog without a confirmed stop (the drive went silent).
+    m_hubConnections << connect(hub, &DriveHub::jogEnded, this, [this](int id, int address, const JogEnd &end) {
+        if (id == m_connectionId && address == m_address && end.stoppedBy != JogEnd::StoppedBy::Command)
+            endHold(end.linkLost ? StopReason::LinkLost : StopReason::DriveLost, false);
+    });
 }
 
 void JogButton::stopHold(StopReason reason)

@@ -17,7 +17,8 @@ class DriveHub;
 //     application becoming inactive, the button being hidden or disabled, the link being
 //     lost, or the button being destroyed → the hold ends and a stop is sent;
 //   - the drive stops by itself (I/O side) when the lease is not renewed in time (a frozen
-//     GUI): jogLeaseExpired ends the hold;
+//     GUI): jogLeaseExpired ends the hold; so does a jogEnded that no stop command confirms
+//     (the drive went silent: its watchdog, if it has one, stops the axis);
 //   - auto-repeated key presses and releases (a held key) are ignored: one hold, one jog.
 // The button never emits clicked(): it acts on press and release only.
 class JogButton : public QPushButton
@@ -36,6 +37,7 @@ public:
         Disabled,
         LinkLost,
         LeaseExpired,   // the I/O side stopped the axis: no renewal came in time
+        DriveLost,      // the drive stopped answering: the I/O side ended the jog
         JogFailed,      // the drive refused or did not start the jog
         Requested       // stopHold() by the owner (STOP, tab change ...)
     };

@@ -2,6 +2,7 @@
 
 #include "displaytext.h"
 #include "drive/drive.h"
+#include "drive/drivehub.h"
 #include "drive/drivereply.h"
 
 #include <QComboBox>
@@ -108,6 +109,17 @@ MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
     jogLayout->insertWidget(2, m_jogHint);
     for (JogButton *b : {m_jogMinus, m_jogPlus}) {
         b->setDrive(context.hub, context.connectionId, context.address);
+    }
+    // How a jog ended when no stop command was confirmed: what stops the axis now.
+    if (context.hub)
+        connect(context.hub, &DriveHub::jogEnded, this, [this](int id, int address, const JogEnd &end) {
+            if (id != this->context().connectionId || address != this->context().address
+                || end.stoppedBy == JogEnd::StoppedBy::Command)
+                return;
+            m_jogState->setText(end.message);
+            reportError({end.linkLost ? ErrorCode::LinkClosed : ErrorCode::Timeout, end.message});
+        });
+    for (JogButton *b : {m_jogMinus, m_jogPlus}) {
         b->setMinimumHeight(40);
         b->setSpeed(m_jogSpeed->value());
         connect(b, &JogButton::jogStarted, this, &MotionPanel::onJogStarted);
@@ -298,6 +310,7 @@ void MotionPanel::onJogStopped(JogButton::StopReason reason)
     case R::Disabled: why = tr("Jog stopped: jogging was disabled."); break;
     case R::LinkLost: why = tr("Jog stopped: the connection was lost."); break;
     case R::LeaseExpired: why = tr("Jog stopped by the drive link: DriveDesk did not confirm the held button in time."); break;
+    case R::DriveLost: why = tr("Jog ended: the drive stopped answering."); break;
     case R::JogFailed: why = tr("Jog stopped: the drive did not start."); break;
     case R::Requested: why = tr("Jog stopped."); break;
     }

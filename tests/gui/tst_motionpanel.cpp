@@ -324,6 +324,32 @@ private slots:
         QVERIFY(waitUntil([&] { return rig.atRest(); }, 1000));
     }
 
+    void silentDriveWhileHeldEndsTheHold()
+    {
+        // The drive goes silent (its CAN cable cut) while the button is held: the host sees
+        // no heartbeat, ends the jog, and the panel says the drive's watchdog stops the axis.
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why), qPrintable(why));
+        JogButton *jog = rig.panel->jogPositive();
+        QSignalSpy stopped(jog, &JogButton::jogStopped);
+        QSignalSpy errors(rig.panel, &DrivePanel::errorOccurred);
+        QTest::mousePress(jog, Qt::LeftButton);
+        QVERIFY(waitUntil([&] { return rig.turning(); }, 2000));
+        waitUntil([] { return false; }, 200);   // the jog confirmed by a heartbeat, renewals running
+        QVERIFY(jog->isHolding());
+        rig.sim.call([&rig] { rig.sim.bench()->setSilent(true); });
+        QVERIFY2(waitUntil([&] { return !jog->isHolding(); }, 1500), "the hold must end");
+        QCOMPARE(stopped.count(), 1);
+        QCOMPARE(stopped.at(0).at(0).value<JogButton::StopReason>(), JogButton::StopReason::DriveLost);
+        QVERIFY(waitUntil([&] { return errors.count() == 1; }, 500));
+        const QString state = rig.panel->findChild<QLabel *>(QStringLiteral("jogState"))->text();
+        QVERIFY2(state.contains(QLatin1String("watchdog")), qPrintable(state));
+        QVERIFY2(waitUntil([&] { return rig.atRest(); }, 3500), "the drive's watchdog stops the axis");
+        QTest::mouseRelease(jog, Qt::LeftButton);
+        QCOMPARE(rig.jogs(), 1);
+    }
+
     void shuokeMovesButHasNoEnable()
     {
         Rig rig;

@@ -6,6 +6,7 @@
 #include <QLoggingCategory>
 #include <QModbusReply>
 #include <QModbusRtuSerialClient>
+#include <QSerialPort>
 #include <QVariant>
 #include <cmath>
 
@@ -300,6 +301,10 @@ void ModbusLink::Private::transmit()
     const int ifdUs = m_client->interFrameDelay();
     m_sentLowerBoundUs = nowUs() + ifdUs;
     const QModbusRequest qreq(QModbusPdu::FunctionCode(pdu.function), adu.mid(2, adu.size() - 4));
+    // Nothing is pending: whatever waits unread answers no request of ours (a duplicate, a
+    // late answer). Read after the request went out it would pass for its answer.
+    if (auto *port = qobject_cast<QSerialPort *>(m_client->device()))
+        port->clear(QSerialPort::Input);
     QModbusReply *r = m_client->sendRawRequest(qreq, pdu.address);
     if (!r) {
         finishCurrent({ErrorCode::LinkClosed,

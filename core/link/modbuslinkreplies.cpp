@@ -104,12 +104,17 @@ void ModbusLink::Private::handleSuccess(const QModbusResponse &response)
     }
     const qsizetype requestBytes = modbusrtu::encodeRequest(req.pdu).size();
     const qint64 earliest = m_sentLowerBoundUs + (wireTimeUs(requestBytes) + wireTimeUs(adu.size())) / 2;
-    if (m_settings.rejectImpossiblyEarlyReplies && now < earliest) {
+    // Qt keeps bytes that followed a reply in its buffer and matches them to the next
+    // request of the same shape: a duplicated or late answer then passes for this one's.
+    // Where the raw bytes are visible, the answer must be among those read since the request.
+    const bool stale = m_sniffer.isActive() && !m_rxSinceSend.contains(adu);
+    if (stale || (m_settings.rejectImpossiblyEarlyReplies && now < earliest)) {
         // A reply this early answers an earlier request; the answer to this one is still
         // on its way: let it pass, then ask again.
         ++m_lateReplies;
-        recordDiscarded(adu, QStringLiteral("arrived sooner than a reply could: late answer to an "
-                                            "earlier request"));
+        recordDiscarded(adu, stale ? QStringLiteral("received before the request: a stale answer")
+                                   : QStringLiteral("arrived sooner than a reply could: late answer to an "
+                                                    "earlier request"));
         const int quiet = quietAfterTimeoutMs(effectiveTimeoutMs(req));
         taint(req.pdu.address, now + qint64(quiet) * 1000);
         retryOrFail({ErrorCode::Timeout,

@@ -237,16 +237,23 @@ void TestFaultFrames::duplicatedRepliesAreNeverTakenForTheNextAnswer()
         sim().setParameter(n, quint16(1000 + n));
     m_before = sim().parameters();
     // Each read has the same length, address and function as the next one: a stale second
-    // copy would fit it.
-    for (int n = 10; n < 20; ++n) {
-        DriveReply *r = drive()->readParameters({n});
-        QVERIFY(waitDone(r));
-        if (r->ok())
-            QCOMPARE(r->parameters().value(n), qint64(1000 + n));
-        else
-            QVERIFY2(r->parameters().isEmpty(), qPrintable(r->error().message));
+    // copy would fit it (Qt keeps it in its buffer and hands it to the next request).
+    int ok = 0;
+    for (int round = 0; round < 3; ++round) {
+        for (int n = 10; n < 20; ++n) {
+            DriveReply *r = drive()->readParameters({n});
+            QVERIFY(waitDone(r));
+            if (r->ok()) {
+                ++ok;
+                QCOMPARE(r->parameters().value(n), qint64(1000 + n));
+            } else {
+                QVERIFY2(r->parameters().isEmpty(), qPrintable(r->error().message));
+            }
+        }
     }
-    QVERIFY(m_dev->rewritten >= 10);
+    qInfo("duplicated replies: %d of 30 reads answered, %llu stale answers discarded", ok,
+          static_cast<unsigned long long>(m_backend->link()->lateReplyCount()));
+    QVERIFY(m_dev->rewritten >= 30);
     QVERIFY(sim().parameters() == m_before);
 }
 

@@ -175,11 +175,11 @@ private slots:
         auto *errors = bar.findChild<QLabel *>(QStringLiteral("errorCount"));
         QCOMPARE(errors->text(), QStringLiteral("Errors: 2"));
         // Frames per second over the first window (a coarse one-second timer, which may fire
-        // up to 5 % early): 12 frames.
+        // early, and more so on a loaded machine): 12 frames, within a generous window.
         auto *fps = bar.findChild<QLabel *>(QStringLiteral("framesPerSecond"));
         QTRY_VERIFY_WITH_TIMEOUT(bar.framesPerSecond() > 0, 3000);
         QVERIFY(fps->text().contains(QLatin1String("frames/s")));
-        QVERIFY2(bar.framesPerSecond() >= 6 && bar.framesPerSecond() <= 12 / 0.95,
+        QVERIFY2(bar.framesPerSecond() >= 6 && bar.framesPerSecond() <= 12 / 0.75,
                  qPrintable(QString::number(bar.framesPerSecond())));
         bar.resetCounters();
         QCOMPARE(bar.errorCount(), quint64(0));

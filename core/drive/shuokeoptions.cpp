@@ -112,6 +112,12 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
     else
         o.minGapMs = gap;
 
+    const QString gapFrom = text("shuoke.gapFrom", "command").toLower();
+    if (gapFrom == QLatin1String("command") || gapFrom == QLatin1String("reply"))
+        o.gapFromReply = gapFrom == QLatin1String("reply");
+    else
+        fail(badValue(QStringLiteral("shuoke.gapFrom"), gapFrom, QStringLiteral("command or reply")));
+
     const QString baseText = text("shuoke.plcBase", "0");
     const uint base = baseText.toUInt(&ok, 0);
     if (!ok || base > 0xFF00)
@@ -137,6 +143,19 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
     if (error)
         *error = e;
     return o;
+}
+
+void ShuokeOptions::applyGap(qint32 baud, int bitsPerChar, int *minGapMs, int *minCommandSpacingMs) const
+{
+    if (gapFromReply) {
+        *minGapMs = this->minGapMs;
+        *minCommandSpacingMs = 0;
+        return;
+    }
+    // 3.5 characters of silence end a frame (RTU); whole milliseconds, at least 1.
+    const qint64 t35Us = baud > 0 ? (qint64(35) * bitsPerChar * 1000000 / 10 + baud - 1) / baud : 0;
+    *minGapMs = std::max(1, int((t35Us + 999) / 1000));
+    *minCommandSpacingMs = this->minGapMs;
 }
 
 } // namespace dd

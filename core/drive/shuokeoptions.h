@@ -26,7 +26,10 @@ std::optional<ShuokeFraming> shuokeFramingFromId(const QString &id);
 //   "shuoke.byteOrder"      little (default) | big              32-bit data
 //   "shuoke.broadcast"      0 (default) | 255
 //   "shuoke.model"          auto (default) | M6505 | M4505 | M4505S
-//   "shuoke.minGapMs"       50 (default)                        quiet time between commands
+//   "shuoke.minGapMs"       50 (default)                        time between commands
+//   "shuoke.gapFrom"        command (default) | reply           what minGapMs counts from:
+//                           the previous command, as the drive counts (and at least 3.5
+//                           characters of quiet after each reply), or the previous reply
 //   "shuoke.plcBase"        0 (default)                         PLC mapping base (0x3F)
 //   "shuoke.canFrame"       standard (default) | extended       CAN identifiers (drive 0x4A)
 //   "shuoke.canExtendedId"  address (default) | zero            extended identifier value
@@ -39,9 +42,13 @@ struct ShuokeOptions
     quint8 broadcast = shuoke::kBroadcastZero;
     std::optional<shuoke::Model> model; // nullopt: detected by ShuokeDrive::refreshIdentity()
     int minGapMs = 50;
+    bool gapFromReply = false;
     quint16 plcBase = 0;
     shuoke::CanOptions can;
     bool scanSkipSilent = true;
+
+    // Pacing of a serial link at `baud` (minGapMs / minCommandSpacingMs of SerialSettings).
+    void applyGap(qint32 baud, int bitsPerChar, int *minGapMs, int *minCommandSpacingMs) const;
 
     // The options of `settings`; an unknown value is an InvalidArgument error naming the key.
     static ShuokeOptions fromSettings(const ConnectionSettings &settings, Error *error = nullptr);

@@ -26,7 +26,7 @@ bool ShuokePlcTransport::open(const ConnectionSettings &settings, TrafficTap *ta
     SerialSettings s;
     s.portName = settings.port;
     s.baud = settings.baud > 0 ? settings.baud : kDefaultBaud;
-    s.minGapMs = options().minGapMs;
+    options().applyGap(s.baud, s.bitsPerChar, &s.minGapMs, &s.minCommandSpacingMs);
     s.responseTimeoutMs = settings.timeoutMs >= 0 ? settings.timeoutMs : kDefaultResponseMs;
     if (settings.retries >= 0)
         s.retries = settings.retries;
@@ -64,7 +64,14 @@ int ShuokePlcTransport::baud() const
 
 bool ShuokePlcTransport::setBaud(int baud)
 {
-    return m_link->setBaudRate(baud);
+    if (!m_link->setBaudRate(baud))
+        return false;
+    int gapMs = 0;
+    int spacingMs = 0;
+    options().applyGap(baud, m_link->settings().bitsPerChar, &gapMs, &spacingMs);
+    m_link->setMinGapMs(gapMs);
+    m_link->setMinCommandSpacingMs(spacingMs);
+    return true;
 }
 
 QString ShuokePlcTransport::cannotCarry(const Frame &frame) const

@@ -24,7 +24,7 @@ bool ShuokeSerialTransport::open(const ConnectionSettings &settings, TrafficTap 
     SerialSettings s;
     s.portName = settings.port;
     s.baud = settings.baud > 0 ? settings.baud : kDefaultBaud;
-    s.minGapMs = options().minGapMs;
+    options().applyGap(s.baud, s.bitsPerChar, &s.minGapMs, &s.minCommandSpacingMs);
     s.responseTimeoutMs = settings.timeoutMs >= 0 ? settings.timeoutMs : kDefaultResponseMs;
     if (settings.retries >= 0)
         s.retries = settings.retries;
@@ -59,7 +59,14 @@ int ShuokeSerialTransport::baud() const
 
 bool ShuokeSerialTransport::setBaud(int baud)
 {
-    return m_link->setBaudRate(baud);
+    if (!m_link->setBaudRate(baud))
+        return false;
+    int gapMs = 0;
+    int spacingMs = 0;
+    options().applyGap(baud, m_link->settings().bitsPerChar, &gapMs, &spacingMs);
+    m_link->setMinGapMs(gapMs);
+    m_link->setMinCommandSpacingMs(spacingMs);
+    return true;
 }
 
 shuoke::AsciiOptions ShuokeSerialTransport::asciiOptions() const

@@ -65,6 +65,8 @@ bool ModbusLink::setBaudRate(qint32 baud)
 
 void ModbusLink::setResponseTimeoutMs(int ms) { d->m_settings.responseTimeoutMs = std::max(0, ms); }
 void ModbusLink::setRetries(int retries) { d->m_settings.retries = std::max(0, retries); }
+void ModbusLink::setMinGapMs(int ms) { d->m_settings.minGapMs = std::max(0, ms); }
+void ModbusLink::setMinCommandSpacingMs(int ms) { d->m_settings.minCommandSpacingMs = std::max(0, ms); }
 
 LinkReply *ModbusLink::readHoldingRegisters(int serverAddress, int start, int count, int timeoutMs)
 {

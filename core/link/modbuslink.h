@@ -64,6 +64,8 @@ public:
     bool setBaudRate(qint32 baud);   // between transactions only
     void setResponseTimeoutMs(int ms);
     void setRetries(int retries);
+    void setMinGapMs(int ms);
+    void setMinCommandSpacingMs(int ms);
 
     // Replies carry registers(): the values read, or for writes the echoed start/count
     // (0x10) or register/value (0x06).

@@ -90,6 +90,7 @@ bool ModbusLink::Private::open(const SerialSettings &settings, Error *error)
     m_sniffer.attach(m_client->device());
     m_taintedUntilUs.clear();
     m_quietUntilUs = 0;
+    m_lastCommandEndUs = 0;
     m_state = State::Idle;
     qCDebug(lcModbusLink) << "opened" << settings.portName << settings.baud
                           << "inter-frame delay us" << m_client->interFrameDelay()
@@ -272,8 +273,15 @@ void ModbusLink::Private::scheduleNext()
         }
     }
     const Pending &next = m_current ? *m_current : m_queue.head();
-    const qint64 readyAt = std::max({m_lastFinishUs + qint64(m_settings.minGapMs) * 1000,
-                                     m_quietUntilUs, cleanAtUs(next.request.pdu.address)});
+    qint64 readyAt = std::max({m_lastFinishUs + qint64(m_settings.minGapMs) * 1000,
+                               m_quietUntilUs, cleanAtUs(next.request.pdu.address)});
+    if (m_settings.minCommandSpacingMs > 0 && m_lastCommandEndUs > 0 && m_client) {
+        // The drive counts from the last byte of each command; Qt writes ours after its
+        // inter-frame delay. 2 ms for timer and adapter jitter.
+        const qint64 nextEnd = m_lastCommandEndUs + qint64(m_settings.minCommandSpacingMs) * 1000 + 2000;
+        const qint64 lead = m_client->interFrameDelay() + wireTimeUs(modbusrtu::encodeRequest(next.request.pdu).size());
+        readyAt = std::max(readyAt, nextEnd - lead);
+    }
     const qint64 now = nowUs();
     if (now < readyAt) {
         m_state = State::Waiting;
@@ -379,8 +387,11 @@ void ModbusLink::Private::onSniffed(const QByteArray &bytes)
 void ModbusLink::Private::onBytesWritten()
 {
     // Qt writes only the request it was handed: this is when it reached the port.
-    if (m_state == State::Awaiting && m_writtenUs == 0)
+    if (m_state == State::Awaiting && m_writtenUs == 0) {
         m_writtenUs = nowUs();
+        if (m_current)
+            m_lastCommandEndUs = m_writtenUs + wireTimeUs(modbusrtu::encodeRequest(m_current->request.pdu).size());
+    }
 }
 
 void ModbusLink::Private::reportStray(const QByteArray &bytes)

@@ -66,6 +66,7 @@ public:
     qint64 m_writtenUs = 0;        // Qt handed the current request to the port (0: not yet)
     qint64 m_lastRxUs = 0;         // the last sniffed bytes while awaiting (0: none)
     qint64 m_lastFinishUs = 0;
+    qint64 m_lastCommandEndUs = 0; // the last request's last byte left the port (0: none yet)
     qint64 m_quietUntilUs = 0;     // no request before this (stray bytes, broadcast turnaround)
     QByteArray m_rxSinceSend;      // sniffed bytes since the current request went to Qt
     bool m_mismatchSeen = false;   // Qt dropped a CRC-valid frame from another address

@@ -338,6 +338,10 @@ void ModbusLink::Private::finishCurrent(const Error &error, const QList<quint16>
             p.reply->finishWithRegisters(registers);
     }
     m_lastFinishUs = now;
+    // The reply began after the drive had the whole command (see SerialLink): anchor the
+    // command spacing there, taking the shortest reply Modbus has (5 bytes) to stay safe.
+    if (!error.isError() && m_lastRxUs > 0)
+        m_lastCommandEndUs = std::max(m_lastCommandEndUs, now - wireTimeUs(5));
     m_state = State::Idle;
     scheduleNext();
 }

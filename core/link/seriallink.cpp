@@ -60,6 +60,7 @@ bool SerialLink::open(const SerialSettings &settings, Error *error)
     m_port = port;
     m_rx.clear();
     m_quietUntilUs = 0;
+    m_lastCommandEndUs = -1;
     connect(m_port, &QSerialPort::readyRead, this, &SerialLink::onReadyRead);
     connect(m_port, &QSerialPort::errorOccurred, this, &SerialLink::onPortError);
     qCDebug(lcSerialLink) << "opened" << settings.portName << settings.baud;
@@ -152,9 +153,10 @@ void SerialLink::scheduleNext()
         }
     }
     const qint64 now = m_clock.nsecsElapsed() / 1000;
-    if (now < m_quietUntilUs) {
+    const qint64 earliest = earliestSendUs(m_current ? m_current->request : m_queue.head().request);
+    if (now < earliest) {
         m_state = State::Gap;
-        m_gapTimer.start(static_cast<int>((m_quietUntilUs - now + 999) / 1000));
+        m_gapTimer.start(static_cast<int>((earliest - now + 999) / 1000));
         return;
     }
     if (!m_current) {
@@ -162,6 +164,18 @@ void SerialLink::scheduleNext()
         m_lateForCurrent = false;
     }
     transmit();
+}
+
+qint64 SerialLink::earliestSendUs(const SerialRequest &next) const
+{
+    qint64 earliest = m_quietUntilUs;
+    if (m_settings.minCommandSpacingMs > 0 && m_lastCommandEndUs >= 0) {
+        // The drive counts from each command it receives, i.e. from its last byte.
+        constexpr qint64 JitterUs = 2000;
+        const qint64 nextEnd = m_lastCommandEndUs + qint64(m_settings.minCommandSpacingMs) * 1000 + JitterUs;
+        earliest = std::max(earliest, nextEnd - wireTimeUs(next.bytes.size()));
+    }
+    return earliest;
 }
 
 void SerialLink::onGapElapsed()
@@ -188,6 +202,7 @@ void SerialLink::transmit()
         m_tap->recordSerial(TrafficRecord::Direction::Tx, m_settings.portName, p.request.bytes, note);
     }
     m_sentAtUs = m_clock.nsecsElapsed() / 1000;
+    m_lastCommandEndUs = m_sentAtUs + wireTimeUs(p.request.bytes.size());
     if (!p.request.matcher) {
         m_state = State::AwaitingWrite;
         const qint64 us = wireTimeUs(p.request.bytes.size());
@@ -358,6 +373,12 @@ void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)
         else
             p.reply->finishEmpty();
     }
+    // The reply began after the drive had the whole command: anchoring the command spacing
+    // at the reply's first byte (as we saw it, never earlier than it was) keeps it safe from
+    // send-side jitter (a USB adapter holding our bytes back) that the estimate from the
+    // write cannot see.
+    if (!error.isError() && !frame.isEmpty())
+        m_lastCommandEndUs = std::max(m_lastCommandEndUs, now - wireTimeUs(frame.size()));
     m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(m_settings.minGapMs) * 1000);
     m_state = State::Idle;
     scheduleNext();

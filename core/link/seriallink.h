@@ -33,7 +33,8 @@ struct SerialRequest
 //
 // Requests queue and go out one at a time. Before each request the receive buffer is
 // cleared (anything there is stale); after each transaction the link keeps the line quiet
-// for settings.minGapMs. A reply is accepted only through the request's matcher, and only
+// for settings.minGapMs, and commands reach the drive at least settings.minCommandSpacingMs
+// apart (last byte to last byte, plus 2 ms for timer and adapter jitter). A reply is accepted only through the request's matcher, and only
 // if it arrived no earlier than physically possible (half the wire time of request plus
 // reply): a late answer to an earlier, timed-out request can therefore never be taken as
 // the answer to the current one. After a timeout the link also waits until the line has
@@ -59,6 +60,7 @@ public:
     // Change the baud rate between transactions (scan sweeps); fails while busy.
     bool setBaudRate(qint32 baud);
     void setMinGapMs(int ms) { m_settings.minGapMs = ms; }
+    void setMinCommandSpacingMs(int ms) { m_settings.minCommandSpacingMs = ms; }
     void setResponseTimeoutMs(int ms) { m_settings.responseTimeoutMs = ms; }
     void setRetries(int retries) { m_settings.retries = retries; }
 
@@ -102,6 +104,7 @@ private:
     void enterRecovery(int quietMs);
     void discardBuffer(const QString &why);
     int effectiveTimeoutMs(const SerialRequest &r) const;
+    qint64 earliestSendUs(const SerialRequest &next) const;
     void failAll(const Error &why);
 
     SerialSettings m_settings;
@@ -116,6 +119,7 @@ private:
     QElapsedTimer m_clock;
     qint64 m_sentAtUs = 0;
     qint64 m_quietUntilUs = 0;   // no transmission before this (gap / recovery)
+    qint64 m_lastCommandEndUs = -1;  // when the last command's last byte left (estimated)
     qint64 m_lastRxUs = 0;
     int m_recoveryQuietMs = 0;
     bool m_lateForCurrent = false;   // bytes came between attempts of the current request

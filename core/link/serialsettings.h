@@ -14,7 +14,11 @@ struct SerialSettings
     QSerialPort::Parity parity = QSerialPort::NoParity;
     QSerialPort::StopBits stopBits = QSerialPort::OneStop;
     int bitsPerChar = 10;                   // start + 8 data + (parity) + stop
-    int minGapMs = 0;                       // quiet time between transactions (shuoke: 50)
+    int minGapMs = 0;                       // quiet time after each transaction
+    // Commands arrive at least this far apart, counted as the drive counts: from the last
+    // byte of one command to the last byte of the next (shuoke: 50, its "50 ms between
+    // commands"). 0: no such rule. Applies on top of minGapMs.
+    int minCommandSpacingMs = 0;
     int responseTimeoutMs = 100;            // allowance beyond the wire time of request + reply
     int retries = 2;                        // extra attempts after a timeout / corrupt reply
     // Discard a reply that completes sooner than half the wire time of request + reply: it

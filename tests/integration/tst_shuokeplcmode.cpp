@@ -201,7 +201,14 @@ private slots:
             }
         }
         QVERIFY(gaps >= 8);
-        QVERIFY2(smallest >= 49000, qPrintable(QString::number(smallest)));
+        // The 50 ms count from each command (as the drive counts); after a reply only the
+        // Modbus silence (3.5 characters, 4 ms at 9600) is kept.
+        QVERIFY2(smallest >= 3500 && smallest < 45000, qPrintable(QString::number(smallest)));
+        const QList<qint64> &t = m_sim->drive().requestTimesUs();
+        QVERIFY(t.size() >= 8);
+        for (int i = 1; i < t.size(); ++i)
+            QVERIFY2(t[i] - t[i - 1] >= 50000, qPrintable(QString::number(t[i] - t[i - 1])));
+        QCOMPARE(m_sim->drive().tooSoonCount(), 0);
     }
 
     void discovery()

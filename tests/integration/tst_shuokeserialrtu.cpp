@@ -372,17 +372,23 @@ private slots:
     void minimumGapBetweenCommands_data()
     {
         QTest::addColumn<int>("gapMs");
-        QTest::newRow("default 50 ms") << -1;
-        QTest::newRow("setting 15 ms") << 15;
+        QTest::addColumn<QString>("gapFrom");
+        QTest::newRow("default 50 ms from the command") << -1 << QString();
+        QTest::newRow("setting 15 ms from the command") << 15 << QStringLiteral("command");
+        QTest::newRow("50 ms from the reply") << -1 << QStringLiteral("reply");
     }
     void minimumGapBetweenCommands()
     {
         QFETCH(int, gapMs);
+        QFETCH(QString, gapFrom);
         QVariantMap options;
         if (gapMs >= 0)
             options.insert(QStringLiteral("shuoke.minGapMs"), gapMs);
+        if (!gapFrom.isEmpty())
+            options.insert(QStringLiteral("shuoke.gapFrom"), gapFrom);
+        const bool fromReply = gapFrom == QLatin1String("reply");
         SimShuokeDrive::Config c = config();
-        c.minCommandGapMs = gapMs >= 0 ? 10 : 50; // the drive's own limit
+        c.minCommandGapMs = gapMs >= 0 ? 10 : 50; // the drive's own limit (from each command)
         QVERIFY(setUp(c, options));
         const int expected = gapMs >= 0 ? gapMs : 50;
         m_bench->clearRecords();
@@ -399,13 +405,20 @@ private slots:
             ++gaps;
         }
         QVERIFY(gaps >= 15);
-        QVERIFY2(smallest >= expected * 1000 - 500, qPrintable(QString::number(smallest)));
-        if (gapMs >= 0)
-            QVERIFY2(smallest < 50000, qPrintable(QString::number(smallest)));
-        // The drive saw the same spacing (request arrival times).
+        // 3.5 characters at 9600 baud (4 ms) at least; from the reply: the whole gap.
+        const qint64 quietUs = fromReply ? expected * 1000 : 3646;
+        QVERIFY2(smallest >= quietUs - 500, qPrintable(QString::number(smallest)));
+        if (!fromReply) // counted from the command: the reply's time is not added
+            QVERIFY2(smallest < expected * 1000 - 5000, qPrintable(QString::number(smallest)));
+        // The drive saw the commands `expected` apart (request arrival times), and every
+        // one of them was taken.
         const QList<qint64> &t = m_sim->drive().requestTimesUs();
+        QVERIFY(t.size() >= 15);
+        qint64 closest = std::numeric_limits<qint64>::max();
         for (int i = 1; i < t.size(); ++i)
-            QVERIFY(t[i] - t[i - 1] >= expected * 1000);
+            closest = std::min(closest, t[i] - t[i - 1]);
+        QVERIFY2(closest >= expected * 1000, qPrintable(QString::number(closest)));
+        QCOMPARE(m_sim->drive().tooSoonCount(), 0);
     }
 
     void driveIgnoresCommandsSentTooSoon()

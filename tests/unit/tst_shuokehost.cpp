@@ -39,6 +39,7 @@ private slots:
         QCOMPARE(o.broadcast, quint8(0));
         QVERIFY(!o.model);
         QCOMPARE(o.minGapMs, 50);
+        QVERIFY(!o.gapFromReply);
         QCOMPARE(o.plcBase, quint16(0));
         s.port.clear();
         s.can = QStringLiteral("virtualcan:can0");
@@ -56,6 +57,7 @@ private slots:
                      {QStringLiteral("shuoke.broadcast"), 255},
                      {QStringLiteral("shuoke.model"), QStringLiteral("m4505s")},
                      {QStringLiteral("shuoke.minGapMs"), 80},
+                     {QStringLiteral("shuoke.gapFrom"), QStringLiteral("Reply")},
                      {QStringLiteral("shuoke.plcBase"), QStringLiteral("0x100")}};
         Error e;
         const ShuokeOptions o = ShuokeOptions::fromSettings(s, &e);
@@ -66,7 +68,26 @@ private slots:
         QCOMPARE(o.broadcast, quint8(255));
         QCOMPARE(*o.model, Model::M4505S);
         QCOMPARE(o.minGapMs, 80);
+        QVERIFY(o.gapFromReply);
         QCOMPARE(o.plcBase, quint16(0x100));
+    }
+
+    void gapPacing()
+    {
+        ShuokeOptions o;
+        int gap = -1;
+        int spacing = -1;
+        o.applyGap(9600, 10, &gap, &spacing);     // 3.5 characters = 3.65 ms
+        QCOMPARE(gap, 4);
+        QCOMPARE(spacing, 50);
+        o.applyGap(38400, 10, &gap, &spacing);    // 0.91 ms
+        QCOMPARE(gap, 1);
+        o.applyGap(300, 10, &gap, &spacing);      // 116.7 ms
+        QCOMPARE(gap, 117);
+        o.gapFromReply = true;
+        o.applyGap(9600, 10, &gap, &spacing);
+        QCOMPARE(gap, 50);
+        QCOMPARE(spacing, 0);
     }
 
     void optionErrors_data()
@@ -78,6 +99,7 @@ private slots:
         QTest::newRow("broadcast") << "shuoke.broadcast" << QVariant(7);
         QTest::newRow("model") << "shuoke.model" << QVariant(QStringLiteral("M9000"));
         QTest::newRow("gap") << "shuoke.minGapMs" << QVariant(-1);
+        QTest::newRow("gapFrom") << "shuoke.gapFrom" << QVariant(QStringLiteral("both"));
         QTest::newRow("base") << "shuoke.plcBase" << QVariant(QStringLiteral("x"));
     }
     void optionErrors()

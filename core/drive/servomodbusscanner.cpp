@@ -166,10 +166,11 @@ void ServoModbusScanner::finishBaud()
         startBaud();
         return;
     }
-    // The reply to the last probe may still be on its way: give it as long as the link keeps
-    // an address quiet after a timeout (onStrayBytes ends the wait early if it comes).
+    // The reply to the last probe may still be on its way: give it twice the probe timeout,
+    // at least 50 ms (a busy host, a slow adapter; 50 ms per baud is little beside a sweep).
+    // onStrayBytes ends the wait early if it comes.
     m_finishingBaud = true;
-    const int waitMs = std::max(2 * probeTimeoutMs(), 20);
+    const int waitMs = std::max(2 * probeTimeoutMs(), 50);
     QTimer::singleShot(waitMs, this, [this, baudIndex = m_baudIndex] {
         if (!m_running || !m_finishingBaud || baudIndex != m_baudIndex)
             return;

@@ -28,7 +28,8 @@ class LinkReply;
 // A reply that comes after its probe's timeout is not lost: where the link shows raw bytes
 // (ModbusLink::strayBytes), a CRC-valid answer from an address whose probe timed out has
 // that address asked once more with the link's normal timeout. The sweep at a baud ends
-// one probe timeout after its last probe timed out, so that the last one can be rescued too.
+// 2 probe timeouts (at least 50 ms) after its last probe timed out, so that the last one
+// can be rescued too.
 // Probes are queued two at a time, so that the link sends the next one without waiting for
 // this object. Qt's inter-frame delay (2 ms; 5 ms at 9600) comes before each probe.
 // The link is left at its original baud; cancel() stops at once (finished(Cancelled)).

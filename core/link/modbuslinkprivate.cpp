@@ -371,7 +371,10 @@ void ModbusLink::Private::onClientError(QModbusDevice::Error error)
 void ModbusLink::Private::onSniffed(const QByteArray &bytes)
 {
     // Called from inside the port's read handling: only record.
-    if (m_state == State::Awaiting) {
+    // Bytes that come while Qt still holds the request back (its inter-frame delay) answer
+    // no request of ours: Qt would match a duplicated or late reply of the same shape to
+    // the request it has not even sent (seen under load: PA19 read as PA18's second copy).
+    if (m_state == State::Awaiting && m_writtenUs > 0) {
         m_lastRxUs = nowUs();
         m_rxSinceSend += bytes;
         if (m_rxSinceSend.size() > MaxSniffedBytes)

@@ -106,8 +106,9 @@ void ModbusLink::Private::handleSuccess(const QModbusResponse &response)
     const qint64 earliest = m_sentLowerBoundUs + (wireTimeUs(requestBytes) + wireTimeUs(adu.size())) / 2;
     // Qt keeps bytes that followed a reply in its buffer and matches them to the next
     // request of the same shape: a duplicated or late answer then passes for this one's.
-    // Where the raw bytes are visible, the answer must be among those read since the request.
-    const bool stale = m_sniffer.isActive() && !m_rxSinceSend.contains(adu);
+    // Where the raw bytes are visible, the answer must be among those read since the request
+    // went out (onSniffed); where not, the request must at least have been written.
+    const bool stale = m_writtenUs == 0 || (m_sniffer.isActive() && !m_rxSinceSend.contains(adu));
     if (stale || (m_settings.rejectImpossiblyEarlyReplies && now < earliest)) {
         // A reply this early answers an earlier request; the answer to this one is still
         // on its way: let it pass, then ask again.

@@ -191,8 +191,13 @@ void SerialLink::transmit()
     }
     Pending &p = *m_current;
     ++p.attempts;
+    // Whatever waits unread answers no request of ours (a duplicate, a late answer): read
+    // after the request went out it could pass for its answer. Qt's buffer is shown in the
+    // trace; what the OS still holds is dropped.
+    m_rx += m_port->readAll();
     if (!m_rx.isEmpty())
         discardBuffer(QStringLiteral("stale bytes before request"));
+    m_port->clear(QSerialPort::Input);
     m_recoveryQuietMs = 0;
     m_port->write(p.request.bytes);
     if (m_tap) {

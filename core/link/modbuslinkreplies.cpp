@@ -55,10 +55,18 @@ void ModbusLink::Private::onQtFinished(QModbusReply *reply)
     case QModbusDevice::NoError:
         handleSuccess(response);
         return;
-    case QModbusDevice::ProtocolError:
-        if (response.isException()) {
-            const QByteArray adu = aduOf(pdu.address, response);
-            const int code = response.exceptionCode();
+    case QModbusDevice::ProtocolError: {
+        // Qt 6.4 keeps an exception reply's function code sign-extended (0xFFFFFF83) in an
+        // enum that cannot hold it, so QModbusPdu's inline accessors (isException(),
+        // exceptionCode()) read an invalid enum value: undefined behaviour, found by UBSan.
+        // Where the raw bytes are visible the exception is read from them instead.
+        QByteArray adu;
+        if (m_sniffer.isActive())
+            adu = exceptionInSniffedBytes();
+        else if (response.isException())
+            adu = aduOf(pdu.address, response);
+        if (!adu.isEmpty()) {
+            const int code = quint8(adu.at(2));
             recordRx(adu, QStringLiteral("exception %1").arg(modbusrtu::exceptionCodeName(quint8(code))));
             Error e{ErrorCode::DriveException,
                     ModbusLink::tr("The drive at address %1 rejected the request (Modbus exception "
@@ -71,6 +79,7 @@ void ModbusLink::Private::onQtFinished(QModbusReply *reply)
             return;
         }
         break;
+    }
     case QModbusDevice::TimeoutError:
         handleTimeout(effectiveTimeoutMs(m_current->request));
         return;

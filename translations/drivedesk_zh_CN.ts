@@ -2,20 +2,6 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
-    <name>QCoreApplication</name>
-    <message>
-        <source>unknown failure code</source>
-        <translation>未知故障代码</translation>
-    </message>
-</context>
-<context>
-    <name>dd</name>
-    <message>
-        <source>%1 = &quot;%2&quot; is not a valid setting; use %3.</source>
-        <translation>%1 = “%2”不是有效设置，请使用 %3。</translation>
-    </message>
-</context>
-<context>
     <name>dd::AlarmDictionary</name>
     <message>
         <source>%1 is not a DriveDesk alarm table (format &quot;%2&quot;, expected &quot;%3&quot;)</source>
@@ -2014,6 +2000,18 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>The scan was cancelled.</source>
         <translation>扫描已取消。</translation>
     </message>
+    <message>
+        <source>alarm %1</source>
+        <translation>报警 %1</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>停止</translation>
+    </message>
 </context>
 <context>
     <name>dd::ServoCanDrive</name>
@@ -2320,6 +2318,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>The scan was cancelled.</source>
         <translation>扫描已取消。</translation>
     </message>
+    <message>
+        <source>exception %1</source>
+        <translation>异常应答 %1</translation>
+    </message>
 </context>
 <context>
     <name>dd::ShuokeCanTransport</name>
@@ -2516,6 +2518,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>The can framing needs a CAN interface (plugin:interface), not a serial port.</source>
         <translation>can 帧格式需要 CAN 接口（插件:接口），而不是串口。</translation>
     </message>
+    <message>
+        <source>%1 = &quot;%2&quot; is not a valid setting; use %3.</source>
+        <translation>%1 = “%2”不是有效设置，请使用 %3。</translation>
+    </message>
 </context>
 <context>
     <name>dd::ShuokePlcTransport</name>
@@ -2576,6 +2582,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>The drive&apos;s reply could not be read: %1</source>
         <translation>无法读取驱动器的应答：%1</translation>
+    </message>
+    <message>
+        <source>unknown failure code</source>
+        <translation>未知故障代码</translation>
     </message>
 </context>
 <context>
@@ -3750,25 +3760,6 @@ Restore anyway?</source>
     </message>
 </context>
 <context>
-    <name>dd::ParameterTransfer</name>
-    <message>
-        <source>A backup or restore is already running on this drive.</source>
-        <translation>此驱动器上已有备份或恢复正在进行。</translation>
-    </message>
-    <message>
-        <source>The drive is gone.</source>
-        <translation>驱动器已断开。</translation>
-    </message>
-    <message>
-        <source>The parameter dictionary lists no readable parameter.</source>
-        <translation>参数字典中没有可读取的参数。</translation>
-    </message>
-    <message>
-        <source>Not every parameter was restored: %1.</source>
-        <translation>并非所有参数都已恢复：%1。</translation>
-    </message>
-</context>
-<context>
     <name>dd::ParameterValueValidator</name>
     <message>
         <source>No parameter dictionary is loaded for this drive.</source>
@@ -3995,6 +3986,1075 @@ Write anyway?</source>
     <message>
         <source>not attempted</source>
         <translation>未执行</translation>
+    </message>
+</context>
+<context>
+    <name>dd::BackupCommand</name>
+    <message>
+        <source>backup needs the file to write: backup -o FILE.</source>
+        <translation>backup 需要指定要写入的文件：backup -o FILE。</translation>
+    </message>
+    <message>
+        <source>backup: the folder %1 does not exist.</source>
+        <translation>backup：文件夹 %1 不存在。</translation>
+    </message>
+    <message>
+        <source>backup: %1 is a folder; give a file name.</source>
+        <translation>backup：%1 是文件夹，请给出文件名。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) saved to %1.</source>
+        <translation>
+            <numerusform>已将 %n 个参数保存到 %1。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::FileCommand</name>
+    <message>
+        <source>a backup file</source>
+        <translation>一个备份文件</translation>
+    </message>
+    <message>
+        <source>%1 is a backup of a %2 drive; this link is for %3 drives. A backup is never restored onto another family; to talk to a %2 drive add --family %2.</source>
+        <translation>%1 是 %2 驱动器的备份，而此连接用于 %3 驱动器。备份绝不会恢复到其他系列的驱动器上；要与 %2 驱动器通讯，请加上 --family %2。</translation>
+    </message>
+    <message>
+        <source>same</source>
+        <translation>相同</translation>
+    </message>
+    <message>
+        <source>differs</source>
+        <translation>不同</translation>
+    </message>
+    <message>
+        <source>drive value unknown</source>
+        <translation>驱动器中的值未知</translation>
+    </message>
+    <message>
+        <source>not in the file</source>
+        <translation>文件中没有</translation>
+    </message>
+    <message>
+        <source>write-only: drive value not readable</source>
+        <translation>只写：无法读取驱动器中的值</translation>
+    </message>
+    <message>
+        <source> (communication setting)</source>
+        <translation>（通讯设置）</translation>
+    </message>
+    <message>
+        <source>file %1  drive %2  %3</source>
+        <translation>文件 %1  驱动器 %2  %3</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DiffCommand</name>
+    <message>
+        <source>%1 differ, %2 same (%3).</source>
+        <translation>%1 个不同，%2 个相同（%3）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RestoreCommand</name>
+    <message>
+        <source>restore --only: %1 has no value in %2.</source>
+        <translation>restore --only：%2 中没有 %1 的值。</translation>
+    </message>
+    <message>
+        <source>restore --only: %1 is read-only.</source>
+        <translation>restore --only：%1 为只读参数。</translation>
+    </message>
+    <message>
+        <source>Finishing the restore in progress so that its report is complete; every write is verified as it goes.</source>
+        <translation>正在完成进行中的恢复，以保证报告完整；每次写入都会随即回读校验。</translation>
+    </message>
+    <message>
+        <source>verified</source>
+        <translation>已校验</translation>
+    </message>
+    <message>
+        <source>written (write-only: cannot be read back)</source>
+        <translation>已写入（只写参数：无法回读）</translation>
+    </message>
+    <message>
+        <source>WRITTEN, READ BACK %1</source>
+        <translation>已写入，但回读值为 %1</translation>
+    </message>
+    <message>
+        <source>NOT WRITTEN: %1</source>
+        <translation>未写入：%1</translation>
+    </message>
+    <message>
+        <source>NOT WRITTEN (not attempted)</source>
+        <translation>未写入（未执行）</translation>
+    </message>
+    <message>
+        <source>WRITTEN, NOT VERIFIED (no answer to the read-back)</source>
+        <translation>已写入，未校验（回读无应答）</translation>
+    </message>
+    <message>
+        <source>UNKNOWN: %1</source>
+        <translation>状态未知：%1</translation>
+    </message>
+    <message>
+        <source>would be written</source>
+        <translation>将写入</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; %2  %3</source>
+        <translation>%1 -&gt; %2  %3</translation>
+    </message>
+    <message>
+        <source>Written: %1</source>
+        <translation>已写入：%1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Not written: %1</source>
+        <translation>未写入：%1</translation>
+    </message>
+    <message>
+        <source>Unknown (read them again): %1</source>
+        <translation>状态未知（请重新读取）：%1</translation>
+    </message>
+    <message>
+        <source>The drive already matches %1; nothing to write.</source>
+        <translation>驱动器已与 %1 一致，无需写入。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Dry run: %n parameter(s) would be written; nothing was sent.</source>
+        <translation>
+            <numerusform>试运行：将写入 %n 个参数；未发送任何数据。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) written and verified.</source>
+        <translation>
+            <numerusform>已写入并校验 %n 个参数。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The values are in the drive&apos;s RAM; `ee set` stores them to EEPROM.</source>
+        <translation>这些值目前在驱动器的 RAM 中；用 `ee set` 将其存入 EEPROM。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::Cli</name>
+    <message>
+        <source>Try: drivedesk-cli --help</source>
+        <translation>请尝试：drivedesk-cli --help</translation>
+    </message>
+    <message>
+        <source>No command given.</source>
+        <translation>未给出命令。</translation>
+    </message>
+    <message>
+        <source>Your own %1 dictionary was not used: %2</source>
+        <translation>未使用您自己的 %1 参数字典：%2</translation>
+    </message>
+    <message>
+        <source>Could not start the simulator: %1</source>
+        <translation>无法启动模拟器：%1</translation>
+    </message>
+    <message>
+        <source>simulated %1 drives %2 on %3</source>
+        <translation>模拟 %1 驱动器，地址 %2，连接 %3</translation>
+    </message>
+    <message>
+        <source>Could not open %1.</source>
+        <translation>无法打开 %1。</translation>
+    </message>
+    <message>
+        <source>There can be no %1 drive at address %2 on this link.</source>
+        <translation>此连接上不可能有地址为 %2 的 %1 驱动器。</translation>
+    </message>
+    <message>
+        <source>online</source>
+        <translation>在线</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>离线</translation>
+    </message>
+    <message>
+        <source>enabled</source>
+        <translation>已使能</translation>
+    </message>
+    <message>
+        <source>disabled</source>
+        <translation>未使能</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>alarm %1</source>
+        <translation>报警 %1</translation>
+    </message>
+    <message>
+        <source>%1 baud</source>
+        <translation>%1 波特</translation>
+    </message>
+    <message>
+        <source>%1 bit/s</source>
+        <translation>%1 bit/s</translation>
+    </message>
+    <message>
+        <source>address %1</source>
+        <translation>地址 %1</translation>
+    </message>
+    <message>
+        <source>firmware ?</source>
+        <translation>固件 ?</translation>
+    </message>
+    <message>
+        <source>firmware %1</source>
+        <translation>固件 %1</translation>
+    </message>
+    <message>
+        <source>--sim-state needs a file name.</source>
+        <translation>--sim-state 需要文件名。</translation>
+    </message>
+    <message>
+        <source>--dictionary needs a file name.</source>
+        <translation>--dictionary 需要文件名。</translation>
+    </message>
+    <message>
+        <source>--port needs a device, e.g. /dev/ttyUSB0 or COM3.</source>
+        <translation>--port 需要指定设备，例如 /dev/ttyUSB0 或 COM3。</translation>
+    </message>
+    <message>
+        <source>--can needs PLUGIN:INTERFACE, e.g. socketcan:can0.</source>
+        <translation>--can 需要 PLUGIN:INTERFACE，例如 socketcan:can0。</translation>
+    </message>
+    <message>
+        <source>Give either --port or --can, not both.</source>
+        <translation>请给出 --port 或 --can 之一，不能同时给出。</translation>
+    </message>
+    <message>
+        <source>--can &quot;%1&quot;: write PLUGIN:INTERFACE, e.g. socketcan:can0 or virtualcan:can0.</source>
+        <translation>--can “%1”：请写成 PLUGIN:INTERFACE，例如 socketcan:can0 或 virtualcan:can0。</translation>
+    </message>
+    <message>
+        <source>Unknown family &quot;%1&quot;. Families: %2.</source>
+        <translation>未知的驱动器系列“%1”。可用系列：%2。</translation>
+    </message>
+    <message>
+        <source>Unknown framing &quot;%1&quot;. Framings: rtu, ascii, can, plc.</source>
+        <translation>未知帧格式“%1”。可用帧格式：rtu、ascii、can、plc。</translation>
+    </message>
+    <message>
+        <source>The servo-can family talks CAN: use --can PLUGIN:INTERFACE instead of --port.</source>
+        <translation>servo-can 系列使用 CAN 通讯：请用 --can PLUGIN:INTERFACE 代替 --port。</translation>
+    </message>
+    <message>
+        <source>The servo-can family has only the can framing.</source>
+        <translation>servo-can 系列只有 can 帧格式。</translation>
+    </message>
+    <message>
+        <source>The servo-modbus family talks RS485: use --port DEVICE instead of --can.</source>
+        <translation>servo-modbus 系列使用 RS485 通讯：请用 --port DEVICE 代替 --can。</translation>
+    </message>
+    <message>
+        <source>The servo-modbus family has only the rtu framing.</source>
+        <translation>servo-modbus 系列只有 rtu 帧格式。</translation>
+    </message>
+    <message>
+        <source>--framing can needs a CAN bus: use --can PLUGIN:INTERFACE.</source>
+        <translation>--framing can 需要 CAN 总线：请使用 --can PLUGIN:INTERFACE。</translation>
+    </message>
+    <message>
+        <source>--framing %1 needs a serial port: use --port DEVICE.</source>
+        <translation>--framing %1 需要串口：请使用 --port DEVICE。</translation>
+    </message>
+    <message>
+        <source>--sim brings its own simulated bus: leave out --port and --can.</source>
+        <translation>--sim 自带模拟总线：请去掉 --port 和 --can。</translation>
+    </message>
+    <message>
+        <source>No link given: add --port DEVICE (e.g. /dev/ttyUSB0) or --can PLUGIN:INTERFACE (e.g. socketcan:can0), or --sim to use the built-in simulator.</source>
+        <translation>未指定连接：请加上 --port DEVICE（例如 /dev/ttyUSB0）或 --can PLUGIN:INTERFACE（例如 socketcan:can0），或用 --sim 使用内置模拟器。</translation>
+    </message>
+    <message>
+        <source>--option: write FAMILY.KEY=VALUE, e.g. --option shuoke.checksum=twos-complement (got &quot;%1&quot;).</source>
+        <translation>--option：请写成 FAMILY.KEY=VALUE，例如 --option shuoke.checksum=twos-complement（实际为“%1”）。</translation>
+    </message>
+    <message>
+        <source>--sim-drives: write ADDR[@BAUD],..., e.g. 3@19200,7.</source>
+        <translation>--sim-drives：请写成 ADDR[@BAUD],...，例如 3@19200,7。</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] scan [--from A] [--to B] [--bauds 9600,19200,...]
+Find the drives on the link. Without --bauds a serial scan tries --baud if given,
+else the family&apos;s usual rates. Exit code 1 when no drive answered.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] scan [--from A] [--to B] [--bauds 9600,19200,...]
+查找连接上的驱动器。串口扫描未给出 --bauds 时，若给出了 --baud 则只用该
+波特率，否则尝试该系列的常用波特率。没有驱动器应答时退出码为 1。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] info
+Identity, firmware, state, alarm and capabilities of the drive at --address.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] info
+显示 --address 处驱动器的标识、固件、状态、报警和支持的功能。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] get PARAM ...
+Read parameters. PARAM is an index (12), PA12, P12, or a name from the
+dictionary.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] get PARAM ...
+读取参数。PARAM 可以是序号（12）、PA12、P12 或参数字典中的名称。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] set PARAM=VALUE ...
+Check every value against the dictionary (nothing is sent if one is bad),
+write each, read it back and report whether it was verified.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] set PARAM=VALUE ...
+按参数字典检查每个值（任一值无效则不发送任何数据），逐个写入并回读，
+报告是否校验通过。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] backup -o FILE
+Read every readable parameter and save them to a backup file (saved
+atomically: an interrupted backup never leaves a half-written file).
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] backup -o FILE
+读取全部可读参数并保存到备份文件（原子保存：备份中断也不会留下写了
+一半的文件）。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] diff FILE
+Compare the drive with a backup file, parameter by parameter. Exit code 0
+also when they differ; the output and the JSON say which differ.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] diff FILE
+逐个参数比较驱动器与备份文件。有差异时退出码也为 0；输出和 JSON 中
+会列出哪些参数不同。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+Write the parameters that differ from the file and verify each by reading it
+back. The file is checked completely before anything is sent. A file from
+another family is refused; from another firmware only with --force.
+--dry-run shows what would be written. On failure the report says exactly
+which parameters were written and which were not.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+写入与文件不同的参数，并逐个回读校验。发送任何数据之前会完整检查文件。
+其他系列的备份文件一律拒绝；其他固件版本的备份文件须加 --force。
+--dry-run 只显示将写入的内容。失败时报告会准确列出哪些参数已写入、
+哪些未写入。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] ee set|rd|ba|rs|def
+servo-modbus EEPROM operations, waiting for completion:
+  set  store the parameters to EEPROM      rd   reload them from EEPROM
+  ba   copy to the backup area             rs   restore the backup area
+  def  factory defaults
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] ee set|rd|ba|rs|def
+servo-modbus EEPROM 操作，并等待其完成：
+  set  参数存入 EEPROM                  rd   从 EEPROM 重新读取参数
+  ba   参数复制到备份区                 rs   从备份区恢复参数
+  def  恢复出厂设置
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+Sample live values at --rate (default 10 Hz) until --duration ends or Ctrl-C.
+-o writes CSV: a header of channel names with units, time in seconds.
+See `channels` for the channel names of a drive.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+以 --rate（默认 10 Hz）采样实时值，直到 --duration 结束或按下 Ctrl-C。
+-o 写入 CSV：表头为通道名称及单位，时间以秒为单位。
+驱动器的通道名称见 `channels`。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] jog SPEED [--duration S]
+Run at SPEED (negative: the other way) until --duration ends, Ctrl-C, SIGTERM
+or any error, then stop. Without --duration it runs until Ctrl-C. A second
+Ctrl-C sends an emergency stop where the family has one.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] jog SPEED [--duration S]
+以 SPEED 点动运行（负值：反方向），直到 --duration 结束、Ctrl-C、SIGTERM
+或出现任何错误，然后停止。未给出 --duration 时一直运行到按下 Ctrl-C。
+再按一次 Ctrl-C 会发送急停（该系列支持时）。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait]
+Relative (--by) or absolute (--to) move, in the drive&apos;s position units, at
+--speed (the family&apos;s unit). Waits until the axis is at rest again (the link
+and its keep-alives stay up meanwhile); --no-wait returns once the drive has
+started. Ctrl-C stops the axis.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait]
+相对（--by）或绝对（--to）定位，单位为驱动器的位置单位，速度为 --speed
+（该系列的速度单位）。等待轴重新静止（期间保持连接及保活报文）；
+--no-wait 在驱动器开始运动后即返回。Ctrl-C 停止轴。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] clear-alarm
+Clear the alarm and read it again; exit code 1 if it is still there.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] clear-alarm
+清除报警并重新读取；报警仍存在时退出码为 1。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] home [--positive] [--no-wait]
+Search home, negative direction first (--positive: positive first), and wait
+until the axis is at rest. Ctrl-C stops the axis.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] home [--positive] [--no-wait]
+回零，先向负方向寻找原点（--positive：先向正方向），并等待轴静止。
+Ctrl-C 停止轴。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] channels
+The monitor channels this drive offers, with units.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] channels
+该驱动器提供的监控通道及其单位。
+</translation>
+    </message>
+    <message>
+        <source>Unknown command &quot;%1&quot;. Commands: %2.</source>
+        <translation>未知命令“%1”。可用命令：%2。</translation>
+    </message>
+    <message>
+        <source>Unknown option %1 for &quot;%2&quot;. See: drivedesk-cli %2 --help</source>
+        <translation>“%2”没有选项 %1。参见：drivedesk-cli %2 --help</translation>
+    </message>
+    <message>
+        <source>Unknown option %1. See: drivedesk-cli --help</source>
+        <translation>未知选项 %1。参见：drivedesk-cli --help</translation>
+    </message>
+    <message>
+        <source>Option --%1 takes no value.</source>
+        <translation>选项 --%1 不带值。</translation>
+    </message>
+    <message>
+        <source>Option --%1 needs a value.</source>
+        <translation>选项 --%1 需要一个值。</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a whole number.</source>
+        <translation>%1：“%2”不是整数。</translation>
+    </message>
+    <message>
+        <source>%1: %2 is out of range (allowed %3 to %4).</source>
+        <translation>%1：%2 超出范围（允许 %3 到 %4）。</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a number.</source>
+        <translation>%1：“%2”不是数字。</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; has an empty item; write a comma-separated list such as 9600,19200.</source>
+        <translation>%1：“%2”中有空项；请写成逗号分隔的列表，例如 9600,19200。</translation>
+    </message>
+    <message>
+        <source>%1: expected on or off, not &quot;%2&quot;.</source>
+        <translation>%1：应为 on 或 off，而不是“%2”。</translation>
+    </message>
+    <message>
+        <source>Interrupted: stopping the axis.</source>
+        <translation>已中断：正在停止轴。</translation>
+    </message>
+    <message>
+        <source>Unknown language &quot;%1&quot; for --lang. Languages: en, zh_CN, system (the locale&apos;s).</source>
+        <translation>--lang 的语言“%1”未知。可用语言：en、zh_CN、system（按区域设置）。</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] COMMAND [ARGS]
+Commission servo and stepper drives from scripts.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] COMMAND [ARGS]
+通过脚本调试伺服驱动器和步进驱动器。
+</translation>
+    </message>
+    <message>
+        <source>Link and drive:
+  --family servo-can|servo-modbus|shuoke   drive family (default: servo-can with
+                                 --can, servo-modbus otherwise)
+  --port DEVICE                  serial port, e.g. /dev/ttyUSB0 or COM3
+  --can PLUGIN:INTERFACE         CAN bus, e.g. socketcan:can0, virtualcan:can0
+  --baud N                       serial baud rate (default: the family&apos;s)
+  --bitrate N                    CAN bitrate (default: the family&apos;s)
+  --framing rtu|ascii|can|plc    shuoke framing (default: rtu on a port, can on CAN)
+  --address N                    the drive to talk to (default 1)
+  --timeout MS                   reply allowance beyond the wire time
+  --retries N                    extra attempts after a timeout
+  --dictionary FILE              parameter dictionary (names, ranges, units)
+  --option FAMILY.KEY=VALUE      a family setting where the protocol documents are
+                                 ambiguous, e.g. shuoke.checksum=twos-complement,
+                                 servo-modbus.positionRule=decimal10000 (repeatable;
+                                 see docs/cli.md)
+  --sim                          use the built-in simulator instead of hardware
+                                 (see &quot;Simulator&quot; below)
+</source>
+        <translation>连接与驱动器：
+  --family servo-can|servo-modbus|shuoke   驱动器系列（默认：有 --can 时为
+                                 servo-can，否则为 servo-modbus）
+  --port DEVICE                  串口，例如 /dev/ttyUSB0 或 COM3
+  --can PLUGIN:INTERFACE         CAN 总线，例如 socketcan:can0、virtualcan:can0
+  --baud N                       串口波特率（默认：该系列的默认值）
+  --bitrate N                    CAN 波特率（默认：该系列的默认值）
+  --framing rtu|ascii|can|plc    shuoke 帧格式（默认：串口为 rtu，CAN 为 can）
+  --address N                    要通讯的驱动器地址（站号，默认 1）
+  --timeout MS                   线路传输时间之外的应答等待余量
+  --retries N                    超时后的额外重试次数
+  --dictionary FILE              参数字典（名称、范围、单位）
+  --option FAMILY.KEY=VALUE      协议文档未明确之处的系列设置，例如
+                                 shuoke.checksum=twos-complement、
+                                 servo-modbus.positionRule=decimal10000
+                                 （可重复；见 docs/cli.md）
+  --sim                          使用内置模拟器代替硬件（见下文“模拟器”）
+</translation>
+    </message>
+    <message>
+        <source>Output:
+  --json                         one JSON document per command (JSON lines for
+                                 monitor); failures too, with &quot;ok&quot;: false
+  --trace                        print every frame, timestamped, to stderr
+  --lang LANG                    language of messages, tables and help: en,
+                                 zh_CN or system (default: the locale, from
+                                 LANGUAGE, LC_ALL, LC_MESSAGES, LANG); --json
+                                 output is never translated
+  -h, --help                     this help; COMMAND --help for one command
+  -V, --version                  the version
+</source>
+        <translation>输出：
+  --json                         每条命令输出一个 JSON 文档（monitor 每行输出
+                                 一个 JSON）；失败时也输出，带 &quot;ok&quot;: false
+  --trace                        将每一帧加上时间戳打印到 stderr
+  --lang LANG                    消息、表格和帮助的语言：en、zh_CN 或 system
+                                 （默认：按区域设置，取自 LANGUAGE、LC_ALL、
+                                 LC_MESSAGES、LANG）；--json 输出从不翻译
+  -h, --help                     本帮助；COMMAND --help 查看单条命令的帮助
+  -V, --version                  显示版本
+</translation>
+    </message>
+    <message>
+        <source>Commands:
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 find drives: family, address, baud, firmware, state
+  info                           identity, firmware, state, alarm, capabilities
+  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
+  set PARAM=VALUE ...            validate, write, read back, report verified or not
+  backup -o FILE                 every readable parameter to a backup file
+  diff FILE                      drive against file, parameter by parameter
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 write the differences, verify each
+  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 sample live values (Ctrl-C ends)
+  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 move, and wait until the axis is at rest
+  stop [--emergency]             stop (emergency stop where the family has one)
+  enable on|off                  servo enable on or off
+  clear-alarm                    clear the alarm and check that it is gone
+  home [--positive] [--no-wait]  homing, negative direction first
+  channels                       the monitor channels this drive offers
+</source>
+        <translation>命令：
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 查找驱动器：系列、地址、波特率、固件、状态
+  info                           标识、固件、状态、报警、支持的功能
+  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
+  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
+  backup -o FILE                 将全部可读参数备份到文件
+  diff FILE                      逐个参数比较驱动器与文件
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 写入有差异的参数，并逐个校验
+  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 采样实时值（Ctrl-C 结束）
+  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 定位运动，并等待轴静止
+  stop [--emergency]             停止（该系列支持时可急停）
+  enable on|off                  伺服使能开或关
+  clear-alarm                    清除报警并确认报警已消除
+  home [--positive] [--no-wait]  回零，先向负方向
+  channels                       该驱动器提供的监控通道
+</translation>
+    </message>
+    <message>
+        <source>Exit codes:
+  0  success
+  1  the drive or the protocol failed (timeout, exception, verify mismatch)
+  2  bad usage or bad input (nothing was sent)
+  3  the port or bus could not be opened
+</source>
+        <translation>退出码：
+  0  成功
+  1  驱动器或协议出错（超时、异常应答、回读校验不一致）
+  2  用法错误或输入错误（未发送任何数据）
+  3  无法打开串口或总线
+</translation>
+    </message>
+    <message>
+        <source>Simulator:
+  --sim runs the command against simulated drives of --family inside this
+  process, with nothing plugged in: serial families on a pseudo-terminal,
+  CAN families on Qt&apos;s virtualcan bus. --port/--can are then not needed.
+  --sim-drives ADDR[@BAUD],...   the simulated drives (default: one at --address,
+                                 at --baud); e.g. --sim-drives 3@19200,7@38400
+  --sim-state FILE               keep the simulated drives&apos; state (parameters,
+                                 EEPROM, position, alarm) in FILE between runs
+  --sim-motion                   the simulated drives move on their own (for
+                                 monitor demos; where the family&apos;s simulator can)
+</source>
+        <translation>模拟器：
+  --sim 在本进程内对 --family 系列的模拟驱动器执行命令，无需连接任何硬件：
+  串口系列使用伪终端，CAN 系列使用 Qt 的 virtualcan 总线。此时不需要
+  --port/--can。
+  --sim-drives ADDR[@BAUD],...   模拟的驱动器（默认：在 --address 处一台，
+                                 波特率为 --baud）；
+                                 例如 --sim-drives 3@19200,7@38400
+  --sim-state FILE               在多次运行之间把模拟驱动器的状态（参数、
+                                 EEPROM、位置、报警）保存在 FILE 中
+  --sim-motion                   模拟驱动器自行运动（用于 monitor 演示；
+                                 仅限该系列的模拟器支持时）
+</translation>
+    </message>
+    <message>
+        <source>Examples:
+</source>
+        <translation>示例：
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] stop [--emergency]
+Stop the axis; --emergency: an emergency stop where the family has one.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] stop [--emergency]
+停止轴；--emergency：急停（该系列支持时）。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] enable on|off
+Servo enable on or off.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] enable on|off
+伺服使能开或关。
+</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <comment>separator of the state words: online, enabled, idle</comment>
+        <translation>，</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CliCommand</name>
+    <message>
+        <source>Warning: %1</source>
+        <translation>警告：%1</translation>
+    </message>
+    <message>
+        <source>The drive did not identify itself (%1); going on.</source>
+        <translation>驱动器未返回标识（%1）；继续执行。</translation>
+    </message>
+    <message>
+        <source>Interrupted.</source>
+        <translation>已中断。</translation>
+    </message>
+    <message>
+        <source>The link to the drive was lost. Check the adapter and its cable.</source>
+        <translation>与驱动器的连接已断开。请检查转换器及其电缆。</translation>
+    </message>
+    <message>
+        <source>If the address or baud rate may be wrong, try: drivedesk-cli ... scan</source>
+        <translation>如果地址或波特率可能有误，请尝试：drivedesk-cli ... scan</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; needs %2. See: drivedesk-cli %1 --help</source>
+        <translation>“%1”需要%2。参见：drivedesk-cli %1 --help</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: unexpected argument &quot;%2&quot;. See: drivedesk-cli %1 --help</source>
+        <translation>“%1”：多余的参数“%2”。参见：drivedesk-cli %1 --help</translation>
+    </message>
+</context>
+<context>
+    <name>dd::InfoCommand</name>
+    <message>
+        <source>Family</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <source>not readable</source>
+        <translation>不可读取</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>报警</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Capabilities</source>
+        <translation>支持的功能</translation>
+    </message>
+    <message>
+        <source>Channels</source>
+        <translation>通道</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ChannelsCommand</name>
+    <message>
+        <source>Could not identify the drive (%1); listing the family&apos;s channels.</source>
+        <translation>无法识别驱动器（%1）；列出该系列的通道。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StopCommand</name>
+    <message>
+        <source>Emergency stop sent.</source>
+        <translation>已发送急停。</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>已停止。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::EnableCommand</name>
+    <message>
+        <source>on or off</source>
+        <translation>on 或 off</translation>
+    </message>
+    <message>
+        <source>Servo enabled.</source>
+        <translation>伺服已使能。</translation>
+    </message>
+    <message>
+        <source>Servo disabled.</source>
+        <translation>伺服已关闭使能。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ClearAlarmCommand</name>
+    <message>
+        <source>Alarm clear sent (this family cannot read the alarm back).</source>
+        <translation>已发送报警清除命令（该系列无法回读报警）。</translation>
+    </message>
+    <message>
+        <source>Alarm %1 is still active: its cause persists. Remove the cause (see the drive&apos;s manual), then clear again.</source>
+        <translation>报警 %1 仍然存在：报警原因未消除。请先排除原因（参见驱动器手册），再重新清除。</translation>
+    </message>
+    <message>
+        <source>Alarm cleared.</source>
+        <translation>报警已清除。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::EeCommand</name>
+    <message>
+        <source>an operation: set, rd, ba, rs or def</source>
+        <translation>一个操作：set、rd、ba、rs 或 def</translation>
+    </message>
+    <message>
+        <source>ee: unknown operation &quot;%1&quot;. Operations: set, rd, ba, rs, def.</source>
+        <translation>ee：未知操作“%1”。可用操作：set、rd、ba、rs、def。</translation>
+    </message>
+    <message>
+        <source>EEPROM operations exist only on servo-modbus drives (--family servo-modbus).</source>
+        <translation>只有 servo-modbus 驱动器支持 EEPROM 操作（--family servo-modbus）。</translation>
+    </message>
+    <message>
+        <source>%1: %2 ...</source>
+        <translation>%1：%2 ...</translation>
+    </message>
+    <message>
+        <source>%1 done.</source>
+        <translation>%1 已完成。</translation>
+    </message>
+    <message>
+        <source>Waiting for the EEPROM operation to finish (the drive completes it anyway).</source>
+        <translation>正在等待 EEPROM 操作完成（驱动器无论如何都会完成该操作）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::MonitorCommand</name>
+    <message>
+        <source>a comma-separated list of channels, e.g. speed,torque (see the channels command)</source>
+        <translation>逗号分隔的通道列表，例如 speed,torque（参见 channels 命令）</translation>
+    </message>
+    <message>
+        <source>monitor: empty channel name in &quot;%1&quot;.</source>
+        <translation>monitor：“%1”中有空的通道名称。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2. Check the folder exists and is writable.</source>
+        <translation>无法写入 %1：%2。请检查文件夹是否存在且可写。</translation>
+    </message>
+    <message>
+        <source>This drive has no channel %1. Its channels: %2.</source>
+        <translation>该驱动器没有通道 %1。它的通道：%2。</translation>
+    </message>
+    <message>
+        <source>time [s]</source>
+        <translation>时间 [s]</translation>
+    </message>
+    <message>
+        <source>%1 ticks were skipped because the link was slower than %2 Hz; lower --rate or sample fewer channels.</source>
+        <translation>连接速度跟不上 %2 Hz，跳过了 %1 个采样周期；请降低 --rate 或减少采样通道。</translation>
+    </message>
+    <message>
+        <source>%1 samples written to %2.</source>
+        <translation>已将 %1 个采样写入 %2。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::JogCommand</name>
+    <message>
+        <source>a speed, e.g. jog 100 or jog -100</source>
+        <translation>一个速度，例如 jog 100 或 jog -100</translation>
+    </message>
+    <message>
+        <source>jog speed</source>
+        <translation>点动速度</translation>
+    </message>
+    <message>
+        <source>The jog lease ran out and the drive stopped the axis.</source>
+        <translation>点动租约已到期，驱动器已停止轴。</translation>
+    </message>
+    <message>
+        <source>The drive raised alarm %1 while jogging; stopped.</source>
+        <translation>点动时驱动器发生报警 %1；已停止。</translation>
+    </message>
+    <message>
+        <source>Jogging at %1; press Ctrl-C to stop.</source>
+        <translation>正在以 %1 点动；按 Ctrl-C 停止。</translation>
+    </message>
+    <message>
+        <source>Second interrupt: emergency stop.</source>
+        <translation>再次中断：急停。</translation>
+    </message>
+    <message>
+        <source>STOP FAILED: %1 The axis may still be moving: use the machine&apos;s emergency stop.</source>
+        <translation>停止失败：%1 轴可能仍在运动：请使用机器的急停按钮。</translation>
+    </message>
+    <message>
+        <source>Jogged at %1 for %2 s; stopped (%3).</source>
+        <translation>以 %1 点动了 %2 s；已停止（%3）。</translation>
+    </message>
+    <message>
+        <source>duration ended</source>
+        <translation>时长已到</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation>被中断</translation>
+    </message>
+    <message>
+        <source>The link was lost while jogging (%1). The drive&apos;s own watchdog stops the axis where the family has one; check it has stopped.</source>
+        <translation>点动时连接中断（%1）。该系列的驱动器若有看门狗，会自行停止轴；请确认轴已停止。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::PositioningCommand</name>
+    <message>
+        <source>The drive raised alarm %1 during the motion.</source>
+        <translation>运动过程中驱动器发生报警 %1。</translation>
+    </message>
+    <message>
+        <source>Done; position %1.</source>
+        <translation>完成；位置 %1。</translation>
+    </message>
+    <message>
+        <source>Done.</source>
+        <translation>完成。</translation>
+    </message>
+    <message>
+        <source>Interrupted; the axis was stopped.</source>
+        <translation>已中断；轴已停止。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::MoveCommand</name>
+    <message>
+        <source>move needs exactly one of --by N (relative) or --to N (absolute).</source>
+        <translation>move 需要且只能给出 --by N（相对）或 --to N（绝对）之一。</translation>
+    </message>
+    <message>
+        <source>Moving by %1.</source>
+        <translation>相对运动 %1。</translation>
+    </message>
+    <message>
+        <source>Moving to %1.</source>
+        <translation>运动到 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::HomeCommand</name>
+    <message>
+        <source>Homing (%1 direction first).</source>
+        <translation>回零（先向%1方向）。</translation>
+    </message>
+    <message>
+        <source>positive</source>
+        <translation>正</translation>
+    </message>
+    <message>
+        <source>negative</source>
+        <translation>负</translation>
+    </message>
+</context>
+<context>
+    <name>dd::GetCommand</name>
+    <message>
+        <source>one or more parameters, e.g. get PA12 P4 speed-gain</source>
+        <translation>一个或多个参数，例如 get PA12 P4 speed-gain</translation>
+    </message>
+    <message>
+        <source>not readable (write-only)</source>
+        <translation>不可读取（只写参数）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::SetCommand</name>
+    <message>
+        <source>one or more PARAM=VALUE, e.g. set PA12=300</source>
+        <translation>一个或多个 PARAM=VALUE，例如 set PA12=300</translation>
+    </message>
+    <message>
+        <source>set: write PARAM=VALUE, e.g. PA12=300 (got &quot;%1&quot;).</source>
+        <translation>set：请写成 PARAM=VALUE，例如 PA12=300（实际为“%1”）。</translation>
+    </message>
+    <message>
+        <source>set: %1 is given twice.</source>
+        <translation>set：%1 给出了两次。</translation>
+    </message>
+    <message>
+        <source>not written</source>
+        <translation>未写入</translation>
+    </message>
+    <message>
+        <source>NOT WRITTEN: %1</source>
+        <translation>未写入：%1</translation>
+    </message>
+    <message>
+        <source>verified</source>
+        <translation>已校验</translation>
+    </message>
+    <message>
+        <source>written (write-only: cannot be read back)</source>
+        <translation>已写入（只写参数：无法回读）</translation>
+    </message>
+    <message>
+        <source>MISMATCH: read back %1</source>
+        <translation>不一致：回读值为 %1</translation>
+    </message>
+    <message>
+        <source>Not every value was verified.</source>
+        <translation>并非所有值都已校验通过。</translation>
+    </message>
+    <message>
+        <source>The values are in the drive&apos;s RAM; `ee set` stores them to EEPROM.</source>
+        <translation>这些值目前在驱动器的 RAM 中；用 `ee set` 将其存入 EEPROM。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ScanCommand</name>
+    <message>
+        <source>scan: --from %1 is above --to %2.</source>
+        <translation>scan：--from %1 大于 --to %2。</translation>
+    </message>
+    <message>
+        <source>scan: --bauds is for serial links; a CAN bus runs at one bitrate (--bitrate).</source>
+        <translation>scan：--bauds 只用于串口连接；CAN 总线只有一个波特率（--bitrate）。</translation>
+    </message>
+    <message>
+        <source>This family cannot scan.</source>
+        <translation>该系列不支持扫描。</translation>
+    </message>
+    <message>
+        <source>Scanning addresses %1 to %2</source>
+        <translation>正在扫描地址 %1 到 %2</translation>
+    </message>
+    <message>
+        <source> at %1 baud</source>
+        <translation>，波特率 %1</translation>
+    </message>
+    <message>
+        <source>No drive answered. Check the wiring (A/B or CANH/CANL swapped?), the termination, the family (--family) and, on a serial bus, try more baud rates with --bauds.</source>
+        <translation>没有驱动器应答。请检查接线（A/B 或 CANH/CANL 是否接反？）、终端电阻和驱动器系列（--family）；串口总线上可用 --bauds 尝试更多波特率。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan interrupted; %n drive(s) found.</source>
+        <translation>
+            <numerusform>扫描已中断；找到 %n 台驱动器。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) found.</source>
+        <translation>
+            <numerusform>找到 %n 台驱动器。</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

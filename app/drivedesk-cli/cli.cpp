@@ -40,7 +40,28 @@ int Cli::run(const QStringList &arguments)
 {
     configureLogging(false);
     // --json is honoured even for usage errors, so scripts always get a document.
-    CliOutput out(arguments.contains(QLatin1String("--json")));
+    const bool json = arguments.contains(QLatin1String("--json"));
+    CliOutput out(json);
+
+    // The language before anything is said (also the parser's errors and --help). A --json
+    // document is the same in every language, messages included: scripts parse it and logs
+    // compare across machines. So with --json the CLI speaks English, whatever --lang says.
+    const std::optional<QString> lang = CliLanguage::requested(arguments);
+    const std::optional<CliLanguage::Language> chosen =
+        lang ? CliLanguage::fromId(*lang) : std::optional(CliLanguage::systemLanguage());
+    const CliLanguage::Language language =
+        json ? CliLanguage::Language::English : chosen.value_or(CliLanguage::systemLanguage());
+    if (!m_language.apply(language))
+        out.note(QStringLiteral("The %1 translation is missing; messages stay in English.")
+                     .arg(CliLanguage::id(language)));
+    if (!chosen) {
+        out.failure(QString(), int(CliExit::Usage),
+                    {ErrorCode::InvalidArgument,
+                     tr("Unknown language \"%1\" for --lang. Languages: en, zh_CN, system (the locale's).")
+                         .arg(*lang)});
+        return int(CliExit::Usage);
+    }
+
     const CliParser parser(CliGlobals::optionSpecs(), CliCommands::specs());
 
     CliInvocation inv;

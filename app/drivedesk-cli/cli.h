@@ -1,5 +1,6 @@
 #pragma once
 
+#include "clilanguage.h"
 #include "common/error.h"
 
 #include <QObject>
@@ -34,6 +35,8 @@ private:
     // --sim: simulated drives in this process; points the connection settings at them.
     static Error startBench(SimBench *bench, CliGlobals *globals);
     int runCommand(CliCommand *command, CliContext &context);
+
+    CliLanguage m_language;
 };
 
 } // namespace dd

@@ -32,7 +32,7 @@ QString CliDescribe::statusText(const DriveStatus &s)
     parts << (s.running ? tr("running") : tr("idle"));
     if (s.alarmCode)
         parts << tr("alarm %1").arg(s.alarmCode);
-    return parts.join(QLatin1String(", "));
+    return parts.join(tr(", ", "separator of the state words: online, enabled, idle"));
 }
 
 QJsonArray CliDescribe::channels(const QList<ChannelInfo> &channels)
@@ -93,11 +93,36 @@ QString CliDescribe::table(const QList<QPair<QString, QString>> &rows)
 {
     int width = 0;
     for (const auto &r : rows)
-        width = qMax(width, int(r.first.size()));
+        width = qMax(width, displayWidth(r.first));
     QString out;
     for (const auto &r : rows)
-        out += r.first.leftJustified(width + 2) + r.second + QLatin1Char('\n');
+        out += padRight(r.first, width + 2) + r.second + QLatin1Char('\n');
     return out;
+}
+
+int CliDescribe::displayWidth(const QString &text)
+{
+    int width = 0;
+    for (const char32_t c : text.toUcs4()) {
+        const bool wide = (c >= 0x1100 && c <= 0x115F) || (c >= 0x2E80 && c <= 0x303E)
+            || (c >= 0x3041 && c <= 0x33FF) || (c >= 0x3400 && c <= 0x4DBF)
+            || (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0xA000 && c <= 0xA4CF)
+            || (c >= 0xAC00 && c <= 0xD7A3) || (c >= 0xF900 && c <= 0xFAFF)
+            || (c >= 0xFE30 && c <= 0xFE4F) || (c >= 0xFF00 && c <= 0xFF60)
+            || (c >= 0xFFE0 && c <= 0xFFE6) || (c >= 0x20000 && c <= 0x3FFFD);
+        width += wide ? 2 : 1;
+    }
+    return width;
+}
+
+QString CliDescribe::padRight(const QString &text, int width)
+{
+    return text + QString(qMax(0, width - displayWidth(text)), QLatin1Char(' '));
+}
+
+QString CliDescribe::padLeft(const QString &text, int width)
+{
+    return QString(qMax(0, width - displayWidth(text)), QLatin1Char(' ')) + text;
 }
 
 } // namespace dd

@@ -26,6 +26,13 @@ public:
     static QJsonObject parameter(const ParameterDictionary &dict, int index, std::optional<qint64> value);
     // "  Name      value" rows with the names padded to one width.
     static QString table(const QList<QPair<QString, QString>> &rows);
+
+    // Terminal columns of `text`: East Asian wide and fullwidth characters (Chinese) take
+    // two, so that translated tables stay aligned.
+    static int displayWidth(const QString &text);
+    // `text` and spaces up to `width` columns: after it (left-aligned) or before it.
+    static QString padRight(const QString &text, int width);
+    static QString padLeft(const QString &text, int width);
 };
 
 } // namespace dd

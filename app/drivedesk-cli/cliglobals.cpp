@@ -25,6 +25,7 @@ QList<CliOptionSpec> CliGlobals::optionSpecs()
         {QStringLiteral("sim-drives"), true, {}},
         {QStringLiteral("sim-state"), true, {}},
         {QStringLiteral("sim-motion"), false, {}},
+        {QStringLiteral("lang"), true, {}},   // read by Cli::run before parsing (CliLanguage)
         {QStringLiteral("help"), false, QLatin1Char('h')},
         {QStringLiteral("version"), false, QLatin1Char('V')},
     };

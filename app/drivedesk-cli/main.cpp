@@ -4,8 +4,6 @@
 #include "common/coreresources.h"
 
 #include <QCoreApplication>
-#include <QLocale>
-#include <QTranslator>
 
 int main(int argc, char *argv[])
 {
@@ -13,12 +11,7 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(QStringLiteral("drivedesk-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
 
-    QTranslator translator;
-    if (translator.load(QLocale(), QStringLiteral("drivedesk"), QStringLiteral("_"),
-                        QStringLiteral(":/i18n")))
-        QCoreApplication::installTranslator(&translator);
-
     dd::ensureCoreResources();
-    dd::Cli cli;
+    dd::Cli cli;   // it installs the translation (--lang, else the locale)
     return cli.run(QCoreApplication::arguments().mid(1));
 }

@@ -1,5 +1,6 @@
 #include "monitorcommand.h"
 
+#include "clidescribe.h"
 #include "clivalues.h"
 
 #include "drive/drive.h"
@@ -114,7 +115,7 @@ QString MonitorCommand::textRow(const QStringList &cells) const
 {
     QString row;
     for (int i = 0; i < cells.size(); ++i)
-        row += cells.at(i).rightJustified(i == 0 ? 10 : qMax(14, int(cells.at(i).size()) + 1));
+        row += CliDescribe::padLeft(cells.at(i), i == 0 ? 10 : qMax(14, CliDescribe::displayWidth(cells.at(i)) + 1));
     return row;
 }
 

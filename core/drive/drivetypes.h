@@ -117,7 +117,7 @@ struct DiscoveredDrive
     int bitrate = 0;       // CAN
     QString framing;       // shuoke: rtu / ascii / can / plc
     QString firmware;
-    QString state;         // "idle", "running", "alarm 12", ...
+    QString state;         // translated: "idle", "running", "alarm 12", ...
     QString link;
 };
 

@@ -84,9 +84,9 @@ void ServoCanDiscovery::reportStation(int station)
     d.bitrate = m_bitrate;
     d.link = m_tracker->link()->name();
     if (st.alarmCode > 0)
-        d.state = QStringLiteral("alarm %1").arg(st.alarmCode);
+        d.state = tr("alarm %1").arg(st.alarmCode);
     else
-        d.state = st.running() ? QStringLiteral("running") : QStringLiteral("idle");
+        d.state = st.running() ? tr("running") : tr("idle");
     report(d);
 }
 

@@ -235,7 +235,7 @@ void ServoModbusScanner::onProbeFinished(LinkReply *reply, int address, Probe ki
         break;
     }
     case ErrorCode::DriveException:
-        found(QString(), QStringLiteral("exception %1").arg(e.driveCode));
+        found(QString(), tr("exception %1").arg(e.driveCode));
         break;
     case ErrorCode::ChecksumError:
     case ErrorCode::Malformed:

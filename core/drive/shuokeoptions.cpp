@@ -28,15 +28,12 @@ std::optional<ShuokeFraming> shuokeFramingFromId(const QString &id)
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("dd::ShuokeOptions", text);
-}
-
+// `allowed`: the accepted values, comma-separated tokens (not translated).
 Error badValue(const QString &key, const QString &value, const QString &allowed)
 {
     return {ErrorCode::InvalidArgument,
-            tr("%1 = \"%2\" is not a valid setting; use %3.").arg(key, value, allowed)};
+            QCoreApplication::translate("dd::ShuokeOptions", "%1 = \"%2\" is not a valid setting; use %3.")
+                .arg(key, value, allowed)};
 }
 
 } // namespace
@@ -59,12 +56,16 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
     } else if (const auto f = shuokeFramingFromId(settings.framing)) {
         o.framing = *f;
     } else {
-        fail(badValue(QStringLiteral("framing"), settings.framing, QStringLiteral("rtu, ascii, can or plc")));
+        fail(badValue(QStringLiteral("framing"), settings.framing, QStringLiteral("rtu, ascii, can, plc")));
     }
     if (settings.isCan() != (o.framing == ShuokeFraming::Can) && !e.isError())
         fail({ErrorCode::InvalidArgument,
-              settings.isCan() ? tr("The %1 framing needs a serial port, not a CAN interface.").arg(shuokeFramingId(o.framing))
-                               : tr("The can framing needs a CAN interface (plugin:interface), not a serial port.")});
+              settings.isCan()
+                  ? QCoreApplication::translate("dd::ShuokeOptions",
+                                                "The %1 framing needs a serial port, not a CAN interface.")
+                        .arg(shuokeFramingId(o.framing))
+                  : QCoreApplication::translate("dd::ShuokeOptions",
+                                                "The can framing needs a CAN interface (plugin:interface), not a serial port.")});
 
     const QString checksum = text("shuoke.checksum", "sum").toLower();
     if (checksum == QLatin1String("sum"))
@@ -72,7 +73,7 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
     else if (checksum == QLatin1String("twos-complement") || checksum == QLatin1String("lrc"))
         o.checksum = shuoke::AsciiCheck::TwosComplement;
     else
-        fail(badValue(QStringLiteral("shuoke.checksum"), checksum, QStringLiteral("sum or twos-complement")));
+        fail(badValue(QStringLiteral("shuoke.checksum"), checksum, QStringLiteral("sum, twos-complement")));
 
     const QString order = text("shuoke.byteOrder", "little").toLower();
     if (order == QLatin1String("little"))
@@ -80,7 +81,7 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
     else if (order == QLatin1String("big"))
         o.byteOrder = shuoke::ByteOrder::BigEndian;
     else
-        fail(badValue(QStringLiteral("shuoke.byteOrder"), order, QStringLiteral("little or big")));
+        fail(badValue(QStringLiteral("shuoke.byteOrder"), order, QStringLiteral("little, big")));
 
     const QString broadcast = text("shuoke.broadcast", "0");
     if (broadcast == QLatin1String("0"))
@@ -88,7 +89,7 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
     else if (broadcast == QLatin1String("255"))
         o.broadcast = shuoke::kBroadcastAllOnes;
     else
-        fail(badValue(QStringLiteral("shuoke.broadcast"), broadcast, QStringLiteral("0 or 255")));
+        fail(badValue(QStringLiteral("shuoke.broadcast"), broadcast, QStringLiteral("0, 255")));
 
     const QString model = text("shuoke.model", "auto");
     if (model.compare(QLatin1String("auto"), Qt::CaseInsensitive) == 0) {
@@ -102,7 +103,7 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
             }
         }
         if (!known)
-            fail(badValue(QStringLiteral("shuoke.model"), model, QStringLiteral("auto, M6505, M4505 or M4505S")));
+            fail(badValue(QStringLiteral("shuoke.model"), model, QStringLiteral("auto, M6505, M4505, M4505S")));
     }
 
     bool ok = true;
@@ -129,14 +130,14 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
     if (frame == QLatin1String("standard") || frame == QLatin1String("extended"))
         o.can.extended = frame == QLatin1String("extended");
     else
-        fail(badValue(QStringLiteral("shuoke.canFrame"), frame, QStringLiteral("standard or extended")));
+        fail(badValue(QStringLiteral("shuoke.canFrame"), frame, QStringLiteral("standard, extended")));
     const QString extId = text("shuoke.canExtendedId", "address").toLower();
     if (extId == QLatin1String("address"))
         o.can.extendedId = shuoke::CanExtendedId::Address;
     else if (extId == QLatin1String("zero") || extId == QLatin1String("0"))
         o.can.extendedId = shuoke::CanExtendedId::Zero;
     else
-        fail(badValue(QStringLiteral("shuoke.canExtendedId"), extId, QStringLiteral("address or zero")));
+        fail(badValue(QStringLiteral("shuoke.canExtendedId"), extId, QStringLiteral("address, zero")));
 
     o.scanSkipSilent = m.value(QStringLiteral("shuoke.scanSkipSilent"), true).toBool();
 

@@ -43,9 +43,11 @@ Error ShuokeTransport::translateLinkError(const Error &error, const ShuokeReques
 
 Error ShuokeTransport::failureError(const shuoke::Frame &reply)
 {
-    const char *text = shuoke::failureCodeText(reply.failureCode);
-    const QString why = text ? QCoreApplication::translate("dd::shuoke", text)
-                             : tr("unknown failure code");
+    // tr() first: lupdate mistakes a tr() that follows a translate() with a variable text
+    // in one expression for QCoreApplication::tr().
+    QString why = tr("unknown failure code");
+    if (const char *text = shuoke::failureCodeText(reply.failureCode))
+        why = QCoreApplication::translate("dd::shuoke", text);
     const shuoke::CommandInfo *info = shuoke::commandInfo(reply.command);
     const QString command = info ? QCoreApplication::translate("dd::shuoke", info->name)
                                  : shuoke::commandName(reply.command);

@@ -10,11 +10,6 @@ namespace dd {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("dd::CsvWriter", text);
-}
-
 Error fileError(const QString &message)
 {
     return Error{ErrorCode::FileError, message, 0};

@@ -5,6 +5,7 @@
 #include "trend/trendsnapshot.h"
 
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QFile>
 #include <QList>
 #include <QMap>
@@ -40,6 +41,7 @@ namespace dd {
 //   design: an existing file at the path is truncated at open().
 class CsvWriter
 {
+    Q_DECLARE_TR_FUNCTIONS(dd::CsvWriter)
 public:
     CsvWriter();
     ~CsvWriter(); // closes

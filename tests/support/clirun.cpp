@@ -42,10 +42,21 @@ QString cliPath()
 
 QProcess *startCli(const QStringList &arguments)
 {
+    return startCli(arguments, {});
+}
+
+QProcess *startCli(const QStringList &arguments, const QHash<QString, QString> &environment)
+{
     auto *p = new QProcess;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));   // untranslated messages
     env.insert(QStringLiteral("LANGUAGE"), QStringLiteral("en"));
+    for (auto it = environment.begin(); it != environment.end(); ++it) {
+        if (it.value().isEmpty())
+            env.remove(it.key());
+        else
+            env.insert(it.key(), it.value());
+    }
     p->setProcessEnvironment(env);
     p->start(cliPath(), arguments);
     return p;
@@ -75,7 +86,12 @@ CliRun waitCli(QProcess *p, int timeoutMs)
 
 CliRun runCli(const QStringList &arguments, int timeoutMs)
 {
-    QProcess *p = startCli(arguments);
+    return runCli(arguments, {}, timeoutMs);
+}
+
+CliRun runCli(const QStringList &arguments, const QHash<QString, QString> &environment, int timeoutMs)
+{
+    QProcess *p = startCli(arguments, environment);
     CliRun r = waitCli(p, timeoutMs);
     delete p;
     return r;

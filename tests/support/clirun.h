@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QByteArray>
+#include <QHash>
 #include <QJsonObject>
 #include <QList>
 #include <QProcess>
@@ -27,8 +28,13 @@ QString cliPath();
 // Runs the CLI and waits for it with an event loop (so that a simulator living in the test
 // process keeps answering); kills it after timeoutMs.
 CliRun runCli(const QStringList &arguments, int timeoutMs = 30000);
+// The same with changes to the environment (by default LC_ALL=C and LANGUAGE=en, for
+// untranslated messages): each entry sets a variable, or removes it when its value is empty.
+CliRun runCli(const QStringList &arguments, const QHash<QString, QString> &environment,
+              int timeoutMs = 30000);
 // Starts the CLI and returns the running process (the caller waits, signals, deletes).
 QProcess *startCli(const QStringList &arguments);
+QProcess *startCli(const QStringList &arguments, const QHash<QString, QString> &environment);
 // Waits (event loop) for a started process; collects its output.
 CliRun waitCli(QProcess *process, int timeoutMs = 30000);
 // Waits (event loop) until the process printed `text` on stdout or stderr, or timeoutMs.

@@ -146,7 +146,13 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     m_view->resizeColumnsToContents();
 }
 
-ParametersPanel::~ParametersPanel() = default;
+ParametersPanel::~ParametersPanel()
+{
+    // The undo stack is a child: QWidget deletes it after this class is gone, and its
+    // destructor emits indexChanged — which must not reach a half-destroyed panel (UBSan:
+    // invalid downcast in the slot call).
+    m_undo->disconnect(this);
+}
 
 QString ParametersPanel::title() const
 {

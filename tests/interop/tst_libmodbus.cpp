@@ -8,6 +8,9 @@
 #include "ptyendpoint.h"
 
 #include <QProcess>
+
+#include <csignal>
+#include <sys/prctl.h>
 #include <QtTest>
 
 using namespace dd;
@@ -84,6 +87,9 @@ private slots:
         connect(m_hostEnd, &ByteEndpoint::received, m_serverEnd, [this](const QByteArray &b) { m_serverEnd->write(b); });
         m_server = new QProcess(this);
         m_server->setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        // Dies with the test: a test that aborts (a sanitizer report) must not leave the
+        // server holding ctest's output pipe open until ctest's timeout.
+        m_server->setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGKILL); });
         connect(m_server, &QProcess::readyReadStandardOutput, this,
                 [this] { m_serverOut += m_server->readAllStandardOutput(); });
         m_server->start(QStringLiteral(DD_MODBUS_SERVER),

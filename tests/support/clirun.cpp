@@ -6,6 +6,9 @@
 #include <QProcessEnvironment>
 #include <QTimer>
 
+#include <csignal>
+#include <sys/prctl.h>
+
 namespace dd::test {
 
 QJsonObject CliRun::json() const
@@ -58,6 +61,8 @@ QProcess *startCli(const QStringList &arguments, const QHash<QString, QString> &
             env.insert(it.key(), it.value());
     }
     p->setProcessEnvironment(env);
+    // Dies with the test (a sanitizer abort must not leave it holding ctest's pipe).
+    p->setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGKILL); });
     p->start(cliPath(), arguments);
     return p;
 }

@@ -71,6 +71,8 @@ void JogCommand::start()
             stopNow(Reason::Error, {ErrorCode::DriveException,
                                     tr("The drive raised alarm %1 while jogging; stopped.").arg(code), code});
     });
+    // Emitted before connectionLost and before a stop's reply: says what stops the axis.
+    connect(d, &Drive::jogEnded, this, [this](const JogEnd &end) { m_end = end; });
     connect(d, &Drive::connectionLost, this, &JogCommand::linkLost);
 
     m_clock.start();
@@ -122,14 +124,21 @@ void JogCommand::onStopped(DriveReply *reply)
     const double ran = double(m_clock.elapsed()) / 1000.0;
     const QString why = m_reason == Reason::Duration ? QStringLiteral("duration")
         : m_reason == Reason::Signal ? QStringLiteral("signal") : QStringLiteral("error");
+    // What stops the axis: our stop command, the drive's own watchdog, or nothing.
+    const QString axis = reply->info().value(QStringLiteral("stoppedBy")).toString();
     QJsonObject json{{QStringLiteral("speed"), m_speed},
                      {QStringLiteral("seconds"), std::round(ran * 1000) / 1000},
                      {QStringLiteral("stoppedBy"), why},
                      {QStringLiteral("stopped"), reply->ok()}};
+    if (!axis.isEmpty())
+        json.insert(QStringLiteral("axisStoppedBy"), axis);
     if (!reply->ok()) {
         Error e = reply->error();
-        e.message = tr("STOP FAILED: %1 The axis may still be moving: use the machine's "
-                       "emergency stop.").arg(e.message);
+        e.message = axis == QLatin1String("drive-watchdog")
+            ? tr("STOP FAILED: %1 The drive's own watchdog stops the axis when it hears "
+                 "nothing from us; check that it has stopped.").arg(e.message)
+            : tr("STOP FAILED: %1 The axis may still be moving: use the machine's "
+                 "emergency stop.").arg(e.message);
         return fail(e, json, CliExit::DriveFailed);
     }
     if (m_reason == Reason::Error)
@@ -154,9 +163,17 @@ void JogCommand::linkLost(const Error &why)
     Error e = why;
     if (e.code == ErrorCode::None)
         e.code = ErrorCode::LinkClosed;
-    e.message = tr("The link was lost while jogging (%1). The drive's own watchdog stops the "
-                   "axis where the family has one; check it has stopped.").arg(why.message);
-    fail(e);
+    QJsonObject json{{QStringLiteral("speed"), m_speed}, {QStringLiteral("stoppedBy"), QStringLiteral("error")},
+                     {QStringLiteral("stopped"), false}};
+    if (m_end) {
+        // The drive said what stops the axis now (its watchdog, or nothing).
+        json.insert(QStringLiteral("axisStoppedBy"), stoppedById(m_end->stoppedBy));
+        e.message = tr("The link was lost while jogging (%1). %2").arg(why.message, m_end->message);
+    } else {
+        e.message = tr("The link was lost while jogging (%1). The drive's own watchdog stops the "
+                       "axis where the family has one; check it has stopped.").arg(why.message);
+    }
+    fail(e, json);
 }
 
 // --- move and home: run to the end ------------------------------------------------------

@@ -1,9 +1,12 @@
 #pragma once
 
 #include "clicommand.h"
+#include "drive/drivetypes.h"
 
 #include <QElapsedTimer>
 #include <QTimer>
+
+#include <optional>
 
 // Commands that move the axis: jog, move, home. Ctrl-C / SIGTERM stop the axis.
 
@@ -35,6 +38,7 @@ private:
     bool m_emergencySent = false;
     Reason m_reason = Reason::Duration;
     Error m_error;
+    std::optional<JogEnd> m_end;   // what stops the axis, once the drive has said
 };
 
 // A motion that runs to its end: move and home. After the command is accepted it waits

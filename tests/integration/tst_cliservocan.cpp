@@ -33,6 +33,7 @@ private slots:
     void corruptBackupSendsNothing();
     void monitorCsvAndJson();
     void jogStopsWhenItsDurationEnds();
+    void jogSaysTheWatchdogStopsASilentDrive();
     void jogStopsOnSignal_data();
     void jogStopsOnSignal();
     void moveWaitsForTheEnd();
@@ -318,9 +319,28 @@ void TestCliServoCan::jogStopsWhenItsDurationEnds()
     QVERIFY(t.elapsed() >= 600);
     const QJsonObject doc = r.json();
     QCOMPARE(doc.value("stoppedBy").toString(), QStringLiteral("duration"));
+    QCOMPARE(doc.value("axisStoppedBy").toString(), QStringLiteral("command"));
     QVERIFY(doc.value("seconds").toDouble() >= 0.59);
     QVERIFY(waitIdle(m_sim1, 1000));   // stopped by the CLI, not by the 2 s watchdog
     QCOMPARE(m_sim1->stats().watchdogTrips, trips);
+}
+
+void TestCliServoCan::jogSaysTheWatchdogStopsASilentDrive()
+{
+    // The drive loses power mid-jog: the stop cannot be confirmed, and the CLI says that
+    // the drive's own watchdog stops the axis (servo-can has one), exit 1.
+    QProcess *p = startCli(args({"--json", "jog", "300", "--duration", "0.5"}));
+    QVERIFY(QTest::qWaitFor([&] { return m_sim1->motor().isMoving(); }, 3000));
+    m_sim1->faults().setSilent(true);
+    const CliRun r = waitCli(p);
+    delete p;
+    m_sim1->faults().setSilent(false);
+    QCOMPARE(r.exitCode, 1);
+    const QJsonObject doc = r.json();
+    QCOMPARE(doc.value("axisStoppedBy").toString(), QStringLiteral("drive-watchdog"));
+    QCOMPARE(doc.value("stopped").toBool(), false);
+    QVERIFY2(doc.value("error").toObject().value("message").toString().contains("watchdog"), qPrintable(r.text()));
+    QVERIFY(waitIdle(m_sim1, 4000));   // the simulated drive's 2 s watchdog
 }
 
 void TestCliServoCan::jogStopsOnSignal_data()

@@ -32,3 +32,8 @@ shoot() {   # shoot LANG PANEL FILE
 shoot en overview main-window-en.png
 shoot zh_CN overview main-window-zh_CN.png
 shoot en trend trend-en.png
+shoot en parameters parameters-en.png
+shoot zh_CN parameters parameters-zh_CN.png
+shoot en backup backup-en.png
+shoot en alarms alarms-en.png
+shoot en ee eeprom-en.png

@@ -4914,6 +4914,14 @@ Servo enable on or off.
         <source>The link was lost while jogging (%1). The drive&apos;s own watchdog stops the axis where the family has one; check it has stopped.</source>
         <translation>点动时连接中断（%1）。该系列的驱动器若有看门狗，会自行停止轴；请确认轴已停止。</translation>
     </message>
+    <message>
+        <source>STOP FAILED: %1 The drive&apos;s own watchdog stops the axis when it hears nothing from us; check that it has stopped.</source>
+        <translation>停止失败：%1 驱动器收不到本机的通讯时，其自身的看门狗会停止电机；请确认电机已停止。</translation>
+    </message>
+    <message>
+        <source>The link was lost while jogging (%1). %2</source>
+        <translation>点动时通讯中断（%1）。%2</translation>
+    </message>
 </context>
 <context>
     <name>dd::PositioningCommand</name>

@@ -28,8 +28,10 @@
 //    are present add their latency and reply. How long to wait for an absent address is
 //    a policy, not wire time, so it is not part of the floor (the targets are absolute).
 //  - Monitor: the CLI's ChannelSampler at 1 ms (its --rate 1000) for 2 s: one sample = one
-//    read of the channels, the next leaving when the previous one is in; the
-//    floor is one such read (serial: + t3.5 before the next). The rate is judged; the
+//    read of the channels; behind the rate the sampler keeps two reads queued, so the
+//    next one waits on the link when the previous one is in; the floor is one such read
+//    (serial: + t3.5 before the next; CAN: the pipelined reads' bus time, or requests +
+//    latency + one reply, whichever is longer). The rate is judged; the
 //    median sample interval is printed beside it, since on a loaded machine a few samples
 //    delayed by the scheduler pull the rate down.
 //  - Shuoke (monitor only, speed): on RTU the seed's "at least 50 ms between commands"
@@ -485,7 +487,7 @@ void benchMonitor(const QString &name, const SimBenchOptions &o, const QStringLi
     QList<double> each;   // every sample's interval, ms
     for (int i = 0; i < g_runs; ++i) {
         // As the CLI's monitor at --rate 1000 (its most): more than any of these links
-        // allows, so the sampler reads back to back.
+        // allows, so the sampler keeps two reads queued and the link never idles.
         ChannelSampler sampler(s->drive);
         sampler.setChannels(channels);
         sampler.setIntervalMs(1);

@@ -173,7 +173,14 @@ LinkReply *ModbusLink::Private::enqueue(const ModbusRequest &request)
                                                                                : r.pdu.values.size())});
         return reply;
     }
-    m_queue.enqueue(Pending{r, reply, 0});
+    // Urgent requests go ahead of the ordinary ones waiting, in the order they came.
+    qsizetype at = m_queue.size();
+    if (r.urgent) {
+        at = 0;
+        while (at < m_queue.size() && m_queue.at(at).request.urgent)
+            ++at;
+    }
+    m_queue.insert(at, Pending{r, reply, 0});
     if (m_state == State::Idle)
         scheduleNext();
     return reply;

@@ -1,5 +1,6 @@
 #include "link/modbuslinkprivate.h"
 
+#include "common/timerslack.h"
 #include "link/traffictap.h"
 #include "protocol/crc16.h"
 
@@ -81,6 +82,7 @@ bool ModbusLink::Private::open(const SerialSettings &settings, Error *error)
         return false;
     }
     m_client = client;
+    tightenTimerSlack(); // Qt's 2 ms inter-frame delay is on every transaction's path
     connect(m_client, &QModbusDevice::errorOccurred, this, &Private::onClientError,
             Qt::QueuedConnection);
     if (QIODevice *dev = m_client->device()) {

@@ -1,5 +1,6 @@
 #include "link/seriallink.h"
 
+#include "common/timerslack.h"
 #include "link/traffictap.h"
 
 #include <QCoreApplication>
@@ -58,6 +59,7 @@ bool SerialLink::open(const SerialSettings &settings, Error *error)
     }
     port->clear();
     m_port = port;
+    tightenTimerSlack(); // the minimum gap is on every transaction's path
     m_rx.clear();
     m_quietUntilUs = 0;
     connect(m_port, &QSerialPort::readyRead, this, &SerialLink::onReadyRead);

@@ -2368,6 +2368,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
 <context>
     <name>dd::ShuokeDrive</name>
     <message>
+        <source>A stop came before the motion command was sent: the axis was not started.</source>
+        <translation>在运动指令发出之前收到了停止命令：轴未启动。</translation>
+    </message>
+    <message>
         <source>Shuoke drives have no enable command: the drive is enabled by its ENA input (shown as &quot;enable input&quot; in the status).</source>
         <translation>硕科驱动器没有使能命令：驱动器由 ENA 输入使能（在状态中显示为“使能输入”）。</translation>
     </message>

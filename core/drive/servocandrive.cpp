@@ -225,7 +225,8 @@ void ServoCanDrive::confirmRead(quint8 index, const std::shared_ptr<ConfirmState
     });
 }
 
-void ServoCanDrive::sendCommand(const CanFrameData &frame, const QString &note, const Done &done)
+void ServoCanDrive::sendCommand(const CanFrameData &frame, const QString &note, const Done &done,
+                                bool urgent)
 {
     if (!m_link) {
         if (done)
@@ -235,6 +236,7 @@ void ServoCanDrive::sendCommand(const CanFrameData &frame, const QString &note, 
     CanRequest req;
     req.frame = frame;
     req.note = note;
+    req.urgent = urgent;
     LinkReply *r = m_link->request(req); // no matcher: in order with the reads, no reply awaited
     connect(r, &LinkReply::finished, this, [r, done] {
         r->deleteLater();

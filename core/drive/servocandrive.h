@@ -26,7 +26,9 @@ class ServoCanStationTracker;
 //   - set position (0x50): position read back (0xFD) when the axis is idle;
 //   - clear alarm (0x81): alarm code read back (0xAA) until 0 or alarmClearMs();
 //   - enable (0x25): not readable (the heartbeat has no enable bit); it finishes when the
-//     frame is on the bus; status().enabled is what was last commanded;
+//     frame is on the bus; status().enabled is what was last commanded. A disable goes out
+//     at once like a stop (an urgent request: ahead of reads waiting for the window) and
+//     once more behind them, so that a queued enable or motion command cannot re-enable;
 //   - stop (0x26 / 0x28): finishes when a heartbeat of the station arrives after it (the
 //     drive is alive, so it heard the stop), or with Timeout after stopConfirmMs(): then its
 //     watchdog (watchdogMs(), 2 s without keep-alive) is what stops the axis. A station that
@@ -101,7 +103,9 @@ private:
     struct ConfirmState;
     void confirmRead(quint8 index, const std::shared_ptr<ConfirmState> &state);
     // Frames without a reply, queued in order with the reads.
-    void sendCommand(const CanFrameData &frame, const QString &note, const Done &done = {});
+    // A frame in order with the reads; `urgent`: ahead of the reads waiting for the window.
+    void sendCommand(const CanFrameData &frame, const QString &note, const Done &done = {},
+                     bool urgent = false);
     void writeOne(const ParameterWrite &w, int attempt, DriveReply *reply,
                   const std::function<void(const ParameterWriteResult &)> &done);
     // Waits for a heartbeat, arriving from now on, for which `pred` holds.

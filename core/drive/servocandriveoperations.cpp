@@ -181,12 +181,19 @@ DriveReply *ServoCanDrive::readChannels(const QStringList &channelIds)
 DriveReply *ServoCanDrive::setEnabled(bool on)
 {
     DriveReply *reply = newReply();
-    sendCommand(sc::enable(m_station, on), on ? QStringLiteral("enable") : QStringLiteral("disable"),
-                [this, reply, on](const Error &e) {
-                    if (!e.isError())
-                        setEnabledState(on);
-                    reply->finish(e);
-                });
+    // A disable, like a stop, goes out at once (ahead of reads waiting for the link's
+    // window) and again behind them, so that a queued enable or motion command cannot
+    // re-enable the servo after it.
+    auto join = OperationJoin::create(on ? 1 : 2, [this, reply, on](const Error &e) {
+        if (!e.isError())
+            setEnabledState(on);
+        reply->finish(e);
+    });
+    const auto complete = [join](const Error &e) { join->complete(e); };
+    if (!on)
+        sendCommand(sc::enable(m_station, false), QStringLiteral("disable"), complete, true);
+    sendCommand(sc::enable(m_station, on),
+                on ? QStringLiteral("enable") : QStringLiteral("disable (behind queued frames)"), complete);
     return reply;
 }
 

@@ -117,6 +117,7 @@ void ShuokeBackend::stopAll()
         ShuokeRequest r;
         r.frame = shuoke::Frame::make(m_options.broadcast, shuoke::CmdEmergencyStop);
         r.expectReply = false;
+        r.urgent = true;
         r.note = QStringLiteral("stop all (broadcast)");
         m_transport->request(r, this, [](const Error &, const shuoke::Frame &) {});
     }

@@ -91,6 +91,7 @@ LinkReply *ShuokeCanTransport::start(const ShuokeRequest &request, Error *error)
         r.matcher = matcher(request.frame);
     r.timeoutMs = request.timeoutMs;
     r.retries = request.retries;
+    r.urgent = request.urgent;
     r.note = request.note.isEmpty() ? shuoke::commandName(request.frame.command) : request.note;
     return m_link->request(r);
 }

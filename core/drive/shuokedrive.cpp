@@ -1,5 +1,6 @@
 #include "drive/shuokedrive.h"
 
+#include "drive/operationjoin.h"
 #include "protocol/shuokevalues.h"
 
 #include <QCoreApplication>
@@ -8,6 +9,35 @@
 namespace dd {
 
 using namespace shuoke;
+
+namespace {
+
+bool isStop(quint8 command)
+{
+    return command == CmdEmergencyStop || command == CmdDecelerateStop;
+}
+
+// Commands that set the axis moving.
+bool startsMotion(quint8 command)
+{
+    switch (command) {
+    case CmdMoveRelative:
+    case CmdMoveRelativeDirection24:
+    case CmdRunSpeed:
+    case CmdRunSpeedDirection24:
+    case CmdHome:
+    case CmdHomeOrSCurveInt32:
+    case CmdHomeOrSCurveDirection24:
+    case CmdClosedLoopMove:
+    case CmdClosedLoopGearedMove:
+    case CmdClosedLoopMoveAbsolute:
+        return true;
+    default:
+        return false;
+    }
+}
+
+} // namespace
 
 ShuokeDrive::ShuokeDrive(ShuokeTransport *transport, int address, QObject *parent)
     : Drive(parent)
@@ -138,7 +168,7 @@ void ShuokeDrive::noteFailure(const Error &e)
 }
 
 void ShuokeDrive::exchange(DriveReply *reply, quint8 command, const QByteArray &data, Handler done,
-                           bool expectReply)
+                           bool expectReply, bool behindQueued)
 {
     if (!m_transport) {
         reply->finish({ErrorCode::LinkClosed, tr("The drive has no link.")});
@@ -147,25 +177,37 @@ void ShuokeDrive::exchange(DriveReply *reply, quint8 command, const QByteArray &
     ShuokeRequest r;
     r.frame = Frame::make(static_cast<quint8>(address()), command, data);
     r.expectReply = expectReply;
-    m_transport->request(r, reply, [this, done](const Error &e, const Frame &f) {
+    r.urgent = isStop(command) && !behindQueued;
+    const bool motion = startsMotion(command);
+    if (motion)
+        ++m_motionQueued;
+    m_transport->request(r, reply, [this, done, motion](const Error &e, const Frame &f) {
+        if (motion)
+            --m_motionQueued;
         noteFailure(e);
         done(e, f);
     });
 }
 
-void ShuokeDrive::runSteps(DriveReply *reply, QList<Step> steps)
+void ShuokeDrive::runSteps(DriveReply *reply, QList<Step> steps, quint64 stopsBefore)
 {
     if (steps.isEmpty()) {
         reply->finish();
         return;
     }
     const Step s = steps.takeFirst();
-    exchange(reply, s.command, s.data, [this, reply, steps](const Error &e, const Frame &) {
+    if (startsMotion(s.command) && m_stops != stopsBefore) {
+        reply->finish({ErrorCode::Cancelled,
+                       tr("A stop came before the motion command was sent: the axis was not "
+                          "started.")});
+        return;
+    }
+    exchange(reply, s.command, s.data, [this, reply, steps, stopsBefore](const Error &e, const Frame &) {
         if (e) {
             reply->finish(e);
             return;
         }
-        runSteps(reply, steps);
+        runSteps(reply, steps, stopsBefore);
     });
 }
 
@@ -174,7 +216,7 @@ DriveReply *ShuokeDrive::simpleCommands(const QList<Step> &steps)
     if (const Error e = checkSteps(steps))
         return finishedReply(e);
     DriveReply *reply = newReply();
-    runSteps(reply, steps);
+    runSteps(reply, steps, m_stops);
     return reply;
 }
 
@@ -324,7 +366,20 @@ DriveReply *ShuokeDrive::doJog(qint32 speed)
 
 DriveReply *ShuokeDrive::doStop(bool emergency)
 {
-    return simpleCommands({{emergency ? CmdEmergencyStop : CmdDecelerateStop, {}}});
+    const quint8 command = emergency ? CmdEmergencyStop : CmdDecelerateStop;
+    if (const Error e = checkSteps({{command, {}}}))
+        return finishedReply(e);
+    ++m_stops; // a motion sequence under way sends no further motion command
+    DriveReply *reply = newReply();
+    // Ahead of everything waiting on the link; and, if a motion command is waiting there
+    // (it would restart the axis after the stop), once more behind it.
+    const bool again = m_motionQueued > 0;
+    auto join = OperationJoin::create(again ? 2 : 1, [reply](const Error &e) { reply->finish(e); });
+    exchange(reply, command, {}, [join](const Error &e, const Frame &) { join->complete(e); });
+    if (again)
+        exchange(reply, command, {}, [join](const Error &e, const Frame &) { join->complete(e); },
+                 true, true);
+    return reply;
 }
 
 DriveReply *ShuokeDrive::moveRelative(qint64 distance, qint32 speed)
@@ -347,6 +402,7 @@ DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
     QList<Step> speedStep;
     if (speed > 0)
         speedStep.append(Step{CmdSetMaxSpeed, encodeUInt32(static_cast<quint32>(speed), byteOrder())});
+    const quint64 stopsBefore = m_stops;
     if (modelIs(Model::M6505)) {
         DriveReply *r = simpleCommands(speedStep + QList<Step>{{CmdClosedLoopMoveAbsolute, int32(target)}});
         r->setInfo(QStringLiteral("method"), QStringLiteral("closed-loop-absolute"));
@@ -357,7 +413,7 @@ DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
         return finishedReply(e);
     DriveReply *reply = newReply();
     reply->setInfo(QStringLiteral("method"), QStringLiteral("relative-from-position"));
-    exchange(reply, CmdQueryAbsolutePosition, {}, [this, reply, target, speedStep](const Error &e, const Frame &f) {
+    exchange(reply, CmdQueryAbsolutePosition, {}, [this, reply, target, speedStep, stopsBefore](const Error &e, const Frame &f) {
         if (e) {
             reply->finish(e);
             return;
@@ -373,7 +429,7 @@ DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
             return;
         }
         reply->setInfo(QStringLiteral("distance"), delta);
-        runSteps(reply, speedStep + QList<Step>{{CmdMoveRelative, int32(delta)}});
+        runSteps(reply, speedStep + QList<Step>{{CmdMoveRelative, int32(delta)}}, stopsBefore);
     });
     return reply;
 }
@@ -426,10 +482,17 @@ DriveReply *ShuokeDrive::sendCommand(quint8 command, const QByteArray &data, boo
     DriveReply *reply = newReply();
     ShuokeRequest r;
     r.frame = Frame::make(static_cast<quint8>(target), command, data);
-    r.expectReply = !(isBroadcastAddress(static_cast<quint8>(target))
-                      && (command == CmdEmergencyStop || command == CmdDecelerateStop));
+    r.expectReply = !(isBroadcastAddress(static_cast<quint8>(target)) && isStop(command));
+    r.urgent = isStop(command);
     r.note = QStringLiteral("raw %1").arg(commandName(command));
-    m_transport->request(r, reply, [this, reply](const Error &e, const Frame &f) {
+    if (isStop(command))
+        ++m_stops;
+    const bool motion = startsMotion(command);
+    if (motion)
+        ++m_motionQueued;
+    m_transport->request(r, reply, [this, reply, motion](const Error &e, const Frame &f) {
+        if (motion)
+            --m_motionQueued;
         noteFailure(e);
         if (f.address || f.command) {
             reply->setInfo(QStringLiteral("replyAddress"), f.address);

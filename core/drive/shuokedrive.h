@@ -44,6 +44,11 @@ struct ShuokeParameter;
 // which stays set); speed <= 0 moves at the configured maximum speed. Home = 0x3E. The
 // drive has no enable command and no alarm register: enable is NotSupported, readAlarm()
 // reports the limit-switch bits and the last failure code this drive answered.
+// Stops (0x3C / 0x3D) are urgent requests: they go ahead of everything waiting on the link
+// (a trend's reads), right after the request on the wire. So that a motion command still
+// waiting cannot restart the axis after such a stop, the stop is sent once more behind it,
+// and a motion sequence under way (speed, then move) sends no further motion command after
+// a stop: it finishes with Cancelled.
 class ShuokeDrive : public Drive
 {
     Q_OBJECT
@@ -100,10 +105,13 @@ private:
     // All checks of a request; an error means nothing may be sent.
     Error check(quint8 command, const QByteArray &data) const;
     Error checkSteps(const QList<Step> &steps) const;
+    // A stop command goes ahead of everything waiting on the link unless `behindQueued`.
     void exchange(DriveReply *reply, quint8 command, const QByteArray &data, Handler done,
-                  bool expectReply = true);
-    // Runs `steps` one after another; finishes `reply` with the first error or none.
-    void runSteps(DriveReply *reply, QList<Step> steps);
+                  bool expectReply = true, bool behindQueued = false);
+    // Runs `steps` one after another; finishes `reply` with the first error or none. A
+    // motion command is not sent once a stop has come since `stopsBefore` (= m_stops when
+    // the operation began).
+    void runSteps(DriveReply *reply, QList<Step> steps, quint64 stopsBefore);
     DriveReply *simpleCommands(const QList<Step> &steps);
     std::optional<qint32> decodeInt(const QByteArray &data) const;
     QByteArray int32(qint64 v) const;
@@ -128,6 +136,8 @@ private:
     std::optional<shuoke::Model> m_model;
     QHash<int, qint64> m_lastWritten;
     int m_lastFailure = 0;
+    int m_motionQueued = 0;   // motion commands handed to the link, not answered yet
+    quint64 m_stops = 0;      // stops so far
 };
 
 } // namespace dd

@@ -112,6 +112,7 @@ LinkReply *ShuokePlcTransport::start(const ShuokeRequest &request, Error *error)
     r.pdu.values = shuoke::plcBytesToRegisters(layout.value->values);
     r.timeoutMs = request.timeoutMs;
     r.retries = request.retries;
+    r.urgent = request.urgent;
     r.note = request.note.isEmpty() ? shuoke::commandName(request.frame.command) : request.note;
     return m_link->send(r);
 }

@@ -22,6 +22,7 @@ struct ShuokeRequest
     int timeoutMs = -1;      // -1: the link's default (wire time + allowance)
     int retries = -1;        // -1: the link's default
     QString note;            // shown in the trace
+    bool urgent = false;     // stops: ahead of every waiting ordinary request on the link
 };
 
 // The framing-specific half of a Shuoke session: turns a Frame into wire bytes on its link

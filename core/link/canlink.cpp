@@ -112,7 +112,14 @@ LinkReply *CanLink::request(const CanRequest &request)
         reply->finishWithError({ErrorCode::LinkClosed, tr("The CAN link is not open.")});
         return reply;
     }
-    m_waiting.enqueue(Pending{request, reply, 0, 0, 0});
+    // Urgent requests go ahead of the ordinary ones waiting, in the order they came.
+    qsizetype at = m_waiting.size();
+    if (request.urgent) {
+        at = 0;
+        while (at < m_waiting.size() && m_waiting.at(at).request.urgent)
+            ++at;
+    }
+    m_waiting.insert(at, Pending{request, reply, 0, 0, 0});
     pump();
     return reply;
 }
@@ -153,7 +160,12 @@ void CanLink::pump()
 {
     if (!isConnected())
         return;
-    while (!m_waiting.isEmpty() && m_inFlight.size() < m_settings.maxInFlight) {
+    auto fitsWindow = [this] {
+        const CanRequest &next = m_waiting.head().request;
+        // An urgent frame that expects no reply does not wait for the window.
+        return m_inFlight.size() < m_settings.maxInFlight || (next.urgent && !next.matcher);
+    };
+    while (!m_waiting.isEmpty() && fitsWindow()) {
         Pending p = m_waiting.dequeue();
         if (!p.reply)
             continue;

@@ -28,12 +28,16 @@ struct CanRequest
     int timeoutMs = -1;   // -1: settings.responseTimeoutMs
     int retries = -1;     // -1: settings.retries
     QString note;
+    bool urgent = false;  // stop / disable: ahead of every waiting ordinary request
 };
 
 // Transport on QCanBusDevice (socketcan, virtualcan, ...). Frames sent before the device
 // is connected wait in a queue. Requests are pipelined: up to maxInFlight are outstanding
 // at once and each received frame completes the oldest request whose matcher accepts it.
 // Every received frame is also emitted by frameReceived() (heartbeats, alarms, ...).
+// An urgent request (stop, disable) goes ahead of every request waiting for the window,
+// behind the urgent ones queued before it; one that expects no reply takes no place in the
+// window, so it is written at once (nothing in flight is aborted).
 // The QCanBusDevice is created in open(), so the link may be moved to a worker thread first.
 class CanLink : public QObject
 {

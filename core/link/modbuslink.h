@@ -18,6 +18,7 @@ struct ModbusRequest
     int timeoutMs = -1;       // -1: wire time of request + reply + settings.responseTimeoutMs
     int retries = -1;         // -1: settings.retries
     QString note;             // shown in the trace
+    bool urgent = false;      // stop / disable: ahead of every waiting ordinary request
 };
 
 // Modbus RTU client transport on QModbusRtuSerialClient (servo-modbus, shuoke PLC mode),
@@ -28,6 +29,9 @@ struct ModbusRequest
 //  - setInterFrameDelay(-1) before every connectDevice() (baud changes reconnect);
 //  - the response timeout covers the request's and the reply's byte time at the baud;
 //  - a serial error (adapter unplugged) closes the link and fails everything pending.
+// An urgent request (stop, disable) goes ahead of every waiting ordinary request, behind
+// the urgent ones queued before it, right after the request in flight (never aborted; its
+// retries come first). The quiet times below apply to it as to any request.
 // Exceptions finish the reply with ErrorCode::DriveException and Error::driveCode set.
 // The tap receives the request and reply ADUs (rebuilt from the PDUs; CRC included).
 //

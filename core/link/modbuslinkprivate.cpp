@@ -1,5 +1,6 @@
 #include "link/modbuslinkprivate.h"
 
+#include "common/timerslack.h"
 #include "link/traffictap.h"
 #include "protocol/crc16.h"
 
@@ -81,6 +82,7 @@ bool ModbusLink::Private::open(const SerialSettings &settings, Error *error)
         return false;
     }
     m_client = client;
+    tightenTimerSlack(); // Qt's 2 ms inter-frame delay is on every transaction's path
     connect(m_client, &QModbusDevice::errorOccurred, this, &Private::onClientError,
             Qt::QueuedConnection);
     if (QIODevice *dev = m_client->device()) {
@@ -174,7 +176,14 @@ LinkReply *ModbusLink::Private::enqueue(const ModbusRequest &request)
                                                                                : r.pdu.values.size())});
         return reply;
     }
-    m_queue.enqueue(Pending{r, reply, 0});
+    // Urgent requests go ahead of the ordinary ones waiting, in the order they came.
+    qsizetype at = m_queue.size();
+    if (r.urgent) {
+        at = 0;
+        while (at < m_queue.size() && m_queue.at(at).request.urgent)
+            ++at;
+    }
+    m_queue.insert(at, Pending{r, reply, 0});
     if (m_state == State::Idle)
         scheduleNext();
     return reply;

@@ -112,13 +112,19 @@ void ModbusLink::Private::handleSuccess(const QModbusResponse &response)
         return;
     }
     const qsizetype requestBytes = modbusrtu::encodeRequest(req.pdu).size();
-    const qint64 earliest = m_sentLowerBoundUs + (wireTimeUs(requestBytes) + wireTimeUs(adu.size())) / 2;
+    // From the request reaching the port when that was seen: Qt writes it after its
+    // inter-frame delay, or later when the event loop was held up, and a duplicated answer
+    // arriving just after that late write must not pass for this one's. Judged by when
+    // the reply's bytes came (when seen), not by this later, queued call.
+    const qint64 sentUs = std::max(m_sentLowerBoundUs, m_writtenUs);
+    const qint64 arrivedUs = m_lastRxUs >= sentUs ? m_lastRxUs : now;
+    const qint64 earliest = sentUs + (wireTimeUs(requestBytes) + wireTimeUs(adu.size())) / 2;
     // Qt keeps bytes that followed a reply in its buffer and matches them to the next
     // request of the same shape: a duplicated or late answer then passes for this one's.
     // Where the raw bytes are visible, the answer must be among those read since the request
     // went out (onSniffed); where not, the request must at least have been written.
     const bool stale = m_writtenUs == 0 || (m_sniffer.isActive() && !m_rxSinceSend.contains(adu));
-    if (stale || (m_settings.rejectImpossiblyEarlyReplies && now < earliest)) {
+    if (stale || (m_settings.rejectImpossiblyEarlyReplies && arrivedUs < earliest)) {
         // A reply this early answers an earlier request; the answer to this one is still
         // on its way: let it pass, then ask again.
         ++m_lateReplies;

@@ -1,5 +1,6 @@
 #include "link/seriallink.h"
 
+#include "common/timerslack.h"
 #include "link/traffictap.h"
 
 #include <QCoreApplication>
@@ -58,6 +59,7 @@ bool SerialLink::open(const SerialSettings &settings, Error *error)
     }
     port->clear();
     m_port = port;
+    tightenTimerSlack(); // the minimum gap is on every transaction's path
     m_rx.clear();
     m_quietUntilUs = 0;
     m_lastCommandEndUs = -1;
@@ -110,7 +112,14 @@ LinkReply *SerialLink::send(const SerialRequest &request)
         reply->finishWithError({ErrorCode::LinkClosed, tr("The serial port is not open.")});
         return reply;
     }
-    m_queue.enqueue(Pending{request, reply, 0});
+    // Urgent requests go ahead of the ordinary ones waiting, in the order they came.
+    qsizetype at = m_queue.size();
+    if (request.urgent) {
+        at = 0;
+        while (at < m_queue.size() && m_queue.at(at).request.urgent)
+            ++at;
+    }
+    m_queue.insert(at, Pending{request, reply, 0});
     if (m_state == State::Idle)
         scheduleNext();
     return reply;

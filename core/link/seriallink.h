@@ -27,6 +27,7 @@ struct SerialRequest
     int timeoutMs = -1;          // -1: wire time of request + reply + settings.responseTimeoutMs
     int retries = -1;            // -1: settings.retries
     QString note;                // shown in the trace
+    bool urgent = false;         // stop / disable: ahead of every waiting ordinary request
 };
 
 // Half-duplex request/reply transport on QSerialPort (RS485 / RS232).
@@ -39,6 +40,11 @@ struct SerialRequest
 // reply): a late answer to an earlier, timed-out request can therefore never be taken as
 // the answer to the current one. After a timeout the link also waits until the line has
 // been quiet for the reply's wire time (plus margin) before it sends again.
+//
+// An urgent request (stop, disable) goes ahead of every waiting ordinary request, behind
+// the urgent ones queued before it, right after the transaction on the wire now (which is
+// never aborted; if it times out, its retries come first). The minimum gap and the quiet
+// time after a timeout apply to it as to any request.
 //
 // The QSerialPort is created in open(), so the link may be moved to a worker thread first.
 class SerialLink : public QObject

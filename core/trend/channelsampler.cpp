@@ -14,6 +14,11 @@ ChannelSampler::ChannelSampler(Drive *drive, QObject *parent)
     connect(&m_timer, &QTimer::timeout, this, &ChannelSampler::tick);
 }
 
+ChannelSampler::~ChannelSampler()
+{
+    forgetReads();
+}
+
 void ChannelSampler::setIntervalMs(int ms)
 {
     m_timer.setInterval(qMax(1, ms));
@@ -24,10 +29,21 @@ double ChannelSampler::elapsedSeconds() const
     return m_clock.isValid() ? double(m_clock.nsecsElapsed()) / 1e9 : 0.0;
 }
 
+int ChannelSampler::pendingReads() const
+{
+    int n = 0;
+    for (const Read &r : m_reads)
+        if (!r.arrived)
+            ++n;
+    return n;
+}
+
 void ChannelSampler::start()
 {
     if (m_running)
         return;
+    forgetReads();
+    ++m_run;
     m_running = true;
     m_samples = 0;
     m_skipped = 0;
@@ -41,47 +57,84 @@ void ChannelSampler::stop()
 {
     m_running = false;
     m_timer.stop();
+    ++m_run;
+    forgetReads();
+}
+
+void ChannelSampler::forgetReads()
+{
+    // Replies still on their way are ignored (and deleted when they finish).
+    for (const Read &r : std::as_const(m_reads))
+        if (r.reply)
+            disconnect(r.reply, nullptr, this, nullptr);
+    m_reads.clear();
+}
+
+void ChannelSampler::fail(const Error &error)
+{
+    stop();
+    emit failed(error);
 }
 
 void ChannelSampler::tick()
 {
     if (!m_running)
         return;
-    if (m_pending) {
-        ++m_skipped;
-        m_behind = true;
+    if (!m_drive) {
+        fail({ErrorCode::LinkClosed, tr("The drive is gone; sampling stopped.")});
         return;
     }
-    read();
+    const int pending = pendingReads();
+    if (pending == 0) {
+        read();
+        return;
+    }
+    // The link is slower than the rate: keep the next read waiting in its queue.
+    ++m_skipped;
+    if (pending < maxPendingReads())
+        read();
+    else
+        m_behind = true;
 }
 
 void ChannelSampler::read()
 {
     m_behind = false;
     if (!m_drive) {
-        stop();
-        emit failed({ErrorCode::LinkClosed, tr("The drive is gone; sampling stopped.")});
+        fail({ErrorCode::LinkClosed, tr("The drive is gone; sampling stopped.")});
         return;
     }
-    m_pending = true;
     DriveReply *reply = m_drive->readChannels(m_channels);
-    connect(reply, &DriveReply::finished, this, [this, reply] {
-        reply->deleteLater();
-        m_pending = false;
-        if (!m_running)
-            return;
-        if (!reply->ok()) {
-            stop();
-            emit failed(reply->error());
-            return;
-        }
+    connect(reply, &DriveReply::finished, reply, &QObject::deleteLater);
+    connect(reply, &DriveReply::finished, this, [this, reply] { onReadFinished(reply); });
+    m_reads.append(Read{reply, false, {}});
+}
+
+void ChannelSampler::onReadFinished(DriveReply *reply)
+{
+    if (!m_running)
+        return;
+    qsizetype at = 0;
+    while (at < m_reads.size() && m_reads.at(at).reply != reply)
+        ++at;
+    if (at == m_reads.size())
+        return;
+    if (!reply->ok()) {
+        fail(reply->error());
+        return;
+    }
+    m_reads[at].arrived = true;
+    m_reads[at].values = reply->samples();
+    const double timeS = elapsedSeconds();
+    // Behind the rate: the next read goes out now, before the sample is handled.
+    if (m_behind && pendingReads() < maxPendingReads())
+        read();
+    const quint64 run = m_run;
+    while (m_running && run == m_run && !m_reads.isEmpty() && m_reads.first().arrived) {
+        const Read r = m_reads.takeFirst();
         ++m_samples;
-        const double timeS = elapsedSeconds();
-        // Behind the rate: the next read goes out now, before the sample is handled.
-        if (m_behind && m_drive)
-            read();
-        emit sampled(timeS, reply->samples());
-    });
+        emit sampled(timeS, r.values);
+    }
 }
 
 } // namespace dd

@@ -218,6 +218,7 @@ void SimServoCanDrive::handleWrite(const sc::Message &m)
         return;
     }
     ++m_stats.parameterWrites;
+    m_stats.writtenIndexes.insert(m.paramIndex);
     m_params[m.paramIndex] = m.paramValue;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QSet>
+
 #include "motormodel.h"
 #include "protocol/servocan.h"
 #include "simcandevice.h"
@@ -53,6 +55,7 @@ public:
         quint64 framesForUs = 0;
         quint64 readsAnswered = 0;
         quint64 parameterWrites = 0;
+        QSet<int> writtenIndexes;     // every parameter written (a repeated write counts once)
         quint64 writesRefused = 0;
         quint64 keepAlives = 0;
         quint64 motionCommands = 0;
@@ -95,6 +98,7 @@ public:
     bool isHostOnline() const { return m_hostOnline; } // keep-alive within the last 2 s
     qint64 lastKeepAliveUs() const { return m_lastKeepAliveUs; }
     const Stats &stats() const { return m_stats; }
+    Stats &stats() { return m_stats; }
 
     // State for drivedesk-sim --state: {"station": N, "parameters": [220 ints], "position": P,
     // "alarm": code}. loadState() accepts what saveState() writes; it fails (returning false

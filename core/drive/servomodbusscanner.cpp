@@ -94,7 +94,7 @@ void ServoModbusScanner::startBaud()
     }
     const int from = std::clamp(m_options.from, 1, 247);
     const int to = std::clamp(m_options.to, from, 247);
-    m_todo.clear();
+    m_unprobed.clear();
     m_repeat.clear();
     m_rescue.clear();
     m_timedOut.clear();
@@ -106,10 +106,10 @@ void ServoModbusScanner::startBaud()
         if (m_found.contains(a))
             ++m_done;   // found at an earlier baud
         else
-            m_todo.append(a);
+            m_unprobed.append(a);
     }
     emit progress(m_done, m_total);
-    qCDebug(lcServoModbusScan) << "sweeping" << m_todo.size() << "addresses at" << baud
+    qCDebug(lcServoModbusScan) << "sweeping" << m_unprobed.size() << "addresses at" << baud
                                << "timeout" << probeTimeoutMs() << "ms";
     fillWindow();
 }
@@ -117,15 +117,15 @@ void ServoModbusScanner::startBaud()
 void ServoModbusScanner::fillWindow()
 {
     while (m_running && !m_finishingBaud && m_inFlight.size() < Window
-           && (!m_rescue.isEmpty() || !m_repeat.isEmpty() || !m_todo.isEmpty())) {
+           && (!m_rescue.isEmpty() || !m_repeat.isEmpty() || !m_unprobed.isEmpty())) {
         if (!m_rescue.isEmpty())
             sendProbe(m_rescue.takeFirst(), Probe::Rescue);
         else if (!m_repeat.isEmpty())
             sendProbe(m_repeat.takeFirst(), Probe::Repeat);
         else
-            sendProbe(m_todo.takeFirst(), Probe::First);
+            sendProbe(m_unprobed.takeFirst(), Probe::First);
     }
-    if (m_running && !m_finishingBaud && m_inFlight.isEmpty() && m_todo.isEmpty()
+    if (m_running && !m_finishingBaud && m_inFlight.isEmpty() && m_unprobed.isEmpty()
         && m_repeat.isEmpty() && m_rescue.isEmpty())
         finishBaud();
 }

@@ -67,7 +67,7 @@ private:
     QList<int> m_bauds;
     int m_baudIndex = -1;
     int m_originalBaud = 0;
-    QList<int> m_todo;        // addresses still to probe at this baud
+    QList<int> m_unprobed;        // addresses still to probe at this baud
     QList<int> m_repeat;      // garbled replies: probe once more
     QList<int> m_rescue;      // late replies: probe once more with the normal timeout
     QSet<int> m_timedOut;     // at this baud

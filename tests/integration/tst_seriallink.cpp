@@ -4,7 +4,6 @@
 
 #include <QElapsedTimer>
 
-#include <unistd.h>
 
 #include "link/linkreply.h"
 #include "link/seriallink.h"
@@ -75,7 +74,7 @@ private slots:
         // A stale copy reaches the port while nothing is pending and the event loop has not
         // read it yet; the request leaves at once (the link is idle).
         QCOMPARE(pty.write(reply('Q', 0x11)), 4);
-        usleep(20000);   // the pty has delivered it to the client's side by now
+        QTest::qSleep(20);   // no event loop: the pty delivers it to the client's side, unread
         SerialRequest q;
         q.bytes = "Q1";
         q.matcher = replyOf('Q');

@@ -104,6 +104,10 @@ void MonitorCommand::start()
         QStringList head{tr("time [s]")};
         for (const ChannelInfo &c : m_channels)
             head << (c.unit.isEmpty() ? c.id : QStringLiteral("%1 [%2]").arg(c.id, c.unit));
+        // Each column as wide as its header (at least 14), so values stay under it.
+        m_columnWidths.clear();
+        for (int i = 0; i < head.size(); ++i)
+            m_columnWidths << qMax(i == 0 ? 10 : 14, CliDescribe::displayWidth(head.at(i)) + 1);
         out()->line(textRow(head));
     }
     if (m_durationS > 0)
@@ -114,8 +118,11 @@ void MonitorCommand::start()
 QString MonitorCommand::textRow(const QStringList &cells) const
 {
     QString row;
-    for (int i = 0; i < cells.size(); ++i)
-        row += CliDescribe::padLeft(cells.at(i), i == 0 ? 10 : qMax(14, CliDescribe::displayWidth(cells.at(i)) + 1));
+    for (int i = 0; i < cells.size(); ++i) {
+        const int width = i < m_columnWidths.size() ? m_columnWidths.at(i) : (i == 0 ? 10 : 14);
+        // A value wider than its column still gets a space before it.
+        row += CliDescribe::padLeft(cells.at(i), qMax(width, CliDescribe::displayWidth(cells.at(i)) + 1));
+    }
     return row;
 }
 

@@ -26,6 +26,8 @@ private:
     QString textRow(const QStringList &cells) const;
 
     QStringList m_channelIds;
+
+    QList<int> m_columnWidths;   // text output: from the header
     QList<ChannelInfo> m_channels;
     double m_rateHz = 10.0;
     double m_durationS = 0.0;   // 0: until Ctrl-C

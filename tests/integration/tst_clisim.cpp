@@ -15,6 +15,7 @@ private slots:
     void info();
     void scanFindsSimulatedDrives();
     void jogRunsAndStops();
+    void monitorTextColumnsLineUp();
     void backupOfASimulatedDrive();
     void simLeavesNoRoomForAPort();
     void stateCarriesOverBetweenRuns();
@@ -58,6 +59,32 @@ void TestCliSim::jogRunsAndStops()
     QCOMPARE(r.json().value("stoppedBy").toString(), QStringLiteral("duration"));
     QVERIFY(r.err.contains("065#01 20 00 64 00 00 00 FF"));   // "speed mode +100" (the seed's example, station 1)
     QVERIFY(r.err.contains("(stop)"));
+}
+
+void TestCliSim::monitorTextColumnsLineUp()
+{
+    // Headers wider than the usual 14 columns ("position-error [pulses]"): every value ends
+    // where its header ends.
+    const CliRun r = runCli({"--sim", "--family", "servo-can", "monitor", "speed,position-error,bus-voltage",
+                             "--duration", "0.35", "--rate", "10"});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+    const QStringList lines = QString::fromUtf8(r.out).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QVERIFY(lines.size() >= 3);
+    auto columnEnds = [](const QString &line) {
+        QList<int> ends;
+        for (int i = 0; i < line.size(); ++i)
+            if (line.at(i) != QLatin1Char(' ') && (i + 1 == line.size() || line.at(i + 1) == QLatin1Char(' ')))
+                ends << i;
+        return ends;
+    };
+    // The header's cells contain spaces ("time [s]"): take the end of each "]".
+    QList<int> headerEnds;
+    for (int i = 0; i < lines.first().size(); ++i)
+        if (lines.first().at(i) == QLatin1Char(']'))
+            headerEnds << i;
+    QCOMPARE(headerEnds.size(), 4);
+    for (int k = 1; k < lines.size(); ++k)
+        QCOMPARE(columnEnds(lines.at(k)), headerEnds);
 }
 
 void TestCliSim::backupOfASimulatedDrive()

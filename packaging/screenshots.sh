@@ -21,10 +21,12 @@ mkdir -p "$out"
 settings="$(mktemp -d)"
 trap 'rm -rf "$settings"' EXIT
 
-shoot() {   # shoot LANG PANEL FILE
+shoot() {   # shoot LANG PANEL FILE [FAMILY: the drive to select]
+  local drive=()
+  [ -n "${4:-}" ] && drive=(--drive "$4")
   XDG_CONFIG_HOME="$settings/$1" QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" \
     xvfb-run --auto-servernum --server-args="-screen 0 1440x900x24" \
-    "$app" -geometry 1400x860+0+0 --demo --lang "$1" --panel "$2" --screenshot "$out/$3" \
+    "$app" -geometry 1400x860+0+0 --demo --lang "$1" --panel "$2" "${drive[@]}" --screenshot "$out/$3" \
       --screenshot-delay "$delay"
   echo "screenshots: $out/$3"
 }
@@ -37,3 +39,5 @@ shoot zh_CN parameters parameters-zh_CN.png
 shoot en backup backup-en.png
 shoot en alarms alarms-en.png
 shoot en ee eeprom-en.png
+shoot en motion motion-en.png servo-can
+shoot zh_CN motion motion-zh_CN.png servo-can

@@ -786,6 +786,14 @@
         <source>The tab to show for the selected drive: overview, trend, ...</source>
         <translation>所选驱动器首先显示的标签页：overview、trend 等。</translation>
     </message>
+    <message>
+        <source>Select the first drive of this family that is found: servo-can, servo-modbus or shuoke.</source>
+        <translation>选中找到的第一台该系列驱动器：servo-can、servo-modbus 或 shuoke。</translation>
+    </message>
+    <message>
+        <source>Unknown family &apos;%1&apos; for --drive: use servo-can, servo-modbus or shuoke.</source>
+        <translation>--drive 的驱动器系列“%1”未知：请用 servo-can、servo-modbus 或 shuoke。</translation>
+    </message>
 </context>
 <context>
     <name>dd::DriveHub</name>

@@ -213,8 +213,16 @@ void MainWindow::wireParts()
     connect(m_busTree, &BusTreeWidget::disconnectRequested, m_connections, &ConnectionController::disconnectLink);
     connect(m_directory, &DriveDirectory::connectionAdded, this, &MainWindow::updateActions);
     connect(m_directory, &DriveDirectory::connectionRemoved, this, &MainWindow::updateActions);
-    // Select the first drive found, so the window shows something useful at once.
+    // Select the first drive found (of the preferred family, when one is set), so the window
+    // shows something useful at once.
     connect(m_directory, &DriveDirectory::driveAdded, this, [this](int id, int address) {
+        if (m_preferredFamily) {
+            if (m_directory->discovered(id, address).family != *m_preferredFamily)
+                return;
+            m_preferredFamily.reset();   // the first one only
+            m_busTree->selectDrive(id, address);
+            return;
+        }
         if (m_workspace->currentDrive().connectionId == 0 && m_busTree->selectedItems().isEmpty())
             m_busTree->selectDrive(id, address);
     });

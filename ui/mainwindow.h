@@ -2,7 +2,11 @@
 
 #include "connectrequest.h"
 
+#include "common/family.h"
+
 #include <QMainWindow>
+
+#include <optional>
 
 class QActionGroup;
 class QDockWidget;
@@ -64,6 +68,9 @@ public:
     bool startDemo();
     void showConnectDialog();
     void disconnectSelected();
+    // Select the first drive of `family` found from now on (instead of the first drive of
+    // any family): `drivedesk --drive servo-can`.
+    void setPreferredFamily(Family family) { m_preferredFamily = family; }
     // Window geometry and dock layout (QSettings "mainWindow/...").
     void restoreLayout();
     void saveLayout() const;
@@ -96,6 +103,7 @@ private:
     StatusBarWidget *m_statusBar = nullptr;
     QDockWidget *m_busDock = nullptr;
     QToolBar *m_toolBar = nullptr;
+    std::optional<Family> m_preferredFamily;   // see setPreferredFamily()
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;

@@ -31,6 +31,7 @@ struct Options
     int bitrate = 0;
     QString framing;
     QString panel;            // the drive tab to show first
+    QString drive;            // select the first drive of this family
     QString screenshot;       // grab the window into this PNG and quit
     int screenshotDelayMs = 3000;
 };
@@ -69,6 +70,10 @@ Options parseOptions(const QApplication &app)
     const QCommandLineOption panel(QStringLiteral("panel"),
         dd::DriveDeskMain::tr("The tab to show for the selected drive: overview, trend, ..."),
         QStringLiteral("id"));
+    const QCommandLineOption drive(QStringLiteral("drive"),
+        dd::DriveDeskMain::tr("Select the first drive of this family that is found: servo-can, "
+                              "servo-modbus or shuoke."),
+        QStringLiteral("family"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
         dd::DriveDeskMain::tr("Save a picture of the main window to this PNG file after the delay, "
                                          "then quit (documentation)."),
@@ -76,7 +81,7 @@ Options parseOptions(const QApplication &app)
     const QCommandLineOption delay(QStringLiteral("screenshot-delay"),
         dd::DriveDeskMain::tr("Seconds to wait before --screenshot (default 3)."),
         QStringLiteral("seconds"), QStringLiteral("3"));
-    p.addOptions({demo, lang, connect, family, baud, bitrate, framing, panel, screenshot, delay});
+    p.addOptions({demo, lang, connect, family, baud, bitrate, framing, panel, drive, screenshot, delay});
     p.process(app);
 
     Options o;
@@ -88,6 +93,7 @@ Options parseOptions(const QApplication &app)
     o.bitrate = p.value(bitrate).toInt();
     o.framing = p.value(framing);
     o.panel = p.value(panel);
+    o.drive = p.value(drive);
     o.screenshot = p.value(screenshot);
     o.screenshotDelayMs = qMax(0, int(p.value(delay).toDouble() * 1000));
     return o;
@@ -139,7 +145,20 @@ int main(int argc, char *argv[])
         request = r;
     }
 
+    std::optional<dd::Family> preferredFamily;
+    if (!options.drive.isEmpty()) {
+        preferredFamily = dd::familyFromId(options.drive);
+        if (!preferredFamily) {
+            qCritical("%s", qPrintable(dd::DriveDeskMain::tr("Unknown family '%1' for --drive: use "
+                                                             "servo-can, servo-modbus or shuoke.")
+                                           .arg(options.drive)));
+            return 2;
+        }
+    }
+
     dd::MainWindow window(&language);   // --lang holds for this session only: not saved
+    if (preferredFamily)
+        window.setPreferredFamily(*preferredFamily);
     window.restoreLayout();
     if (!options.panel.isEmpty())
         window.workspace()->setPreferredPanel(options.panel);

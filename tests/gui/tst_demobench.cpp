@@ -101,6 +101,22 @@ private slots:
         QVERIFY(!bench.benchThread());
     }
 
+    void preferredFamilyIsSelected()
+    {
+        // `drivedesk --drive servo-can`: the first servo-can drive is selected, whichever
+        // family's scan finishes first.
+        MainWindow w;
+        w.setPreferredFamily(Family::ServoCan);
+        w.show();
+        DriveDirectory *dir = w.directory();
+        QVERIFY(w.startDemo());
+        QVERIFY(waitFor(w.connections(), SIGNAL(finished(QString,bool)),
+                        [&] { return driveCount(dir) == 3 && !w.connections()->isBusy(); }, 20000));
+        const DriveContext current = w.workspace()->currentDrive();
+        QCOMPARE(current.connectionId, connectionOf(dir, Family::ServoCan));
+        QCOMPARE(current.address, DemoBench::Address);
+    }
+
     void demoFindsEveryDriveAndStopWorks()
     {
         MainWindow w;

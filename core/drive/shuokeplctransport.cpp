@@ -23,15 +23,8 @@ ShuokePlcTransport::~ShuokePlcTransport() = default;
 
 bool ShuokePlcTransport::open(const ConnectionSettings &settings, TrafficTap *tap, Error *error)
 {
-    SerialSettings s;
-    s.portName = settings.port;
-    s.baud = settings.baud > 0 ? settings.baud : kDefaultBaud;
-    options().applyGap(s.baud, s.bitsPerChar, &s.minGapMs, &s.minCommandSpacingMs);
-    s.responseTimeoutMs = settings.timeoutMs >= 0 ? settings.timeoutMs : kDefaultResponseMs;
-    if (settings.retries >= 0)
-        s.retries = settings.retries;
     m_link->setTap(tap);
-    return m_link->open(s, error);
+    return m_link->open(serialSettings(settings), error);
 }
 
 void ShuokePlcTransport::close()
@@ -64,14 +57,7 @@ int ShuokePlcTransport::baud() const
 
 bool ShuokePlcTransport::setBaud(int baud)
 {
-    if (!m_link->setBaudRate(baud))
-        return false;
-    int gapMs = 0;
-    int spacingMs = 0;
-    options().applyGap(baud, m_link->settings().bitsPerChar, &gapMs, &spacingMs);
-    m_link->setMinGapMs(gapMs);
-    m_link->setMinCommandSpacingMs(spacingMs);
-    return true;
+    return setSerialBaud(m_link, baud);
 }
 
 QString ShuokePlcTransport::cannotCarry(const Frame &frame) const

@@ -18,9 +18,6 @@ class ShuokePlcTransport : public ShuokeTransport
 {
     Q_OBJECT
 public:
-    static constexpr int kDefaultBaud = 9600;
-    static constexpr int kDefaultResponseMs = 100;
-
     ShuokePlcTransport(const ShuokeOptions &options, QObject *parent = nullptr);
     ~ShuokePlcTransport() override;
 

@@ -20,9 +20,6 @@ class ShuokeSerialTransport : public ShuokeTransport
 {
     Q_OBJECT
 public:
-    static constexpr int kDefaultBaud = 9600;
-    static constexpr int kDefaultResponseMs = 100;
-
     ShuokeSerialTransport(const ShuokeOptions &options, QObject *parent = nullptr);
     ~ShuokeSerialTransport() override;
 

@@ -1,5 +1,7 @@
 #include "drive/shuoketransport.h"
 
+#include "drive/connectionsettings.h"
+
 #include "link/linkreply.h"
 #include "protocol/shuokecommands.h"
 
@@ -107,6 +109,18 @@ void ShuokeTransport::request(const ShuokeRequest &request, QObject *context, Ha
         }
         handler(Error::none(), *frame.value);
     });
+}
+
+SerialSettings ShuokeTransport::serialSettings(const ConnectionSettings &settings) const
+{
+    SerialSettings s;
+    s.portName = settings.port;
+    s.baud = settings.baud > 0 ? settings.baud : kDefaultSerialBaud;
+    options().applyGap(s.baud, s.bitsPerChar, &s.minGapMs, &s.minCommandSpacingMs);
+    s.responseTimeoutMs = settings.timeoutMs >= 0 ? settings.timeoutMs : kDefaultSerialResponseMs;
+    if (settings.retries >= 0)
+        s.retries = settings.retries;
+    return s;
 }
 
 } // namespace dd

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "drive/shuokeoptions.h"
+#include "link/serialsettings.h"
 #include "protocol/codecresult.h"
 #include "protocol/shuokeframe.h"
 
@@ -78,6 +79,25 @@ protected:
     virtual Decoded<shuoke::Frame> decode(const LinkReply &reply, const ShuokeRequest &request) const = 0;
     // Link errors may be reworded by the framing (PLC: Modbus exceptions).
     virtual Error translateLinkError(const Error &error, const ShuokeRequest &request) const;
+
+    // The serial framings (RTU, ASCII, PLC): port settings from the connection (9600 baud
+    // and a 100 ms allowance unless given), paced as the options say (the 50 ms rule).
+    static constexpr int kDefaultSerialBaud = 9600;
+    static constexpr int kDefaultSerialResponseMs = 100;
+    SerialSettings serialSettings(const ConnectionSettings &settings) const;
+    // Changes a serial link's baud rate between transactions and re-paces it for the rate.
+    template <typename SerialLinkType>
+    bool setSerialBaud(SerialLinkType *link, int baud) const
+    {
+        if (!link->setBaudRate(baud))
+            return false;
+        int gapMs = 0;
+        int spacingMs = 0;
+        options().applyGap(baud, link->settings().bitsPerChar, &gapMs, &spacingMs);
+        link->setMinGapMs(gapMs);
+        link->setMinCommandSpacingMs(spacingMs);
+        return true;
+    }
 
 private:
     ShuokeOptions m_options;

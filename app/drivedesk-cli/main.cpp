@@ -1,7 +1,7 @@
 // drivedesk-cli: the scriptable commissioning tool. See `drivedesk-cli --help`.
-#include "cli.h"
+#include "cli/cli.h"
 
-#include "common/coreresources.h"
+#include "core/common/coreresources.h"
 
 #include <QCoreApplication>
 

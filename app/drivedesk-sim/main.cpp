@@ -1,8 +1,9 @@
 // drivedesk-sim: simulated drives of one family on a pty or a CAN bus, for DriveDesk's
 // tests, for its demo, and for integrators who test PLC programs without a drive.
-#include "common/coreresources.h"
-#include "common/signalwatcher.h"
-#include "simbench.h"
+#include "core/common/coreresources.h"
+#include "core/common/signalwatcher.h"
+#include "core/protocol/familytraits.h"
+#include "sim/bench/simbench.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -93,14 +94,24 @@ int main(int argc, char *argv[])
         "port and prints its address (can: virtualcan:tcp://127.0.0.1:PORT/can0)."));
     p.addHelpOption();
     p.addVersionOption();
-    const QCommandLineOption family({QStringLiteral("family")}, tr("Drive family: servo-can, servo-modbus or shuoke."), QStringLiteral("FAMILY"));
+    const QCommandLineOption family({QStringLiteral("family")}, tr("Drive family: %1.").arg(familyIds().join(QStringLiteral(", "))), QStringLiteral("FAMILY"));
     const QCommandLineOption address({QStringLiteral("address")}, tr("A drive at this address (repeat, or a comma list). Default: 1."), QStringLiteral("N"));
     const QCommandLineOption pty({QStringLiteral("pty")}, tr("Serve on a new pseudo-terminal (serial families)."));
     const QCommandLineOption link({QStringLiteral("link")}, tr("With --pty: also make a symbolic link to the pty at PATH."), QStringLiteral("PATH"));
     const QCommandLineOption can({QStringLiteral("can")}, tr("Serve on a CAN bus, e.g. virtualcan:can0 or socketcan:can0."), QStringLiteral("PLUGIN:INTERFACE"));
-    const QCommandLineOption baud({QStringLiteral("baud")}, tr("Serial baud rate of the drives (servo-modbus 19200, shuoke 9600)."), QStringLiteral("N"));
-    const QCommandLineOption bitrate({QStringLiteral("bitrate")}, tr("CAN bitrate for the timing model (servo-can 1000000, shuoke 100000)."), QStringLiteral("N"));
-    const QCommandLineOption framing({QStringLiteral("framing")}, tr("shuoke framing: rtu, ascii, can or plc."), QStringLiteral("F"));
+    QStringList bauds, bitrates, framings;
+    for (const FamilyTraits *t : allFamilyTraits()) {
+        if (t->defaultBaud > 0)
+            bauds << QStringLiteral("%1 %2").arg(t->id()).arg(t->defaultBaud);
+        if (t->defaultBitrate > 0)
+            bitrates << QStringLiteral("%1 %2").arg(t->id()).arg(t->defaultBitrate);
+        if (t->framings.size() > 1)
+            framings << QStringLiteral("%1: %2").arg(t->id(), (t->framingIds(LinkKind::Serial) + t->framingIds(LinkKind::Can)).join(QLatin1String(", ")));
+    }
+    const QString comma = QStringLiteral(", ");
+    const QCommandLineOption baud({QStringLiteral("baud")}, tr("Serial baud rate of the drives (%1).").arg(bauds.join(comma)), QStringLiteral("N"));
+    const QCommandLineOption bitrate({QStringLiteral("bitrate")}, tr("CAN bitrate for the timing model (%1).").arg(bitrates.join(comma)), QStringLiteral("N"));
+    const QCommandLineOption framing({QStringLiteral("framing")}, tr("Framing (%1).").arg(framings.join(QStringLiteral("; "))), QStringLiteral("F"));
     const QCommandLineOption latency({QStringLiteral("latency-ms")}, tr("Drive reply latency in milliseconds (default 1 serial, 0.2 CAN)."), QStringLiteral("N"));
     const QCommandLineOption drop({QStringLiteral("drop")}, tr("Probability of dropping a reply (0..1 or N%)."), QStringLiteral("P"));
     const QCommandLineOption corrupt({QStringLiteral("corrupt")}, tr("Probability of corrupting a reply (0..1 or N%)."), QStringLiteral("P"));
@@ -118,27 +129,20 @@ int main(int argc, char *argv[])
         return usageError(tr("Unexpected argument: %1").arg(p.positionalArguments().constFirst()));
 
     SimBenchOptions o;
+    const QString families = familyIds().join(QLatin1String(", "));
     if (!p.isSet(family))
-        return usageError(tr("--family is required (servo-can, servo-modbus or shuoke)."));
+        return usageError(tr("--family is required (%1).").arg(families));
     const auto f = familyFromId(p.value(family));
     if (!f)
-        return usageError(tr("Unknown family '%1': use servo-can, servo-modbus or shuoke.").arg(p.value(family)));
+        return usageError(tr("Unknown family '%1': use %2.").arg(p.value(family), families));
     o.family = *f;
-    for (const QString &item : p.values(address)) {
-        for (const QString &part : item.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-            bool ok = false;
-            const int a = part.trimmed().toInt(&ok);
-            const int max = o.family == Family::ServoCan ? 99 : 247;
-            const int min = o.family == Family::ServoCan ? 0 : 1;
-            if (!ok || a < min || a > max)
-                return usageError(tr("Bad address '%1': use %2..%3 for %4.").arg(part).arg(min).arg(max).arg(familyId(o.family)));
-            if (o.addresses.contains(a))
-                return usageError(tr("Address %1 is given twice.").arg(a));
-            o.addresses << a;
-        }
-    }
+    const FamilyTraits &traits = familyTraits(o.family);
     if (p.isSet(pty) == p.isSet(can))
         return usageError(tr("Give exactly one of --pty and --can."));
+    const LinkKind linkKind = p.isSet(can) ? LinkKind::Can : LinkKind::Serial;
+    if (!traits.talks(linkKind))
+        return usageError(linkKind == LinkKind::Can ? tr("%1 drives live on RS485: use --pty.").arg(traits.id())
+                                                    : tr("%1 drives live on a CAN bus: use --can PLUGIN:INTERFACE.").arg(traits.id()));
     if (p.isSet(link) && !p.isSet(pty))
         return usageError(tr("--link needs --pty."));
     o.can = p.value(can);
@@ -162,14 +166,28 @@ int main(int argc, char *argv[])
         return usageError(tr("Bad --latency-ms '%1': use 0..10000.").arg(p.value(latency)));
     o.latencyUs = latencyMs < 0 ? -1 : latencyMs * 1000;
     if (p.isSet(framing)) {
-        static const QStringList framings = {QStringLiteral("rtu"), QStringLiteral("ascii"), QStringLiteral("can"), QStringLiteral("plc")};
         o.framing = p.value(framing).toLower();
-        if (!framings.contains(o.framing))
-            return usageError(tr("Bad --framing '%1': use rtu, ascii, can or plc.").arg(p.value(framing)));
-        if (o.family != Family::Shuoke)
-            return usageError(tr("--framing applies to the shuoke family only."));
-        if ((o.framing == QLatin1String("can")) != p.isSet(can))
-            return usageError(tr("Framing '%1' needs %2.").arg(o.framing, o.framing == QLatin1String("can") ? QStringLiteral("--can") : QStringLiteral("--pty")));
+        if (!allFramingIds().contains(o.framing))
+            return usageError(tr("Bad --framing '%1': use %2.").arg(p.value(framing), allFramingIds().join(QLatin1String(", "))));
+        const FramingTraits *ft = traits.framing(o.framing);
+        if (!ft || traits.framings.size() < 2)
+            return usageError(tr("--framing does not apply to the %1 family.").arg(traits.id()));
+        if (ft->link != linkKind)
+            return usageError(tr("Framing '%1' needs %2.").arg(o.framing, ft->link == LinkKind::Can ? QStringLiteral("--can") : QStringLiteral("--pty")));
+    }
+    // Addresses: those a drive of the family can have on this link and framing.
+    const FramingTraits *ft = traits.framingFor(linkKind, o.framing);
+    const AddressRange range = ft ? ft->addresses : traits.addresses(linkKind);
+    for (const QString &item : p.values(address)) {
+        for (const QString &part : item.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            bool ok = false;
+            const int a = part.trimmed().toInt(&ok);
+            if (!ok || !range.contains(a))
+                return usageError(tr("Bad address '%1': use %2..%3 for %4.").arg(part).arg(range.first).arg(range.last).arg(traits.id()));
+            if (o.addresses.contains(a))
+                return usageError(tr("Address %1 is given twice.").arg(a));
+            o.addresses << a;
+        }
     }
     if (p.isSet(drop) && !parseRate(p.value(drop), &o.faults.dropRate))
         return usageError(tr("Bad --drop '%1': use a probability 0..1 or a percentage.").arg(p.value(drop)));

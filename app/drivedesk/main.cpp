@@ -1,9 +1,9 @@
 // drivedesk: the commissioning workbench (GUI).
-#include "common/coreresources.h"
-#include "connectrequest.h"
-#include "languagemanager.h"
-#include "driveworkspace.h"
-#include "mainwindow.h"
+#include "core/common/coreresources.h"
+#include "ui/bus/connectrequest.h"
+#include "ui/shell/languagemanager.h"
+#include "ui/workspace/driveworkspace.h"
+#include "ui/shell/mainwindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -71,8 +71,8 @@ Options parseOptions(const QApplication &app)
         dd::DriveDeskMain::tr("The tab to show for the selected drive: overview, trend, ..."),
         QStringLiteral("id"));
     const QCommandLineOption drive(QStringLiteral("drive"),
-        dd::DriveDeskMain::tr("Select the first drive of this family that is found: servo-can, "
-                              "servo-modbus or shuoke."),
+        dd::DriveDeskMain::tr("Select the first drive of this family that is found: %1.")
+            .arg(dd::familyIds().join(QStringLiteral(", "))),
         QStringLiteral("family"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"),
         dd::DriveDeskMain::tr("Save a picture of the main window to this PNG file after the delay, "
@@ -149,9 +149,8 @@ int main(int argc, char *argv[])
     if (!options.drive.isEmpty()) {
         preferredFamily = dd::familyFromId(options.drive);
         if (!preferredFamily) {
-            qCritical("%s", qPrintable(dd::DriveDeskMain::tr("Unknown family '%1' for --drive: use "
-                                                             "servo-can, servo-modbus or shuoke.")
-                                           .arg(options.drive)));
+            qCritical("%s", qPrintable(dd::DriveDeskMain::tr("Unknown family '%1' for --drive: use %2.")
+                                           .arg(options.drive, dd::familyIds().join(QStringLiteral(", ")))));
             return 2;
         }
     }

@@ -1,4 +1,4 @@
-#include "common/coreresources.h"
+#include "core/common/coreresources.h"
 
 #include <QtGlobal>
 

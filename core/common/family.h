@@ -13,5 +13,6 @@ enum class Family { ServoCan, ServoModbus, Shuoke };
 QString familyId(Family family);                       // "servo-can", "servo-modbus", "shuoke"
 std::optional<Family> familyFromId(const QString &id);  // case-insensitive
 QStringList familyIds();
+QList<Family> allFamilies();
 
 } // namespace dd

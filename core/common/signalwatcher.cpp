@@ -1,4 +1,4 @@
-#include "common/signalwatcher.h"
+#include "core/common/signalwatcher.h"
 
 #include <QSocketNotifier>
 #include <QTimer>

@@ -1,4 +1,4 @@
-#include "common/timerslack.h"
+#include "core/common/timerslack.h"
 
 #include <QtGlobal>
 

@@ -1,6 +1,6 @@
-#include "drive/drive.h"
+#include "core/drive/drive.h"
 
-#include "params/parameterdictionary.h"
+#include "core/params/parameterdictionary.h"
 
 #include <QDateTime>
 #include <QSet>

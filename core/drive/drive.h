@@ -1,8 +1,8 @@
 #pragma once
 
-#include "common/error.h"
-#include "drive/drivereply.h"
-#include "drive/drivetypes.h"
+#include "core/common/error.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/drivetypes.h"
 
 #include <QObject>
 #include <QTimer>

@@ -1,8 +1,9 @@
-#include "drive/driveconnection.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/familytable.h"
 
-#include "drive/drive.h"
-#include "drive/familybackend.h"
-#include "link/traffictap.h"
+#include "core/drive/drive.h"
+#include "core/drive/familybackend.h"
+#include "core/link/traffictap.h"
 
 namespace dd {
 

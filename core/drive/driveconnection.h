@@ -1,8 +1,8 @@
 #pragma once
 
-#include "common/error.h"
-#include "drive/connectionsettings.h"
-#include "drive/discovery.h"
+#include "core/common/error.h"
+#include "core/link/connectionsettings.h"
+#include "core/drive/discovery.h"
 
 #include <QObject>
 
@@ -42,8 +42,5 @@ private:
     TrafficTap *m_tap = nullptr;
     FamilyBackend *m_backend = nullptr;
 };
-
-// The backend object for a family (defined with the backends).
-FamilyBackend *createFamilyBackend(Family family, QObject *parent);
 
 } // namespace dd

@@ -1,9 +1,9 @@
-#include "drive/drivehub.h"
+#include "core/drive/drivehub.h"
 
-#include "drive/drive.h"
-#include "drive/drivereply.h"
-#include "drive/driveconnection.h"
-#include "link/traffictap.h"
+#include "core/drive/drive.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/driveconnection.h"
+#include "core/link/traffictap.h"
 
 #include <QPointer>
 #include <QThread>

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "common/error.h"
-#include "drive/connectionsettings.h"
-#include "drive/discovery.h"
-#include "drive/driveresult.h"
-#include "link/trafficrecord.h"
+#include "core/common/error.h"
+#include "core/link/connectionsettings.h"
+#include "core/drive/discovery.h"
+#include "core/drive/driveresult.h"
+#include "core/link/trafficrecord.h"
 
 #include <QHash>
 #include <QSet>

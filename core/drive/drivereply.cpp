@@ -1,4 +1,4 @@
-#include "drive/drivereply.h"
+#include "core/drive/drivereply.h"
 
 #include <QMetaObject>
 

@@ -1,6 +1,6 @@
-#include "drive/driveresult.h"
+#include "core/drive/driveresult.h"
 
-#include "drive/drivereply.h"
+#include "core/drive/drivereply.h"
 
 namespace dd {
 

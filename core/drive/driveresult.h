@@ -1,7 +1,7 @@
 #pragma once
 
-#include "common/error.h"
-#include "drive/drivetypes.h"
+#include "core/common/error.h"
+#include "core/drive/drivetypes.h"
 
 #include <QMap>
 #include <QMetaType>

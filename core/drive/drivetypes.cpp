@@ -1,6 +1,6 @@
-#include "drive/drivetypes.h"
+#include "core/drive/drivetypes.h"
 
-#include "protocol/servomodbus.h"
+#include "core/protocol/servomodbus/servomodbus.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "common/family.h"
+#include "core/common/family.h"
 
 #include <QFlags>
 #include <QList>

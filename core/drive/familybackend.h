@@ -1,8 +1,8 @@
 #pragma once
 
-#include "common/error.h"
-#include "drive/connectionsettings.h"
-#include "drive/discovery.h"
+#include "core/common/error.h"
+#include "core/link/connectionsettings.h"
+#include "core/drive/discovery.h"
 
 #include <QObject>
 

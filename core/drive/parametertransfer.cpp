@@ -1,7 +1,7 @@
-#include "drive/parametertransfer.h"
+#include "core/drive/parametertransfer.h"
 
-#include "drive/drive.h"
-#include "params/parameterdictionary.h"
+#include "core/drive/drive.h"
+#include "core/params/parameterdictionary.h"
 
 #include <QJsonObject>
 

@@ -1,10 +1,10 @@
 #pragma once
 
-#include "common/error.h"
-#include "drive/restorereport.h"
-#include "params/backupfile.h"
-#include "params/parameterdiff.h"
-#include "params/parameterset.h"
+#include "core/common/error.h"
+#include "core/drive/restorereport.h"
+#include "core/params/backupfile.h"
+#include "core/params/parameterdiff.h"
+#include "core/params/parameterset.h"
 
 #include <QObject>
 #include <QPointer>

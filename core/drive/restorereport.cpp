@@ -1,4 +1,4 @@
-#include "drive/restorereport.h"
+#include "core/drive/restorereport.h"
 
 namespace dd {
 

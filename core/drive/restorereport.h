@@ -1,7 +1,7 @@
 #pragma once
 
-#include "drive/drivetypes.h"
-#include "params/parameterdiff.h"
+#include "core/drive/drivetypes.h"
+#include "core/params/parameterdiff.h"
 
 #include <QList>
 #include <QVector>

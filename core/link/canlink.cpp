@@ -1,6 +1,6 @@
-#include "link/canlink.h"
+#include "core/link/canlink.h"
 
-#include "link/traffictap.h"
+#include "core/link/traffictap.h"
 
 #include <QCanBus>
 #include <QCanBusFrame>

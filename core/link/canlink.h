@@ -1,9 +1,9 @@
 #pragma once
 
-#include "common/error.h"
-#include "link/cansettings.h"
-#include "link/linkreply.h"
-#include "protocol/canframedata.h"
+#include "core/common/error.h"
+#include "core/link/cansettings.h"
+#include "core/link/linkreply.h"
+#include "core/protocol/canframedata.h"
 
 #include <QCanBusDevice>
 #include <QElapsedTimer>

@@ -1,4 +1,4 @@
-#include "link/cansettings.h"
+#include "core/link/cansettings.h"
 
 namespace dd {
 

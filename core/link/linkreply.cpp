@@ -1,4 +1,4 @@
-#include "link/linkreply.h"
+#include "core/link/linkreply.h"
 
 #include <QMetaObject>
 

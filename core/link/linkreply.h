@@ -1,7 +1,7 @@
 #pragma once
 
-#include "common/error.h"
-#include "protocol/canframedata.h"
+#include "core/common/error.h"
+#include "core/protocol/canframedata.h"
 
 #include <QByteArray>
 #include <QList>

@@ -1,4 +1,4 @@
-#include "link/modbusbatch.h"
+#include "core/link/modbusbatch.h"
 
 #include <QMetaObject>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "common/error.h"
-#include "link/modbuslink.h"
+#include "core/common/error.h"
+#include "core/link/modbuslink.h"
 
 #include <QList>
 #include <QObject>

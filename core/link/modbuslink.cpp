@@ -1,6 +1,6 @@
-#include "link/modbuslink.h"
+#include "core/link/modbuslink.h"
 
-#include "link/modbuslinkprivate.h"
+#include "core/link/modbuslinkprivate.h"
 
 #include <QModbusRtuSerialClient>
 #include <QVariant>

@@ -1,9 +1,9 @@
 #pragma once
 
-#include "common/error.h"
-#include "link/linkreply.h"
-#include "link/serialsettings.h"
-#include "protocol/modbusrtu.h"
+#include "core/common/error.h"
+#include "core/link/linkreply.h"
+#include "core/link/serialsettings.h"
+#include "core/protocol/modbus/modbusrtu.h"
 
 #include <QObject>
 
@@ -22,7 +22,7 @@ struct ModbusRequest
 };
 
 // Modbus RTU client transport on QModbusRtuSerialClient (servo-modbus, shuoke PLC mode),
-// with the Qt 6.4 pitfalls of DESIGN.md handled:
+// with the Qt 6.4 pitfalls of docs/qt-notes.md handled:
 //  - requests go one at a time through our own queue; the client's own retries are off;
 //  - after a timeout the address is kept quiet (see below) so that a late reply can never
 //    be handed to the next request with the same address and function;

@@ -1,8 +1,8 @@
-#include "link/modbuslinkprivate.h"
+#include "core/link/modbuslinkprivate.h"
 
-#include "common/timerslack.h"
-#include "link/traffictap.h"
-#include "protocol/crc16.h"
+#include "core/common/timerslack.h"
+#include "core/link/traffictap.h"
+#include "core/protocol/modbus/crc16.h"
 
 #include <QLoggingCategory>
 #include <QModbusReply>

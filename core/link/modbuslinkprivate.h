@@ -2,8 +2,8 @@
 
 // Internal to ModbusLink; not part of the core API.
 
-#include "link/modbuslink.h"
-#include "link/serialreadsniffer.h"
+#include "core/link/modbuslink.h"
+#include "core/link/serialreadsniffer.h"
 
 #include <QElapsedTimer>
 #include <QHash>

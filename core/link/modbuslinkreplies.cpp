@@ -1,6 +1,6 @@
-#include "link/modbuslinkprivate.h"
+#include "core/link/modbuslinkprivate.h"
 
-#include "protocol/crc16.h"
+#include "core/protocol/modbus/crc16.h"
 
 #include <QModbusReply>
 #include <QModbusRtuSerialClient>

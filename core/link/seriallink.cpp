@@ -1,7 +1,7 @@
-#include "link/seriallink.h"
+#include "core/link/seriallink.h"
 
-#include "common/timerslack.h"
-#include "link/traffictap.h"
+#include "core/common/timerslack.h"
+#include "core/link/traffictap.h"
 
 #include <QCoreApplication>
 #include <QLoggingCategory>

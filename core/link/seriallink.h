@@ -1,9 +1,9 @@
 #pragma once
 
-#include "common/error.h"
-#include "link/framematch.h"
-#include "link/linkreply.h"
-#include "link/serialsettings.h"
+#include "core/common/error.h"
+#include "core/link/framematch.h"
+#include "core/link/linkreply.h"
+#include "core/link/serialsettings.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -1,4 +1,4 @@
-#include "link/serialreadsniffer.h"
+#include "core/link/serialreadsniffer.h"
 
 #include <QEvent>
 #include <QIODevice>

@@ -1,6 +1,6 @@
-#include "link/trafficlog.h"
+#include "core/link/trafficlog.h"
 
-#include "trend/csvwriter.h"
+#include "core/common/csvfield.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -28,7 +28,7 @@ QByteArray TrafficLog::csvLine(const Entry &entry)
     line += ',';
     line += QByteArray::number(r.timestampUs);
     line += ',';
-    line += CsvWriter::quoteField(r.link);
+    line += csvField(r.link);
     line += ',';
     line += r.directionText().toLatin1();
     line += ',';
@@ -37,9 +37,9 @@ QByteArray TrafficLog::csvLine(const Entry &entry)
     line += ',';
     line += r.bytes.toHex(' ').toUpper();
     line += ',';
-    line += CsvWriter::quoteField(entry.meaning);
+    line += csvField(entry.meaning);
     line += ',';
-    line += CsvWriter::quoteField(r.note);
+    line += csvField(r.note);
     line += '\n';
     return line;
 }

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "common/error.h"
-#include "link/trafficrecord.h"
+#include "core/common/error.h"
+#include "core/link/trafficrecord.h"
 
 #include <QCoreApplication>
 #include <QList>
@@ -10,7 +10,7 @@ namespace dd {
 
 // Saved link traffic (the frame monitor's Save, traces): one line per frame with its time,
 // link, direction, bytes and decoded meaning. Two formats, chosen by the file name:
-//   - CSV (".csv"): UTF-8, LF, comma separator, fields quoted as CsvWriter::quoteField does;
+//   - CSV (".csv"): UTF-8, LF, comma separator, fields quoted as csvField() does (core/common/csvfield.h);
 //     header `time,time_us,link,direction,can_id,data,meaning,note`. `time` is the wall
 //     clock in ISO 8601 with milliseconds and the UTC offset; `time_us` the link tap's
 //     monotonic microseconds; `can_id` hex ("065", 8 digits when extended), empty for serial;

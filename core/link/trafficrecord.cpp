@@ -1,4 +1,4 @@
-#include "link/trafficrecord.h"
+#include "core/link/trafficrecord.h"
 
 namespace dd {
 

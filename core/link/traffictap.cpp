@@ -1,4 +1,4 @@
-#include "link/traffictap.h"
+#include "core/link/traffictap.h"
 
 #include <QDateTime>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "link/trafficrecord.h"
-#include "protocol/canframedata.h"
+#include "core/link/trafficrecord.h"
+#include "core/protocol/canframedata.h"
 
 #include <QElapsedTimer>
 #include <QObject>

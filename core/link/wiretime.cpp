@@ -1,4 +1,4 @@
-#include "link/wiretime.h"
+#include "core/link/wiretime.h"
 
 #include <algorithm>
 

@@ -1,9 +1,10 @@
-#include "params/alarmdictionary.h"
+#include "core/params/alarmdictionary.h"
 
-#include "common/coreresources.h"
-#include "params/jsonfieldreader.h"
-#include "params/paramslog.h"
+#include "core/common/coreresources.h"
+#include "core/params/jsonfieldreader.h"
+#include "core/params/paramslog.h"
 
+#include <QHash>
 #include <QFileInfo>
 #include <QStandardPaths>
 #include <QVector>
@@ -30,17 +31,17 @@ QString AlarmDictionary::userFilePath(Family family)
 
 const AlarmDictionary &AlarmDictionary::bundled(Family family)
 {
-    static const QVector<AlarmDictionary> all = [] {
-        QVector<AlarmDictionary> dictionaries;
-        for (Family f : {Family::ServoCan, Family::ServoModbus, Family::Shuoke}) {
+    static const QHash<Family, AlarmDictionary> all = [] {
+        QHash<Family, AlarmDictionary> dictionaries;
+        for (Family f : allFamilies()) {
             AlarmDictionary d;
             if (const Error e = d.loadBundled(f))
                 qCCritical(lcParams) << "bundled alarm table of" << familyId(f) << "is broken:" << e.message;
-            dictionaries.append(d);
+            dictionaries.insert(f, d);
         }
         return dictionaries;
     }();
-    return all.at(static_cast<int>(family));
+    return *all.constFind(family);
 }
 
 Error AlarmDictionary::loadBundled(Family family)

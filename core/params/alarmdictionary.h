@@ -1,8 +1,8 @@
 #pragma once
 
-#include "common/error.h"
-#include "common/family.h"
-#include "params/localizedtext.h"
+#include "core/common/error.h"
+#include "core/common/family.h"
+#include "core/params/localizedtext.h"
 
 #include <QCoreApplication>
 #include <QLocale>

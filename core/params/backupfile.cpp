@@ -1,7 +1,7 @@
-#include "params/backupfile.h"
+#include "core/params/backupfile.h"
 
-#include "params/jsonfieldreader.h"
-#include "params/parameterdictionary.h"
+#include "core/params/jsonfieldreader.h"
+#include "core/params/parameterdictionary.h"
 
 #include <QCryptographicHash>
 #include <QDateTime>

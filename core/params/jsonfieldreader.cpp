@@ -1,4 +1,4 @@
-#include "params/jsonfieldreader.h"
+#include "core/params/jsonfieldreader.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "common/error.h"
-#include "params/localizedtext.h"
+#include "core/common/error.h"
+#include "core/params/localizedtext.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -1,4 +1,4 @@
-#include "params/localizedtext.h"
+#include "core/params/localizedtext.h"
 
 namespace dd {
 

@@ -1,9 +1,11 @@
-#include "params/parameterdictionary.h"
+#include "core/params/parameterdictionary.h"
+#include "core/protocol/familytraits.h"
 
-#include "common/coreresources.h"
-#include "params/jsonfieldreader.h"
-#include "params/paramslog.h"
+#include "core/common/coreresources.h"
+#include "core/params/jsonfieldreader.h"
+#include "core/params/paramslog.h"
 
+#include <QHash>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -56,18 +58,18 @@ QString ParameterDictionary::userFilePath(Family family)
 
 const ParameterDictionary &ParameterDictionary::bundled(Family family)
 {
-    static const QVector<ParameterDictionary> all = [] {
-        QVector<ParameterDictionary> dictionaries;
-        for (Family f : {Family::ServoCan, Family::ServoModbus, Family::Shuoke}) {
+    static const QHash<Family, ParameterDictionary> all = [] {
+        QHash<Family, ParameterDictionary> dictionaries;
+        for (Family f : allFamilies()) {
             ParameterDictionary d;
             const Error e = d.loadBundled(f);
             if (e)
                 qCCritical(lcParams) << "bundled dictionary of" << familyId(f) << "is broken:" << e.message;
-            dictionaries.append(d);
+            dictionaries.insert(f, d);
         }
         return dictionaries;
     }();
-    return all.at(static_cast<int>(family));
+    return *all.constFind(family);
 }
 
 Error ParameterDictionary::loadBundled(Family family)
@@ -212,12 +214,13 @@ static std::optional<ParameterInfo> parseEntry(const QJsonValue &value, int posi
         *error = ParameterDictionary::tr("%1: a write-only parameter cannot have a readCommand").arg(where);
         return std::nullopt;
     }
-    if (family == Family::Shuoke && p.access != Access::WriteOnly && p.readCommand < 0) {
-        *error = ParameterDictionary::tr("%1: a readable shuoke parameter needs a readCommand").arg(where);
+    const ParameterAddressing addressing = familyTraits(family).parameterAddressing;
+    if (addressing == ParameterAddressing::ReadCommand && p.access != Access::WriteOnly && p.readCommand < 0) {
+        *error = ParameterDictionary::tr("%1: a readable %2 parameter needs a readCommand").arg(where, familyId(family));
         return std::nullopt;
     }
-    if (family == Family::ServoModbus && p.registerAddress < 0) {
-        *error = ParameterDictionary::tr("%1: a servo-modbus parameter needs a register").arg(where);
+    if (addressing == ParameterAddressing::Register && p.registerAddress < 0) {
+        *error = ParameterDictionary::tr("%1: a %2 parameter needs a register").arg(where, familyId(family));
         return std::nullopt;
     }
     if (models) {

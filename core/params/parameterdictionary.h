@@ -1,9 +1,9 @@
 #pragma once
 
-#include "common/error.h"
-#include "common/family.h"
-#include "params/localizedtext.h"
-#include "params/parameterinfo.h"
+#include "core/common/error.h"
+#include "core/common/family.h"
+#include "core/params/localizedtext.h"
+#include "core/params/parameterinfo.h"
 
 #include <QCoreApplication>
 #include <QHash>

@@ -1,6 +1,6 @@
-#include "params/parameterdiff.h"
+#include "core/params/parameterdiff.h"
 
-#include "params/parameterdictionary.h"
+#include "core/params/parameterdictionary.h"
 
 namespace dd {
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "common/error.h"
-#include "params/parameterinfo.h"
-#include "params/parameterset.h"
+#include "core/common/error.h"
+#include "core/params/parameterinfo.h"
+#include "core/params/parameterset.h"
 
 #include <QCoreApplication>
 #include <QList>

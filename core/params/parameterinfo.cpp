@@ -1,4 +1,4 @@
-#include "params/parameterinfo.h"
+#include "core/params/parameterinfo.h"
 
 #include <limits>
 

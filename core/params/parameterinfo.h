@@ -1,6 +1,6 @@
 #pragma once
 
-#include "params/localizedtext.h"
+#include "core/params/localizedtext.h"
 
 #include <QString>
 #include <QStringList>

@@ -1,4 +1,4 @@
-#include "params/parameterset.h"
+#include "core/params/parameterset.h"
 
 namespace dd {
 

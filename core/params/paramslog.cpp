@@ -1,4 +1,4 @@
-#include "params/paramslog.h"
+#include "core/params/paramslog.h"
 
 namespace dd {
 

@@ -1,6 +1,6 @@
-#include "trend/channelsampler.h"
+#include "core/trend/channelsampler.h"
 
-#include "drive/drive.h"
+#include "core/drive/drive.h"
 
 namespace dd {
 

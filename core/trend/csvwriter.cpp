@@ -1,4 +1,5 @@
-#include "trend/csvwriter.h"
+#include "core/trend/csvwriter.h"
+#include "core/common/csvfield.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -24,27 +25,12 @@ CsvWriter::~CsvWriter()
     close();
 }
 
-QByteArray CsvWriter::quoteField(const QString &field)
-{
-    const QByteArray utf8 = field.toUtf8();
-    if (!utf8.contains(',') && !utf8.contains('"') && !utf8.contains('\n') && !utf8.contains('\r'))
-        return utf8;
-    QByteArray out = "\"";
-    for (char c : utf8) {
-        if (c == '"')
-            out += '"';
-        out += c;
-    }
-    out += '"';
-    return out;
-}
-
 QByteArray CsvWriter::headerLine(const QList<TrendChannel> &channels)
 {
     QByteArray line = "time_s";
     for (const TrendChannel &c : channels) {
         line += ',';
-        line += quoteField(c.unit.isEmpty() ? c.id : c.id + QStringLiteral(" [") + c.unit
+        line += csvField(c.unit.isEmpty() ? c.id : c.id + QStringLiteral(" [") + c.unit
                                                       + QLatin1Char(']'));
     }
     line += '\n';

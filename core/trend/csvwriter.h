@@ -1,8 +1,8 @@
 #pragma once
 
-#include "common/error.h"
-#include "trend/trendchannel.h"
-#include "trend/trendsnapshot.h"
+#include "core/common/error.h"
+#include "core/trend/trendchannel.h"
+#include "core/trend/trendsnapshot.h"
 
 #include <QByteArray>
 #include <QCoreApplication>
@@ -21,7 +21,8 @@ namespace dd {
 //   0.000000,1500,12.5,311
 //   0.010000,1502,,311.5
 // - Header: `time_s`, then per channel `<id> [<unit>]`, or just `<id>` when the unit is
-//   empty. A field containing a comma, a quote or a line break is quoted ("" for ").
+//   empty. A field containing a comma, a quote or a line break is quoted ("" for "):
+//   csvField() in core/common/csvfield.h.
 // - One row per sample time. Rows are merged in time order over all channels; channels
 //   sampled at the same time (one reading of the drive) share a row, and a channel
 //   without a sample at a row's time has an empty cell. A channel with two samples at the
@@ -54,7 +55,6 @@ public:
                               const QList<std::optional<double>> &values);
     static QByteArray formatTime(qint64 timeUs, qint64 originUs);
     static QByteArray formatValue(double value);
-    static QByteArray quoteField(const QString &field);
 
     // The whole text of a snapshot.
     static QByteArray toCsv(const TrendSnapshot &snapshot);

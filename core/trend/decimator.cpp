@@ -1,6 +1,6 @@
-#include "trend/decimator.h"
+#include "core/trend/decimator.h"
 
-#include "trend/samplebuffer.h"
+#include "core/trend/samplebuffer.h"
 
 #include <algorithm>
 #include <cmath>

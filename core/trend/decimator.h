@@ -1,6 +1,6 @@
 #pragma once
 
-#include "trend/trendsample.h"
+#include "core/trend/trendsample.h"
 
 #include <QList>
 

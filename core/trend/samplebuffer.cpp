@@ -1,4 +1,4 @@
-#include "trend/samplebuffer.h"
+#include "core/trend/samplebuffer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "trend/trendaxisscale.h"
+#include "core/trend/trendaxisscale.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "drive/drivetypes.h"
+#include "core/drive/drivetypes.h"
 
 #include <QList>
 #include <QMetaType>

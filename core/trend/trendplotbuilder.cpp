@@ -1,6 +1,6 @@
-#include "trend/trendplotbuilder.h"
+#include "core/trend/trendplotbuilder.h"
 
-#include "trend/decimator.h"
+#include "core/trend/decimator.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "trend/samplebuffer.h"
+#include "core/trend/samplebuffer.h"
 
 #include <QList>
 #include <QPointF>

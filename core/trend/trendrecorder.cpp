@@ -1,4 +1,4 @@
-#include "trend/trendrecorder.h"
+#include "core/trend/trendrecorder.h"
 
 #include <algorithm>
 #include <limits>

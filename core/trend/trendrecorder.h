@@ -1,8 +1,8 @@
 #pragma once
 
-#include "trend/samplebuffer.h"
-#include "trend/trendchannel.h"
-#include "trend/trendsnapshot.h"
+#include "core/trend/samplebuffer.h"
+#include "core/trend/trendchannel.h"
+#include "core/trend/trendsnapshot.h"
 
 #include <QMap>
 #include <QObject>

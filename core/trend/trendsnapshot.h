@@ -1,7 +1,7 @@
 #pragma once
 
-#include "trend/trendchannel.h"
-#include "trend/trendsample.h"
+#include "core/trend/trendchannel.h"
+#include "core/trend/trendsample.h"
 
 #include <QList>
 

@@ -40,14 +40,14 @@
 //    (the simulated drive ignores a command sooner than 50 ms after the previous one)
 //    makes the floor max(50 ms, one transaction).
 
-#include "drive/drive.h"
-#include "drive/driveconnection.h"
-#include "drive/drivereply.h"
-#include "link/wiretime.h"
-#include "simbench.h"
-#include "simcandevice.h"
-#include "simserialdevice.h"
-#include "trend/channelsampler.h"
+#include "core/drive/drive.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
+#include "core/link/wiretime.h"
+#include "sim/bench/simbench.h"
+#include "sim/bus/simcandevice.h"
+#include "sim/bus/simserialdevice.h"
+#include "core/trend/channelsampler.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

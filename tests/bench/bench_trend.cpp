@@ -5,11 +5,11 @@
 //
 //   QT_QPA_PLATFORM=offscreen build/tests/bench/bench_trend [--quick] [--screenshot FILE]
 
-#include "trend/decimator.h"
-#include "trend/samplebuffer.h"
-#include "trend/trendplotbuilder.h"
-#include "trend/trendrecorder.h"
-#include "trendview.h"
+#include "core/trend/decimator.h"
+#include "core/trend/samplebuffer.h"
+#include "core/trend/trendplotbuilder.h"
+#include "core/trend/trendrecorder.h"
+#include "ui/panels/trend/trendview.h"
 
 #include <QApplication>
 #include <QChart>

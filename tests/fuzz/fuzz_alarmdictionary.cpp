@@ -5,9 +5,9 @@
 // template, for any other code; loading it again expecting its own family succeeds,
 // expecting another family fails.
 
-#include "fuzzsupport.h"
+#include "tests/fuzz/fuzzsupport.h"
 
-#include "params/alarmdictionary.h"
+#include "core/params/alarmdictionary.h"
 
 #include <QLocale>
 

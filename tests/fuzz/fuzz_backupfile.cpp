@@ -7,10 +7,10 @@
 // Invariants: a failed load leaves the object as it was and says why; a loaded file saves
 // (toJson) and that output loads again to the same content.
 
-#include "fuzzsupport.h"
+#include "tests/fuzz/fuzzsupport.h"
 
-#include "params/backupfile.h"
-#include "params/parameterdictionary.h"
+#include "core/params/backupfile.h"
+#include "core/params/parameterdictionary.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

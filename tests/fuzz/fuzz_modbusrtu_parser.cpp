@@ -8,10 +8,10 @@
 // CRC-valid, at most bufferCap long, a frame by checkFrame() and present in the input; no byte
 // is lost or invented (discarded + delivered + pending == fed); discardPending() empties.
 
-#include "fuzzsupport.h"
+#include "tests/fuzz/fuzzsupport.h"
 
-#include "protocol/crc16.h"
-#include "protocol/modbusrtuparser.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/modbus/modbusrtuparser.h"
 
 #include <algorithm>
 

@@ -7,10 +7,10 @@
 // request (address unless exception, function, count and echo) and, when the request is one
 // the encoder can send (1..125 registers for 0x03), re-encodes to the input.
 
-#include "fuzzsupport.h"
+#include "tests/fuzz/fuzzsupport.h"
 
-#include "protocol/modbusrtu.h"
-#include "protocol/servomodbus.h"
+#include "core/protocol/modbus/modbusrtu.h"
+#include "core/protocol/servomodbus/servomodbus.h"
 
 using namespace dd;
 using namespace dd::modbusrtu;

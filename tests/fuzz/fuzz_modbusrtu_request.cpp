@@ -4,10 +4,10 @@
 // Invariants: a reason is given exactly when the decode fails; an accepted request
 // re-encodes to the input bytes exactly and respects the register limit.
 
-#include "fuzzsupport.h"
+#include "tests/fuzz/fuzzsupport.h"
 
-#include "protocol/modbusrtu.h"
-#include "protocol/servomodbus.h"
+#include "core/protocol/modbus/modbusrtu.h"
+#include "core/protocol/servomodbus/servomodbus.h"
 
 using namespace dd;
 using namespace dd::modbusrtu;

@@ -7,9 +7,9 @@
 // its ranges are consistent with validateValue(); loading it again expecting its own family
 // succeeds, expecting another family fails.
 
-#include "fuzzsupport.h"
+#include "tests/fuzz/fuzzsupport.h"
 
-#include "params/parameterdictionary.h"
+#include "core/params/parameterdictionary.h"
 
 #include <QLocale>
 

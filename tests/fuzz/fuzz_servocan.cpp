@@ -5,9 +5,9 @@
 // the input had that); a parameter frame re-encodes through its dedicated encoder; a read
 // frame is the reply to itself.
 
-#include "fuzzsupport.h"
+#include "tests/fuzz/fuzzsupport.h"
 
-#include "protocol/servocan.h"
+#include "core/protocol/servocan/servocan.h"
 
 using namespace dd;
 using namespace dd::servocan;

@@ -4,9 +4,9 @@
 // Invariants: an accepted line re-encodes to bytes that decode to the same frame; a line in
 // the canonical form (upper-case hex, CR LF, len = data bytes) re-encodes to itself.
 
-#include "shuokefuzz.h"
+#include "tests/fuzz/shuokefuzz.h"
 
-#include "protocol/shuokeascii.h"
+#include "core/protocol/shuoke/shuokeascii.h"
 
 using namespace dd;
 using namespace dd::shuoke;

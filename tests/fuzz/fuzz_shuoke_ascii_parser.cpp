@@ -8,9 +8,9 @@
 // = data bytes or data + 1) occurs in the upper-cased input: the parser invents nothing;
 // a rejected frame leaves a reason.
 
-#include "shuokefuzz.h"
+#include "tests/fuzz/shuokefuzz.h"
 
-#include "protocol/shuokeasciistreamparser.h"
+#include "core/protocol/shuoke/shuokeasciistreamparser.h"
 
 using namespace dd;
 using namespace dd::shuoke;

@@ -3,9 +3,9 @@
 // Invariants: an accepted frame's identifier is its address (or 0 when extended); re-encoding
 // gives the same identifier and the input's [addr][cmd][len][data] bytes, padded to 8.
 
-#include "shuokefuzz.h"
+#include "tests/fuzz/shuokefuzz.h"
 
-#include "protocol/shuokecan.h"
+#include "core/protocol/shuoke/shuokecan.h"
 
 using namespace dd;
 using namespace dd::shuoke;

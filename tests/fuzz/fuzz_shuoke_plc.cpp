@@ -8,9 +8,9 @@
 // to the same frame. An accepted request re-encodes to an ADU that decodes the same; a read
 // request re-encodes to the input exactly.
 
-#include "shuokefuzz.h"
+#include "tests/fuzz/shuokefuzz.h"
 
-#include "protocol/shuokeplc.h"
+#include "core/protocol/shuoke/shuokeplc.h"
 
 using namespace dd;
 using namespace dd::shuoke;

@@ -5,10 +5,10 @@
 // the input exactly; a FixedLength frame re-encodes (padded) to the input when the padding is
 // zero; every accepted frame re-encodes to bytes that decode to the same frame.
 
-#include "shuokefuzz.h"
+#include "tests/fuzz/shuokefuzz.h"
 
-#include "protocol/crc16.h"
-#include "protocol/shuokertu.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/shuoke/shuokertu.h"
 
 using namespace dd;
 using namespace dd::shuoke;

@@ -9,9 +9,9 @@
 // occur in the input (the parser invents nothing), with the length byte of its layout; with
 // append() + takeFrame() no byte is lost or invented (discarded + frames + buffered == fed).
 
-#include "shuokefuzz.h"
+#include "tests/fuzz/shuokefuzz.h"
 
-#include "protocol/shuokertustreamparser.h"
+#include "core/protocol/shuoke/shuokertustreamparser.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
-#include "fuzzsupport.h"
+#include "tests/fuzz/fuzzsupport.h"
 
-#include "common/coreresources.h"
-#include "protocol/crc16.h"
+#include "core/common/coreresources.h"
+#include "core/protocol/modbus/crc16.h"
 
 #include <QString>
 #include <QtGlobal>

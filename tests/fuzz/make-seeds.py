@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the seed corpora of the fuzz targets: tests/fuzz/corpus/<target>/<name>.
 
-The frames are the seeds' worked examples (PROTOCOLS.md) and the unit tests' vectors
+The frames are the seeds' worked examples (docs/protocols/) and the unit tests' vectors
 (tests/unit/tst_*.cpp), plus a few broken ones; each file starts with the control bytes the
 target reads first (see the comment at the top of tests/fuzz/fuzz_<target>.cpp). The JSON
 loaders read tests/data/{backup,dictionaries,alarms}/ and resources/ as further seed folders
@@ -63,7 +63,7 @@ def write(target, name, data):
 
 
 def servocan():
-    frames = {  # PROTOCOLS.md section 1 (station 0) and tst_servocancodec.cpp
+    frames = {  # docs/protocols/servo-can.md (station 0) and tst_servocancodec.cpp
         'keep-alive': '00080000000000ff',
         'enable-on': '00250100000000ff',
         'speed-100': '00200064000000ff',

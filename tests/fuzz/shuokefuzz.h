@@ -2,12 +2,12 @@
 
 // Checks shared by the Shuoke fuzz targets.
 
-#include "fuzzsupport.h"
+#include "tests/fuzz/fuzzsupport.h"
 
-#include "protocol/shuokeascii.h"
-#include "protocol/shuokecommands.h"
-#include "protocol/shuokeframe.h"
-#include "protocol/shuokevalues.h"
+#include "core/protocol/shuoke/shuokeascii.h"
+#include "core/protocol/shuoke/shuokecommands.h"
+#include "core/protocol/shuoke/shuokeframe.h"
+#include "core/protocol/shuoke/shuokevalues.h"
 
 #include <cctype>
 

@@ -4,11 +4,11 @@
 // to it, and the shell's DriveDirectory + DriveWorkspace showing the tabs of the drive at
 // address 1 in an active window — the panels are created and fed as in the application.
 
-#include "drive/drivehub.h"
-#include "drivedirectory.h"
-#include "drivepanel.h"
-#include "driveworkspace.h"
-#include "simbenchthread.h"
+#include "core/drive/drivehub.h"
+#include "ui/bus/drivedirectory.h"
+#include "ui/workspace/drivepanel.h"
+#include "ui/workspace/driveworkspace.h"
+#include "tests/gui/simbenchthread.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

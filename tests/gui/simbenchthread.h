@@ -4,10 +4,10 @@
 // test's GUI thread may block — a frozen window — without stalling the simulated drives.
 // call() runs a function on the bench thread and returns its result.
 
-#include "drive/connectionsettings.h"
-#include "simbench.h"
-#include "simcanbus.h"
-#include "simservocandrive.h"
+#include "core/link/connectionsettings.h"
+#include "sim/bench/simbench.h"
+#include "sim/bus/simcanbus.h"
+#include "sim/servocan/simservocandrive.h"
 
 #include <QDeadlineTimer>
 #include <QSignalSpy>

@@ -4,14 +4,14 @@
 // simulated drive directly — a DriveHub connected to it, the drive's DriveInfo and a
 // DriveContext for panels. Every frame the hub's links send is recorded in `traffic`.
 
-#include "drive/drivehub.h"
-#include "drivecontext.h"
-#include "driveinfo.h"
-#include "link/trafficrecord.h"
-#include "simbench.h"
-#include "simserialbus.h"
-#include "simservomodbusdrive.h"
-#include "simshuokeserialdevice.h"
+#include "core/drive/drivehub.h"
+#include "ui/workspace/drivecontext.h"
+#include "ui/bus/driveinfo.h"
+#include "core/link/trafficrecord.h"
+#include "sim/bench/simbench.h"
+#include "sim/bus/simserialbus.h"
+#include "sim/servomodbus/simservomodbusdrive.h"
+#include "sim/shuoke/simshuokeserialdevice.h"
 
 #include <QList>
 #include <QTest>

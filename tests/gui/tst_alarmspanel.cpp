@@ -1,8 +1,8 @@
 // The Alarms tab against simulated drives: an alarm injected in the simulator shows with its
 // code and its text from the alarm dictionary (the user's table, in the UI language), Clear
 // clears it in the drive, the history keeps both with times; servo-modbus cannot clear.
-#include "alarmspanel.h"
-#include "panelrig.h"
+#include "ui/panels/alarms/alarmspanel.h"
+#include "tests/gui/panelrig.h"
 
 #include <QCanBus>
 #include <QDir>

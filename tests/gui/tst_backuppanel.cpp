@@ -2,12 +2,12 @@
 // open the file, see the difference (ticked), restore it with read-back and a report, and
 // the drive is back to the file's values. Bad files are refused with the reason and nothing
 // is sent.
-#include "backupdifftable.h"
-#include "backuppanel.h"
-#include "params/backupfile.h"
-#include "params/parameterdictionary.h"
-#include "restorereportdialog.h"
-#include "simdrivefixture.h"
+#include "ui/panels/backup/backupdifftable.h"
+#include "ui/panels/backup/backuppanel.h"
+#include "core/params/backupfile.h"
+#include "core/params/parameterdictionary.h"
+#include "ui/panels/backup/restorereportdialog.h"
+#include "tests/gui/simdrivefixture.h"
 
 #include <QApplication>
 #include <QFile>

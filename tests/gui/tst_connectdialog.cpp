@@ -1,9 +1,9 @@
 // The connect dialog: serial ports appear and vanish while it is open (a pty stands in for
 // a USB adapter), CAN plugins and interfaces are listed, settings round-trip and persist,
 // and "detect" tries the families in the documented order.
-#include "connectdialog.h"
-#include "ptyendpoint.h"
-#include "serialportwatcher.h"
+#include "ui/bus/connectdialog.h"
+#include "sim/bus/ptyendpoint.h"
+#include "ui/bus/serialportwatcher.h"
 
 #include <QApplication>
 #include <QCanBus>
@@ -109,7 +109,7 @@ private slots:
         r.scan = true;
         r.scanOptions.from = 3;
         r.scanOptions.to = 40;
-        r.scanOptions.bauds = ConnectRequest::sweepBauds();
+        r.sweepBauds = true;
         r.scanOptions.timeoutMs = 80;
         {
             ConnectDialog dialog;
@@ -122,7 +122,7 @@ private slots:
             QCOMPARE(back.detect, false);
             QCOMPARE(back.scanOptions.from, 3);
             QCOMPARE(back.scanOptions.to, 40);
-            QCOMPARE(back.scanOptions.bauds, ConnectRequest::sweepBauds());
+            QVERIFY(back.sweepBauds);
             QCOMPARE(back.scanOptions.timeoutMs, 80);
             dialog.saveSettings();
         }

@@ -1,17 +1,17 @@
 // The demo: File → Demo bench starts the simulated bench on its own thread, connects to
 // every link and finds one drive of each family; STOP (F12) really stops a moving drive.
-#include "bustreewidget.h"
-#include "connectioncontroller.h"
-#include "demolauncher.h"
-#include "drive/drive.h"
-#include "drive/drivehub.h"
-#include "drivedirectory.h"
-#include "driveworkspace.h"
-#include "mainwindow.h"
-#include "demobench.h"
-#include "stopaction.h"
-#include "trend/trendrecorder.h"
-#include "trendpanel.h"
+#include "ui/bus/bustreewidget.h"
+#include "ui/bus/connectioncontroller.h"
+#include "ui/shell/demolauncher.h"
+#include "core/drive/drive.h"
+#include "core/drive/drivehub.h"
+#include "ui/bus/drivedirectory.h"
+#include "ui/workspace/driveworkspace.h"
+#include "ui/shell/mainwindow.h"
+#include "sim/bench/demobench.h"
+#include "ui/shell/stopaction.h"
+#include "core/trend/trendrecorder.h"
+#include "ui/panels/trend/trendpanel.h"
 
 #include <QApplication>
 #include <QCanBus>

@@ -2,10 +2,10 @@
 // drive reports completion (legacy format, polled), a destructive operation that asks
 // first (cancel: nothing sent; yes: done), a drive without EE operations, and which tabs a
 // drive gets.
-#include "drivepanel.h"
-#include "drivepanels.h"
-#include "eepanel.h"
-#include "simdrivefixture.h"
+#include "ui/workspace/drivepanel.h"
+#include "ui/workspace/drivepanels.h"
+#include "ui/panels/ee/eepanel.h"
+#include "tests/gui/simdrivefixture.h"
 
 #include <QApplication>
 #include <QLabel>

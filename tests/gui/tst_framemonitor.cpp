@@ -1,15 +1,15 @@
 // The frame monitor: batched inserts into a bounded ring, pause that keeps recording, the
 // filter (text, direction, link), saving, and the dock in the main window receiving the
 // traffic of simulated drives with decoded meanings.
-#include "drive/drive.h"
-#include "drive/drivehub.h"
-#include "drive/drivereply.h"
-#include "framemonitordock.h"
-#include "framemonitorfilter.h"
-#include "framemonitormodel.h"
-#include "mainwindow.h"
-#include "protocol/servocan.h"
-#include "simbenchthread.h"
+#include "core/drive/drive.h"
+#include "core/drive/drivehub.h"
+#include "core/drive/drivereply.h"
+#include "ui/framemonitor/framemonitordock.h"
+#include "ui/framemonitor/framemonitorfilter.h"
+#include "ui/framemonitor/framemonitormodel.h"
+#include "ui/shell/mainwindow.h"
+#include "core/protocol/servocan/servocan.h"
+#include "tests/gui/simbenchthread.h"
 
 #include <QAction>
 #include <QCanBus>

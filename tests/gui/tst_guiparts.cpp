@@ -1,16 +1,16 @@
 // The pieces behind the main window, fed by hand (no drives needed): the bus tree follows
 // the DriveDirectory, the workspace makes one set of tabs per drive and keeps the tab, the
 // status bar counts frames, errors and retries, and the small helpers.
-#include "bustreewidget.h"
-#include "displaytext.h"
-#include "drive/drivehub.h"
-#include "drivedirectory.h"
-#include "drivepanel.h"
-#include "driveworkspace.h"
-#include "etaestimator.h"
-#include "overviewpanel.h"
-#include "scanprogresswidget.h"
-#include "statusbarwidget.h"
+#include "ui/bus/bustreewidget.h"
+#include "ui/common/displaytext.h"
+#include "core/drive/drivehub.h"
+#include "ui/bus/drivedirectory.h"
+#include "ui/workspace/drivepanel.h"
+#include "ui/workspace/driveworkspace.h"
+#include "ui/bus/etaestimator.h"
+#include "ui/panels/overview/overviewpanel.h"
+#include "ui/bus/scanprogresswidget.h"
+#include "ui/shell/statusbarwidget.h"
 
 #include <QLabel>
 #include <QPushButton>

@@ -1,11 +1,11 @@
 // The main window: construction, the STOP button and its shortcuts, live language switch,
 // recent files, saved layout. Offscreen, with settings in a temporary directory.
-#include "bustreewidget.h"
-#include "driveworkspace.h"
-#include "languagemanager.h"
-#include "mainwindow.h"
-#include "recentfiles.h"
-#include "stopaction.h"
+#include "ui/bus/bustreewidget.h"
+#include "ui/workspace/driveworkspace.h"
+#include "ui/shell/languagemanager.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/shell/recentfiles.h"
+#include "ui/shell/stopaction.h"
 
 #include <QApplication>
 #include <QDockWidget>

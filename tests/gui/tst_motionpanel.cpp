@@ -2,16 +2,16 @@
 // turns only while the button is held; release, focus loss, window deactivation, a frozen
 // window whose lease is not renewed, a disconnect → stop), capability-based enabling, and
 // the Chinese texts of the new panels.
-#include "drive/drivehub.h"
-#include "drivedirectory.h"
-#include "driveworkspace.h"
-#include "jogbutton.h"
-#include "languagemanager.h"
-#include "alarmspanel.h"
-#include "framemonitordock.h"
-#include "motionpanel.h"
-#include "protocol/servocan.h"
-#include "panelrig.h"
+#include "core/drive/drivehub.h"
+#include "ui/bus/drivedirectory.h"
+#include "ui/workspace/driveworkspace.h"
+#include "ui/panels/motion/jogbutton.h"
+#include "ui/shell/languagemanager.h"
+#include "ui/panels/alarms/alarmspanel.h"
+#include "ui/framemonitor/framemonitordock.h"
+#include "ui/panels/motion/motionpanel.h"
+#include "core/protocol/servocan/servocan.h"
+#include "tests/gui/panelrig.h"
 
 #include <QApplication>
 #include <QCanBus>

@@ -2,13 +2,13 @@
 // (the simulated drive's value changes, the row is verified), refused values (nothing is
 // sent), undo/redo, search; the table model alone for write-only parameters (shuoke
 // dictionary) and names in the UI language.
-#include "backuppanel.h"
-#include "eepanel.h"
-#include "languagemanager.h"
-#include "parameterspanel.h"
-#include "parametertablemodel.h"
-#include "params/parameterdictionary.h"
-#include "simdrivefixture.h"
+#include "ui/panels/backup/backuppanel.h"
+#include "ui/panels/ee/eepanel.h"
+#include "ui/shell/languagemanager.h"
+#include "ui/panels/parameters/parameterspanel.h"
+#include "ui/panels/parameters/parametertablemodel.h"
+#include "core/params/parameterdictionary.h"
+#include "tests/gui/simdrivefixture.h"
 
 #include <QApplication>
 #include <QLabel>

@@ -1,9 +1,9 @@
 #include <QtTest>
 
-#include "trend/trendrecorder.h"
-#include "trendchannelpanel.h"
-#include "trendcontrols.h"
-#include "trendview.h"
+#include "core/trend/trendrecorder.h"
+#include "ui/panels/trend/trendchannelpanel.h"
+#include "ui/panels/trend/trendcontrols.h"
+#include "ui/panels/trend/trendview.h"
 
 #include <QChart>
 #include <QChartView>

@@ -3,11 +3,11 @@
 // the checks every fault test makes on files and on write reports.
 #pragma once
 
-#include "drive/drive.h"
-#include "drive/drivereply.h"
-#include "drive/parametertransfer.h"
-#include "params/backupfile.h"
-#include "params/parameterdictionary.h"
+#include "core/drive/drive.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/parametertransfer.h"
+#include "core/params/backupfile.h"
+#include "core/params/parameterdictionary.h"
 
 #include <QElapsedTimer>
 #include <QFile>

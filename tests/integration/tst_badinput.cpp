@@ -8,18 +8,18 @@
 // tests/unit/tst_backupfile.cpp badFiles, tst_parameterdictionary.cpp badDictionary.)
 #include <QtTest>
 
-#include "drive/servocanbackend.h"
-#include "drive/servocandrive.h"
-#include "drive/servocanstationtracker.h"
-#include "drive/servomodbusbackend.h"
-#include "faultcheck.h"
-#include "link/traffictap.h"
-#include "ptyendpoint.h"
-#include "simcanbus.h"
-#include "simserialbus.h"
-#include "simservocandrive.h"
-#include "simservomodbusdrive.h"
-#include "virtualcanhub.h"
+#include "core/drive/servocan/servocanbackend.h"
+#include "core/drive/servocan/servocandrive.h"
+#include "core/drive/servocan/servocanstationtracker.h"
+#include "core/drive/servomodbus/servomodbusbackend.h"
+#include "tests/integration/faultcheck.h"
+#include "core/link/traffictap.h"
+#include "sim/bus/ptyendpoint.h"
+#include "sim/bus/simcanbus.h"
+#include "sim/bus/simserialbus.h"
+#include "sim/servocan/simservocandrive.h"
+#include "sim/servomodbus/simservomodbusdrive.h"
+#include "sim/bus/virtualcanhub.h"
 
 #include <limits>
 #include <memory>

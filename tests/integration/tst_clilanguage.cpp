@@ -1,7 +1,7 @@
 // drivedesk-cli in Chinese: --lang and the locale pick the language of the help, the
 // messages and the text tables; the exit codes and the --json output never change with it.
 // Runs the real executable (simulated drives on a pseudo-terminal, no CAN).
-#include "clirun.h"
+#include "tests/support/clirun.h"
 
 #include <QtTest>
 

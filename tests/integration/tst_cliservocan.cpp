@@ -1,13 +1,13 @@
 // drivedesk-cli against simulated servo-can drives (SimCanBus on a private virtualcan hub in
 // this process): every command, the backup → change → diff → restore → verify cycle, input
 // errors with nothing on the wire, jog ending by duration, SIGINT and SIGTERM, scan.
-#include "clirun.h"
+#include "tests/support/clirun.h"
 
-#include "common/coreresources.h"
-#include "params/backupfile.h"
-#include "simcanbus.h"
-#include "simservocandrive.h"
-#include "virtualcanhub.h"
+#include "core/common/coreresources.h"
+#include "core/params/backupfile.h"
+#include "sim/bus/simcanbus.h"
+#include "sim/servocan/simservocandrive.h"
+#include "sim/bus/virtualcanhub.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

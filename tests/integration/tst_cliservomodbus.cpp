@@ -2,12 +2,12 @@
 // process, the CLI's real serial/Modbus stack on the other end): every command, the
 // backup → change → diff → restore → verify cycle, EEPROM operations, input errors with
 // nothing on the wire, scan at unknown addresses and baud rates.
-#include "clirun.h"
+#include "tests/support/clirun.h"
 
-#include "common/coreresources.h"
-#include "ptyendpoint.h"
-#include "simserialbus.h"
-#include "simservomodbusdrive.h"
+#include "core/common/coreresources.h"
+#include "sim/bus/ptyendpoint.h"
+#include "sim/bus/simserialbus.h"
+#include "sim/servomodbus/simservomodbusdrive.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -2,14 +2,14 @@
 // CAN on a private virtualcan hub), the benches living in this process: every command, the
 // backup → change → diff → restore → verify cycle, write-only settings, input errors with
 // nothing on the wire, jog ending by duration / SIGINT / SIGTERM, scan.
-#include "clirun.h"
+#include "tests/support/clirun.h"
 
-#include "common/coreresources.h"
-#include "params/backupfile.h"
-#include "protocol/shuokecommands.h"
-#include "shuokecanbench.h"
-#include "shuokeserialbench.h"
-#include "simserialbus.h"
+#include "core/common/coreresources.h"
+#include "core/params/backupfile.h"
+#include "core/protocol/shuoke/shuokecommands.h"
+#include "tests/support/shuokecanbench.h"
+#include "tests/support/shuokeserialbench.h"
+#include "sim/bus/simserialbus.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -1,5 +1,5 @@
 // drivedesk-cli --sim: the built-in simulated bench, nothing plugged in.
-#include "clirun.h"
+#include "tests/support/clirun.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

@@ -1,10 +1,10 @@
 // drivedesk-cli without a drive: help, usage errors (exit 2, nothing sent), an unopenable
 // port (exit 3). Runs the real executable.
-#include "clirun.h"
+#include "tests/support/clirun.h"
 
-#include "params/backupfile.h"
-#include "params/parameterdictionary.h"
-#include "common/coreresources.h"
+#include "core/params/backupfile.h"
+#include "core/params/parameterdictionary.h"
+#include "core/common/coreresources.h"
 
 #include <QTemporaryDir>
 #include <QtTest>

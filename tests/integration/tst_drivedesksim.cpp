@@ -2,9 +2,9 @@
 // --link, --state, SIGTERM — with DriveDesk's own client stack on the other side.
 #include <QtTest>
 
-#include "drive/drive.h"
-#include "drive/driveconnection.h"
-#include "drive/drivereply.h"
+#include "core/drive/drive.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
 
 #include <QProcess>
 #include <QTemporaryDir>

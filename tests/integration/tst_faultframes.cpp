@@ -8,13 +8,13 @@
 // does not.
 #include <QtTest>
 
-#include "drive/servomodbusbackend.h"
-#include "drive/servomodbusdrive.h"
-#include "link/modbuslink.h"
-#include "protocol/crc16.h"
-#include "ptyendpoint.h"
-#include "simserialbus.h"
-#include "simservomodbusdrive.h"
+#include "core/drive/servomodbus/servomodbusbackend.h"
+#include "core/drive/servomodbus/servomodbusdrive.h"
+#include "core/link/modbuslink.h"
+#include "core/protocol/modbus/crc16.h"
+#include "sim/bus/ptyendpoint.h"
+#include "sim/bus/simserialbus.h"
+#include "sim/servomodbus/simservomodbusdrive.h"
 
 #include <memory>
 

@@ -6,14 +6,14 @@
 // no value may be reported. Heartbeats stay untouched, so the station stays online.
 #include <QtTest>
 
-#include "drive/servocanbackend.h"
-#include "drive/servocandrive.h"
-#include "drive/servocanstationtracker.h"
-#include "faultcheck.h"
-#include "protocol/servocan.h"
-#include "simcanbus.h"
-#include "simservocandrive.h"
-#include "virtualcanhub.h"
+#include "core/drive/servocan/servocanbackend.h"
+#include "core/drive/servocan/servocandrive.h"
+#include "core/drive/servocan/servocanstationtracker.h"
+#include "tests/integration/faultcheck.h"
+#include "core/protocol/servocan/servocan.h"
+#include "sim/bus/simcanbus.h"
+#include "sim/servocan/simservocandrive.h"
+#include "sim/bus/virtualcanhub.h"
 
 #include <memory>
 

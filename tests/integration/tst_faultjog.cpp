@@ -9,14 +9,14 @@
 // SimCanBus + SimServoCanDrive on a private VirtualCanHub (see tst_servocandrive.cpp).
 #include <QtTest>
 
-#include "drive/servocanbackend.h"
-#include "drive/servocandrive.h"
-#include "drive/servocanstationtracker.h"
-#include "link/canlink.h"
-#include "protocol/servocan.h"
-#include "simcanbus.h"
-#include "simservocandrive.h"
-#include "virtualcanhub.h"
+#include "core/drive/servocan/servocanbackend.h"
+#include "core/drive/servocan/servocandrive.h"
+#include "core/drive/servocan/servocanstationtracker.h"
+#include "core/link/canlink.h"
+#include "core/protocol/servocan/servocan.h"
+#include "sim/bus/simcanbus.h"
+#include "sim/servocan/simservocandrive.h"
+#include "sim/bus/virtualcanhub.h"
 
 #include <QElapsedTimer>
 

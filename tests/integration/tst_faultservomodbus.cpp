@@ -9,13 +9,13 @@
 //  - the adapter vanishing (pty closed) mid-backup and mid-restore: LinkClosed at once.
 #include <QtTest>
 
-#include "drive/servomodbusbackend.h"
-#include "drive/servomodbusdrive.h"
-#include "faultcheck.h"
-#include "link/modbuslink.h"
-#include "ptyendpoint.h"
-#include "simserialbus.h"
-#include "simservomodbusdrive.h"
+#include "core/drive/servomodbus/servomodbusbackend.h"
+#include "core/drive/servomodbus/servomodbusdrive.h"
+#include "tests/integration/faultcheck.h"
+#include "core/link/modbuslink.h"
+#include "sim/bus/ptyendpoint.h"
+#include "sim/bus/simserialbus.h"
+#include "sim/servomodbus/simservomodbusdrive.h"
 
 #include <QDir>
 #include <QTemporaryDir>

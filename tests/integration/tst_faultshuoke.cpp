@@ -12,14 +12,14 @@
 // the host's own tests keep it.
 #include <QtTest>
 
-#include "drive/driveconnection.h"
-#include "drive/shuokebackend.h"
-#include "drive/shuokedrive.h"
-#include "drive/shuokeparameter.h"
-#include "faultcheck.h"
-#include "protocol/shuokecommands.h"
-#include "shuokeserialbench.h"
-#include "simserialbus.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/shuoke/shuokebackend.h"
+#include "core/drive/shuoke/shuokedrive.h"
+#include "core/drive/shuoke/shuokeparameter.h"
+#include "tests/integration/faultcheck.h"
+#include "core/protocol/shuoke/shuokecommands.h"
+#include "tests/support/shuokeserialbench.h"
+#include "sim/bus/simserialbus.h"
 
 #include <QTemporaryDir>
 

@@ -1,12 +1,12 @@
 // ModbusLink over a pty against a scripted server: the Qt 6.4 pitfalls of
-// QModbusRtuSerialClient (DESIGN.md) and how the link handles them.
+// QModbusRtuSerialClient (docs/qt-notes.md) and how the link handles them.
 
-#include "link/modbuslink.h"
-#include "link/traffictap.h"
-#include "protocol/crc16.h"
-#include "protocol/modbusrtu.h"
-#include "protocol/modbusrtuparser.h"
-#include "ptyendpoint.h"
+#include "core/link/modbuslink.h"
+#include "core/link/traffictap.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/modbus/modbusrtu.h"
+#include "core/protocol/modbus/modbusrtuparser.h"
+#include "sim/bus/ptyendpoint.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>

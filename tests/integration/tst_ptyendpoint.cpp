@@ -4,7 +4,7 @@
 #include <QSerialPort>
 #include <QTemporaryDir>
 
-#include "ptyendpoint.h"
+#include "sim/bus/ptyendpoint.h"
 
 using namespace dd;
 

@@ -5,9 +5,9 @@
 #include <QElapsedTimer>
 
 
-#include "link/linkreply.h"
-#include "link/seriallink.h"
-#include "ptyendpoint.h"
+#include "core/link/linkreply.h"
+#include "core/link/seriallink.h"
+#include "sim/bus/ptyendpoint.h"
 
 using namespace dd;
 

@@ -8,16 +8,16 @@
 // never share a bus and pipelined reads do not stall on Nagle's algorithm.
 #include <QtTest>
 
-#include "drive/connectionsettings.h"
-#include "drive/servocanbackend.h"
-#include "drive/servocandrive.h"
-#include "drive/servocanstationtracker.h"
-#include "link/canlink.h"
-#include "link/traffictap.h"
-#include "protocol/servocan.h"
-#include "simcanbus.h"
-#include "simservocandrive.h"
-#include "virtualcanhub.h"
+#include "core/link/connectionsettings.h"
+#include "core/drive/servocan/servocanbackend.h"
+#include "core/drive/servocan/servocandrive.h"
+#include "core/drive/servocan/servocanstationtracker.h"
+#include "core/link/canlink.h"
+#include "core/link/traffictap.h"
+#include "core/protocol/servocan/servocan.h"
+#include "sim/bus/simcanbus.h"
+#include "sim/servocan/simservocandrive.h"
+#include "sim/bus/virtualcanhub.h"
 
 #include <QElapsedTimer>
 

@@ -2,16 +2,17 @@
 // QModbusRtuSerialClient) over a pty against SimServoModbusDrive on a SimSerialBus, which
 // models the wire time, the baud rate and faults.
 
-#include "drive/servomodbusbackend.h"
-#include "drive/servomodbusdrive.h"
-#include "drive/servomodbusscanner.h"
-#include "link/modbuslink.h"
-#include "link/traffictap.h"
-#include "protocol/crc16.h"
-#include "protocol/servomodbus.h"
-#include "ptyendpoint.h"
-#include "simserialbus.h"
-#include "simservomodbusdrive.h"
+#include "core/drive/servomodbus/servomodbusbackend.h"
+#include "core/protocol/familytraits.h"
+#include "core/drive/servomodbus/servomodbusdrive.h"
+#include "core/drive/servomodbus/servomodbusscanner.h"
+#include "core/link/modbuslink.h"
+#include "core/link/traffictap.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/servomodbus/servomodbus.h"
+#include "sim/bus/ptyendpoint.h"
+#include "sim/bus/simserialbus.h"
+#include "sim/servomodbus/simservomodbusdrive.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -137,7 +138,7 @@ private slots:
     {
         Bench b({driveConfig(3, 19200)});
         QVERIFY(b.open(0)); // family default: 19200
-        QCOMPARE(b.backend->link()->settings().baud, ServoModbusBackend::DefaultBaud);
+        QCOMPARE(b.backend->link()->settings().baud, servomodbus::traits().defaultBaud);
         ServoModbusDrive *d = b.drive(3);
         DriveReply *r = d->refreshIdentity();
         QVERIFY(waitDone(r));

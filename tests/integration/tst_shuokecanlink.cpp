@@ -2,14 +2,14 @@
 // private port) against simulated Shuoke drives on a SimCanBus.
 #include <QtTest>
 
-#include "drive/drivereply.h"
-#include "drive/driveconnection.h"
-#include "drive/shuokebackend.h"
-#include "drive/shuokecantransport.h"
-#include "drive/shuokedrive.h"
-#include "shuokecanbench.h"
-#include "shuokeserialbench.h"
-#include "simcanbus.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/shuoke/shuokebackend.h"
+#include "core/drive/shuoke/shuokecantransport.h"
+#include "core/drive/shuoke/shuokedrive.h"
+#include "tests/support/shuokecanbench.h"
+#include "tests/support/shuokeserialbench.h"
+#include "sim/bus/simcanbus.h"
 
 #include <cmath>
 #include <memory>

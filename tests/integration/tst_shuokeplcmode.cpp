@@ -3,14 +3,14 @@
 // the mapped registers.
 #include <QtTest>
 
-#include "drive/driveconnection.h"
-#include "drive/drivereply.h"
-#include "drive/shuokebackend.h"
-#include "drive/shuokedrive.h"
-#include "drive/shuokeplctransport.h"
-#include "link/modbuslink.h"
-#include "shuokeserialbench.h"
-#include "simserialbus.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/shuoke/shuokebackend.h"
+#include "core/drive/shuoke/shuokedrive.h"
+#include "core/drive/shuoke/shuokeplctransport.h"
+#include "core/link/modbuslink.h"
+#include "tests/support/shuokeserialbench.h"
+#include "sim/bus/simserialbus.h"
 
 #include <cmath>
 #include <memory>

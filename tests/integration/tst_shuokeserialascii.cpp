@@ -2,14 +2,14 @@
 // ShuokeBackend on QSerialPort over a pty, against simulated drives on a SimSerialBus.
 #include <QtTest>
 
-#include "drive/drivereply.h"
-#include "drive/shuokebackend.h"
-#include "drive/shuokedrive.h"
-#include "drive/shuokeserialtransport.h"
-#include "link/seriallink.h"
-#include "protocol/shuokeascii.h"
-#include "shuokeserialbench.h"
-#include "simserialbus.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/shuoke/shuokebackend.h"
+#include "core/drive/shuoke/shuokedrive.h"
+#include "core/drive/shuoke/shuokeserialtransport.h"
+#include "core/link/seriallink.h"
+#include "core/protocol/shuoke/shuokeascii.h"
+#include "tests/support/shuokeserialbench.h"
+#include "sim/bus/simserialbus.h"
 
 #include <cmath>
 #include <memory>

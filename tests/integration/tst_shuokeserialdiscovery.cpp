@@ -2,13 +2,13 @@
 // query-address broadcast that skips silent rates; simulated drives over a pty.
 #include <QtTest>
 
-#include "drive/driveconnection.h"
-#include "drive/drivereply.h"
-#include "drive/shuokebackend.h"
-#include "drive/shuokediscovery.h"
-#include "drive/shuoketransport.h"
-#include "shuokeserialbench.h"
-#include "simserialbus.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/shuoke/shuokebackend.h"
+#include "core/drive/shuoke/shuokediscovery.h"
+#include "core/drive/shuoke/shuoketransport.h"
+#include "tests/support/shuokeserialbench.h"
+#include "sim/bus/simserialbus.h"
 
 #include <memory>
 

@@ -3,12 +3,12 @@
 // --state file keeps settings and positions across restarts.
 #include <QtTest>
 
-#include "drive/driveconnection.h"
-#include "drive/drivereply.h"
-#include "drive/shuokedrive.h"
-#include "protocol/shuokecommands.h"
-#include "shuokeserialbench.h"
-#include "simbench.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/shuoke/shuokedrive.h"
+#include "core/protocol/shuoke/shuokecommands.h"
+#include "tests/support/shuokeserialbench.h"
+#include "sim/bench/simbench.h"
 
 using namespace dd;
 using namespace dd::shuoke;

@@ -4,8 +4,8 @@
 #include <QCanBusDevice>
 #include <QTcpServer>
 
-#include "link/wiretime.h"
-#include "simcanbus.h"
+#include "core/link/wiretime.h"
+#include "sim/bus/simcanbus.h"
 
 #include <memory>
 

@@ -3,10 +3,10 @@
 #include <QElapsedTimer>
 #include <QSerialPort>
 
-#include "link/wiretime.h"
-#include "protocol/crc16.h"
-#include "ptyendpoint.h"
-#include "simserialbus.h"
+#include "core/link/wiretime.h"
+#include "core/protocol/modbus/crc16.h"
+#include "sim/bus/ptyendpoint.h"
+#include "sim/bus/simserialbus.h"
 
 #include <memory>
 

@@ -9,12 +9,12 @@
 //    wire; the motor decelerates; jogLeaseExpired and jogEnded reach the GUI afterwards.
 #include <QtTest>
 
-#include "drive/drive.h"
-#include "drive/drivehub.h"
-#include "protocol/servocan.h"
-#include "simbench.h"
-#include "simcanbus.h"
-#include "simservocandrive.h"
+#include "core/drive/drive.h"
+#include "core/drive/drivehub.h"
+#include "core/protocol/servocan/servocan.h"
+#include "sim/bench/simbench.h"
+#include "sim/bus/simcanbus.h"
+#include "sim/servocan/simservocandrive.h"
 
 #include <QMutex>
 #include <QThread>

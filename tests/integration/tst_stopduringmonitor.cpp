@@ -5,14 +5,14 @@
 //  - shuoke RTU at 9600 baud (SerialLink, 50 ms between commands) in SimBench;
 //  - servo-can (CanLink with a window of 2, so reads wait in its queue) in SimBench.
 
-#include "drive/driveconnection.h"
-#include "drive/drivereply.h"
-#include "drive/shuokedrive.h"
-#include "link/traffictap.h"
-#include "protocol/servocan.h"
-#include "protocol/shuokecommands.h"
-#include "simbench.h"
-#include "trend/channelsampler.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/shuoke/shuokedrive.h"
+#include "core/link/traffictap.h"
+#include "core/protocol/servocan/servocan.h"
+#include "core/protocol/shuoke/shuokecommands.h"
+#include "sim/bench/simbench.h"
+#include "core/trend/channelsampler.h"
 
 #include <QSignalSpy>
 #include <QTimer>

@@ -6,14 +6,14 @@
 //  - CanLink on a private virtualcan hub against an answering CanLink.
 // The order is checked on the wire (what the peer received) and in the TrafficTap.
 
-#include "link/canlink.h"
-#include "link/modbuslink.h"
-#include "link/seriallink.h"
-#include "link/traffictap.h"
-#include "protocol/modbusrtu.h"
-#include "protocol/modbusrtuparser.h"
-#include "ptyendpoint.h"
-#include "virtualcanhub.h"
+#include "core/link/canlink.h"
+#include "core/link/modbuslink.h"
+#include "core/link/seriallink.h"
+#include "core/link/traffictap.h"
+#include "core/protocol/modbus/modbusrtu.h"
+#include "core/protocol/modbus/modbusrtuparser.h"
+#include "sim/bus/ptyendpoint.h"
+#include "sim/bus/virtualcanhub.h"
 
 #include <QSignalSpy>
 #include <QTimer>

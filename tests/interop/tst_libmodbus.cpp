@@ -3,9 +3,9 @@
 // dd_modbus_server.c, libmodbus from Debian). The test joins two ptys into a null-modem
 // cable: the server opens one end, DriveDesk the other.
 
-#include "drive/servomodbusdrive.h"
-#include "link/modbuslink.h"
-#include "ptyendpoint.h"
+#include "core/drive/servomodbus/servomodbusdrive.h"
+#include "core/link/modbuslink.h"
+#include "sim/bus/ptyendpoint.h"
 
 #include <QProcess>
 

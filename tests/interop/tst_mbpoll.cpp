@@ -2,9 +2,9 @@
 // master built on libmodbus) over a pty. mbpoll's -r is 1-based: -r 101 is register 0x0064
 // (PA0), -r 1 is 0x0000 (DP-SPd).
 
-#include "ptyendpoint.h"
-#include "simserialbus.h"
-#include "simservomodbusdrive.h"
+#include "sim/bus/ptyendpoint.h"
+#include "sim/bus/simserialbus.h"
+#include "sim/servomodbus/simservomodbusdrive.h"
 
 #include <QProcess>
 #include <QRegularExpression>

@@ -13,10 +13,10 @@
 // meets another process's virtualcan bus on the fixed port 35468.
 #include <QtTest>
 
-#include "protocol/servocan.h"
-#include "simcanbus.h"
-#include "simservocandrive.h"
-#include "virtualcanhub.h"
+#include "core/protocol/servocan/servocan.h"
+#include "sim/bus/simcanbus.h"
+#include "sim/servocan/simservocandrive.h"
+#include "sim/bus/virtualcanhub.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>

@@ -1,12 +1,12 @@
-#include "shuokecanbench.h"
+#include "tests/support/shuokecanbench.h"
 
-#include "drive/driveconnection.h"
-#include "drive/shuokebackend.h"
-#include "drive/shuokecantransport.h"
-#include "drive/shuokedrive.h"
-#include "link/traffictap.h"
-#include "simcanbus.h"
-#include "virtualcanhub.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/shuoke/shuokebackend.h"
+#include "core/drive/shuoke/shuokecantransport.h"
+#include "core/drive/shuoke/shuokedrive.h"
+#include "core/link/traffictap.h"
+#include "sim/bus/simcanbus.h"
+#include "sim/bus/virtualcanhub.h"
 
 #include <QCanBus>
 #include <QDeadlineTimer>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "drive/connectionsettings.h"
-#include "link/trafficrecord.h"
-#include "simshuokecandevice.h"
+#include "core/link/connectionsettings.h"
+#include "core/link/trafficrecord.h"
+#include "sim/shuoke/simshuokecandevice.h"
 
 #include <QObject>
 #include <memory>

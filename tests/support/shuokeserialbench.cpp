@@ -1,12 +1,12 @@
-#include "shuokeserialbench.h"
+#include "tests/support/shuokeserialbench.h"
 
-#include "drive/driveconnection.h"
-#include "drive/drivereply.h"
-#include "drive/shuokebackend.h"
-#include "drive/shuokedrive.h"
-#include "link/traffictap.h"
-#include "ptyendpoint.h"
-#include "simserialbus.h"
+#include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
+#include "core/drive/shuoke/shuokebackend.h"
+#include "core/drive/shuoke/shuokedrive.h"
+#include "core/link/traffictap.h"
+#include "sim/bus/ptyendpoint.h"
+#include "sim/bus/simserialbus.h"
 
 #include <QSignalSpy>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "drive/connectionsettings.h"
-#include "link/trafficrecord.h"
-#include "simshuokeserialdevice.h"
+#include "core/link/connectionsettings.h"
+#include "core/link/trafficrecord.h"
+#include "sim/shuoke/simshuokeserialdevice.h"
 
 #include <QObject>
 #include <memory>

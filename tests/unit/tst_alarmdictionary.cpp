@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "params/alarmdictionary.h"
+#include "core/params/alarmdictionary.h"
 
 using namespace dd;
 

@@ -1,7 +1,7 @@
 #include <QtTest>
 
-#include "params/backupfile.h"
-#include "params/parameterdictionary.h"
+#include "core/params/backupfile.h"
+#include "core/params/parameterdictionary.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,7 +1,7 @@
 // ChannelSampler: fixed rate; a link slower than the rate skips ticks and gets up to two
 // reads pipelined (never more); samples in the order the reads went out; first error stops.
-#include "drive/drive.h"
-#include "trend/channelsampler.h"
+#include "core/drive/drive.h"
+#include "core/trend/channelsampler.h"
 
 #include <QSignalSpy>
 #include <QTimer>

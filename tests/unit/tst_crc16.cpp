@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "protocol/crc16.h"
+#include "core/protocol/modbus/crc16.h"
 
 using namespace dd;
 

@@ -1,7 +1,7 @@
 #include <QtTest>
 
-#include "trend/csvwriter.h"
-#include "trend/trendrecorder.h"
+#include "core/trend/csvwriter.h"
+#include "core/trend/trendrecorder.h"
 
 #include <QTemporaryDir>
 #include <limits>

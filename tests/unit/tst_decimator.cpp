@@ -1,7 +1,7 @@
 #include <QtTest>
 
-#include "trend/decimator.h"
-#include "trend/samplebuffer.h"
+#include "core/trend/decimator.h"
+#include "core/trend/samplebuffer.h"
 
 #include <QRandomGenerator>
 #include <cmath>

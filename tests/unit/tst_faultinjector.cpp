@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "faultinjector.h"
+#include "sim/bus/faultinjector.h"
 
 using namespace dd;
 

@@ -1,9 +1,10 @@
 // FrameDescriber: what the frame monitor says a frame means, per family and framing.
-#include "protocol/framedescriber.h"
-#include "protocol/modbusrtu.h"
-#include "protocol/shuokecan.h"
-#include "protocol/shuokeplc.h"
-#include "protocol/shuokevalues.h"
+#include "core/protocol/familytraits.h"
+#include "core/protocol/framedescriber.h"
+#include "core/protocol/modbus/modbusrtu.h"
+#include "core/protocol/shuoke/shuokecan.h"
+#include "core/protocol/shuoke/shuokeplc.h"
+#include "core/protocol/shuoke/shuokevalues.h"
 
 #include <QTest>
 
@@ -52,7 +53,8 @@ private slots:
     {
         QFETCH(QByteArray, data);
         QFETCH(QString, expected);
-        FrameDescriber d(Family::ServoCan);
+        const auto d_ = createFrameDescriber(Family::ServoCan);
+        FrameDescriber &d = *d_;
         CanFrameData f;
         f.id = 0x64;
         f.data = data;
@@ -61,7 +63,8 @@ private slots:
 
     void servoCanDriveFrames()
     {
-        FrameDescriber d(Family::ServoCan);
+        const auto d_ = createFrameDescriber(Family::ServoCan);
+        FrameDescriber &d = *d_;
         QCOMPARE(d.describeCan(Origin::Drive, can(0x65, "011088D2040000FF")),
                  QStringLiteral("#1 heartbeat: idle, position 1234"));
         QCOMPARE(d.describeCan(Origin::Drive, can(0x65, "01100018FCFFFFFF")),
@@ -80,19 +83,22 @@ private slots:
 
     void servoCanMalformed()
     {
-        FrameDescriber d(Family::ServoCan);
+        const auto d_ = createFrameDescriber(Family::ServoCan);
+        FrameDescriber &d = *d_;
         const QString bad = d.describeCan(Origin::Drive, can(0x200, "01 10 88 00 00 00 00 FF"));
         QVERIFY2(bad.startsWith(QLatin1String("? (")), qPrintable(bad));
         QVERIFY2(d.describeCan(Origin::Drive, can(0x65, "01 EE 00 00 00 00 00 FF")).startsWith(QLatin1String("? (")), "unknown command");
         // A serial frame on a CAN family, a CAN frame on a serial family: unknown.
         QCOMPARE(d.describeSerial(Origin::Host, hex("010300640014041A")), QStringLiteral("?"));
-        FrameDescriber m(Family::ServoModbus);
+        const auto m_ = createFrameDescriber(Family::ServoModbus);
+        FrameDescriber &m = *m_;
         QCOMPARE(m.describeCan(Origin::Host, can(0x65, "0112FA0C000000FF")), QStringLiteral("?"));
     }
 
     void modbusReadAndReply()
     {
-        FrameDescriber d(Family::ServoModbus);
+        const auto d_ = createFrameDescriber(Family::ServoModbus);
+        FrameDescriber &d = *d_;
         QCOMPARE(d.describeSerial(Origin::Host, hex("010300640014041A")), QStringLiteral("#1 read PA0–PA19"));
         QList<quint16> values{7051, 0, 5, 0xFFFF};
         for (int i = 4; i < 20; ++i)
@@ -118,7 +124,8 @@ private slots:
 
     void modbusWritesAndEe()
     {
-        FrameDescriber d(Family::ServoModbus);
+        const auto d_ = createFrameDescriber(Family::ServoModbus);
+        FrameDescriber &d = *d_;
         QCOMPARE(d.describeSerial(Origin::Host, modbusrtu::encodeWriteMultipleRequest(1, 0x69, {10, 0xFFFE, 3})),
                  QStringLiteral("#1 write PA5–PA7 = 10, -2, 3"));
         QCOMPARE(d.describeSerial(Origin::Drive, modbusrtu::encodeWriteMultipleReply(1, 0x69, 3)),
@@ -143,7 +150,8 @@ private slots:
 
     void modbusRepliesNeedTheirRequest()
     {
-        FrameDescriber d(Family::ServoModbus);
+        const auto d_ = createFrameDescriber(Family::ServoModbus);
+        FrameDescriber &d = *d_;
         QCOMPARE(d.describeSerial(Origin::Drive, hex("01 03 04 1B 8B FF FF 8D 4D")),
                  QStringLiteral("? (reply without a request)"));
         // A reply that does not fit the request before it (4 registers asked, 2 given).
@@ -161,7 +169,8 @@ private slots:
 
     void shuokeRtu()
     {
-        FrameDescriber d(Family::Shuoke);
+        const auto d_ = createFrameDescriber(Family::Shuoke);
+        FrameDescriber &d = *d_;
         QCOMPARE(d.describeSerial(Origin::Host, hex("01 33 04 E8 03 00 00 3A 63")),
                  QStringLiteral("#1 Run at constant speed (signed) 1000"));
         QCOMPARE(d.describeSerial(Origin::Drive, hex("01 33 00 34 F0")),
@@ -179,24 +188,28 @@ private slots:
     void shuokeAsciiSeedExample()
     {
         // The seed's worked example: change address 1 -> 2.
-        FrameDescriber d(Family::Shuoke, QStringLiteral("ascii"));
+        const auto d_ = createFrameDescriber(Family::Shuoke, QStringLiteral("ascii"));
+        FrameDescriber &d = *d_;
         QCOMPARE(d.describeSerial(Origin::Host, QByteArray(":0122010226\r\n")),
                  QStringLiteral("#1 Change address 2"));
-        FrameDescriber twos(Family::Shuoke, QStringLiteral("ascii"),
+        const auto twos_ = createFrameDescriber(Family::Shuoke, QStringLiteral("ascii"),
                             {{QStringLiteral("shuoke.checksum"), QStringLiteral("twos-complement")}});
+        FrameDescriber &twos = *twos_;
         QVERIFY(twos.describeSerial(Origin::Host, QByteArray(":0122010226\r\n")).startsWith(QLatin1String("? (")));
         QCOMPARE(twos.describeSerial(Origin::Host, QByteArray(":01220102DA\r\n")), QStringLiteral("#1 Change address 2"));
     }
 
     void shuokeCanAndPlc()
     {
-        FrameDescriber d(Family::Shuoke, QStringLiteral("can"));
+        const auto d_ = createFrameDescriber(Family::Shuoke, QStringLiteral("can"));
+        FrameDescriber &d = *d_;
         QCOMPARE(d.describeCan(Origin::Host, can(0x01, "013E010100000000")), QStringLiteral("#1 Home positive first"));
         QCOMPARE(d.describeCan(Origin::Host, can(0x00, "003C000000000000")),
                  QStringLiteral("all (broadcast): Emergency stop"));
         QCOMPARE(d.describeCan(Origin::Drive, can(0x03, "033C000000000000")), QStringLiteral("#3 Emergency stop: OK"));
 
-        FrameDescriber plc(Family::Shuoke, QStringLiteral("plc"), {{QStringLiteral("shuoke.plcBase"), 0x100}});
+        const auto plc_ = createFrameDescriber(Family::Shuoke, QStringLiteral("plc"), {{QStringLiteral("shuoke.plcBase"), 0x100}});
+        FrameDescriber &plc = *plc_;
         const shuoke::Frame request = shuoke::Frame::make(1, 0x36);
         shuoke::PlcOptions options;
         options.base = 0x100;
@@ -212,8 +225,10 @@ private slots:
 
     void shuokeByteOrder()
     {
-        FrameDescriber big(Family::Shuoke, {}, {{QStringLiteral("shuoke.byteOrder"), QStringLiteral("big")}});
-        FrameDescriber little(Family::Shuoke);
+        const auto big_ = createFrameDescriber(Family::Shuoke, {}, {{QStringLiteral("shuoke.byteOrder"), QStringLiteral("big")}});
+        FrameDescriber &big = *big_;
+        const auto little_ = createFrameDescriber(Family::Shuoke);
+        FrameDescriber &little = *little_;
         const QByteArray frame = hex("01 33 04 E8 03 00 00 3A 63");
         QCOMPARE(little.describeSerial(Origin::Host, frame), QStringLiteral("#1 Run at constant speed (signed) 1000"));
         QCOMPARE(big.describeSerial(Origin::Host, frame),

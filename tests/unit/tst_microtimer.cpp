@@ -3,7 +3,7 @@
 #include <QElapsedTimer>
 #include <QSignalSpy>
 
-#include "microtimer.h"
+#include "sim/bus/microtimer.h"
 
 using namespace dd;
 

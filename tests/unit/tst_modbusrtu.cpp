@@ -1,7 +1,7 @@
 #include <QtTest>
 
-#include "protocol/crc16.h"
-#include "protocol/modbusrtu.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/modbus/modbusrtu.h"
 
 using namespace dd;
 using namespace dd::modbusrtu;

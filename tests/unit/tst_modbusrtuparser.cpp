@@ -1,7 +1,7 @@
 #include <QtTest>
 
-#include "protocol/crc16.h"
-#include "protocol/modbusrtuparser.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/modbus/modbusrtuparser.h"
 
 #include <QRandomGenerator>
 

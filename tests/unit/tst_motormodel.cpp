@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "motormodel.h"
+#include "sim/motor/motormodel.h"
 
 #include <cmath>
 

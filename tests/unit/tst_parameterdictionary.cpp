@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "params/parameterdictionary.h"
+#include "core/params/parameterdictionary.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -1,7 +1,7 @@
 #include <QtTest>
 
-#include "params/parameterdictionary.h"
-#include "params/parameterdiff.h"
+#include "core/params/parameterdictionary.h"
+#include "core/params/parameterdiff.h"
 
 using namespace dd;
 

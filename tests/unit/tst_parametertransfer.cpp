@@ -1,9 +1,9 @@
 // ParameterTransfer (backup / compare / restore workflow) against an in-memory drive.
-#include "common/coreresources.h"
-#include "drive/drive.h"
-#include "drive/parametertransfer.h"
-#include "params/backupfile.h"
-#include "params/parameterdictionary.h"
+#include "core/common/coreresources.h"
+#include "core/drive/drive.h"
+#include "core/drive/parametertransfer.h"
+#include "core/params/backupfile.h"
+#include "core/params/parameterdictionary.h"
 
 #include <QSignalSpy>
 #include <QTimer>

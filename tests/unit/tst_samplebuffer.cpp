@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "trend/samplebuffer.h"
+#include "core/trend/samplebuffer.h"
 
 using namespace dd;
 

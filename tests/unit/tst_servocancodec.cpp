@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "protocol/servocan.h"
+#include "core/protocol/servocan/servocan.h"
 
 #include <limits>
 #include <set>
@@ -37,7 +37,7 @@ private slots:
     {
         QTest::addColumn<CanFrameData>("frame");
         QTest::addColumn<QByteArray>("expected");
-        // Station 0, ID 0x064 (PROTOCOLS.md section 1, seed examples).
+        // Station 0, ID 0x064 (docs/protocols/servo-can.md, seed examples).
         QTest::newRow("keep-alive") << sc::keepAlive(0) << QByteArray::fromHex("00080000000000ff");
         QTest::newRow("enable on") << sc::enable(0, true) << QByteArray::fromHex("00250100000000ff");
         QTest::newRow("speed +100") << sc::runSpeed(0, 100) << QByteArray::fromHex("00200064000000ff");

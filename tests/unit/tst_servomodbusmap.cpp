@@ -1,8 +1,8 @@
 #include <QtTest>
 
-#include "protocol/crc16.h"
-#include "protocol/modbusrtu.h"
-#include "protocol/servomodbus.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/modbus/modbusrtu.h"
+#include "core/protocol/servomodbus/servomodbus.h"
 
 using namespace dd;
 using namespace dd::servomodbus;

@@ -1,8 +1,8 @@
 #include <QtTest>
 
-#include "protocol/shuokeascii.h"
-#include "protocol/shuokeasciistreamparser.h"
-#include "protocol/shuokecommands.h"
+#include "core/protocol/shuoke/shuokeascii.h"
+#include "core/protocol/shuoke/shuokeasciistreamparser.h"
+#include "core/protocol/shuoke/shuokecommands.h"
 
 using namespace dd::shuoke;
 using dd::Decoded;
@@ -132,7 +132,7 @@ private slots:
         }
     }
 
-    // PROTOCOLS decision: len = data + 1 is also accepted (the seed's "one less than RTU").
+    // Decision (docs/protocols/shuoke.md): len = data + 1 is also accepted (the seed's "one less than RTU").
     void lengthPlusOne()
     {
         // 01 22 02 02: len 2 for 1 data byte; sum 0x27

@@ -1,7 +1,7 @@
 #include <QtTest>
 
-#include "protocol/shuokecan.h"
-#include "protocol/shuokecommands.h"
+#include "core/protocol/shuoke/shuokecan.h"
+#include "core/protocol/shuoke/shuokecommands.h"
 
 using namespace dd::shuoke;
 using dd::CanFrameData;

@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "protocol/shuokecommands.h"
+#include "core/protocol/shuoke/shuokecommands.h"
 
 #include <set>
 
@@ -71,7 +71,7 @@ private slots:
         QCOMPARE(commandName(0x50), QStringLiteral("command 0x50"));
     }
 
-    // Request and reply data lengths of PROTOCOLS.md's command table, row by row.
+    // Request and reply data lengths of the command table in docs/protocols/shuoke.md, row by row.
     void lengths_data()
     {
         QTest::addColumn<int>("code");

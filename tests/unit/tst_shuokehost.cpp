@@ -2,14 +2,14 @@
 // transport gives SerialLink, and the parameter table against the bundled dictionary.
 #include <QtTest>
 
-#include "drive/connectionsettings.h"
-#include "drive/shuokeoptions.h"
-#include "drive/shuokeparameter.h"
-#include "drive/shuokeserialtransport.h"
-#include "params/parameterdictionary.h"
-#include "protocol/crc16.h"
-#include "protocol/shuokeascii.h"
-#include "protocol/shuokertu.h"
+#include "core/link/connectionsettings.h"
+#include "core/drive/shuoke/shuokeoptions.h"
+#include "core/drive/shuoke/shuokeparameter.h"
+#include "core/drive/shuoke/shuokeserialtransport.h"
+#include "core/params/parameterdictionary.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/shuoke/shuokeascii.h"
+#include "core/protocol/shuoke/shuokertu.h"
 
 using namespace dd;
 using namespace dd::shuoke;

@@ -1,8 +1,8 @@
 #include <QtTest>
 
-#include "protocol/crc16.h"
-#include "protocol/shuokecommands.h"
-#include "protocol/shuokeplc.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/shuoke/shuokecommands.h"
+#include "core/protocol/shuoke/shuokeplc.h"
 
 using namespace dd::shuoke;
 using dd::Decoded;

@@ -1,9 +1,9 @@
 #include <QtTest>
 
-#include "protocol/crc16.h"
-#include "protocol/shuokecommands.h"
-#include "protocol/shuokertu.h"
-#include "protocol/shuokertustreamparser.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/shuoke/shuokecommands.h"
+#include "core/protocol/shuoke/shuokertu.h"
+#include "core/protocol/shuoke/shuokertustreamparser.h"
 
 using namespace dd::shuoke;
 using dd::Decoded;
@@ -159,7 +159,7 @@ private slots:
         QVERIFY(encodeRtu(Frame::make(1, 0x40, QByteArray(255, 'x'))).ok());
     }
 
-    // PROTOCOLS decision: len may count the two CRC bytes, accepted when the CRC checks.
+    // Decision (docs/protocols/shuoke.md): len may count the two CRC bytes, accepted when the CRC checks.
     void lengthCountsCrc_data()
     {
         QTest::addColumn<QByteArray>("wire");

@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "protocol/shuokevalues.h"
+#include "core/protocol/shuoke/shuokevalues.h"
 
 #include <limits>
 

@@ -1,8 +1,8 @@
 // SimServoCanDrive on its own (no bus, no clock): frames in, frames out, at chosen times.
 #include <QtTest>
 
-#include "protocol/servocan.h"
-#include "simservocandrive.h"
+#include "core/protocol/servocan/servocan.h"
+#include "sim/servocan/simservocandrive.h"
 
 using namespace dd;
 namespace sc = dd::servocan;

@@ -1,8 +1,8 @@
 // The simulated servo-modbus drive on its own: requests in, reply bytes out (no bus, no pty).
 
-#include "protocol/crc16.h"
-#include "protocol/modbusrtu.h"
-#include "simservomodbusdrive.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/modbus/modbusrtu.h"
+#include "sim/servomodbus/simservomodbusdrive.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>

@@ -3,12 +3,12 @@
 // serial adapter's drive-side framing (RTU, ASCII, PLC), fed bytes directly.
 #include <QtTest>
 
-#include "protocol/crc16.h"
-#include "protocol/shuokeascii.h"
-#include "protocol/shuokeplc.h"
-#include "protocol/shuokertu.h"
-#include "simshuokedrive.h"
-#include "simshuokeserialdevice.h"
+#include "core/protocol/modbus/crc16.h"
+#include "core/protocol/shuoke/shuokeascii.h"
+#include "core/protocol/shuoke/shuokeplc.h"
+#include "core/protocol/shuoke/shuokertu.h"
+#include "sim/shuoke/simshuokedrive.h"
+#include "sim/shuoke/simshuokeserialdevice.h"
 
 using namespace dd;
 using namespace dd::shuoke;

@@ -1,5 +1,5 @@
 // TrafficLog: the frame monitor's saved files (CSV and text), written atomically.
-#include "link/trafficlog.h"
+#include "core/link/trafficlog.h"
 
 #include <QDateTime>
 #include <QFile>

@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "trend/trendaxisscale.h"
+#include "core/trend/trendaxisscale.h"
 
 #include <limits>
 

@@ -1,7 +1,7 @@
 #include <QtTest>
 
-#include "trend/samplebuffer.h"
-#include "trend/trendplotbuilder.h"
+#include "core/trend/samplebuffer.h"
+#include "core/trend/trendplotbuilder.h"
 
 #include <limits>
 

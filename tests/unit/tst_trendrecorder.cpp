@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "trend/trendrecorder.h"
+#include "core/trend/trendrecorder.h"
 
 #include <QSignalSpy>
 

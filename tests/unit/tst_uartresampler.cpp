@@ -1,7 +1,7 @@
 #include <QtTest>
 
-#include "protocol/crc16.h"
-#include "uartresampler.h"
+#include "core/protocol/modbus/crc16.h"
+#include "sim/bus/uartresampler.h"
 
 using namespace dd;
 

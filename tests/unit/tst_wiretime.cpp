@@ -1,6 +1,6 @@
 #include <QtTest>
 
-#include "link/wiretime.h"
+#include "core/link/wiretime.h"
 
 using namespace dd;
 

@@ -1,0 +1,305 @@
+#include "cli/backupcommands.h"
+
+#include "core/protocol/familytraits.h"
+#include "cli/clidescribe.h"
+
+#include "core/drive/drive.h"
+#include "core/drive/parametertransfer.h"
+#include "core/params/parameterdictionary.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+namespace dd {
+
+namespace {
+
+QJsonValue optionalValue(const std::optional<qint64> &v)
+{
+    return v ? QJsonValue(double(*v)) : QJsonValue();
+}
+
+QString optionalText(const std::optional<qint64> &v)
+{
+    return v ? QString::number(*v) : QStringLiteral("-");
+}
+
+} // namespace
+
+// --- backup -----------------------------------------------------------------------------
+
+bool BackupCommand::prepare(const CliInvocation &inv, QString *error)
+{
+    if (!expectArguments(inv, 0, 0, QString(), error))
+        return false;
+    m_path = inv.value(QStringLiteral("output"));
+    if (m_path.isEmpty()) {
+        *error = tr("backup needs the file to write: backup -o FILE.");
+        return false;
+    }
+    const QFileInfo info(m_path);
+    if (!info.absoluteDir().exists()) {
+        *error = tr("backup: the folder %1 does not exist.").arg(info.absolutePath());
+        return false;
+    }
+    if (info.isDir()) {
+        *error = tr("backup: %1 is a folder; give a file name.").arg(m_path);
+        return false;
+    }
+    return true;
+}
+
+void BackupCommand::start()
+{
+    m_transfer = new ParameterTransfer(drive(), this);
+    connect(m_transfer, &ParameterTransfer::finished, this, [this](const Error &error) {
+        if (error)
+            return fail(error);
+        BackupFile file = m_transfer->backupFile();
+        const ConnectionSettings &c = context()->globals.connection;
+        QJsonObject link = file.link();
+        if (c.isCan()) {
+            link.insert(QStringLiteral("can"), c.can);
+            if (c.bitrate)
+                link.insert(QStringLiteral("bitrate"), c.bitrate);
+        } else if (!c.port.isEmpty()) {
+            link.insert(QStringLiteral("port"), c.port);
+            if (c.baud)
+                link.insert(QStringLiteral("baud"), c.baud);
+        }
+        if (!c.framing.isEmpty())
+            link.insert(QStringLiteral("framing"), c.framing);
+        file.setLink(link);
+        if (Error e = file.save(m_path, m_transfer->dictionary()))
+            return fail(e, {}, CliExit::DriveFailed);
+        const int n = file.values().size();
+        succeed({{QStringLiteral("file"), m_path},
+                 {QStringLiteral("parameters"), n},
+                 {QStringLiteral("firmware"), file.firmware()},
+                 {QStringLiteral("model"), file.model()}},
+                tr("%n parameter(s) saved to %1.", nullptr, n).arg(m_path));
+    });
+    m_transfer->backup();
+}
+
+// --- diff and restore: the file ---------------------------------------------------------
+
+bool FileCommand::prepare(const CliInvocation &inv, QString *error)
+{
+    if (!expectArguments(inv, 1, 1, tr("a backup file"), error))
+        return false;
+    m_path = inv.positionals.at(0);
+    // Everything is checked here, before the link is opened: structure, checksum, family,
+    // indices and ranges (against the dictionary in use).
+    if (Error e = m_file.load(m_path, context()->dictionary.get())) {
+        *error = e.message;
+        return false;
+    }
+    const Family linkFamily = context()->globals.connection.family;
+    if (m_file.family() && *m_file.family() != linkFamily) {
+        *error = tr("%1 is a backup of a %2 drive; this link is for %3 drives. A backup is "
+                    "never restored onto another family; to talk to a %2 drive add --family %2.")
+                     .arg(m_path, familyId(*m_file.family()), familyId(linkFamily));
+        return false;
+    }
+    return true;
+}
+
+QJsonArray FileCommand::diffJson() const
+{
+    QJsonArray list;
+    for (const DiffEntry &e : m_transfer->diff().entries()) {
+        QJsonObject o{{QStringLiteral("index"), e.index},
+                      {QStringLiteral("key"), e.key},
+                      {QStringLiteral("status"), diffStatusId(e.status)},
+                      {QStringLiteral("file"), optionalValue(e.fileValue)},
+                      {QStringLiteral("drive"), optionalValue(e.driveValue)}};
+        if (e.communication)
+            o.insert(QStringLiteral("communication"), true);
+        list.append(o);
+    }
+    return list;
+}
+
+QString FileCommand::diffText(bool onlyDifferences) const
+{
+    const ParameterDictionary &dict = m_transfer->dictionary();
+    QList<QPair<QString, QString>> rows;
+    for (const DiffEntry &e : m_transfer->diff().entries()) {
+        if (onlyDifferences && e.status == DiffStatus::Same)
+            continue;
+        QString what;
+        switch (e.status) {
+        case DiffStatus::Same: what = tr("same"); break;
+        case DiffStatus::Different: what = tr("differs"); break;
+        case DiffStatus::OnlyInFile: what = tr("drive value unknown"); break;
+        case DiffStatus::OnlyOnDrive: what = tr("not in the file"); break;
+        case DiffStatus::NotReadable: what = tr("write-only: drive value not readable"); break;
+        }
+        if (e.communication)
+            what += tr(" (communication setting)");
+        rows.append({dict.label(e.index),
+                     tr("file %1  drive %2  %3").arg(optionalText(e.fileValue), optionalText(e.driveValue), what)});
+    }
+    return CliDescribe::table(rows);
+}
+
+// --- diff -------------------------------------------------------------------------------
+
+void DiffCommand::start()
+{
+    m_transfer = new ParameterTransfer(drive(), this);
+    connect(m_transfer, &ParameterTransfer::finished, this, [this](const Error &error) {
+        if (error)
+            return fail(error);
+        const ParameterDiff &d = m_transfer->diff();
+        const int differ = d.count(DiffStatus::Different);
+        const int same = d.count(DiffStatus::Same);
+        const QJsonObject json{{QStringLiteral("file"), m_path},
+                               {QStringLiteral("different"), differ},
+                               {QStringLiteral("same"), same},
+                               {QStringLiteral("onlyInFile"), d.count(DiffStatus::OnlyInFile)},
+                               {QStringLiteral("onlyOnDrive"), d.count(DiffStatus::OnlyOnDrive)},
+                               {QStringLiteral("notReadable"), d.count(DiffStatus::NotReadable)},
+                               {QStringLiteral("parameters"), diffJson()}};
+        QString text = diffText(true);
+        text += tr("%1 differ, %2 same (%3).").arg(differ).arg(same).arg(m_path);
+        succeed(json, text);
+    });
+    m_transfer->compare(m_file);
+}
+
+// --- restore ----------------------------------------------------------------------------
+
+bool RestoreCommand::prepare(const CliInvocation &inv, QString *error)
+{
+    if (!FileCommand::prepare(inv, error))
+        return false;
+    m_options.dryRun = inv.has(QStringLiteral("dry-run"));
+    m_options.force = inv.has(QStringLiteral("force"));
+    if (inv.has(QStringLiteral("only"))) {
+        const ParameterDictionary &dict = *context()->dictionary;
+        if (Error e = dict.resolveList({inv.value(QStringLiteral("only"))}, &m_options.only)) {
+            *error = e.message;
+            return false;
+        }
+        for (int i : std::as_const(m_options.only)) {
+            if (!m_file.values().isKnown(i)) {
+                *error = tr("restore --only: %1 has no value in %2.").arg(dict.label(i), m_path);
+                return false;
+            }
+            const ParameterInfo *p = dict.byIndex(i);
+            if (p && !p->isWritable()) {
+                *error = tr("restore --only: %1 is read-only.").arg(dict.label(i));
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+void RestoreCommand::start()
+{
+    m_transfer = new ParameterTransfer(drive(), this);
+    connect(m_transfer, &ParameterTransfer::finished, this, &RestoreCommand::report);
+    m_transfer->restore(m_file, m_options);
+}
+
+void RestoreCommand::interrupt(int)
+{
+    out()->note(tr("Finishing the restore in progress so that its report is complete; "
+                   "every write is verified as it goes."));
+}
+
+void RestoreCommand::report(const Error &error)
+{
+    const ParameterDictionary &dict = m_transfer->dictionary();
+    const RestoreReport &r = m_transfer->report();
+    using O = RestoreReport::Outcome;
+
+    QJsonArray selected;
+    QList<QPair<QString, QString>> rows;
+    for (const DiffEntry &e : r.selected) {
+        QJsonObject o{{QStringLiteral("index"), e.index},
+                      {QStringLiteral("key"), e.key},
+                      {QStringLiteral("from"), optionalValue(e.driveValue)},
+                      {QStringLiteral("to"), optionalValue(e.fileValue)}};
+        QString state;
+        if (!r.dryRun) {
+            const O outcome = r.outcome(e.index);
+            o.insert(QStringLiteral("result"), RestoreReport::outcomeId(outcome));
+            const ParameterWriteResult *res = r.result(e.index);
+            if (res && res->readable && res->written && !res->readBackFailed)
+                o.insert(QStringLiteral("readBack"), double(res->readBack));
+            switch (outcome) {
+            case O::Verified: state = tr("verified"); break;
+            case O::WrittenOnly: state = tr("written (write-only: cannot be read back)"); break;
+            case O::Mismatch: state = tr("WRITTEN, READ BACK %1").arg(res ? res->readBack : 0); break;
+            case O::Failed: state = tr("NOT WRITTEN: %1").arg(res ? res->error : QString()); break;
+            case O::NotAttempted: state = tr("NOT WRITTEN (not attempted)"); break;
+            case O::Unconfirmed:
+                state = res && res->written ? tr("WRITTEN, NOT VERIFIED (no answer to the read-back)")
+                                            : tr("UNKNOWN: %1").arg(res ? res->error : QString());
+                break;
+            }
+        } else {
+            state = tr("would be written");
+        }
+        selected.append(o);
+        rows.append({dict.label(e.index),
+                     tr("%1 -> %2  %3").arg(optionalText(e.driveValue), optionalText(e.fileValue), state)});
+    }
+    auto keys = [&dict](const QList<int> &indices) {
+        QJsonArray a;
+        for (int i : indices) {
+            const ParameterInfo *p = dict.byIndex(i);
+            a.append(p ? p->key : QString::number(i));
+        }
+        return a;
+    };
+    QJsonObject json{{QStringLiteral("file"), m_path},
+                     {QStringLiteral("dryRun"), r.dryRun},
+                     {QStringLiteral("forced"), m_options.force},
+                     {QStringLiteral("selected"), selected}};
+    if (!r.dryRun) {
+        json.insert(QStringLiteral("verified"), keys(r.indices(O::Verified)));
+        json.insert(QStringLiteral("written"), keys(r.written()));
+        json.insert(QStringLiteral("notWritten"), keys(r.notWritten()));
+        json.insert(QStringLiteral("mismatch"), keys(r.indices(O::Mismatch)));
+        json.insert(QStringLiteral("unconfirmed"), keys(r.indices(O::Unconfirmed)));
+    }
+
+    if (error) {
+        if (!r.selected.isEmpty() && !out()->isJson()) {
+            out()->line(CliDescribe::table(rows));
+            const QList<int> written = r.written();
+            const QList<int> notWritten = r.notWritten();
+            QStringList w, n;
+            for (int i : written)
+                w << dict.label(i);
+            for (int i : notWritten)
+                n << dict.label(i);
+            out()->line(tr("Written: %1").arg(w.isEmpty() ? tr("none") : w.join(QLatin1String(", "))));
+            out()->line(tr("Not written: %1").arg(n.isEmpty() ? tr("none") : n.join(QLatin1String(", "))));
+            QStringList u;
+            for (int i : r.indices(O::Unconfirmed))
+                u << dict.label(i);
+            if (!u.isEmpty())
+                out()->line(tr("Unknown (read them again): %1").arg(u.join(QLatin1String(", "))));
+        }
+        return fail(error, json);
+    }
+    if (r.selected.isEmpty())
+        return succeed(json, tr("The drive already matches %1; nothing to write.").arg(m_path));
+    QString text = CliDescribe::table(rows);
+    if (r.dryRun) {
+        text += tr("Dry run: %n parameter(s) would be written; nothing was sent.", nullptr, int(r.selected.size()));
+    } else {
+        text += tr("%n parameter(s) written and verified.", nullptr, int(r.written().size()));
+        if (familyTraits(context()->globals.connection.family).eeOperations)
+            out()->note(tr("The values are in the drive's RAM; `ee set` stores them to EEPROM."));
+    }
+    succeed(json, text);
+}
+
+} // namespace dd

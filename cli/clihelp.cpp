@@ -1,0 +1,164 @@
+#include "cli/clihelp.h"
+
+namespace dd {
+
+QString CliHelp::general()
+{
+    // One text per section, so that a change to one section leaves the translations of the
+    // others valid.
+    return tr("Usage: drivedesk-cli [OPTIONS] COMMAND [ARGS]\n"
+              "Commission servo and stepper drives from scripts.\n")
+        + QLatin1Char('\n')
+        + tr("Link and drive:\n"
+             "  --family servo-can|servo-modbus|shuoke   drive family (default: servo-can with\n"
+             "                                 --can, servo-modbus otherwise)\n"
+             "  --port DEVICE                  serial port, e.g. /dev/ttyUSB0 or COM3\n"
+             "  --can PLUGIN:INTERFACE         CAN bus, e.g. socketcan:can0, virtualcan:can0\n"
+             "  --baud N                       serial baud rate (default: the family's)\n"
+             "  --bitrate N                    CAN bitrate (default: the family's)\n"
+             "  --framing rtu|ascii|can|plc    shuoke framing (default: rtu on a port, can on CAN)\n"
+             "  --address N                    the drive to talk to (default 1)\n"
+             "  --timeout MS                   reply allowance beyond the wire time\n"
+             "  --retries N                    extra attempts after a timeout\n"
+             "  --dictionary FILE              parameter dictionary (names, ranges, units)\n"
+             "  --option FAMILY.KEY=VALUE      a family setting where the protocol documents are\n"
+             "                                 ambiguous, e.g. shuoke.checksum=twos-complement,\n"
+             "                                 servo-modbus.positionRule=decimal10000 (repeatable;\n"
+             "                                 see docs/cli.md)\n"
+             "  --sim                          use the built-in simulator instead of hardware\n"
+             "                                 (see \"Simulator\" below)\n")
+        + QLatin1Char('\n')
+        + tr("Output:\n"
+             "  --json                         one JSON document per command (JSON lines for\n"
+             "                                 monitor); failures too, with \"ok\": false\n"
+             "  --trace                        print every frame, timestamped, to stderr\n"
+             "  --lang LANG                    language of messages, tables and help: en,\n"
+             "                                 zh_CN or system (default: the locale, from\n"
+             "                                 LANGUAGE, LC_ALL, LC_MESSAGES, LANG); --json\n"
+             "                                 output is never translated\n"
+             "  -h, --help                     this help; COMMAND --help for one command\n"
+             "  -V, --version                  the version\n")
+        + QLatin1Char('\n')
+        + tr("Commands:\n"
+             "  scan [--from A] [--to B] [--bauds 9600,19200,...]\n"
+             "                                 find drives: family, address, baud, firmware, state\n"
+             "  info                           identity, firmware, state, alarm, capabilities\n"
+             "  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name\n"
+             "  set PARAM=VALUE ...            validate, write, read back, report verified or not\n"
+             "  backup -o FILE                 every readable parameter to a backup file\n"
+             "  diff FILE                      drive against file, parameter by parameter\n"
+             "  restore FILE [--dry-run] [--only PARAM,...] [--force]\n"
+             "                                 write the differences, verify each\n"
+             "  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them\n"
+             "  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]\n"
+             "                                 sample live values (Ctrl-C ends)\n"
+             "  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once\n"
+             "  move (--by N | --to N) [--speed V] [--no-wait]\n"
+             "                                 move, and wait until the axis is at rest\n"
+             "  stop [--emergency]             stop (emergency stop where the family has one)\n"
+             "  enable on|off                  servo enable on or off\n"
+             "  clear-alarm                    clear the alarm and check that it is gone\n"
+             "  home [--positive] [--no-wait]  homing, negative direction first\n"
+             "  channels                       the monitor channels this drive offers\n")
+        + QLatin1Char('\n')
+        + tr("Exit codes:\n"
+             "  0  success\n"
+             "  1  the drive or the protocol failed (timeout, exception, verify mismatch)\n"
+             "  2  bad usage or bad input (nothing was sent)\n"
+             "  3  the port or bus could not be opened\n")
+        + QLatin1Char('\n')
+        + tr("Simulator:\n"
+             "  --sim runs the command against simulated drives of --family inside this\n"
+             "  process, with nothing plugged in: serial families on a pseudo-terminal,\n"
+             "  CAN families on Qt's virtualcan bus. --port/--can are then not needed.\n"
+             "  --sim-drives ADDR[@BAUD],...   the simulated drives (default: one at --address,\n"
+             "                                 at --baud); e.g. --sim-drives 3@19200,7@38400\n"
+             "  --sim-state FILE               keep the simulated drives' state (parameters,\n"
+             "                                 EEPROM, position, alarm) in FILE between runs\n"
+             "  --sim-motion                   the simulated drives move on their own (for\n"
+             "                                 monitor demos; where the family's simulator can)\n")
+        + QLatin1Char('\n')
+        + tr("Examples:\n")
+        + QStringLiteral(
+              "  drivedesk-cli --port /dev/ttyUSB0 scan --bauds 9600,19200,115200\n"
+              "  drivedesk-cli --port /dev/ttyUSB0 --address 3 set PA12=300 PA13=50\n"
+              "  drivedesk-cli --can socketcan:can0 --address 1 backup -o axis1.ddbackup\n"
+              "  drivedesk-cli --family shuoke --port COM3 --json monitor speed,position --rate 20\n"
+              "  drivedesk-cli --sim --family servo-can jog 100 --duration 2\n"
+              "  drivedesk-cli --lang zh_CN --sim get PA0 PA1\n");
+}
+
+QString CliHelp::command(const QString &name)
+{
+    if (name == QLatin1String("scan"))
+        return tr("Usage: drivedesk-cli [OPTIONS] scan [--from A] [--to B] [--bauds 9600,19200,...]\n"
+                  "Find the drives on the link. Without --bauds a serial scan tries --baud if given,\n"
+                  "else the family's usual rates. Exit code 1 when no drive answered.\n");
+    if (name == QLatin1String("info"))
+        return tr("Usage: drivedesk-cli [OPTIONS] info\n"
+                  "Identity, firmware, state, alarm and capabilities of the drive at --address.\n");
+    if (name == QLatin1String("get"))
+        return tr("Usage: drivedesk-cli [OPTIONS] get PARAM ...\n"
+                  "Read parameters. PARAM is an index (12), PA12, P12, or a name from the\n"
+                  "dictionary.\n");
+    if (name == QLatin1String("set"))
+        return tr("Usage: drivedesk-cli [OPTIONS] set PARAM=VALUE ...\n"
+                  "Check every value against the dictionary (nothing is sent if one is bad),\n"
+                  "write each, read it back and report whether it was verified.\n");
+    if (name == QLatin1String("backup"))
+        return tr("Usage: drivedesk-cli [OPTIONS] backup -o FILE\n"
+                  "Read every readable parameter and save them to a backup file (saved\n"
+                  "atomically: an interrupted backup never leaves a half-written file).\n");
+    if (name == QLatin1String("diff"))
+        return tr("Usage: drivedesk-cli [OPTIONS] diff FILE\n"
+                  "Compare the drive with a backup file, parameter by parameter. Exit code 0\n"
+                  "also when they differ; the output and the JSON say which differ.\n");
+    if (name == QLatin1String("restore"))
+        return tr("Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]\n"
+                  "Write the parameters that differ from the file and verify each by reading it\n"
+                  "back. The file is checked completely before anything is sent. A file from\n"
+                  "another family is refused; from another firmware only with --force.\n"
+                  "--dry-run shows what would be written. On failure the report says exactly\n"
+                  "which parameters were written and which were not.\n");
+    if (name == QLatin1String("ee"))
+        return tr("Usage: drivedesk-cli [OPTIONS] ee set|rd|ba|rs|def\n"
+                  "servo-modbus EEPROM operations, waiting for completion:\n"
+                  "  set  store the parameters to EEPROM      rd   reload them from EEPROM\n"
+                  "  ba   copy to the backup area             rs   restore the backup area\n"
+                  "  def  factory defaults\n");
+    if (name == QLatin1String("monitor"))
+        return tr("Usage: drivedesk-cli [OPTIONS] monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]\n"
+                  "Sample live values at --rate (default 10 Hz) until --duration ends or Ctrl-C.\n"
+                  "-o writes CSV: a header of channel names with units, time in seconds.\n"
+                  "See `channels` for the channel names of a drive.\n");
+    if (name == QLatin1String("jog"))
+        return tr("Usage: drivedesk-cli [OPTIONS] jog SPEED [--duration S]\n"
+                  "Run at SPEED (negative: the other way) until --duration ends, Ctrl-C, SIGTERM\n"
+                  "or any error, then stop. Without --duration it runs until Ctrl-C. A second\n"
+                  "Ctrl-C sends an emergency stop where the family has one.\n");
+    if (name == QLatin1String("move"))
+        return tr("Usage: drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait]\n"
+                  "Relative (--by) or absolute (--to) move, in the drive's position units, at\n"
+                  "--speed (the family's unit). Waits until the axis is at rest again (the link\n"
+                  "and its keep-alives stay up meanwhile); --no-wait returns once the drive has\n"
+                  "started. Ctrl-C stops the axis.\n");
+    if (name == QLatin1String("stop"))
+        return tr("Usage: drivedesk-cli [OPTIONS] stop [--emergency]\n"
+                  "Stop the axis; --emergency: an emergency stop where the family has one.\n");
+    if (name == QLatin1String("enable"))
+        return tr("Usage: drivedesk-cli [OPTIONS] enable on|off\n"
+                  "Servo enable on or off.\n");
+    if (name == QLatin1String("clear-alarm"))
+        return tr("Usage: drivedesk-cli [OPTIONS] clear-alarm\n"
+                  "Clear the alarm and read it again; exit code 1 if it is still there.\n");
+    if (name == QLatin1String("home"))
+        return tr("Usage: drivedesk-cli [OPTIONS] home [--positive] [--no-wait]\n"
+                  "Search home, negative direction first (--positive: positive first), and wait\n"
+                  "until the axis is at rest. Ctrl-C stops the axis.\n");
+    if (name == QLatin1String("channels"))
+        return tr("Usage: drivedesk-cli [OPTIONS] channels\n"
+                  "The monitor channels this drive offers, with units.\n");
+    return general();
+}
+
+} // namespace dd

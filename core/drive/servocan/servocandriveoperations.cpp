@@ -1,0 +1,331 @@
+// ServoCanDrive, part 2: parameters, live channels and motion (part 1: servocandrive.cpp).
+#include "core/drive/servocan/servocandrive.h"
+
+#include "core/drive/operationjoin.h"
+#include "core/drive/servocan/servocanchannels.h"
+#include "core/drive/servocan/servocanstationtracker.h"
+#include "core/link/canlink.h"
+
+#include <QDateTime>
+
+#include <limits>
+#include <memory>
+
+namespace dd {
+
+namespace sc = servocan;
+using sc::ReadType;
+
+namespace {
+
+bool fitsInt32(qint64 v)
+{
+    return v >= std::numeric_limits<qint32>::min() && v <= std::numeric_limits<qint32>::max();
+}
+
+} // namespace
+
+// ---- Parameters ---------------------------------------------------------------------------
+
+DriveReply *ServoCanDrive::readParameters(const QList<int> &indices)
+{
+    for (int i : indices) {
+        if (!sc::isValidParameterIndex(i))
+            return finishedReply({ErrorCode::InvalidArgument,
+                                  tr("Parameter %1 does not exist: servo-can parameters are 0 to %2.")
+                                      .arg(i)
+                                      .arg(sc::kMaxParameterIndex)});
+    }
+    DriveReply *reply = newReply();
+    auto join = OperationJoin::create(
+        indices.size(), [reply](const Error &e) { reply->finish(e); },
+        [reply](int done, int total) { reply->reportProgress(done, total); });
+    for (int i : indices) {
+        const int station = m_station;
+        readParameterValue(static_cast<quint8>(i), [reply, join, i, station](const Error &e, qint32 v) {
+            if (e.isError()) {
+                Error err = e;
+                err.message = tr("Station %1, P%2: %3").arg(station).arg(i).arg(e.message);
+                join->complete(err);
+                return;
+            }
+            reply->setParameter(i, v);
+            join->complete();
+        });
+    }
+    return reply;
+}
+
+DriveReply *ServoCanDrive::writeParameters(const QList<ParameterWrite> &writes)
+{
+    // Validate everything before anything is sent: the protocol's limits (index 0..219,
+    // int16), then the dictionary (ranges, read-only parameters).
+    for (const ParameterWrite &w : writes) {
+        if (!sc::isValidParameterIndex(w.index))
+            return finishedReply({ErrorCode::InvalidArgument,
+                                  tr("Parameter %1 does not exist: servo-can parameters are 0 to %2.")
+                                      .arg(w.index)
+                                      .arg(sc::kMaxParameterIndex)});
+        if (w.value < std::numeric_limits<qint16>::min() || w.value > std::numeric_limits<qint16>::max())
+            return finishedReply({ErrorCode::OutOfRange,
+                                  tr("P%1 = %2 is out of range: servo-can parameters are 16-bit "
+                                     "values from -32768 to 32767. Nothing was written.")
+                                      .arg(w.index)
+                                      .arg(w.value)});
+    }
+    if (const Error e = validateWrites(writes))
+        return finishedReply(e);
+    DriveReply *reply = newReply();
+    auto results = std::make_shared<QList<ParameterWriteResult>>(writes.size());
+    auto join = OperationJoin::create(
+        writes.size(),
+        [reply, results](const Error &e) {
+            Error first = e;
+            for (const ParameterWriteResult &r : std::as_const(*results)) {
+                reply->addWriteResult(r);
+                if (!first.isError() && !r.verified)
+                    first = {ErrorCode::VerifyMismatch, r.error};
+            }
+            reply->finish(first);
+        },
+        [reply](int done, int total) { reply->reportProgress(done, total); });
+    for (int k = 0; k < writes.size(); ++k) {
+        writeOne(writes.at(k), 1, reply, [join, results, k](const ParameterWriteResult &r) {
+            (*results)[k] = r;
+            join->complete();
+        });
+    }
+    return reply;
+}
+
+void ServoCanDrive::writeOne(const ParameterWrite &w, int attempt, DriveReply *reply,
+                             const std::function<void(const ParameterWriteResult &)> &done)
+{
+    const int maxAttempts = 1 + std::max(0, m_link ? m_link->settings().retries : 0);
+    const quint8 index = static_cast<quint8>(w.index);
+    sendCommand(sc::writeParameter(m_station, index, static_cast<qint16>(w.value)),
+                attempt > 1 ? QStringLiteral("write P%1 (again, %2)").arg(index).arg(attempt)
+                            : QStringLiteral("write P%1").arg(index));
+    // The read-back is queued behind the write, so the drive has handled the write first.
+    readParameterValue(index, [this, w, attempt, maxAttempts, reply, done](const Error &e, qint32 v) {
+        ParameterWriteResult r;
+        r.index = w.index;
+        r.requested = w.value;
+        r.written = true; // sent; the drive acknowledges nothing: the read-back tells
+        if (e.isError()) {
+            r.written = false;
+            r.readBackFailed = true;
+            r.error = tr("P%1 was sent but could not be read back, so whether the drive took it "
+                         "is unknown: %2")
+                          .arg(w.index)
+                          .arg(e.message);
+            done(r);
+            return;
+        }
+        r.readBack = v;
+        if (v == w.value) {
+            r.verified = true;
+            done(r);
+            return;
+        }
+        if (attempt < maxAttempts) {
+            writeOne(w, attempt + 1, reply, done);
+            return;
+        }
+        r.error = tr("P%1: wrote %2 but the drive reads back %3 (%4 attempts). The drive may "
+                     "limit this parameter or not accept writes in its present state.")
+                      .arg(w.index)
+                      .arg(w.value)
+                      .arg(v)
+                      .arg(attempt);
+        done(r);
+    });
+}
+
+// ---- Live values --------------------------------------------------------------------------
+
+DriveReply *ServoCanDrive::readChannels(const QStringList &channelIds)
+{
+    QList<servocanchannels::Channel> wanted;
+    for (const QString &id : channelIds) {
+        const std::optional<servocanchannels::Channel> c = servocanchannels::find(id);
+        if (!c)
+            return finishedReply({ErrorCode::InvalidArgument,
+                                  tr("A servo-can drive has no channel \"%1\".").arg(id)});
+        wanted.append(*c);
+    }
+    DriveReply *reply = newReply();
+    reply->setSampleTimeUs(QDateTime::currentMSecsSinceEpoch() * 1000);
+    auto join = OperationJoin::create(wanted.size(), [reply](const Error &e) { reply->finish(e); });
+    for (int k = 0; k < wanted.size(); ++k) {
+        const QString id = channelIds.at(k);
+        const ReadType type = wanted.at(k).type;
+        readRaw(type, 0, [this, reply, join, id, type](const Error &e, qint32 v) {
+            if (e.isError()) {
+                Error err = e;
+                err.message = tr("Station %1, %2: %3").arg(m_station).arg(id, e.message);
+                join->complete(err);
+                return;
+            }
+            reply->setSample(id, sc::scaledValue(type, v));
+            if (type == ReadType::AlarmCode)
+                setAlarmCode(v);
+            join->complete();
+        });
+    }
+    return reply;
+}
+
+// ---- Motion -------------------------------------------------------------------------------
+
+DriveReply *ServoCanDrive::setEnabled(bool on)
+{
+    DriveReply *reply = newReply();
+    // A disable, like a stop, goes out at once (ahead of reads waiting for the link's
+    // window) and again behind them, so that a queued enable or motion command cannot
+    // re-enable the servo after it.
+    auto join = OperationJoin::create(on ? 1 : 2, [this, reply, on](const Error &e) {
+        if (!e.isError())
+            setEnabledState(on);
+        reply->finish(e);
+    });
+    const auto complete = [join](const Error &e) { join->complete(e); };
+    if (!on)
+        sendCommand(sc::enable(m_station, false), QStringLiteral("disable"), complete, true);
+    sendCommand(sc::enable(m_station, on),
+                on ? QStringLiteral("enable") : QStringLiteral("disable (behind queued frames)"), complete);
+    return reply;
+}
+
+DriveReply *ServoCanDrive::doStop(bool emergency)
+{
+    const bool disables = emergency && !m_emergencyHolds;
+    const QString note = disables ? QStringLiteral("stop and disable") : QStringLiteral("stop");
+    // At once, ahead of anything waiting for the link's window ...
+    if (!m_link || !m_link->send(stopFrame(emergency), note))
+        return finishedReply(linkClosedError());
+    // ... and again behind it, so that a queued motion command cannot restart the axis.
+    sendCommand(stopFrame(emergency), note + QStringLiteral(" (behind queued frames)"));
+    if (disables)
+        setEnabledState(false);
+    // Nothing acknowledges a stop; a heartbeat sent after it shows the drive heard it.
+    DriveReply *reply = newReply();
+    awaitHeartbeat([](quint8, qint32) { return true; }, m_stopConfirmMs, [this, reply](const Error &e) {
+        if (e.code == ErrorCode::LinkClosed) {
+            reply->finish(e);
+            return;
+        }
+        if (e.isError()) {
+            reply->finish({ErrorCode::Timeout,
+                           tr("The stop command was sent, but station %1 has sent no heartbeat "
+                              "since (%2 ms): it may not have received it.")
+                               .arg(m_station)
+                               .arg(m_stopConfirmMs)});
+            return;
+        }
+        reply->finish();
+    });
+    return reply;
+}
+
+DriveReply *ServoCanDrive::startMotion(const QList<CanFrameData> &frames, const QString &what,
+                                       const std::function<bool(quint8, qint32)> &started)
+{
+    if (!m_link || !m_link->isConnected())
+        return finishedReply(linkClosedError());
+    DriveReply *reply = newReply();
+    for (int i = 0; i < frames.size(); ++i) {
+        const bool last = i == frames.size() - 1;
+        sendCommand(frames.at(i), what, [this, reply, started, last](const Error &e) {
+            if (e.isError()) {
+                reply->finish(e);
+                return;
+            }
+            if (last) // the motion command is on the bus: watch the heartbeats from now on
+                awaitHeartbeat(started, m_motionStartMs, [reply](const Error &e2) { reply->finish(e2); });
+        });
+    }
+    setEnabledState(true); // 0x20, 0x21 and 0x22 enable the servo
+    return reply;
+}
+
+DriveReply *ServoCanDrive::doJog(qint32 speed)
+{
+    auto started = [speed](quint8 state, qint32) { return speed == 0 || !sc::isHeartbeatIdle(state); };
+    return startMotion({sc::runSpeed(m_station, speed)}, QStringLiteral("jog %1 r/min").arg(speed), started);
+}
+
+DriveReply *ServoCanDrive::moveRelative(qint64 distance, qint32 speed)
+{
+    if (!fitsInt32(distance))
+        return finishedReply({ErrorCode::OutOfRange,
+                              tr("A relative move of %1 counts does not fit the drive's 32-bit "
+                                 "command.")
+                                  .arg(distance)});
+    if (speed <= 0)
+        return finishedReply({ErrorCode::InvalidArgument,
+                              tr("A move needs a positive positioning speed (r/min); %1 was given.")
+                                  .arg(speed)});
+    if (distance == 0)
+        return finishedReply(Error::none());
+    const ServoCanStationTracker::Station st = m_tracker ? m_tracker->station(m_station)
+                                                         : ServoCanStationTracker::Station{};
+    const qint64 target = qint64(st.position) + distance;
+    auto started = [target](quint8 state, qint32 position) {
+        return !sc::isHeartbeatIdle(state) || position == target;
+    };
+    return startMotion({sc::positioningSpeed(m_station, speed),
+                        sc::moveRelative(m_station, static_cast<qint32>(distance))},
+                       QStringLiteral("move by %1").arg(distance), started);
+}
+
+DriveReply *ServoCanDrive::moveAbsolute(qint64 target, qint32 speed)
+{
+    if (!fitsInt32(target))
+        return finishedReply({ErrorCode::OutOfRange,
+                              tr("Target %1 does not fit the drive's 32-bit position.").arg(target)});
+    if (speed <= 0)
+        return finishedReply({ErrorCode::InvalidArgument,
+                              tr("A move needs a positive positioning speed (r/min); %1 was given.")
+                                  .arg(speed)});
+    auto started = [target](quint8 state, qint32 position) {
+        return !sc::isHeartbeatIdle(state) || position == target;
+    };
+    return startMotion({sc::positioningSpeed(m_station, speed),
+                        sc::moveAbsolute(m_station, static_cast<qint32>(target))},
+                       QStringLiteral("move to %1").arg(target), started);
+}
+
+DriveReply *ServoCanDrive::setPosition(qint64 position)
+{
+    if (!fitsInt32(position))
+        return finishedReply({ErrorCode::OutOfRange,
+                              tr("Position %1 does not fit the drive's 32-bit position.").arg(position)});
+    DriveReply *reply = newReply();
+    sendCommand(sc::setPosition(m_station, static_cast<qint32>(position)),
+                QStringLiteral("set position %1").arg(position));
+    readRaw(ReadType::Position, 0, [this, reply, position](const Error &e, qint32 v) {
+        if (e.isError()) {
+            reply->finish(e);
+            return;
+        }
+        const bool running = m_tracker && m_tracker->station(m_station).running();
+        DriveStatus s = status();
+        s.position = v;
+        s.positionValid = true;
+        updateStatus(s);
+        reply->setStatus(status());
+        if (!running && v != position) {
+            reply->finish({ErrorCode::VerifyMismatch,
+                           tr("Station %1: position set to %2 but it reads back %3.")
+                               .arg(m_station)
+                               .arg(position)
+                               .arg(v)});
+            return;
+        }
+        reply->finish();
+    });
+    return reply;
+}
+
+} // namespace dd

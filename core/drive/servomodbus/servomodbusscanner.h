@@ -1,0 +1,89 @@
+#pragma once
+
+#include "core/drive/discovery.h"
+#include "core/link/modbuslink.h"
+
+#include <QList>
+#include <QPointer>
+#include <QSet>
+
+namespace dd {
+
+class LinkReply;
+
+// Finds servo-modbus drives: for each baud rate of ScanOptions::bauds (baud-major, so the
+// port is reopened once per rate), asks every address of from..to that has not answered yet
+// for PA2 (one register: the firmware version, reported with the drive).
+//
+// Per-probe timeout (ScanOptions::timeoutMs = -1): the wire time of the request and its
+// 7-byte reply at that baud plus an allowance: allowanceMs() (4 ms unless set), raised to
+// 2 x the drives' turnaround + 1 ms once drives answer. The turnaround is the quickest one
+// seen where late replies are caught (see below: one answer slowed by a busy host must not
+// slow every later probe; a drive that is always slower is asked again), else the slowest
+// one seen. The round trip it comes from runs from the request reaching the port to the
+// reply's last byte (ModbusLink, where raw bytes are visible). A drive behind a slow
+// USB adapter (latency timer 16 ms) needs an explicit timeout (e.g. 40 ms). No retries,
+// except one repeat of a probe whose reply was garbled. An exception reply also counts as
+// "a device answers here" (state "exception <code>").
+// A reply that comes after its probe's timeout is not lost: where the link shows raw bytes
+// (ModbusLink::strayBytes), a CRC-valid answer from an address whose probe timed out has
+// that address asked once more with the link's normal timeout. The sweep at a baud ends
+// 2 probe timeouts (at least 50 ms) after its last probe timed out, so that the last one
+// can be rescued too.
+// Probes are queued two at a time, so that the link sends the next one without waiting for
+// this object. Qt's inter-frame delay (2 ms; 5 ms at 9600) comes before each probe.
+// The link is left at its original baud; cancel() stops at once (finished(Cancelled)).
+class ServoModbusScanner : public Discovery
+{
+    Q_OBJECT
+public:
+    static constexpr int DefaultAllowanceMs = 4;
+
+    ServoModbusScanner(ModbusLink *link, const ScanOptions &options, QObject *parent = nullptr);
+    ~ServoModbusScanner() override;
+
+    void start() override;
+    void cancel() override;
+
+    void setAllowanceMs(int ms) { m_baseAllowanceUs = qint64(ms) * 1000; }
+    int allowanceMs() const;
+    int probeTimeoutMs() const;   // at the link's current baud
+    int probesSent() const { return m_probesSent; }
+    bool isRunning() const { return m_running; }
+
+private:
+    void startBaud();
+    void fillWindow();
+    enum class Probe { First, Repeat, Rescue };
+    void sendProbe(int address, Probe kind);
+    void onProbeFinished(LinkReply *reply, int address, Probe kind);
+    void onStrayBytes(const QByteArray &bytes);
+    void finishBaud();
+    void noteTurnaround(qint64 us);
+    void endScan(const Error &error);
+
+    QPointer<ModbusLink> m_link;
+    ScanOptions m_options;
+    QList<int> m_bauds;
+    int m_baudIndex = -1;
+    int m_originalBaud = 0;
+    QList<int> m_unprobed;        // addresses still to probe at this baud
+    QList<int> m_repeat;      // garbled replies: probe once more
+    QList<int> m_rescue;      // late replies: probe once more with the normal timeout
+    QSet<int> m_timedOut;     // at this baud
+    QSet<int> m_rescued;      // at this baud
+    QByteArray m_stray;       // recent stray bytes, searched for late replies
+    QSet<int> m_found;
+    QList<QPointer<LinkReply>> m_inFlight;
+    int m_done = 0;
+    int m_total = 0;
+    int m_probesSent = 0;
+    qint64 m_baseAllowanceUs = qint64(DefaultAllowanceMs) * 1000;
+    qint64 m_turnaroundUs = 0;     // drive turnaround the allowance is sized from
+    bool m_turnaroundSeen = false;
+    bool m_lastTimedOut = false; // the last finished probe timed out
+    bool m_finishingBaud = false;
+    bool m_running = false;
+};
+
+} // namespace dd

@@ -1,0 +1,68 @@
+#include "sim/bench/demobench.h"
+
+#include "sim/bench/demobenchworker.h"
+
+#include <QThread>
+
+namespace dd {
+
+DemoBench::DemoBench(QObject *parent)
+    : QObject(parent)
+{
+    qRegisterMetaType<dd::Error>();
+}
+
+DemoBench::~DemoBench()
+{
+    stop();
+}
+
+Error DemoBench::start()
+{
+    if (m_running)
+        return Error::none();
+    m_thread = new QThread;
+    m_thread->setObjectName(QStringLiteral("drivedesk-demobench"));
+    m_worker = new DemoBenchWorker;
+    m_worker->moveToThread(m_thread);
+    // Queued to this (the caller's) thread: it runs after start() has returned.
+    connect(m_worker, &DemoBenchWorker::ready, this, [this] {
+        if (m_running && !m_ready) {
+            m_ready = true;
+            emit ready();
+        }
+    });
+    connect(m_worker, &DemoBenchWorker::failed, this, &DemoBench::failed);
+    m_thread->start();
+    Error error;
+    QMetaObject::invokeMethod(
+        m_worker, [this, &error] { error = m_worker->build(Address); }, Qt::BlockingQueuedConnection);
+    if (error.isError()) {
+        stop();
+        return error;
+    }
+    m_connections = m_worker->connections();
+    m_descriptions = m_worker->describe();
+    m_running = true;
+    return Error::none();
+}
+
+void DemoBench::stop()
+{
+    if (!m_thread)
+        return;
+    // The simulators are deleted on their own thread (their sockets and timers live there).
+    DemoBenchWorker *worker = m_worker;
+    QMetaObject::invokeMethod(worker, [worker] { delete worker; }, Qt::BlockingQueuedConnection);
+    m_worker = nullptr;
+    m_thread->quit();
+    m_thread->wait();
+    delete m_thread;
+    m_thread = nullptr;
+    m_connections.clear();
+    m_descriptions.clear();
+    m_running = false;
+    m_ready = false;
+}
+
+} // namespace dd

@@ -1,0 +1,63 @@
+#pragma once
+
+#include "core/common/error.h"
+#include "core/link/connectionsettings.h"
+
+#include <QObject>
+#include <QStringList>
+
+class QThread;
+
+namespace dd {
+
+class DemoBenchWorker;
+
+// The demo bench (drivedesk --demo, File → Demo bench): one simulated drive of each family,
+// each on a bus of its own (a SimBench each), all running on a thread of their own — not
+// the caller's — so that a busy or blocked GUI thread never stalls the simulator:
+//   - servo-modbus: a SimServoModbusDrive on a pty, 19200 baud, with the simulator's demo
+//     motion (the servo-modbus protocol cannot move an axis: on a real machine the drive
+//     follows its control inputs, so the demo axis moves by itself to give the monitor
+//     and the trend something to show);
+//   - shuoke: a SimShuokeDrive (RTU framing) on a second pty (when the build has it);
+//   - servo-can: a SimServoCanDrive on virtualcan through a private low-delay hub on a free
+//     local port ("tcp://127.0.0.1:<port>/can0"), so it never meets another bench or test.
+// Every drive answers at `Address`. start() creates everything; the serial drives answer
+// at once, the CAN bus is up when ready() is emitted: connect to connections() then.
+class DemoBench : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int Address = 1;
+    static constexpr int ScanFrom = 1;   // the demo scans 1..4
+    static constexpr int ScanTo = 4;
+
+    explicit DemoBench(QObject *parent = nullptr);
+    ~DemoBench() override;   // stops the bench (the links' clients see the adapters vanish)
+
+    // Creates the simulators on the bench thread; fails at once if one cannot be created.
+    Error start();
+    void stop();
+    bool isRunning() const { return m_running; }
+    bool isReady() const { return m_ready; }
+
+    // What to connect to (valid after start()), one link per family.
+    QList<ConnectionSettings> connections() const { return m_connections; }
+    // One line per bus ("servo-modbus: pty: /dev/pts/5"), for logs.
+    QStringList describe() const { return m_descriptions; }
+    QThread *benchThread() const { return m_thread; }
+
+signals:
+    void ready();
+    void failed(const dd::Error &error);
+
+private:
+    QThread *m_thread = nullptr;
+    DemoBenchWorker *m_worker = nullptr;   // lives on m_thread
+    QList<ConnectionSettings> m_connections;
+    QStringList m_descriptions;
+    bool m_running = false;
+    bool m_ready = false;
+};
+
+} // namespace dd

@@ -1,0 +1,376 @@
+#include "sim/motor/motormodel.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dd {
+
+namespace {
+constexpr double Pi = 3.14159265358979323846;
+constexpr double Dt = MotorModel::StepSeconds;
+
+// Noise channels used by the model itself.
+enum NoiseChannel { CurrentNoise = 0, VoltageNoise = 1, ErrorNoise = 2 };
+
+// Keeps the integration well defined whatever a drive configures.
+MotorModel::Config sanitized(MotorModel::Config c)
+{
+    c.countsPerRev = c.countsPerRev > 0.0 ? c.countsPerRev : 10000.0;
+    c.maxSpeed = std::abs(c.maxSpeed);
+    c.acceleration = std::max(std::abs(c.acceleration), 1.0);
+    c.deceleration = std::max(std::abs(c.deceleration), 1.0);
+    c.inertia = std::max(c.inertia, 1e-9);
+    c.thermalTimeConstant = std::max(c.thermalTimeConstant, Dt);
+    return c;
+}
+
+double sgn(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
+
+quint64 splitMix64(quint64 x)
+{
+    x += 0x9E3779B97F4A7C15ULL;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+    return x ^ (x >> 31);
+}
+} // namespace
+
+MotorModel::MotorModel() : MotorModel(Config{}) {}
+
+MotorModel::MotorModel(const Config &config) : m_config(sanitized(config))
+{
+    m_temperature = m_config.ambientTemperature;
+    updateOutputs();
+}
+
+// --- time ---------------------------------------------------------------------------------
+
+void MotorModel::advanceTo(double seconds)
+{
+    if (!std::isfinite(seconds))
+        return;
+    const qint64 target = static_cast<qint64>(std::floor(seconds / Dt + 1e-6));
+    if (target <= m_step)
+        return;
+    qint64 remaining = target - m_step;
+    const bool atRest = m_speed == 0.0 && m_mode == Mode::Idle;
+    if (atRest && remaining > 1) {
+        fastForwardIdle(remaining - 1);
+        remaining = 1;
+    }
+    while (remaining-- > 0)
+        step();
+}
+
+void MotorModel::fastForwardIdle(qint64 steps)
+{
+    // At rest nothing but the temperature evolves, and the per-step update below is an exact
+    // exponential: n steps collapse into one.
+    m_accel = 0.0;
+    updateOutputs(); // the holding current (no acceleration term any more)
+    heat(static_cast<double>(steps) * Dt);
+    m_step += steps;
+}
+
+void MotorModel::step()
+{
+    const double v0 = m_speed;
+    double v1 = v0;
+    bool finished = false;
+
+    if (!m_enabled) {
+        // Coasting: friction (and the load, taken as passive) brake the shaft.
+        const double toCounts = m_config.countsPerRev / (2.0 * Pi);
+        const double omega = std::abs(v0) / toCounts;
+        const double brakeTorque = m_config.coulombFriction + std::abs(m_config.loadTorque)
+                + m_config.viscousFriction * omega;
+        const double dv = brakeTorque / m_config.inertia * toCounts * Dt;
+        v1 = std::abs(v0) <= dv ? 0.0 : v0 - sgn(v0) * dv;
+    } else {
+        switch (m_mode) {
+        case Mode::Idle:
+            v1 = 0.0;
+            break;
+        case Mode::Speed:
+            v1 = rampToward(v0, m_targetSpeed);
+            break;
+        case Mode::Stopping:
+            v1 = rampToward(v0, 0.0);
+            if (v1 == 0.0)
+                m_mode = Mode::Idle;
+            break;
+        case Mode::Position:
+            v1 = positionStep(v0, &finished);
+            break;
+        }
+    }
+
+    ++m_step;
+    if (finished) {
+        m_pos = m_targetPos;
+        m_speed = 0.0;
+        m_accel = -v0 / Dt;
+        finishMove();
+    } else {
+        m_pos += 0.5 * (v0 + v1) * Dt;
+        m_speed = v1;
+        m_accel = (v1 - v0) / Dt;
+    }
+    updateOutputs();
+    heat(Dt);
+}
+
+double MotorModel::rampToward(double v, double target) const
+{
+    if (v == target)
+        return v;
+    const bool shrinking = v != 0.0
+            && (target == 0.0 || (v > 0.0) != (target > 0.0) || std::abs(target) < std::abs(v));
+    if (shrinking) {
+        const double goal = (target != 0.0 && (v > 0.0) == (target > 0.0)) ? target : 0.0;
+        const double dv = m_config.deceleration * Dt;
+        return std::abs(v - goal) <= dv ? goal : v - sgn(v) * dv;
+    }
+    const double dv = m_config.acceleration * Dt;
+    return std::abs(target - v) <= dv ? target : v + sgn(target - v) * dv;
+}
+
+// One substep of the trapezoidal move. The speed is kept at or below the braking curve
+// v² = 2·d·r (r = distance left) using the trapezoidal position update, so that the axis
+// arrives with zero speed; the last step snaps onto the integer target (the snap is
+// shorter than half a substep's travel at a speed below d·dt).
+double MotorModel::positionStep(double v0, bool *finished)
+{
+    const double r = m_targetPos - m_pos;
+    const double dir = sgn(r);
+    const double a = m_config.acceleration;
+    const double d = m_config.deceleration;
+    const double vAbs = std::abs(v0);
+
+    if (v0 != 0.0 && sgn(v0) != dir) {
+        // Moving away from the target (overshoot after a target or limit change): brake.
+        const double dv = d * Dt;
+        if (dir == 0.0 && vAbs <= dv) {
+            *finished = true;
+            return 0.0;
+        }
+        return vAbs <= dv ? 0.0 : v0 - sgn(v0) * dv;
+    }
+
+    const double rAbs = std::abs(r);
+    if (rAbs == 0.0) {
+        *finished = true;
+        return 0.0;
+    }
+    if (vAbs <= d * Dt && 0.5 * vAbs * Dt >= rAbs) {
+        *finished = true; // stopping within this step reaches the target
+        return 0.0;
+    }
+
+    const double vMax = std::min(m_moveSpeed, m_config.maxSpeed);
+    const double inner = d * d * Dt * Dt + 4.0 * (2.0 * d * rAbs - d * Dt * vAbs);
+    const double brake = inner > 0.0 ? 0.5 * (-d * Dt + std::sqrt(inner)) : 0.0;
+    double vNew = std::min({vAbs + a * Dt, vMax, brake});
+    vNew = std::max({vNew, vAbs - d * Dt, 0.0});
+    return dir * vNew;
+}
+
+void MotorModel::finishMove()
+{
+    m_mode = Mode::Idle;
+    if (m_homing) {
+        m_homing = false;
+        m_homed = true;
+        const double shift = static_cast<double>(m_homePosition) - m_pos;
+        m_pos += shift;
+        m_targetPos += shift;
+    }
+}
+
+void MotorModel::updateOutputs()
+{
+    const double v1 = m_speed;
+    const double toRad = 2.0 * Pi / m_config.countsPerRev;
+    const double t = time();
+
+    if (m_enabled) {
+        const double omega = v1 * toRad;
+        const double alpha = m_accel * toRad;
+        const double torque = m_config.inertia * alpha + m_config.loadTorque
+                + m_config.viscousFriction * omega + m_config.coulombFriction * sgn(v1);
+        m_cleanCurrent = m_config.torqueConstant > 0.0 ? torque / m_config.torqueConstant : 0.0;
+        m_current = m_cleanCurrent + m_config.currentNoise * noiseAt(m_step, CurrentNoise);
+        m_posError = m_config.errorPerSpeed * v1 + m_config.errorPerAccel * m_accel
+                + m_config.positionErrorNoise * noiseAt(m_step, ErrorNoise);
+    } else {
+        m_cleanCurrent = 0.0;
+        m_current = 0.0;
+        m_posError = 0.0;
+    }
+
+    m_busVoltage = m_config.busVoltageNominal - m_config.busSagPerAmp * std::abs(m_cleanCurrent)
+            + m_config.busRipple * std::sin(2.0 * Pi * m_config.busRippleHz * t)
+            + m_config.voltageNoise * noiseAt(m_step, VoltageNoise);
+}
+
+// First-order thermal model: tau·dT/dt = ambient + P·Rth − T with P = I²·R (noise-free
+// current), integrated exactly over `seconds` at constant power.
+void MotorModel::heat(double seconds)
+{
+    const double power = m_cleanCurrent * m_cleanCurrent * m_config.windingResistance;
+    const double steady = m_config.ambientTemperature + power * m_config.thermalResistance;
+    m_temperature = steady + (m_temperature - steady) * std::exp(-seconds / m_config.thermalTimeConstant);
+}
+
+double MotorModel::noiseAt(qint64 step, int channel) const
+{
+    const quint64 h = splitMix64(m_config.seed ^ splitMix64(static_cast<quint64>(step) * 64u
+                                                             + static_cast<quint64>(channel)));
+    // 53 random bits → [0, 1) → [-1, 1)
+    return static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0) * 2.0 - 1.0;
+}
+
+double MotorModel::noiseSample(int channel) const { return noiseAt(m_step, channel); }
+
+// --- configuration ------------------------------------------------------------------------
+
+void MotorModel::setConfig(const Config &config)
+{
+    m_config = sanitized(config);
+    updateOutputs();
+}
+
+void MotorModel::setMaxSpeed(double countsPerSecond)
+{
+    m_config.maxSpeed = std::abs(countsPerSecond);
+    if (m_mode == Mode::Speed)
+        m_targetSpeed = std::clamp(m_targetSpeed, -m_config.maxSpeed, m_config.maxSpeed);
+}
+
+void MotorModel::setAcceleration(double v) { m_config.acceleration = std::max(std::abs(v), 1.0); }
+void MotorModel::setDeceleration(double v) { m_config.deceleration = std::max(std::abs(v), 1.0); }
+void MotorModel::setLoadTorque(double newtonMetres) { m_config.loadTorque = newtonMetres; }
+
+// --- commands -----------------------------------------------------------------------------
+
+bool MotorModel::enable()
+{
+    if (m_alarm != 0)
+        return false;
+    if (!m_enabled) {
+        m_enabled = true;
+        m_mode = m_speed != 0.0 ? Mode::Stopping : Mode::Idle;
+    }
+    return true;
+}
+
+void MotorModel::disable()
+{
+    m_enabled = false;
+    m_mode = Mode::Idle;
+    m_homing = false;
+    m_targetSpeed = 0.0;
+}
+
+bool MotorModel::runSpeed(double countsPerSecond)
+{
+    if (!m_enabled)
+        return false;
+    m_homing = false;
+    m_targetSpeed = std::clamp(countsPerSecond, -m_config.maxSpeed, m_config.maxSpeed);
+    m_mode = Mode::Speed;
+    return true;
+}
+
+bool MotorModel::moveAbsolute(qint64 target, double speed)
+{
+    if (!m_enabled)
+        return false;
+    m_homing = false;
+    m_targetPos = static_cast<double>(target);
+    m_moveSpeed = std::abs(speed);
+    m_mode = Mode::Position;
+    return true;
+}
+
+bool MotorModel::moveRelative(qint64 delta, double speed)
+{
+    return moveAbsolute(position() + delta, speed);
+}
+
+void MotorModel::setMoveSpeed(double speed) { m_moveSpeed = std::abs(speed); }
+
+void MotorModel::stop()
+{
+    m_homing = false;
+    m_targetSpeed = 0.0;
+    if (m_enabled)
+        m_mode = m_speed != 0.0 ? Mode::Stopping : Mode::Idle;
+}
+
+void MotorModel::emergencyStop()
+{
+    m_homing = false;
+    m_targetSpeed = 0.0;
+    m_speed = 0.0;
+    m_accel = 0.0;
+    m_mode = Mode::Idle;
+    updateOutputs();
+}
+
+bool MotorModel::startHoming(qint64 switchPosition, double speed, qint64 homePosition)
+{
+    if (!moveAbsolute(switchPosition, speed))
+        return false;
+    m_homing = true;
+    m_homed = false;
+    m_homePosition = homePosition;
+    return true;
+}
+
+void MotorModel::setPosition(qint64 counts)
+{
+    const double shift = static_cast<double>(counts) - m_pos;
+    m_pos += shift;
+    m_targetPos += shift;
+}
+
+void MotorModel::injectAlarm(int code)
+{
+    if (code == 0)
+        return;
+    m_alarm = code;
+    disable();
+}
+
+void MotorModel::clearAlarm() { m_alarm = 0; }
+
+// --- state --------------------------------------------------------------------------------
+
+bool MotorModel::isMoving() const { return m_speed != 0.0 || m_mode != Mode::Idle; }
+
+qint64 MotorModel::position() const { return std::llround(m_pos); }
+qint64 MotorModel::targetPosition() const { return std::llround(m_targetPos); }
+qint64 MotorModel::positionError() const { return std::llround(m_posError); }
+qint64 MotorModel::commandPosition() const { return std::llround(m_pos + m_posError); }
+double MotorModel::speedRpm() const { return m_speed * 60.0 / m_config.countsPerRev; }
+
+double MotorModel::targetSpeed() const
+{
+    switch (m_mode) {
+    case Mode::Speed: return m_targetSpeed;
+    case Mode::Position: return sgn(m_targetPos - m_pos) * std::min(m_moveSpeed, m_config.maxSpeed);
+    case Mode::Idle:
+    case Mode::Stopping: return 0.0;
+    }
+    return 0.0;
+}
+
+double MotorModel::torque() const { return m_config.torqueConstant * m_current; }
+
+double MotorModel::torquePercent() const
+{
+    return m_config.ratedTorque > 0.0 ? 100.0 * torque() / m_config.ratedTorque : 0.0;
+}
+
+} // namespace dd

@@ -1,0 +1,465 @@
+#include "ui/panels/motion/motionpanel.h"
+
+#include "core/protocol/familytraits.h"
+#include "ui/common/displaytext.h"
+#include "core/drive/drive.h"
+#include "core/drive/drivehub.h"
+#include "core/drive/drivereply.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPointer>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <limits>
+
+namespace dd {
+
+namespace {
+constexpr int kMaxCount = std::numeric_limits<qint32>::max();   // int32 moves (both families)
+
+QLabel *reasonLabel(QWidget *parent)
+{
+    auto *l = new QLabel(parent);
+    l->setWordWrap(true);
+    l->setForegroundRole(QPalette::PlaceholderText);
+    l->hide();
+    return l;
+}
+
+QSpinBox *spinBox(QWidget *parent, const QString &objectName, int minimum, int maximum, int value)
+{
+    auto *s = new QSpinBox(parent);
+    s->setObjectName(objectName);
+    s->setRange(minimum, maximum);
+    s->setValue(value);
+    s->setAccelerated(true);
+    s->setKeyboardTracking(false);
+    return s;
+}
+} // namespace
+
+MotionPanel::SpeedRange MotionPanel::speedRange(Family family)
+{
+    const FamilyTraits &t = familyTraits(family);
+    SpeedRange r;
+    r.maximum = t.maxSpeed;
+    r.jogDefault = t.jogSpeed;
+    r.moveDefault = t.moveSpeed;
+    return r;
+}
+
+MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
+    : DrivePanel(context, parent)
+{
+    const SpeedRange range = speedRange(context.family);
+
+    m_banner = reasonLabel(this);
+    m_banner->setObjectName(QStringLiteral("motionUnsupported"));
+    m_state = new QLabel(this);
+    m_position = new QLabel(this);
+    m_position->setObjectName(QStringLiteral("motionPosition"));
+    m_position->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    // Power stage.
+    m_powerBox = makeGroup(QStringLiteral("powerBox"), &m_powerReason);
+    m_enable = new QPushButton(m_powerBox);
+    m_enable->setObjectName(QStringLiteral("enableButton"));
+    m_disable = new QPushButton(m_powerBox);
+    m_disable->setObjectName(QStringLiteral("disableButton"));
+    auto *powerRow = new QHBoxLayout;
+    powerRow->addWidget(m_enable);
+    powerRow->addWidget(m_disable);
+    powerRow->addStretch(1);
+    qobject_cast<QVBoxLayout *>(m_powerBox->layout())->insertLayout(0, powerRow);
+    connect(m_enable, &QPushButton::clicked, this,
+            [this] { runCommand(tr("Enable"), [](Drive &d) { return d.setEnabled(true); }); });
+    connect(m_disable, &QPushButton::clicked, this,
+            [this] { runCommand(tr("Disable"), [](Drive &d) { return d.setEnabled(false); }); });
+
+    // Jog.
+    m_jogBox = makeGroup(QStringLiteral("jogBox"), &m_jogReason);
+    m_jogSpeedLabel = new QLabel(m_jogBox);
+    m_jogSpeed = spinBox(m_jogBox, QStringLiteral("jogSpeed"), range.minimum, range.maximum, range.jogDefault);
+    m_jogSpeedLabel->setBuddy(m_jogSpeed);
+    m_jogMinus = new JogButton(-1, m_jogBox);
+    m_jogMinus->setObjectName(QStringLiteral("jogMinus"));
+    m_jogPlus = new JogButton(+1, m_jogBox);
+    m_jogPlus->setObjectName(QStringLiteral("jogPlus"));
+    m_jogState = new QLabel(m_jogBox);
+    m_jogState->setObjectName(QStringLiteral("jogState"));
+    m_jogHint = new QLabel(m_jogBox);
+    m_jogHint->setWordWrap(true);
+    auto *jogRow = new QHBoxLayout;
+    jogRow->addWidget(m_jogSpeedLabel);
+    jogRow->addWidget(m_jogSpeed);
+    jogRow->addSpacing(12);
+    jogRow->addWidget(m_jogMinus);
+    jogRow->addWidget(m_jogPlus);
+    jogRow->addStretch(1);
+    auto *jogLayout = qobject_cast<QVBoxLayout *>(m_jogBox->layout());
+    jogLayout->insertLayout(0, jogRow);
+    jogLayout->insertWidget(1, m_jogState);
+    jogLayout->insertWidget(2, m_jogHint);
+    for (JogButton *b : {m_jogMinus, m_jogPlus}) {
+        b->setDrive(context.hub, context.connectionId, context.address);
+    }
+    // How a jog ended when no stop command was confirmed: what stops the axis now.
+    if (context.hub)
+        connect(context.hub, &DriveHub::jogEnded, this, [this](int id, int address, const JogEnd &end) {
+            if (id != this->context().connectionId || address != this->context().address
+                || end.stoppedBy == JogEnd::StoppedBy::Command)
+                return;
+            m_jogState->setText(end.message);
+            reportError({end.linkLost ? ErrorCode::LinkClosed : ErrorCode::Timeout, end.message});
+        });
+    for (JogButton *b : {m_jogMinus, m_jogPlus}) {
+        b->setMinimumHeight(40);
+        b->setSpeed(m_jogSpeed->value());
+        connect(b, &JogButton::jogStarted, this, &MotionPanel::onJogStarted);
+        connect(b, &JogButton::jogStopped, this, &MotionPanel::onJogStopped);
+        connect(b, &JogButton::errorOccurred, this, &MotionPanel::reportError);
+    }
+    connect(m_jogSpeed, &QSpinBox::valueChanged, this, [this](int v) {
+        m_jogMinus->setSpeed(v);
+        m_jogPlus->setSpeed(v);
+    });
+
+    // Move.
+    m_moveBox = makeGroup(QStringLiteral("moveBox"), &m_moveReason);
+    m_relative = new QRadioButton(m_moveBox);
+    m_relative->setObjectName(QStringLiteral("moveRelative"));
+    m_absolute = new QRadioButton(m_moveBox);
+    m_absolute->setObjectName(QStringLiteral("moveAbsolute"));
+    m_relative->setChecked(true);
+    m_moveValue = spinBox(m_moveBox, QStringLiteral("moveValue"), -kMaxCount, kMaxCount, 0);
+    m_moveSpeedLabel = new QLabel(m_moveBox);
+    m_moveSpeed = spinBox(m_moveBox, QStringLiteral("moveSpeed"), range.minimum, range.maximum, range.moveDefault);
+    m_moveSpeedLabel->setBuddy(m_moveSpeed);
+    m_moveButton = new QPushButton(m_moveBox);
+    m_moveButton->setObjectName(QStringLiteral("moveButton"));
+    auto *moveGrid = new QGridLayout;
+    moveGrid->addWidget(m_relative, 0, 0);
+    moveGrid->addWidget(m_absolute, 0, 1);
+    moveGrid->addWidget(m_moveValue, 0, 2);
+    moveGrid->addWidget(m_moveSpeedLabel, 1, 0);
+    moveGrid->addWidget(m_moveSpeed, 1, 2);
+    moveGrid->addWidget(m_moveButton, 1, 3);
+    moveGrid->setColumnStretch(4, 1);
+    qobject_cast<QVBoxLayout *>(m_moveBox->layout())->insertLayout(0, moveGrid);
+    connect(m_moveButton, &QPushButton::clicked, this, &MotionPanel::move);
+
+    // Homing.
+    m_homeBox = makeGroup(QStringLiteral("homeBox"), &m_homeReason);
+    m_homeDirection = new QComboBox(m_homeBox);
+    m_homeDirection->setObjectName(QStringLiteral("homeDirection"));
+    m_homeDirection->addItems({QString(), QString()});
+    m_homeButton = new QPushButton(m_homeBox);
+    m_homeButton->setObjectName(QStringLiteral("homeButton"));
+    auto *homeRow = new QHBoxLayout;
+    homeRow->addWidget(m_homeDirection);
+    homeRow->addWidget(m_homeButton);
+    homeRow->addStretch(1);
+    qobject_cast<QVBoxLayout *>(m_homeBox->layout())->insertLayout(0, homeRow);
+    connect(m_homeButton, &QPushButton::clicked, this, [this] {
+        const bool positiveFirst = m_homeDirection->currentIndex() == 0;
+        runCommand(tr("Home"), [positiveFirst](Drive &d) { return d.home(positiveFirst); });
+    });
+
+    // Set position.
+    m_positionBox = makeGroup(QStringLiteral("positionBox"), &m_positionReason);
+    m_setPositionLabel = new QLabel(m_positionBox);
+    m_setPositionValue = spinBox(m_positionBox, QStringLiteral("setPositionValue"), -kMaxCount, kMaxCount, 0);
+    m_setPositionLabel->setBuddy(m_setPositionValue);
+    m_setPositionButton = new QPushButton(m_positionBox);
+    m_setPositionButton->setObjectName(QStringLiteral("setPositionButton"));
+    auto *positionRow = new QHBoxLayout;
+    positionRow->addWidget(m_setPositionLabel);
+    positionRow->addWidget(m_setPositionValue);
+    positionRow->addWidget(m_setPositionButton);
+    positionRow->addStretch(1);
+    qobject_cast<QVBoxLayout *>(m_positionBox->layout())->insertLayout(0, positionRow);
+    connect(m_setPositionButton, &QPushButton::clicked, this, [this] {
+        const qint64 p = m_setPositionValue->value();
+        runCommand(tr("Set position"), [p](Drive &d) { return d.setPosition(p); });
+    });
+
+    // Stop this drive.
+    m_stop = new QPushButton(this);
+    m_stop->setObjectName(QStringLiteral("stopDriveButton"));
+    m_stop->setMinimumHeight(36);
+    m_stop->setStyleSheet(QStringLiteral("QPushButton:enabled { color: #b71c1c; font-weight: bold; }"));
+    connect(m_stop, &QPushButton::clicked, this, &MotionPanel::stopDrive);
+    m_stopHint = new QLabel(this);
+    m_stopHint->setWordWrap(true);
+
+    auto *statusRow = new QFormLayout;
+    statusRow->addRow(m_state);
+    statusRow->addRow(m_position);
+    auto *stopRow = new QHBoxLayout;
+    stopRow->addWidget(m_stop);
+    stopRow->addWidget(m_stopHint, 1);
+
+    auto *left = new QVBoxLayout;
+    left->addWidget(m_powerBox);
+    left->addWidget(m_jogBox);
+    left->addWidget(m_moveBox);
+    left->addStretch(1);
+    auto *right = new QVBoxLayout;
+    right->addLayout(statusRow);
+    right->addWidget(m_homeBox);
+    right->addWidget(m_positionBox);
+    right->addStretch(1);
+    auto *columns = new QHBoxLayout;
+    columns->addLayout(left, 3);
+    columns->addLayout(right, 2);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_banner);
+    layout->addLayout(columns, 1);
+    layout->addLayout(stopRow);
+
+    retranslate();
+}
+
+QGroupBox *MotionPanel::makeGroup(const QString &objectName, QLabel **reason)
+{
+    auto *box = new QGroupBox(this);
+    box->setObjectName(objectName);
+    auto *layout = new QVBoxLayout(box);
+    *reason = reasonLabel(box);
+    (*reason)->setObjectName(objectName + QStringLiteral("Reason"));
+    layout->addWidget(*reason);
+    return box;
+}
+
+QString MotionPanel::title() const
+{
+    return tr("Motion");
+}
+
+QString MotionPanel::speedUnit() const
+{
+    return familyTraits(context().family).speedUnitText();
+}
+
+QString MotionPanel::distanceUnit() const
+{
+    return familyTraits(context().family).positionUnitText();
+}
+
+void MotionPanel::stopDrive()
+{
+    m_jogMinus->stopHold();
+    m_jogPlus->stopHold();
+    runCommand(tr("Stop"), [](Drive &d) { return d.stop(false); });
+}
+
+void MotionPanel::runCommand(const QString &what, DriveHub::Operation op)
+{
+    if (!context().isValid())
+        return;
+    QPointer<MotionPanel> self(this);
+    context().hub->run(context().connectionId, context().address, std::move(op),
+                       [self, what](const DriveResult &r) {
+                           if (!self)
+                               return;
+                           if (r.ok()) {
+                               self->m_jogState->setText(tr("%1: done.").arg(what));
+                           } else {
+                               self->m_jogState->setText(tr("%1 failed: %2").arg(what, r.error.message));
+                               self->reportError(r.error);
+                           }
+                       });
+}
+
+void MotionPanel::move()
+{
+    const qint64 value = m_moveValue->value();
+    const qint32 speed = m_moveSpeed->value();
+    if (m_absolute->isChecked())
+        runCommand(tr("Move to %1").arg(value),
+                   [value, speed](Drive &d) { return d.moveAbsolute(value, speed); });
+    else
+        runCommand(tr("Move by %1").arg(value),
+                   [value, speed](Drive &d) { return d.moveRelative(value, speed); });
+}
+
+void MotionPanel::onJogStarted(qint32 speed)
+{
+    m_jogState->setText(tr("Jogging at %1 %2 — let go to stop.")
+                            .arg(speed > 0 ? QStringLiteral("+%1").arg(speed) : QString::number(speed), speedUnit()));
+}
+
+void MotionPanel::onJogStopped(JogButton::StopReason reason)
+{
+    using R = JogButton::StopReason;
+    QString why;
+    switch (reason) {
+    case R::Released: why = tr("Jog stopped: the button was released."); break;
+    case R::PointerLeft: why = tr("Jog stopped: the pointer left the button."); break;
+    case R::FocusLost: why = tr("Jog stopped: the button lost the keyboard focus."); break;
+    case R::WindowDeactivated: why = tr("Jog stopped: the window was deactivated."); break;
+    case R::ApplicationInactive: why = tr("Jog stopped: DriveDesk is no longer the active application."); break;
+    case R::Hidden: why = tr("Jog stopped: the Motion tab was hidden."); break;
+    case R::Disabled: why = tr("Jog stopped: jogging was disabled."); break;
+    case R::LinkLost: why = tr("Jog stopped: the connection was lost."); break;
+    case R::LeaseExpired: why = tr("Jog stopped by the drive link: DriveDesk did not confirm the held button in time."); break;
+    case R::DriveLost: why = tr("Jog ended: the drive stopped answering."); break;
+    case R::JogFailed: why = tr("Jog stopped: the drive did not start."); break;
+    case R::Requested: why = tr("Jog stopped."); break;
+    }
+    m_jogState->setText(why);
+    if (reason == R::LeaseExpired)
+        reportError({ErrorCode::Timeout,
+                     tr("The jog of %1 was stopped because its hold was not renewed in time (the "
+                        "window was busy or frozen). Press the jog button again to continue.")
+                         .arg(DisplayText::driveName(context().family, context().address))});
+}
+
+void MotionPanel::activeChanged(bool active)
+{
+    if (!active) {
+        m_jogMinus->stopHold(JogButton::StopReason::Hidden);
+        m_jogPlus->stopHold(JogButton::StopReason::Hidden);
+    }
+}
+
+void MotionPanel::driveInfoChanged(const DriveInfo &)
+{
+    updateCapabilities();
+    showStatus();
+}
+
+void MotionPanel::statusChanged(const DriveStatus &)
+{
+    showStatus();
+}
+
+void MotionPanel::updateCapabilities()
+{
+    const DriveInfo &info = driveInfo();
+    const bool known = info.valid;
+    auto reasonFor = [&](Capability c) {
+        if (context().can(c))
+            return QString();
+        const QString r = info.reason(c);
+        if (!r.isEmpty())
+            return r;
+        return known ? tr("%1 is not available on this drive.").arg(DisplayText::capabilityName(c))
+                     : tr("Waiting for the drive's description…");
+    };
+    auto apply = [&](const QList<QWidget *> &widgets, const QString &reason) {
+        for (QWidget *w : widgets) {
+            w->setEnabled(reason.isEmpty());
+            w->setToolTip(reason);
+        }
+    };
+
+    const QList<Capability> motion{Capability::Enable, Capability::Jog, Capability::MoveRelative,
+                                   Capability::MoveAbsolute, Capability::Home, Capability::SetPosition,
+                                   Capability::Stop};
+    bool none = true;
+    for (Capability c : motion)
+        none = none && !context().can(c);
+    // A family without any motion gives one reason: show it once, above everything.
+    const QString common = none ? reasonFor(Capability::Jog) : QString();
+    m_banner->setText(common);
+    m_banner->setVisible(!common.isEmpty());
+    auto showReason = [&](QLabel *label, const QString &reason) {
+        label->setText(reason);
+        label->setVisible(!reason.isEmpty() && common.isEmpty());
+    };
+
+    const QString power = reasonFor(Capability::Enable);
+    apply({m_enable, m_disable}, power);
+    showReason(m_powerReason, power);
+
+    const QString jog = reasonFor(Capability::Jog);
+    apply({m_jogSpeed, m_jogMinus, m_jogPlus}, jog);
+    showReason(m_jogReason, jog);
+
+    const QString relative = reasonFor(Capability::MoveRelative);
+    const QString absolute = reasonFor(Capability::MoveAbsolute);
+    apply({m_relative}, relative);
+    apply({m_absolute}, absolute);
+    const bool anyMove = relative.isEmpty() || absolute.isEmpty();
+    apply({m_moveValue, m_moveSpeed, m_moveButton}, anyMove ? QString() : relative);
+    if (!relative.isEmpty() && absolute.isEmpty())
+        m_absolute->setChecked(true);
+    else if (relative.isEmpty() && !absolute.isEmpty())
+        m_relative->setChecked(true);
+    QStringList moveReasons;
+    for (const QString &r : {relative, absolute})
+        if (!r.isEmpty() && !moveReasons.contains(r))
+            moveReasons << r;
+    showReason(m_moveReason, moveReasons.join(QLatin1Char('\n')));
+
+    const QString home = reasonFor(Capability::Home);
+    apply({m_homeDirection, m_homeButton}, home);
+    showReason(m_homeReason, home);
+
+    const QString position = reasonFor(Capability::SetPosition);
+    apply({m_setPositionValue, m_setPositionButton}, position);
+    showReason(m_positionReason, position);
+
+    const QString stop = reasonFor(Capability::Stop);
+    apply({m_stop}, stop);
+}
+
+void MotionPanel::showStatus()
+{
+    const DriveStatus &s = driveInfo().status;
+    m_state->setText(tr("State: %1").arg(DisplayText::summary(s)));
+    m_position->setText(tr("Position: %1 %2").arg(DisplayText::position(s), distanceUnit()));
+}
+
+void MotionPanel::retranslate()
+{
+    m_powerBox->setTitle(tr("Power stage"));
+    m_enable->setText(tr("&Enable"));
+    m_enable->setWhatsThis(tr("Switch the power stage on: the motor holds its position."));
+    m_disable->setText(tr("&Disable"));
+    m_disable->setWhatsThis(tr("Switch the power stage off: the shaft turns freely."));
+
+    m_jogBox->setTitle(tr("Jog (hold to run)"));
+    m_jogSpeedLabel->setText(tr("Jog &speed:"));
+    m_jogSpeed->setSuffix(QLatin1Char(' ') + speedUnit());
+    m_jogMinus->setText(tr("◀ Jog −"));
+    m_jogPlus->setText(tr("Jog + ▶"));
+    m_jogHint->setText(tr("Hold a jog button (or focus it and hold Space): the axis turns only while "
+                          "it is held and stops when you let go, when the window loses the focus "
+                          "or when the connection drops."));
+    if (!m_jogMinus->isHolding() && !m_jogPlus->isHolding())
+        m_jogState->setText(tr("Not jogging."));
+
+    m_moveBox->setTitle(tr("Move"));
+    m_relative->setText(tr("&Relative by"));
+    m_absolute->setText(tr("&Absolute to"));
+    m_moveValue->setSuffix(QLatin1Char(' ') + distanceUnit());
+    m_moveSpeedLabel->setText(tr("Positioning speed:"));
+    m_moveSpeed->setSuffix(QLatin1Char(' ') + speedUnit());
+    m_moveButton->setText(tr("&Move"));
+
+    m_homeBox->setTitle(tr("Homing"));
+    m_homeDirection->setItemText(0, tr("Search positive direction first"));
+    m_homeDirection->setItemText(1, tr("Search negative direction first"));
+    m_homeButton->setText(tr("&Home"));
+
+    m_positionBox->setTitle(tr("Position"));
+    m_setPositionLabel->setText(tr("Set the current position to:"));
+    m_setPositionValue->setSuffix(QLatin1Char(' ') + distanceUnit());
+    m_setPositionButton->setText(tr("Se&t"));
+
+    m_stop->setText(tr("Stop this drive"));
+    m_stopHint->setText(tr("STOP in the tool bar (Esc or F12) stops every drive on every connection."));
+    updateCapabilities();
+    showStatus();
+}
+
+} // namespace dd

@@ -1,0 +1,108 @@
+#pragma once
+
+#include "core/drive/drivehub.h"
+#include "ui/workspace/drivepanel.h"
+#include "ui/panels/motion/jogbutton.h"
+
+class QComboBox;
+class QGroupBox;
+class QLabel;
+class QPushButton;
+class QRadioButton;
+class QSpinBox;
+
+namespace dd {
+
+// The Motion tab: power stage on/off, hold-to-run jog (JogButton) at a chosen speed,
+// relative / absolute moves, homing, setting the position, and a stop for this drive.
+// Each function is enabled only where the drive family has it; otherwise it is disabled,
+// with the family's reason as tooltip and written under it. The STOP in the tool bar
+// (Esc / F12) stops every drive and is not repeated here.
+//
+// Speed units and limits by family: servo-can r/min (1..6000: the seed gives no maximum;
+// 6000 r/min is above the rated speed of the AC servo motors these drives run), positions
+// in encoder counts; shuoke pulses/s (1..100000, the seed's limit), positions in pulses.
+class MotionPanel : public DrivePanel
+{
+    Q_OBJECT
+public:
+    struct SpeedRange
+    {
+        int minimum = 1;
+        int maximum = 0;
+        int jogDefault = 0;
+        int moveDefault = 0;
+    };
+    static SpeedRange speedRange(Family family);
+
+    explicit MotionPanel(const DriveContext &context, QWidget *parent = nullptr);
+
+    QString panelId() const override { return QStringLiteral("motion"); }
+    QString title() const override;
+
+    JogButton *jogPositive() const { return m_jogPlus; }
+    JogButton *jogNegative() const { return m_jogMinus; }
+
+    // Stops this drive (and ends any jog hold).
+    void stopDrive();
+
+protected:
+    void activeChanged(bool active) override;
+    void driveInfoChanged(const DriveInfo &info) override;
+    void statusChanged(const DriveStatus &status) override;
+    void retranslate() override;
+
+private:
+    QGroupBox *makeGroup(const QString &objectName, QLabel **reason);
+    void updateCapabilities();
+    void showStatus();
+    void runCommand(const QString &what, DriveHub::Operation op);
+    void move();
+    void onJogStarted(qint32 speed);
+    void onJogStopped(JogButton::StopReason reason);
+    QString speedUnit() const;
+    QString distanceUnit() const;
+
+    QLabel *m_banner = nullptr;
+    QLabel *m_state = nullptr;
+    QLabel *m_position = nullptr;
+    QLabel *m_jogState = nullptr;
+
+    QGroupBox *m_powerBox = nullptr;
+    QLabel *m_powerReason = nullptr;
+    QPushButton *m_enable = nullptr;
+    QPushButton *m_disable = nullptr;
+
+    QGroupBox *m_jogBox = nullptr;
+    QLabel *m_jogReason = nullptr;
+    QLabel *m_jogSpeedLabel = nullptr;
+    QSpinBox *m_jogSpeed = nullptr;
+    JogButton *m_jogMinus = nullptr;
+    JogButton *m_jogPlus = nullptr;
+    QLabel *m_jogHint = nullptr;
+
+    QGroupBox *m_moveBox = nullptr;
+    QLabel *m_moveReason = nullptr;
+    QRadioButton *m_relative = nullptr;
+    QRadioButton *m_absolute = nullptr;
+    QSpinBox *m_moveValue = nullptr;
+    QLabel *m_moveSpeedLabel = nullptr;
+    QSpinBox *m_moveSpeed = nullptr;
+    QPushButton *m_moveButton = nullptr;
+
+    QGroupBox *m_homeBox = nullptr;
+    QLabel *m_homeReason = nullptr;
+    QComboBox *m_homeDirection = nullptr;
+    QPushButton *m_homeButton = nullptr;
+
+    QGroupBox *m_positionBox = nullptr;
+    QLabel *m_positionReason = nullptr;
+    QLabel *m_setPositionLabel = nullptr;
+    QSpinBox *m_setPositionValue = nullptr;
+    QPushButton *m_setPositionButton = nullptr;
+
+    QPushButton *m_stop = nullptr;
+    QLabel *m_stopHint = nullptr;
+};
+
+} // namespace dd

@@ -1,0 +1,34 @@
+#include "ui/panels/parameters/parametereditcommand.h"
+
+#include "ui/panels/parameters/parametertablemodel.h"
+#include "core/params/parameterdictionary.h"
+
+namespace dd {
+
+ParameterEditCommand::ParameterEditCommand(ParameterTableModel *model, int parameterIndex,
+                                           std::optional<qint64> before, std::optional<qint64> after)
+    : m_model(model)
+    , m_index(parameterIndex)
+    , m_before(before)
+    , m_after(after)
+{
+    const QString label = model->dictionary() ? model->dictionary()->label(parameterIndex)
+                                              : QStringLiteral("P%1").arg(parameterIndex);
+    const std::optional<qint64> shown = after ? after : model->driveValue(parameterIndex).isKnown()
+            ? std::optional<qint64>(model->driveValue(parameterIndex).value) : std::nullopt;
+    setText(shown ? tr("%1 = %2").arg(label).arg(*shown) : tr("Edit %1").arg(label));
+}
+
+void ParameterEditCommand::undo()
+{
+    if (m_model)
+        m_model->setEditedValue(m_index, m_before);
+}
+
+void ParameterEditCommand::redo()
+{
+    if (m_model)
+        m_model->setEditedValue(m_index, m_after);
+}
+
+} // namespace dd

@@ -76,6 +76,17 @@ AddressRange FamilyTraits::addresses(LinkKind link) const
     return out;
 }
 
+// Each family's traits, defined in its own folder (core/protocol/<family>/<family>traits.cpp).
+namespace servocan {
+const FamilyTraits &traits();
+}
+namespace servomodbus {
+const FamilyTraits &traits();
+}
+namespace shuoke {
+const FamilyTraits &traits();
+}
+
 QList<const FamilyTraits *> allFamilyTraits()
 {
     // The family table: one line per family, in auto-detect order.

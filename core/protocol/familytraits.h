@@ -40,8 +40,8 @@ struct FramingTraits
 };
 
 // Everything a front end (GUI, CLI, simulator) needs to know about a drive family, given by
-// the family's own code (servocan::traits(), servomodbus::traits(), shuoke::traits(), each
-// in the family's protocol folder) and reached through familyTraits(). No front end
+// the family's own code (dd::<family>::traits() in core/protocol/<family>/<family>traits.cpp)
+// and reached through familyTraits(). No front end
 // switches on a family. The family's backend (the client-side drive code) is made by the
 // table in core/drive/familytable.cpp, its simulated drive by the one in
 // sim/bench/simfamilies.cpp.
@@ -96,15 +96,5 @@ QStringList allFramingIds();
 // A frame describer for one connection of `family`.
 std::unique_ptr<FrameDescriber> createFrameDescriber(Family family, const QString &framing = {},
                                                      const QVariantMap &options = {});
-
-namespace servocan {
-const FamilyTraits &traits();
-}
-namespace servomodbus {
-const FamilyTraits &traits();
-}
-namespace shuoke {
-const FamilyTraits &traits();
-}
 
 } // namespace dd

@@ -138,7 +138,7 @@ private slots:
     {
         Bench b({driveConfig(3, 19200)});
         QVERIFY(b.open(0)); // family default: 19200
-        QCOMPARE(b.backend->link()->settings().baud, servomodbus::traits().defaultBaud);
+        QCOMPARE(b.backend->link()->settings().baud, familyTraits(Family::ServoModbus).defaultBaud);
         ServoModbusDrive *d = b.drive(3);
         DriveReply *r = d->refreshIdentity();
         QVERIFY(waitDone(r));

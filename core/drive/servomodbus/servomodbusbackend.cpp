@@ -38,7 +38,7 @@ bool ServoModbusBackend::open(const ConnectionSettings &settings, TrafficTap *ta
     }
     SerialSettings s;
     s.portName = settings.port;
-    s.baud = settings.baud > 0 ? settings.baud : servomodbus::traits().defaultBaud;
+    s.baud = settings.baud > 0 ? settings.baud : familyTraits(Family::ServoModbus).defaultBaud;
     s.responseTimeoutMs = settings.timeoutMs >= 0 ? settings.timeoutMs : DefaultResponseTimeoutMs;
     s.retries = settings.retries >= 0 ? settings.retries : DefaultRetries;
     auto *link = new ModbusLink(this);

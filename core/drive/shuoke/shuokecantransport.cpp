@@ -30,7 +30,7 @@ bool ShuokeCanTransport::open(const ConnectionSettings &settings, TrafficTap *ta
                           .arg(settings.can)};
         return false;
     }
-    can.bitrate = settings.bitrate > 0 ? settings.bitrate : shuoke::traits().defaultBitrate;
+    can.bitrate = settings.bitrate > 0 ? settings.bitrate : familyTraits(Family::Shuoke).defaultBitrate;
     can.responseTimeoutMs = settings.timeoutMs >= 0 ? settings.timeoutMs : kDefaultResponseMs;
     if (settings.retries >= 0)
         can.retries = settings.retries;

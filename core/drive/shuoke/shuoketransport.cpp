@@ -116,7 +116,7 @@ SerialSettings ShuokeTransport::serialSettings(const ConnectionSettings &setting
 {
     SerialSettings s;
     s.portName = settings.port;
-    s.baud = settings.baud > 0 ? settings.baud : shuoke::traits().defaultBaud;
+    s.baud = settings.baud > 0 ? settings.baud : familyTraits(Family::Shuoke).defaultBaud;
     options().applyGap(s.baud, s.bitsPerChar, &s.minGapMs, &s.minCommandSpacingMs);
     s.responseTimeoutMs = settings.timeoutMs >= 0 ? settings.timeoutMs : kDefaultSerialResponseMs;
     if (settings.retries >= 0)

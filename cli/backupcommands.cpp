@@ -215,7 +215,6 @@ void RestoreCommand::report(const Error &error)
 {
     const ParameterDictionary &dict = m_transfer->dictionary();
     const RestoreReport &r = m_transfer->report();
-    using O = RestoreReport::Outcome;
 
     QJsonArray selected;
     QList<QPair<QString, QString>> rows;
@@ -224,31 +223,58 @@ void RestoreCommand::report(const Error &error)
                       {QStringLiteral("key"), e.key},
                       {QStringLiteral("from"), optionalValue(e.driveValue)},
                       {QStringLiteral("to"), optionalValue(e.fileValue)}};
-        QString state;
-        if (!r.dryRun) {
-            const O outcome = r.outcome(e.index);
-            o.insert(QStringLiteral("result"), RestoreReport::outcomeId(outcome));
-            const ParameterWriteResult *res = r.result(e.index);
-            if (res && res->readable && res->written && !res->readBackFailed)
-                o.insert(QStringLiteral("readBack"), double(res->readBack));
-            switch (outcome) {
-            case O::Verified: state = tr("verified"); break;
-            case O::WrittenOnly: state = tr("written (write-only: cannot be read back)"); break;
-            case O::Mismatch: state = tr("WRITTEN, READ BACK %1").arg(res ? res->readBack : 0); break;
-            case O::Failed: state = tr("NOT WRITTEN: %1").arg(res ? res->error : QString()); break;
-            case O::NotAttempted: state = tr("NOT WRITTEN (not attempted)"); break;
-            case O::Unconfirmed:
-                state = res && res->written ? tr("WRITTEN, NOT VERIFIED (no answer to the read-back)")
-                                            : tr("UNKNOWN: %1").arg(res ? res->error : QString());
-                break;
-            }
-        } else {
-            state = tr("would be written");
-        }
+        const QString state = r.dryRun ? tr("would be written") : outcome(e.index, &o);
         selected.append(o);
         rows.append({dict.label(e.index),
                      tr("%1 -> %2  %3").arg(optionalText(e.driveValue), optionalText(e.fileValue), state)});
     }
+    const QJsonObject json = reportJson(selected);
+
+    if (error) {
+        if (!r.selected.isEmpty() && !out()->isJson())
+            printIncomplete(rows);
+        return fail(error, json);
+    }
+    if (r.selected.isEmpty())
+        return succeed(json, tr("The drive already matches %1; nothing to write.").arg(m_path));
+    QString text = CliDescribe::table(rows);
+    if (r.dryRun) {
+        text += tr("Dry run: %n parameter(s) would be written; nothing was sent.", nullptr, int(r.selected.size()));
+    } else {
+        text += tr("%n parameter(s) written and verified.", nullptr, int(r.written().size()));
+        if (familyTraits(context()->globals.connection.family).eeOperations)
+            out()->note(tr("The values are in the drive's RAM; `ee set` stores them to EEPROM."));
+    }
+    succeed(json, text);
+}
+
+QString RestoreCommand::outcome(int index, QJsonObject *o) const
+{
+    using O = RestoreReport::Outcome;
+    const RestoreReport &r = m_transfer->report();
+    const O outcome = r.outcome(index);
+    o->insert(QStringLiteral("result"), RestoreReport::outcomeId(outcome));
+    const ParameterWriteResult *res = r.result(index);
+    if (res && res->readable && res->written && !res->readBackFailed)
+        o->insert(QStringLiteral("readBack"), double(res->readBack));
+    switch (outcome) {
+    case O::Verified: return tr("verified");
+    case O::WrittenOnly: return tr("written (write-only: cannot be read back)");
+    case O::Mismatch: return tr("WRITTEN, READ BACK %1").arg(res ? res->readBack : 0);
+    case O::Failed: return tr("NOT WRITTEN: %1").arg(res ? res->error : QString());
+    case O::NotAttempted: return tr("NOT WRITTEN (not attempted)");
+    case O::Unconfirmed:
+        return res && res->written ? tr("WRITTEN, NOT VERIFIED (no answer to the read-back)")
+                                   : tr("UNKNOWN: %1").arg(res ? res->error : QString());
+    }
+    return QString();
+}
+
+QJsonObject RestoreCommand::reportJson(const QJsonArray &selected) const
+{
+    using O = RestoreReport::Outcome;
+    const ParameterDictionary &dict = m_transfer->dictionary();
+    const RestoreReport &r = m_transfer->report();
     auto keys = [&dict](const QList<int> &indices) {
         QJsonArray a;
         for (int i : indices) {
@@ -268,38 +294,27 @@ void RestoreCommand::report(const Error &error)
         json.insert(QStringLiteral("mismatch"), keys(r.indices(O::Mismatch)));
         json.insert(QStringLiteral("unconfirmed"), keys(r.indices(O::Unconfirmed)));
     }
+    return json;
+}
 
-    if (error) {
-        if (!r.selected.isEmpty() && !out()->isJson()) {
-            out()->line(CliDescribe::table(rows));
-            const QList<int> written = r.written();
-            const QList<int> notWritten = r.notWritten();
-            QStringList w, n;
-            for (int i : written)
-                w << dict.label(i);
-            for (int i : notWritten)
-                n << dict.label(i);
-            out()->line(tr("Written: %1").arg(w.isEmpty() ? tr("none") : w.join(QLatin1String(", "))));
-            out()->line(tr("Not written: %1").arg(n.isEmpty() ? tr("none") : n.join(QLatin1String(", "))));
-            QStringList u;
-            for (int i : r.indices(O::Unconfirmed))
-                u << dict.label(i);
-            if (!u.isEmpty())
-                out()->line(tr("Unknown (read them again): %1").arg(u.join(QLatin1String(", "))));
-        }
-        return fail(error, json);
-    }
-    if (r.selected.isEmpty())
-        return succeed(json, tr("The drive already matches %1; nothing to write.").arg(m_path));
-    QString text = CliDescribe::table(rows);
-    if (r.dryRun) {
-        text += tr("Dry run: %n parameter(s) would be written; nothing was sent.", nullptr, int(r.selected.size()));
-    } else {
-        text += tr("%n parameter(s) written and verified.", nullptr, int(r.written().size()));
-        if (familyTraits(context()->globals.connection.family).eeOperations)
-            out()->note(tr("The values are in the drive's RAM; `ee set` stores them to EEPROM."));
-    }
-    succeed(json, text);
+void RestoreCommand::printIncomplete(const QList<QPair<QString, QString>> &rows)
+{
+    const ParameterDictionary &dict = m_transfer->dictionary();
+    const RestoreReport &r = m_transfer->report();
+    auto labels = [&dict](const QList<int> &indices) {
+        QStringList l;
+        for (int i : indices)
+            l << dict.label(i);
+        return l;
+    };
+    out()->line(CliDescribe::table(rows));
+    const QStringList w = labels(r.written());
+    const QStringList n = labels(r.notWritten());
+    out()->line(tr("Written: %1").arg(w.isEmpty() ? tr("none") : w.join(QLatin1String(", "))));
+    out()->line(tr("Not written: %1").arg(n.isEmpty() ? tr("none") : n.join(QLatin1String(", "))));
+    const QStringList u = labels(r.indices(RestoreReport::Outcome::Unconfirmed));
+    if (!u.isEmpty())
+        out()->line(tr("Unknown (read them again): %1").arg(u.join(QLatin1String(", "))));
 }
 
 } // namespace dd

@@ -61,6 +61,11 @@ public:
 
 private:
     void report(const Error &error);
+    // What became of the parameter's write (also into its JSON object `o`).
+    QString outcome(int index, QJsonObject *o) const;
+    QJsonObject reportJson(const QJsonArray &selected) const;
+    // After a failure: what was written and what was not.
+    void printIncomplete(const QList<QPair<QString, QString>> &rows);
     RestoreOptions m_options;
 };
 

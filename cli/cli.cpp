@@ -42,7 +42,41 @@ int Cli::run(const QStringList &arguments)
     // --json is honoured even for usage errors, so scripts always get a document.
     const bool json = arguments.contains(QLatin1String("--json"));
     CliOutput out(json);
+    if (!applyLanguage(arguments, json, out))
+        return int(CliExit::Usage);
 
+    const CliParser parser(CliGlobals::optionSpecs(), CliCommands::specs());
+
+    CliInvocation inv;
+    QString error;
+    if (!parser.parse(arguments, &inv, &error)) {
+        out.failure(QString(), int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
+        out.note(tr("Try: drivedesk-cli --help"));
+        return int(CliExit::Usage);
+    }
+    out.setJson(inv.has(QStringLiteral("json")));
+    if (const std::optional<CliExit> code = answerWithoutCommand(inv, out))
+        return int(*code);
+
+    CliContext context;
+    context.out = &out;
+    if (!context.globals.load(inv, &error)) {
+        out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
+        return int(CliExit::Usage);
+    }
+    if (const std::optional<CliExit> code = loadDictionary(context, inv.command))
+        return int(*code);
+
+    std::unique_ptr<CliCommand> command(CliCommands::create(inv.command, &context));
+    if (!command->prepare(inv, &error)) {
+        out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
+        return int(CliExit::Usage);
+    }
+    return runCommand(command.get(), context);
+}
+
+bool Cli::applyLanguage(const QStringList &arguments, bool json, CliOutput &out)
+{
     // The language before anything is said (also the parser's errors and --help). A --json
     // document is the same in every language, messages included: scripts parse it and logs
     // compare across machines. So with --json the CLI speaks English, whatever --lang says.
@@ -59,65 +93,50 @@ int Cli::run(const QStringList &arguments)
                     {ErrorCode::InvalidArgument,
                      tr("Unknown language \"%1\" for --lang. Languages: en, zh_CN, system (the locale's).")
                          .arg(*lang)});
-        return int(CliExit::Usage);
+        return false;
     }
+    return true;
+}
 
-    const CliParser parser(CliGlobals::optionSpecs(), CliCommands::specs());
-
-    CliInvocation inv;
-    QString error;
-    if (!parser.parse(arguments, &inv, &error)) {
-        out.failure(QString(), int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
-        out.note(tr("Try: drivedesk-cli --help"));
-        return int(CliExit::Usage);
-    }
-    out.setJson(inv.has(QStringLiteral("json")));
-
+std::optional<CliExit> Cli::answerWithoutCommand(const CliInvocation &inv, CliOutput &out)
+{
     if (inv.has(QStringLiteral("version"))) {
         out.result({{QStringLiteral("version"), QStringLiteral(DRIVEDESK_VERSION)}},
                    QStringLiteral("drivedesk-cli %1").arg(QStringLiteral(DRIVEDESK_VERSION)));
-        return int(CliExit::Ok);
+        return CliExit::Ok;
     }
     if (inv.has(QStringLiteral("help"))) {
         QTextStream(stdout) << (inv.command.isEmpty() ? CliHelp::general() : CliHelp::command(inv.command));
-        return int(CliExit::Ok);
+        return CliExit::Ok;
     }
     if (inv.command.isEmpty()) {
         out.failure(QString(), int(CliExit::Usage),
                     {ErrorCode::InvalidArgument, tr("No command given.")});
         out.note(tr("Try: drivedesk-cli --help"));
-        return int(CliExit::Usage);
+        return CliExit::Usage;
     }
+    return std::nullopt;
+}
 
-    CliContext context;
-    context.out = &out;
-    if (!context.globals.load(inv, &error)) {
-        out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
-        return int(CliExit::Usage);
-    }
-
+std::optional<CliExit> Cli::loadDictionary(CliContext &context, const QString &command)
+{
+    CliOutput &out = *context.out;
     auto dictionary = std::make_shared<ParameterDictionary>();
     const Family family = context.globals.connection.family;
     if (!context.globals.dictionaryFile.isEmpty()) {
         if (Error e = dictionary->loadFromFile(context.globals.dictionaryFile, family)) {
-            out.failure(inv.command, int(CliExit::Usage), e);
-            return int(CliExit::Usage);
+            out.failure(command, int(CliExit::Usage), e);
+            return CliExit::Usage;
         }
     } else if (Error e = dictionary->loadForFamily(family)) {
         if (dictionary->isEmpty()) {
-            out.failure(inv.command, int(CliExit::DriveFailed), e);
-            return int(CliExit::DriveFailed);
+            out.failure(command, int(CliExit::DriveFailed), e);
+            return CliExit::DriveFailed;
         }
         out.note(tr("Your own %1 dictionary was not used: %2").arg(familyId(family), e.message));
     }
     context.dictionary = dictionary;
-
-    std::unique_ptr<CliCommand> command(CliCommands::create(inv.command, &context));
-    if (!command->prepare(inv, &error)) {
-        out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
-        return int(CliExit::Usage);
-    }
-    return runCommand(command.get(), context);
+    return std::nullopt;
 }
 
 Error Cli::startBench(SimBench *bench, CliGlobals *globals)

@@ -1,10 +1,12 @@
 #pragma once
 
+#include "cli/cliexit.h"
 #include "cli/clilanguage.h"
 #include "core/common/error.h"
 
 #include <QObject>
 #include <QStringList>
+#include <optional>
 
 namespace dd {
 
@@ -13,6 +15,7 @@ struct CliGlobals;
 class CliCommand;
 class CliOutput;
 struct CliContext;
+struct CliInvocation;
 
 // The command-line tool: parse, check everything, open the link, run one command, return
 // its exit code (see CliExit).
@@ -32,6 +35,13 @@ public:
     static void configureLogging(bool sim);
 
 private:
+    // Speaks the language of --lang (English with --json); false after saying that --lang
+    // names no language.
+    bool applyLanguage(const QStringList &arguments, bool json, CliOutput &out);
+    // --version, --help, or no command: the exit code once answered; nothing otherwise.
+    static std::optional<CliExit> answerWithoutCommand(const CliInvocation &inv, CliOutput &out);
+    // The parameter dictionary into `context`: the exit code if there is none to use.
+    static std::optional<CliExit> loadDictionary(CliContext &context, const QString &command);
     // --sim: simulated drives in this process; points the connection settings at them.
     static Error startBench(SimBench *bench, CliGlobals *globals);
     int runCommand(CliCommand *command, CliContext &context);

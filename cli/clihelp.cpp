@@ -6,86 +6,111 @@ QString CliHelp::general()
 {
     // One text per section, so that a change to one section leaves the translations of the
     // others valid.
+    return QStringList{usage(), linkOptions(), outputOptions(), commandList(), exitCodes(), simulator(),
+                       examples()}
+        .join(QLatin1Char('\n'));
+}
+
+QString CliHelp::usage()
+{
     return tr("Usage: drivedesk-cli [OPTIONS] COMMAND [ARGS]\n"
-              "Commission servo and stepper drives from scripts.\n")
-        + QLatin1Char('\n')
-        + tr("Link and drive:\n"
-             "  --family servo-can|servo-modbus|shuoke   drive family (default: servo-can with\n"
-             "                                 --can, servo-modbus otherwise)\n"
-             "  --port DEVICE                  serial port, e.g. /dev/ttyUSB0 or COM3\n"
-             "  --can PLUGIN:INTERFACE         CAN bus, e.g. socketcan:can0, virtualcan:can0\n"
-             "  --baud N                       serial baud rate (default: the family's)\n"
-             "  --bitrate N                    CAN bitrate (default: the family's)\n"
-             "  --framing rtu|ascii|can|plc    shuoke framing (default: rtu on a port, can on CAN)\n"
-             "  --address N                    the drive to talk to (default 1)\n"
-             "  --timeout MS                   reply allowance beyond the wire time\n"
-             "  --retries N                    extra attempts after a timeout\n"
-             "  --dictionary FILE              parameter dictionary (names, ranges, units)\n"
-             "  --option FAMILY.KEY=VALUE      a family setting where the protocol documents are\n"
-             "                                 ambiguous, e.g. shuoke.checksum=twos-complement,\n"
-             "                                 servo-modbus.positionRule=decimal10000 (repeatable;\n"
-             "                                 see docs/cli.md)\n"
-             "  --sim                          use the built-in simulator instead of hardware\n"
-             "                                 (see \"Simulator\" below)\n")
-        + QLatin1Char('\n')
-        + tr("Output:\n"
-             "  --json                         one JSON document per command (JSON lines for\n"
-             "                                 monitor); failures too, with \"ok\": false\n"
-             "  --trace                        print every frame, timestamped, to stderr\n"
-             "  --lang LANG                    language of messages, tables and help: en,\n"
-             "                                 zh_CN or system (default: the locale, from\n"
-             "                                 LANGUAGE, LC_ALL, LC_MESSAGES, LANG); --json\n"
-             "                                 output is never translated\n"
-             "  -h, --help                     this help; COMMAND --help for one command\n"
-             "  -V, --version                  the version\n")
-        + QLatin1Char('\n')
-        + tr("Commands:\n"
-             "  scan [--from A] [--to B] [--bauds 9600,19200,...]\n"
-             "                                 find drives: family, address, baud, firmware, state\n"
-             "  info                           identity, firmware, state, alarm, capabilities\n"
-             "  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name\n"
-             "  set PARAM=VALUE ...            validate, write, read back, report verified or not\n"
-             "  backup -o FILE                 every readable parameter to a backup file\n"
-             "  diff FILE                      drive against file, parameter by parameter\n"
-             "  restore FILE [--dry-run] [--only PARAM,...] [--force]\n"
-             "                                 write the differences, verify each\n"
-             "  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them\n"
-             "  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]\n"
-             "                                 sample live values (Ctrl-C ends)\n"
-             "  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once\n"
-             "  move (--by N | --to N) [--speed V] [--no-wait]\n"
-             "                                 move, and wait until the axis is at rest\n"
-             "  stop [--emergency]             stop (emergency stop where the family has one)\n"
-             "  enable on|off                  servo enable on or off\n"
-             "  clear-alarm                    clear the alarm and check that it is gone\n"
-             "  home [--positive] [--no-wait]  homing, negative direction first\n"
-             "  channels                       the monitor channels this drive offers\n")
-        + QLatin1Char('\n')
-        + tr("Exit codes:\n"
-             "  0  success\n"
-             "  1  the drive or the protocol failed (timeout, exception, verify mismatch)\n"
-             "  2  bad usage or bad input (nothing was sent)\n"
-             "  3  the port or bus could not be opened\n")
-        + QLatin1Char('\n')
-        + tr("Simulator:\n"
-             "  --sim runs the command against simulated drives of --family inside this\n"
-             "  process, with nothing plugged in: serial families on a pseudo-terminal,\n"
-             "  CAN families on Qt's virtualcan bus. --port/--can are then not needed.\n"
-             "  --sim-drives ADDR[@BAUD],...   the simulated drives (default: one at --address,\n"
-             "                                 at --baud); e.g. --sim-drives 3@19200,7@38400\n"
-             "  --sim-state FILE               keep the simulated drives' state (parameters,\n"
-             "                                 EEPROM, position, alarm) in FILE between runs\n"
-             "  --sim-motion                   the simulated drives move on their own (for\n"
-             "                                 monitor demos; where the family's simulator can)\n")
-        + QLatin1Char('\n')
-        + tr("Examples:\n")
+              "Commission servo and stepper drives from scripts.\n");
+}
+
+QString CliHelp::linkOptions()
+{
+    return tr("Link and drive:\n"
+              "  --family servo-can|servo-modbus|shuoke   drive family (default: servo-can with\n"
+              "                                 --can, servo-modbus otherwise)\n"
+              "  --port DEVICE                  serial port, e.g. /dev/ttyUSB0 or COM3\n"
+              "  --can PLUGIN:INTERFACE         CAN bus, e.g. socketcan:can0, virtualcan:can0\n"
+              "  --baud N                       serial baud rate (default: the family's)\n"
+              "  --bitrate N                    CAN bitrate (default: the family's)\n"
+              "  --framing rtu|ascii|can|plc    shuoke framing (default: rtu on a port, can on CAN)\n"
+              "  --address N                    the drive to talk to (default 1)\n"
+              "  --timeout MS                   reply allowance beyond the wire time\n"
+              "  --retries N                    extra attempts after a timeout\n"
+              "  --dictionary FILE              parameter dictionary (names, ranges, units)\n"
+              "  --option FAMILY.KEY=VALUE      a family setting where the protocol documents are\n"
+              "                                 ambiguous, e.g. shuoke.checksum=twos-complement,\n"
+              "                                 servo-modbus.positionRule=decimal10000 (repeatable;\n"
+              "                                 see docs/cli.md)\n"
+              "  --sim                          use the built-in simulator instead of hardware\n"
+              "                                 (see \"Simulator\" below)\n");
+}
+
+QString CliHelp::outputOptions()
+{
+    return tr("Output:\n"
+              "  --json                         one JSON document per command (JSON lines for\n"
+              "                                 monitor); failures too, with \"ok\": false\n"
+              "  --trace                        print every frame, timestamped, to stderr\n"
+              "  --lang LANG                    language of messages, tables and help: en,\n"
+              "                                 zh_CN or system (default: the locale, from\n"
+              "                                 LANGUAGE, LC_ALL, LC_MESSAGES, LANG); --json\n"
+              "                                 output is never translated\n"
+              "  -h, --help                     this help; COMMAND --help for one command\n"
+              "  -V, --version                  the version\n");
+}
+
+QString CliHelp::commandList()
+{
+    return tr("Commands:\n"
+              "  scan [--from A] [--to B] [--bauds 9600,19200,...]\n"
+              "                                 find drives: family, address, baud, firmware, state\n"
+              "  info                           identity, firmware, state, alarm, capabilities\n"
+              "  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name\n"
+              "  set PARAM=VALUE ...            validate, write, read back, report verified or not\n"
+              "  backup -o FILE                 every readable parameter to a backup file\n"
+              "  diff FILE                      drive against file, parameter by parameter\n"
+              "  restore FILE [--dry-run] [--only PARAM,...] [--force]\n"
+              "                                 write the differences, verify each\n"
+              "  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them\n"
+              "  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]\n"
+              "                                 sample live values (Ctrl-C ends)\n"
+              "  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once\n"
+              "  move (--by N | --to N) [--speed V] [--no-wait]\n"
+              "                                 move, and wait until the axis is at rest\n"
+              "  stop [--emergency]             stop (emergency stop where the family has one)\n"
+              "  enable on|off                  servo enable on or off\n"
+              "  clear-alarm                    clear the alarm and check that it is gone\n"
+              "  home [--positive] [--no-wait]  homing, negative direction first\n"
+              "  channels                       the monitor channels this drive offers\n");
+}
+
+QString CliHelp::exitCodes()
+{
+    return tr("Exit codes:\n"
+              "  0  success\n"
+              "  1  the drive or the protocol failed (timeout, exception, verify mismatch)\n"
+              "  2  bad usage or bad input (nothing was sent)\n"
+              "  3  the port or bus could not be opened\n");
+}
+
+QString CliHelp::simulator()
+{
+    return tr("Simulator:\n"
+              "  --sim runs the command against simulated drives of --family inside this\n"
+              "  process, with nothing plugged in: serial families on a pseudo-terminal,\n"
+              "  CAN families on Qt's virtualcan bus. --port/--can are then not needed.\n"
+              "  --sim-drives ADDR[@BAUD],...   the simulated drives (default: one at --address,\n"
+              "                                 at --baud); e.g. --sim-drives 3@19200,7@38400\n"
+              "  --sim-state FILE               keep the simulated drives' state (parameters,\n"
+              "                                 EEPROM, position, alarm) in FILE between runs\n"
+              "  --sim-motion                   the simulated drives move on their own (for\n"
+              "                                 monitor demos; where the family's simulator can)\n");
+}
+
+QString CliHelp::examples()
+{
+    return tr("Examples:\n")
         + QStringLiteral(
-              "  drivedesk-cli --port /dev/ttyUSB0 scan --bauds 9600,19200,115200\n"
-              "  drivedesk-cli --port /dev/ttyUSB0 --address 3 set PA12=300 PA13=50\n"
-              "  drivedesk-cli --can socketcan:can0 --address 1 backup -o axis1.ddbackup\n"
-              "  drivedesk-cli --family shuoke --port COM3 --json monitor speed,position --rate 20\n"
-              "  drivedesk-cli --sim --family servo-can jog 100 --duration 2\n"
-              "  drivedesk-cli --lang zh_CN --sim get PA0 PA1\n");
+            "  drivedesk-cli --port /dev/ttyUSB0 scan --bauds 9600,19200,115200\n"
+            "  drivedesk-cli --port /dev/ttyUSB0 --address 3 set PA12=300 PA13=50\n"
+            "  drivedesk-cli --can socketcan:can0 --address 1 backup -o axis1.ddbackup\n"
+            "  drivedesk-cli --family shuoke --port COM3 --json monitor speed,position --rate 20\n"
+            "  drivedesk-cli --sim --family servo-can jog 100 --duration 2\n"
+            "  drivedesk-cli --lang zh_CN --sim get PA0 PA1\n");
 }
 
 QString CliHelp::command(const QString &name)

@@ -12,6 +12,16 @@ class CliHelp
 public:
     static QString general();
     static QString command(const QString &name);
+
+private:
+    // The sections of general().
+    static QString usage();
+    static QString linkOptions();
+    static QString outputOptions();
+    static QString commandList();
+    static QString exitCodes();
+    static QString simulator();
+    static QString examples();
 };
 
 } // namespace dd

@@ -71,17 +71,8 @@ bool CliParser::parse(const QStringList &arguments, CliInvocation *out, QString 
                 optionsEnded = true;
                 continue;
             }
-            if (!command) {
-                command = findCommand(arg);
-                if (!command) {
-                    *error = tr("Unknown command \"%1\". Commands: %2.")
-                                 .arg(arg, commandNames().join(QLatin1String(", ")));
-                    return false;
-                }
-                out->command = command->name;
-            } else {
-                out->positionals << arg;
-            }
+            if (!takeWord(arg, &command, out, error))
+                return false;
             continue;
         }
         if (arg == QLatin1String("--")) {
@@ -89,60 +80,81 @@ bool CliParser::parse(const QStringList &arguments, CliInvocation *out, QString 
             continue;
         }
 
-        const CliOptionSpec *spec = nullptr;
-        QString shown;
-        QString inlineValue;
-        bool hasInlineValue = false;
-        if (arg.startsWith(QLatin1String("--"))) {
-            QString name = arg.mid(2);
-            const int eq = name.indexOf(QLatin1Char('='));
-            if (eq >= 0) {
-                inlineValue = name.mid(eq + 1);
-                hasInlineValue = true;
-                name.truncate(eq);
-            }
-            shown = QLatin1String("--") + name;
-            spec = findLong(m_globals, name);
-            if (!spec && command)
-                spec = findLong(command->options, name);
-        } else {
-            shown = arg.left(2);
-            spec = findShort(m_globals, arg.at(1));
-            if (!spec && command)
-                spec = findShort(command->options, arg.at(1));
-            if (spec && arg.size() > 2) {
-                inlineValue = arg.mid(2);  // -oFILE
-                hasInlineValue = true;
-            }
-        }
-        if (!spec) {
-            if (command)
-                *error = tr("Unknown option %1 for \"%2\". See: drivedesk-cli %2 --help")
-                             .arg(shown, command->name);
-            else
-                *error = tr("Unknown option %1. See: drivedesk-cli --help").arg(shown);
+        OptionWord word;
+        if (!readOption(arg, command, &word, error))
             return false;
-        }
-        if (!spec->takesValue) {
-            if (hasInlineValue) {
-                *error = tr("Option --%1 takes no value.").arg(spec->name);
+        if (!word.spec->takesValue) {
+            if (word.hasInlineValue) {
+                *error = tr("Option --%1 takes no value.").arg(word.spec->name);
                 return false;
             }
-            out->options.insert(spec->name, QString());
+            out->options.insert(word.spec->name, QString());
             continue;
         }
-        if (!hasInlineValue) {
+        if (!word.hasInlineValue) {
             if (i + 1 >= arguments.size()) {
-                *error = tr("Option --%1 needs a value.").arg(spec->name);
+                *error = tr("Option --%1 needs a value.").arg(word.spec->name);
                 return false;
             }
-            inlineValue = arguments.at(++i);
+            word.inlineValue = arguments.at(++i);
         }
-        out->options.insert(spec->name, inlineValue);
-        if (spec->repeatable)
-            out->lists[spec->name].append(inlineValue);
+        out->options.insert(word.spec->name, word.inlineValue);
+        if (word.spec->repeatable)
+            out->lists[word.spec->name].append(word.inlineValue);
     }
     return true;
+}
+
+bool CliParser::takeWord(const QString &arg, const CliCommandSpec **command, CliInvocation *out,
+                         QString *error) const
+{
+    if (*command) {
+        out->positionals << arg;
+        return true;
+    }
+    *command = findCommand(arg);
+    if (!*command) {
+        *error = tr("Unknown command \"%1\". Commands: %2.")
+                     .arg(arg, commandNames().join(QLatin1String(", ")));
+        return false;
+    }
+    out->command = (*command)->name;
+    return true;
+}
+
+bool CliParser::readOption(const QString &arg, const CliCommandSpec *command, OptionWord *word,
+                           QString *error) const
+{
+    QString shown;
+    if (arg.startsWith(QLatin1String("--"))) {
+        QString name = arg.mid(2);
+        const int eq = name.indexOf(QLatin1Char('='));
+        if (eq >= 0) {
+            word->inlineValue = name.mid(eq + 1);
+            word->hasInlineValue = true;
+            name.truncate(eq);
+        }
+        shown = QLatin1String("--") + name;
+        word->spec = findLong(m_globals, name);
+        if (!word->spec && command)
+            word->spec = findLong(command->options, name);
+    } else {
+        shown = arg.left(2);
+        word->spec = findShort(m_globals, arg.at(1));
+        if (!word->spec && command)
+            word->spec = findShort(command->options, arg.at(1));
+        if (word->spec && arg.size() > 2) {
+            word->inlineValue = arg.mid(2);  // -oFILE
+            word->hasInlineValue = true;
+        }
+    }
+    if (word->spec)
+        return true;
+    if (command)
+        *error = tr("Unknown option %1 for \"%2\". See: drivedesk-cli %2 --help").arg(shown, command->name);
+    else
+        *error = tr("Unknown option %1. See: drivedesk-cli --help").arg(shown);
+    return false;
 }
 
 } // namespace dd

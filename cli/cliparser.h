@@ -55,6 +55,18 @@ public:
     QStringList commandNames() const;
 
 private:
+    // An option word: its spec, and the value written into it (--name=VALUE, -oVALUE).
+    struct OptionWord
+    {
+        const CliOptionSpec *spec = nullptr;
+        QString inlineValue;
+        bool hasInlineValue = false;
+    };
+
+    // A word that is not an option: the command, or (after it) one of its arguments.
+    bool takeWord(const QString &arg, const CliCommandSpec **command, CliInvocation *out, QString *error) const;
+    // Finds the option `arg` names (a global one, or one of `command`'s).
+    bool readOption(const QString &arg, const CliCommandSpec *command, OptionWord *word, QString *error) const;
     const CliOptionSpec *findLong(const QList<CliOptionSpec> &specs, const QString &name) const;
     const CliOptionSpec *findShort(const QList<CliOptionSpec> &specs, QChar c) const;
     const CliCommandSpec *findCommand(const QString &name) const;

@@ -99,6 +99,64 @@ Options parseOptions(const QApplication &app)
     return o;
 }
 
+// The --lang argument, looked for by hand: the language must be set before
+// QCommandLineParser runs, so that --help is translated too.
+QString languageArgument(const QStringList &args)
+{
+    QString lang;
+    for (int i = 1; i < args.size(); ++i) {
+        if (args.at(i) == QLatin1String("--lang") && i + 1 < args.size())
+            lang = args.at(i + 1);
+        else if (args.at(i).startsWith(QLatin1String("--lang=")))
+            lang = args.at(i).mid(7);
+    }
+    return lang;
+}
+
+// What --connect asks for (nothing without it); false after saying why it cannot be used.
+bool connectRequest(const Options &options, std::optional<dd::ConnectRequest> *request)
+{
+    if (options.connect == QLatin1String("last")) {
+        QSettings settings;
+        *request = dd::ConnectRequest::load(settings);
+    } else if (!options.connect.isEmpty()) {
+        dd::ConnectRequest r;
+        QString error;
+        if (!dd::ConnectRequest::fromCommandLine(options.connect, options.family, options.baud,
+                                                 options.bitrate, options.framing, &r, &error)) {
+            qCritical("%s", qPrintable(error));
+            return false;
+        }
+        *request = r;
+    }
+    return true;
+}
+
+// The family of --drive (nothing without it); false after saying why it cannot be used.
+bool preferredFamily(const Options &options, std::optional<dd::Family> *family)
+{
+    if (options.drive.isEmpty())
+        return true;
+    *family = dd::familyFromId(options.drive);
+    if (!*family) {
+        qCritical("%s", qPrintable(dd::DriveDeskMain::tr("Unknown family '%1' for --drive: use %2.")
+                                       .arg(options.drive, dd::familyIds().join(QStringLiteral(", ")))));
+        return false;
+    }
+    return true;
+}
+
+// --screenshot: grabs the window into the file after the delay and quits.
+void scheduleScreenshot(dd::MainWindow &window, const Options &options)
+{
+    QTimer::singleShot(options.screenshotDelayMs, &window, [&window, &options] {
+        const bool ok = window.grab().save(options.screenshot, "PNG");
+        if (!ok)
+            qCritical("Could not write %s", qPrintable(options.screenshot));
+        QCoreApplication::exit(ok ? 0 : 1);
+    });
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -111,16 +169,8 @@ int main(int argc, char *argv[])
     QGuiApplication::setApplicationDisplayName(QStringLiteral("DriveDesk"));
     dd::ensureCoreResources();
 
-    // The language first, so that --help is translated too (QCommandLineParser has not run
-    // yet: look for "--lang X" / "--lang=X" by hand).
-    QString langArg;
-    const QStringList args = app.arguments();
-    for (int i = 1; i < args.size(); ++i) {
-        if (args.at(i) == QLatin1String("--lang") && i + 1 < args.size())
-            langArg = args.at(i + 1);
-        else if (args.at(i).startsWith(QLatin1String("--lang=")))
-            langArg = args.at(i).mid(7);
-    }
+    // The language first, so that --help is translated too.
+    const QString langArg = languageArgument(app.arguments());
     bool langOk = true;
     const auto chosen = dd::LanguageManager::languageFromId(langArg, &langOk);
     dd::LanguageManager language;
@@ -129,35 +179,15 @@ int main(int argc, char *argv[])
     if (!langOk)
         qWarning("Unknown language '%s': use en, zh_CN or system", qPrintable(langArg));
 
-    // --connect is checked before any window opens.
+    // --connect and --drive are checked before any window opens.
     std::optional<dd::ConnectRequest> request;
-    if (options.connect == QLatin1String("last")) {
-        QSettings settings;
-        request = dd::ConnectRequest::load(settings);
-    } else if (!options.connect.isEmpty()) {
-        dd::ConnectRequest r;
-        QString error;
-        if (!dd::ConnectRequest::fromCommandLine(options.connect, options.family, options.baud,
-                                                 options.bitrate, options.framing, &r, &error)) {
-            qCritical("%s", qPrintable(error));
-            return 2;
-        }
-        request = r;
-    }
-
-    std::optional<dd::Family> preferredFamily;
-    if (!options.drive.isEmpty()) {
-        preferredFamily = dd::familyFromId(options.drive);
-        if (!preferredFamily) {
-            qCritical("%s", qPrintable(dd::DriveDeskMain::tr("Unknown family '%1' for --drive: use %2.")
-                                           .arg(options.drive, dd::familyIds().join(QStringLiteral(", ")))));
-            return 2;
-        }
-    }
+    std::optional<dd::Family> family;
+    if (!connectRequest(options, &request) || !preferredFamily(options, &family))
+        return 2;
 
     dd::MainWindow window(&language);   // --lang holds for this session only: not saved
-    if (preferredFamily)
-        window.setPreferredFamily(*preferredFamily);
+    if (family)
+        window.setPreferredFamily(*family);
     window.restoreLayout();
     if (!options.panel.isEmpty())
         window.workspace()->setPreferredPanel(options.panel);
@@ -166,13 +196,7 @@ int main(int argc, char *argv[])
         window.startDemo();
     if (request)
         window.connectTo(*request);
-    if (!options.screenshot.isEmpty()) {
-        QTimer::singleShot(options.screenshotDelayMs, &window, [&window, &options] {
-            const bool ok = window.grab().save(options.screenshot, "PNG");
-            if (!ok)
-                qCritical("Could not write %s", qPrintable(options.screenshot));
-            QCoreApplication::exit(ok ? 0 : 1);
-        });
-    }
+    if (!options.screenshot.isEmpty())
+        scheduleScreenshot(window, options);
     return app.exec();
 }

@@ -32,6 +32,17 @@ void selectData(QComboBox *box, const QVariant &value)
     if (i >= 0)
         box->setCurrentIndex(i);
 }
+
+// A label and the field it names (its buddy), made in that order.
+template <typename Field>
+Field *labelledField(QWidget *parent, const QString &objectName, QLabel **label)
+{
+    *label = new QLabel(parent);
+    auto *field = new Field(parent);
+    field->setObjectName(objectName);
+    (*label)->setBuddy(field);
+    return field;
+}
 } // namespace
 
 ConnectDialog::ConnectDialog(QWidget *parent)
@@ -39,61 +50,9 @@ ConnectDialog::ConnectDialog(QWidget *parent)
     , m_watcher(new SerialPortWatcher(this))
 {
     setObjectName(QStringLiteral("connectDialog"));
-    m_linkBox = new QGroupBox(this);
-    m_serialRadio = new QRadioButton(m_linkBox);
-    m_canRadio = new QRadioButton(m_linkBox);
-    m_serialRadio->setChecked(true);
-    m_linkPages = new QStackedWidget(m_linkBox);
-    m_linkPages->addWidget(createSerialPage());
-    m_linkPages->addWidget(createCanPage());
-    auto *radios = new QHBoxLayout;
-    radios->addWidget(m_serialRadio);
-    radios->addWidget(m_canRadio);
-    radios->addStretch(1);
-    auto *linkLayout = new QVBoxLayout(m_linkBox);
-    linkLayout->addLayout(radios);
-    linkLayout->addWidget(m_linkPages);
-
-    m_driveBox = new QGroupBox(this);
-    auto *driveForm = new QFormLayout(m_driveBox);
-    m_familyLabel = new QLabel(m_driveBox);
-    m_family = new QComboBox(m_driveBox);
-    m_family->setObjectName(QStringLiteral("familyCombo"));
-    m_familyLabel->setBuddy(m_family);
-    m_framingLabel = new QLabel(m_driveBox);
-    m_framing = new QComboBox(m_driveBox);
-    m_framing->setObjectName(QStringLiteral("framingCombo"));
-    m_framingLabel->setBuddy(m_framing);
-    driveForm->addRow(m_familyLabel, m_family);
-    driveForm->addRow(m_framingLabel, m_framing);
-
-    m_scanBox = new QGroupBox(this);
-    m_scanBox->setCheckable(true);
-    m_scanBox->setChecked(true);
-    auto *scanForm = new QFormLayout(m_scanBox);
-    m_rangeLabel = new QLabel(m_scanBox);
-    m_from = new QSpinBox(m_scanBox);
-    m_to = new QSpinBox(m_scanBox);
-    m_from->setRange(0, 255);
-    m_to->setRange(0, 255);
-    m_from->setValue(ConnectRequest::DefaultFrom);
-    m_to->setValue(ConnectRequest::DefaultTo);
-    auto *range = new QHBoxLayout;
-    range->addWidget(m_from);
-    range->addWidget(new QLabel(QStringLiteral("–"), m_scanBox));
-    range->addWidget(m_to);
-    range->addStretch(1);
-    scanForm->addRow(m_rangeLabel, range);
-    m_timeoutLabel = new QLabel(m_scanBox);
-    m_timeout = new QSpinBox(m_scanBox);
-    m_timeout->setObjectName(QStringLiteral("probeTimeout"));
-    m_timeout->setRange(0, 2000);   // 0 (shown as "Automatic"): the scanner's adaptive timeout
-    m_timeout->setSingleStep(10);
-    m_timeout->setValue(ConnectRequest::DefaultProbeTimeoutMs);
-    m_timeoutLabel->setBuddy(m_timeout);
-    scanForm->addRow(m_timeoutLabel, m_timeout);
-    connect(m_from, &QSpinBox::valueChanged, this, [this](int v) { m_to->setMinimum(v); });
-
+    buildLinkBox();
+    buildDriveBox();
+    buildScanBox();
     m_buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(m_buttons, &QDialogButtonBox::accepted, this, &ConnectDialog::accept);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &ConnectDialog::reject);
@@ -122,26 +81,38 @@ ConnectDialog::ConnectDialog(QWidget *parent)
     updateEnabled();
 }
 
+void ConnectDialog::buildLinkBox()
+{
+    m_linkBox = new QGroupBox(this);
+    m_serialRadio = new QRadioButton(m_linkBox);
+    m_canRadio = new QRadioButton(m_linkBox);
+    m_serialRadio->setChecked(true);
+    m_linkPages = new QStackedWidget(m_linkBox);
+    m_linkPages->addWidget(createSerialPage());
+    m_linkPages->addWidget(createCanPage());
+    auto *radios = new QHBoxLayout;
+    radios->addWidget(m_serialRadio);
+    radios->addWidget(m_canRadio);
+    radios->addStretch(1);
+    auto *linkLayout = new QVBoxLayout(m_linkBox);
+    linkLayout->addLayout(radios);
+    linkLayout->addWidget(m_linkPages);
+}
+
 QWidget *ConnectDialog::createSerialPage()
 {
     auto *page = new QWidget;
     auto *form = new QFormLayout(page);
     form->setContentsMargins(0, 0, 0, 0);
-    m_portLabel = new QLabel(page);
-    m_port = new QComboBox(page);
-    m_port->setObjectName(QStringLiteral("portCombo"));
+    m_port = labelledField<QComboBox>(page, QStringLiteral("portCombo"), &m_portLabel);
     m_port->setEditable(true);
     m_port->setInsertPolicy(QComboBox::NoInsert);
     m_port->setMinimumContentsLength(36);
     m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_portLabel->setBuddy(m_port);
-    m_baudLabel = new QLabel(page);
-    m_baud = new QComboBox(page);
-    m_baud->setObjectName(QStringLiteral("baudCombo"));
+    m_baud = labelledField<QComboBox>(page, QStringLiteral("baudCombo"), &m_baudLabel);
     m_baud->addItem(QString(), 0);
     for (int b : {4800, 9600, 19200, 38400, 57600, 115200, 230400})
         m_baud->addItem(QString::number(b), b);
-    m_baudLabel->setBuddy(m_baud);
     m_sweep = new QCheckBox(page);
     form->addRow(m_portLabel, m_port);
     form->addRow(m_baudLabel, m_baud);
@@ -154,27 +125,18 @@ QWidget *ConnectDialog::createCanPage()
     auto *page = new QWidget;
     auto *form = new QFormLayout(page);
     form->setContentsMargins(0, 0, 0, 0);
-    m_pluginLabel = new QLabel(page);
-    m_plugin = new QComboBox(page);
-    m_plugin->setObjectName(QStringLiteral("canPluginCombo"));
-    m_pluginLabel->setBuddy(m_plugin);
-    m_interfaceLabel = new QLabel(page);
-    m_interface = new QComboBox(page);
-    m_interface->setObjectName(QStringLiteral("canInterfaceCombo"));
+    m_plugin = labelledField<QComboBox>(page, QStringLiteral("canPluginCombo"), &m_pluginLabel);
+    m_interface = labelledField<QComboBox>(page, QStringLiteral("canInterfaceCombo"), &m_interfaceLabel);
     m_interface->setEditable(true);
     m_interface->setInsertPolicy(QComboBox::NoInsert);
-    m_interfaceLabel->setBuddy(m_interface);
     m_refreshCan = new QPushButton(page);
     auto *ifaceRow = new QHBoxLayout;
     ifaceRow->addWidget(m_interface, 1);
     ifaceRow->addWidget(m_refreshCan);
-    m_bitrateLabel = new QLabel(page);
-    m_bitrate = new QComboBox(page);
-    m_bitrate->setObjectName(QStringLiteral("bitrateCombo"));
+    m_bitrate = labelledField<QComboBox>(page, QStringLiteral("bitrateCombo"), &m_bitrateLabel);
     m_bitrate->addItem(QString(), 0);
     for (int b : {1000000, 500000, 250000, 125000, 100000, 50000, 20000})
         m_bitrate->addItem(tr("%1 kbit/s").arg(b / 1000), b);
-    m_bitrateLabel->setBuddy(m_bitrate);
     m_canError = new QLabel(page);
     m_canError->setWordWrap(true);
     m_canError->setStyleSheet(QStringLiteral("color: #c62828;"));
@@ -185,6 +147,43 @@ QWidget *ConnectDialog::createCanPage()
     connect(m_plugin, &QComboBox::currentIndexChanged, this, &ConnectDialog::fillCanInterfaces);
     connect(m_refreshCan, &QPushButton::clicked, this, &ConnectDialog::fillCanInterfaces);
     return page;
+}
+
+void ConnectDialog::buildDriveBox()
+{
+    m_driveBox = new QGroupBox(this);
+    auto *driveForm = new QFormLayout(m_driveBox);
+    m_family = labelledField<QComboBox>(m_driveBox, QStringLiteral("familyCombo"), &m_familyLabel);
+    m_framing = labelledField<QComboBox>(m_driveBox, QStringLiteral("framingCombo"), &m_framingLabel);
+    driveForm->addRow(m_familyLabel, m_family);
+    driveForm->addRow(m_framingLabel, m_framing);
+}
+
+void ConnectDialog::buildScanBox()
+{
+    m_scanBox = new QGroupBox(this);
+    m_scanBox->setCheckable(true);
+    m_scanBox->setChecked(true);
+    auto *scanForm = new QFormLayout(m_scanBox);
+    m_rangeLabel = new QLabel(m_scanBox);
+    m_from = new QSpinBox(m_scanBox);
+    m_to = new QSpinBox(m_scanBox);
+    m_from->setRange(0, 255);
+    m_to->setRange(0, 255);
+    m_from->setValue(ConnectRequest::DefaultFrom);
+    m_to->setValue(ConnectRequest::DefaultTo);
+    auto *range = new QHBoxLayout;
+    range->addWidget(m_from);
+    range->addWidget(new QLabel(QStringLiteral("–"), m_scanBox));
+    range->addWidget(m_to);
+    range->addStretch(1);
+    scanForm->addRow(m_rangeLabel, range);
+    m_timeout = labelledField<QSpinBox>(m_scanBox, QStringLiteral("probeTimeout"), &m_timeoutLabel);
+    m_timeout->setRange(0, 2000);   // 0 (shown as "Automatic"): the scanner's adaptive timeout
+    m_timeout->setSingleStep(10);
+    m_timeout->setValue(ConnectRequest::DefaultProbeTimeoutMs);
+    scanForm->addRow(m_timeoutLabel, m_timeout);
+    connect(m_from, &QSpinBox::valueChanged, this, [this](int v) { m_to->setMinimum(v); });
 }
 
 bool ConnectDialog::isCan() const

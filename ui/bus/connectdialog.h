@@ -48,8 +48,11 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    void buildLinkBox();
     QWidget *createSerialPage();
     QWidget *createCanPage();
+    void buildDriveBox();
+    void buildScanBox();
     void fillPorts();
     void fillCanPlugins();
     void fillCanInterfaces();

@@ -22,6 +22,17 @@
 
 namespace dd {
 
+namespace {
+QToolButton *toolButton(QWidget *parent, const QString &objectName, const QIcon &icon)
+{
+    auto *b = new QToolButton(parent);
+    b->setObjectName(objectName);
+    b->setIcon(icon);
+    b->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    return b;
+}
+} // namespace
+
 FrameMonitorDock::FrameMonitorDock(DriveHub *hub, QWidget *parent)
     : QDockWidget(parent)
 {
@@ -35,19 +46,27 @@ FrameMonitorDock::FrameMonitorDock(DriveHub *hub, QWidget *parent)
     m_filter->setFrameModel(m_model);
 
     auto *body = new QWidget(this);
-    m_pause = new QToolButton(body);
-    m_pause->setObjectName(QStringLiteral("framePause"));
+    buildControls(body);
+    buildView(body);
+    layOut(body);
+    setWidget(body);
+
+    // Items (texts in retranslate()) before the signals: an empty combo picks its first item.
+    for (int flags : {int(FrameMonitorFilter::AllDirections), int(FrameMonitorFilter::Tx | FrameMonitorFilter::Rx),
+                      int(FrameMonitorFilter::Tx), int(FrameMonitorFilter::Rx), int(FrameMonitorFilter::Discarded)})
+        m_direction->addItem(QString(), flags);
+    m_link->addItem(QString());
+    connectControls();
+
+    retranslate();
+}
+
+void FrameMonitorDock::buildControls(QWidget *body)
+{
+    m_pause = toolButton(body, QStringLiteral("framePause"), style()->standardIcon(QStyle::SP_MediaPause));
     m_pause->setCheckable(true);
-    m_pause->setIcon(style()->standardIcon(QStyle::SP_MediaPause));
-    m_pause->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_clear = new QToolButton(body);
-    m_clear->setObjectName(QStringLiteral("frameClear"));
-    m_clear->setIcon(style()->standardIcon(QStyle::SP_DialogResetButton));
-    m_clear->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_save = new QToolButton(body);
-    m_save->setObjectName(QStringLiteral("frameSave"));
-    m_save->setIcon(style()->standardIcon(QStyle::SP_DialogSaveButton));
-    m_save->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_clear = toolButton(body, QStringLiteral("frameClear"), style()->standardIcon(QStyle::SP_DialogResetButton));
+    m_save = toolButton(body, QStringLiteral("frameSave"), style()->standardIcon(QStyle::SP_DialogSaveButton));
     m_text = new QLineEdit(body);
     m_text->setObjectName(QStringLiteral("frameFilterText"));
     m_text->setClearButtonEnabled(true);
@@ -61,7 +80,10 @@ FrameMonitorDock::FrameMonitorDock(DriveHub *hub, QWidget *parent)
     m_follow->setChecked(true);
     m_counts = new QLabel(body);
     m_counts->setObjectName(QStringLiteral("frameCounts"));
+}
 
+void FrameMonitorDock::buildView(QWidget *body)
+{
     m_view = new QTreeView(body);
     m_view->setObjectName(QStringLiteral("frameView"));
     m_view->setModel(m_filter);
@@ -75,7 +97,10 @@ FrameMonitorDock::FrameMonitorDock(DriveHub *hub, QWidget *parent)
     m_view->header()->resizeSection(FrameMonitorModel::LinkColumn, 140);
     m_view->header()->resizeSection(FrameMonitorModel::DirectionColumn, 50);
     m_view->header()->resizeSection(FrameMonitorModel::DataColumn, 260);
+}
 
+void FrameMonitorDock::layOut(QWidget *body)
+{
     auto *bar = new QHBoxLayout;
     bar->addWidget(m_pause);
     bar->addWidget(m_clear);
@@ -90,14 +115,10 @@ FrameMonitorDock::FrameMonitorDock(DriveHub *hub, QWidget *parent)
     layout->addLayout(bar);
     layout->addWidget(m_view, 1);
     layout->addWidget(m_counts);
-    setWidget(body);
+}
 
-    // Items (texts in retranslate()) before the signals: an empty combo picks its first item.
-    for (int flags : {int(FrameMonitorFilter::AllDirections), int(FrameMonitorFilter::Tx | FrameMonitorFilter::Rx),
-                      int(FrameMonitorFilter::Tx), int(FrameMonitorFilter::Rx), int(FrameMonitorFilter::Discarded)})
-        m_direction->addItem(QString(), flags);
-    m_link->addItem(QString());
-
+void FrameMonitorDock::connectControls()
+{
     connect(m_pause, &QToolButton::toggled, this, &FrameMonitorDock::setPaused);
     connect(m_clear, &QToolButton::clicked, m_model, &FrameMonitorModel::clear);
     connect(m_save, &QToolButton::clicked, this, &FrameMonitorDock::save);
@@ -114,8 +135,6 @@ FrameMonitorDock::FrameMonitorDock(DriveHub *hub, QWidget *parent)
     });
     connect(m_filter, &QAbstractItemModel::rowsRemoved, this, &FrameMonitorDock::updateCounts);
     connect(m_filter, &QAbstractItemModel::modelReset, this, &FrameMonitorDock::updateCounts);
-
-    retranslate();
 }
 
 void FrameMonitorDock::setPaused(bool paused)

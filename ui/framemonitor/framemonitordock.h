@@ -49,6 +49,10 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    void buildControls(QWidget *body);
+    void buildView(QWidget *body);
+    void layOut(QWidget *body);
+    void connectControls();
     void retranslate();
     void updateLinks();
     void updateDirections();

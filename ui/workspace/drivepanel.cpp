@@ -3,6 +3,9 @@
 #include "core/drive/driveresult.h"
 
 #include <QEvent>
+#include <QLabel>
+#include <QPointer>
+#include <QProgressBar>
 
 namespace dd {
 
@@ -64,6 +67,52 @@ void DrivePanel::reportError(const Error &error)
 {
     if (error.isError())
         emit errorOccurred(error);
+}
+
+QLabel *DrivePanel::createMessageLabel(QWidget *parent, const QString &objectName)
+{
+    auto *label = new QLabel(parent);
+    label->setObjectName(objectName);
+    label->setWordWrap(true);
+    label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    return label;
+}
+
+void DrivePanel::showMessage(QLabel *label, const QString &text, MessageKind kind)
+{
+    label->setText(text);
+    switch (kind) {
+    case MessageKind::Info: label->setStyleSheet(QString()); break;
+    case MessageKind::Success: label->setStyleSheet(QStringLiteral("color: #2e7d32;")); break;
+    case MessageKind::Problem: label->setStyleSheet(QStringLiteral("color: #c62828;")); break;
+    }
+}
+
+QProgressBar *DrivePanel::createProgressBar(QWidget *parent)
+{
+    auto *bar = new QProgressBar(parent);
+    bar->setMaximumWidth(220);
+    bar->hide();
+    return bar;
+}
+
+std::function<void(int, int)> DrivePanel::progressOn(QProgressBar *bar)
+{
+    return [bar = QPointer<QProgressBar>(bar)](int done, int total) {
+        if (bar && total > 0) {
+            bar->setRange(0, total);
+            bar->setValue(done);
+        }
+    };
+}
+
+QLabel *DrivePanel::createReasonLabel(QWidget *parent)
+{
+    auto *label = new QLabel(parent);
+    label->setWordWrap(true);
+    label->setForegroundRole(QPalette::PlaceholderText);
+    label->hide();
+    return label;
 }
 
 } // namespace dd

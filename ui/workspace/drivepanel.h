@@ -5,6 +5,10 @@
 #include "ui/bus/driveinfo.h"
 
 #include <QWidget>
+#include <functional>
+
+class QLabel;
+class QProgressBar;
 
 namespace dd {
 
@@ -67,6 +71,19 @@ protected:
     // Emits errorOccurred() when `result` failed; returns result.ok().
     bool reportResult(const DriveResult &result);
     void reportError(const Error &error);
+
+    // Parts several panels build alike.
+    enum class MessageKind { Info, Success, Problem };
+    // A panel's message line: word-wrapped, selectable text.
+    static QLabel *createMessageLabel(QWidget *parent, const QString &objectName);
+    // Sets a message line's text in the colour of its kind (Info: the palette's).
+    static void showMessage(QLabel *label, const QString &text, MessageKind kind);
+    // A progress bar for a panel's bottom row: at most 220 px wide, hidden.
+    static QProgressBar *createProgressBar(QWidget *parent);
+    // A progress callback for DriveHub::run() that shows `done` of `total` on `bar`.
+    static std::function<void(int done, int total)> progressOn(QProgressBar *bar);
+    // The reason an action is unavailable: word-wrapped, greyed, hidden until needed.
+    static QLabel *createReasonLabel(QWidget *parent);
 
 private:
     DriveContext m_context;

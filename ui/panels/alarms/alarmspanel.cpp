@@ -27,6 +27,18 @@ AlarmsPanel::AlarmsPanel(const DriveContext &context, QWidget *parent)
     // The user's table (AppData/alarms/<family>.json) if valid, else the bundled one.
     const Error dictionaryError = m_dictionary.loadForFamily(context.family);
 
+    buildCurrentBox();
+    buildHistoryBox();
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_currentBox);
+    layout->addWidget(m_historyBox, 1);
+
+    retranslate();
+    reportError(dictionaryError);
+}
+
+void AlarmsPanel::buildCurrentBox()
+{
     m_currentBox = new QGroupBox(this);
     m_codeLabel = new QLabel(m_currentBox);
     m_codeLabel->setObjectName(QStringLiteral("alarmCode"));
@@ -45,11 +57,8 @@ AlarmsPanel::AlarmsPanel(const DriveContext &context, QWidget *parent)
     m_read->setObjectName(QStringLiteral("readAlarmButton"));
     m_clear = new QPushButton(m_currentBox);
     m_clear->setObjectName(QStringLiteral("clearAlarmButton"));
-    m_clearReason = new QLabel(m_currentBox);
+    m_clearReason = createReasonLabel(m_currentBox);
     m_clearReason->setObjectName(QStringLiteral("clearAlarmReason"));
-    m_clearReason->setWordWrap(true);
-    m_clearReason->setForegroundRole(QPalette::PlaceholderText);
-    m_clearReason->hide();
     connect(m_read, &QPushButton::clicked, this, &AlarmsPanel::readAlarm);
     connect(m_clear, &QPushButton::clicked, this, &AlarmsPanel::clearAlarm);
 
@@ -63,7 +72,10 @@ AlarmsPanel::AlarmsPanel(const DriveContext &context, QWidget *parent)
     current->addWidget(m_remedyLabel);
     current->addLayout(buttons);
     current->addWidget(m_clearReason);
+}
 
+void AlarmsPanel::buildHistoryBox()
+{
     m_historyBox = new QGroupBox(this);
     m_table = new QTableWidget(m_historyBox);
     m_table->setObjectName(QStringLiteral("alarmHistory"));
@@ -90,13 +102,6 @@ AlarmsPanel::AlarmsPanel(const DriveContext &context, QWidget *parent)
     auto *history = new QVBoxLayout(m_historyBox);
     history->addWidget(m_table, 1);
     history->addLayout(historyButtons);
-
-    auto *layout = new QVBoxLayout(this);
-    layout->addWidget(m_currentBox);
-    layout->addWidget(m_historyBox, 1);
-
-    retranslate();
-    reportError(dictionaryError);
 }
 
 QString AlarmsPanel::title() const

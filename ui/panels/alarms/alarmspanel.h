@@ -49,6 +49,8 @@ protected:
     void retranslate() override;
 
 private:
+    void buildCurrentBox();
+    void buildHistoryBox();
     void onCode(int code);
     void showCurrent();
     void showHistory();

@@ -32,6 +32,25 @@ BackupPanel::BackupPanel(const DriveContext &context, QWidget *parent)
     m_dictionary = std::shared_ptr<const ParameterDictionary>(&ParameterDictionary::bundled(context.family),
                                                               [](const ParameterDictionary *) {});
 
+    // Made in this order, which is the Tab order.
+    buildSaveBox();
+    buildRestoreBox();
+    m_progress = createProgressBar(this);
+    m_message = createMessageLabel(this, QStringLiteral("backupMessage"));
+    auto *bottom = new QHBoxLayout;
+    bottom->addWidget(m_progress);
+    bottom->addWidget(m_message, 1);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_saveBox);
+    layout->addWidget(m_restoreBox, 1);
+    layout->addLayout(bottom);
+
+    retranslate();
+}
+
+void BackupPanel::buildSaveBox()
+{
     m_saveBox = new QGroupBox(this);
     m_saveHint = new QLabel(m_saveBox);
     m_saveHint->setWordWrap(true);
@@ -41,7 +60,10 @@ BackupPanel::BackupPanel(const DriveContext &context, QWidget *parent)
     auto *saveLayout = new QHBoxLayout(m_saveBox);
     saveLayout->addWidget(m_saveHint, 1);
     saveLayout->addWidget(m_save);
+}
 
+void BackupPanel::buildRestoreBox()
+{
     m_restoreBox = new QGroupBox(this);
     m_open = new QPushButton(m_restoreBox);
     m_open->setObjectName(QStringLiteral("openBackupButton"));
@@ -77,24 +99,6 @@ BackupPanel::BackupPanel(const DriveContext &context, QWidget *parent)
     restoreLayout->addLayout(fileRow);
     restoreLayout->addWidget(m_diffTable, 1);
     restoreLayout->addLayout(applyRow);
-
-    m_progress = new QProgressBar(this);
-    m_progress->setMaximumWidth(220);
-    m_progress->hide();
-    m_message = new QLabel(this);
-    m_message->setObjectName(QStringLiteral("backupMessage"));
-    m_message->setWordWrap(true);
-    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    auto *bottom = new QHBoxLayout;
-    bottom->addWidget(m_progress);
-    bottom->addWidget(m_message, 1);
-
-    auto *layout = new QVBoxLayout(this);
-    layout->addWidget(m_saveBox);
-    layout->addWidget(m_restoreBox, 1);
-    layout->addLayout(bottom);
-
-    retranslate();
 }
 
 BackupPanel::~BackupPanel() = default;
@@ -340,14 +344,8 @@ void BackupPanel::onRestored(const DriveResult &result, const TransferOutcome &o
 
 void BackupPanel::run(std::function<DriveReply *(Drive &)> op, std::function<void(const DriveResult &)> done)
 {
-    QPointer<BackupPanel> self(this);
     context().hub->run(context().connectionId, context().address, std::move(op), std::move(done),
-                       [self](int n, int total) {
-                           if (self && total > 0) {
-                               self->m_progress->setRange(0, total);
-                               self->m_progress->setValue(n);
-                           }
-                       });
+                       progressOn(m_progress));
 }
 
 void BackupPanel::fail(const Error &error, const QString &context)
@@ -369,12 +367,7 @@ void BackupPanel::setBusy(bool busy, const QString &what)
 
 void BackupPanel::setMessage(const QString &text, MessageKind kind)
 {
-    m_message->setText(text);
-    switch (kind) {
-    case MessageKind::Info: m_message->setStyleSheet(QString()); break;
-    case MessageKind::Success: m_message->setStyleSheet(QStringLiteral("color: #2e7d32;")); break;
-    case MessageKind::Problem: m_message->setStyleSheet(QStringLiteral("color: #c62828;")); break;
-    }
+    showMessage(m_message, text, kind);
 }
 
 void BackupPanel::updateActions()

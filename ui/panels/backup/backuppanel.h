@@ -73,8 +73,8 @@ protected:
     void driveInfoChanged(const DriveInfo &info) override;
 
 private:
-    enum class MessageKind { Info, Success, Problem };
-
+    void buildSaveBox();
+    void buildRestoreBox();
     void chooseSaveFile();
     void chooseOpenFile();
     void loadFile(const QString &path);

@@ -46,15 +46,10 @@ EePanel::EePanel(const DriveContext &context, QWidget *parent)
     m_reason->setObjectName(QStringLiteral("eeUnavailableReason"));
     m_reason->setWordWrap(true);
     m_reason->setStyleSheet(QStringLiteral("color: #c62828;"));
-    m_progress = new QProgressBar(this);
+    m_progress = createProgressBar(this);
     m_progress->setObjectName(QStringLiteral("eeProgress"));
     m_progress->setRange(0, 0);   // the drive reports only "running" or "done"
-    m_progress->setMaximumWidth(220);
-    m_progress->hide();
-    m_message = new QLabel(this);
-    m_message->setObjectName(QStringLiteral("eeMessage"));
-    m_message->setWordWrap(true);
-    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_message = createMessageLabel(this, QStringLiteral("eeMessage"));
     m_tick.setInterval(100);
     connect(&m_tick, &QTimer::timeout, this, &EePanel::updateElapsed);
 
@@ -127,7 +122,7 @@ void EePanel::runOperation(EeOperation op)
     if (isBusy() || !context().isValid() || !context().can(Capability::EeOperations))
         return;
     if (eeIsDestructive(op) && !confirm(op)) {
-        setMessage(tr("%1 cancelled: nothing was sent to the drive.").arg(eeMnemonic(op)), QString());
+        setMessage(tr("%1 cancelled: nothing was sent to the drive.").arg(eeMnemonic(op)), MessageKind::Info);
         return;
     }
     m_running = op;
@@ -154,7 +149,7 @@ void EePanel::updateElapsed()
                   "the drive off.")
                    .arg(eeMnemonic(*m_running))
                    .arg(QLocale().toString(m_clock.elapsed() / 1000.0, 'f', 1)),
-               QString());
+               MessageKind::Info);
 }
 
 void EePanel::onFinished(EeOperation op, const DriveResult &result)
@@ -165,22 +160,21 @@ void EePanel::onFinished(EeOperation op, const DriveResult &result)
     const QString seconds = QLocale().toString(m_clock.elapsed() / 1000.0, 'f', 1);
     if (!reportResult(result)) {
         setMessage(tr("%1 failed after %2 s: %3").arg(eeMnemonic(op), seconds, result.error.message),
-                   QStringLiteral("color: #c62828;"));
+                   MessageKind::Problem);
     } else {
         QString text = tr("%1 done (%2 s): %3.").arg(eeMnemonic(op), seconds, eeMeaning(op));
         if (op == EeOperation::Reload || op == EeOperation::RestoreBackup || op == EeOperation::FactoryDefaults)
             text += QLatin1Char(' ') + tr("The drive now works with other values: read the parameters "
                                           "again (Parameters tab) to see them.");
-        setMessage(text, QStringLiteral("color: #2e7d32;"));
+        setMessage(text, MessageKind::Success);
     }
     updateActions();
     emit operationFinished(op, result.ok());
 }
 
-void EePanel::setMessage(const QString &text, const QString &style)
+void EePanel::setMessage(const QString &text, MessageKind kind)
 {
-    m_message->setText(text);
-    m_message->setStyleSheet(style);
+    showMessage(m_message, text, kind);
 }
 
 void EePanel::updateActions()

@@ -52,7 +52,7 @@ private:
     void onFinished(EeOperation op, const DriveResult &result);
     void updateElapsed();
     void updateActions();
-    void setMessage(const QString &text, const QString &style);
+    void setMessage(const QString &text, MessageKind kind);
 
     QLabel *m_intro = nullptr;
     QGroupBox *m_box = nullptr;

@@ -24,13 +24,30 @@ namespace dd {
 namespace {
 constexpr int kMaxCount = std::numeric_limits<qint32>::max();   // int32 moves (both families)
 
-QLabel *reasonLabel(QWidget *parent)
+// A row of `widgets`, left-aligned, at the top of a group box made by makeGroup().
+void insertRow(QGroupBox *box, const QList<QWidget *> &widgets)
 {
-    auto *l = new QLabel(parent);
-    l->setWordWrap(true);
-    l->setForegroundRole(QPalette::PlaceholderText);
-    l->hide();
-    return l;
+    auto *row = new QHBoxLayout;
+    for (QWidget *w : widgets)
+        row->addWidget(w);
+    row->addStretch(1);
+    qobject_cast<QVBoxLayout *>(box->layout())->insertLayout(0, row);
+}
+
+// Enabled without a reason; otherwise disabled with the reason as tooltip.
+void setAvailable(const QList<QWidget *> &widgets, const QString &reason)
+{
+    for (QWidget *w : widgets) {
+        w->setEnabled(reason.isEmpty());
+        w->setToolTip(reason);
+    }
+}
+
+// The reason written under a group box (not when the banner already says it).
+void showReason(QLabel *label, const QString &reason, bool shown)
+{
+    label->setText(reason);
+    label->setVisible(!reason.isEmpty() && shown);
 }
 
 QSpinBox *spinBox(QWidget *parent, const QString &objectName, int minimum, int maximum, int value)
@@ -60,30 +77,41 @@ MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
 {
     const SpeedRange range = speedRange(context.family);
 
-    m_banner = reasonLabel(this);
+    m_banner = createReasonLabel(this);
     m_banner->setObjectName(QStringLiteral("motionUnsupported"));
     m_state = new QLabel(this);
     m_position = new QLabel(this);
     m_position->setObjectName(QStringLiteral("motionPosition"));
     m_position->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
-    // Power stage.
+    // Made in this order, which is the Tab order.
+    buildPowerBox();
+    buildJogBox(range);
+    buildMoveBox(range);
+    buildHomeBox();
+    buildPositionBox();
+    buildStopButton();
+    layOut();
+
+    retranslate();
+}
+
+void MotionPanel::buildPowerBox()
+{
     m_powerBox = makeGroup(QStringLiteral("powerBox"), &m_powerReason);
     m_enable = new QPushButton(m_powerBox);
     m_enable->setObjectName(QStringLiteral("enableButton"));
     m_disable = new QPushButton(m_powerBox);
     m_disable->setObjectName(QStringLiteral("disableButton"));
-    auto *powerRow = new QHBoxLayout;
-    powerRow->addWidget(m_enable);
-    powerRow->addWidget(m_disable);
-    powerRow->addStretch(1);
-    qobject_cast<QVBoxLayout *>(m_powerBox->layout())->insertLayout(0, powerRow);
+    insertRow(m_powerBox, {m_enable, m_disable});
     connect(m_enable, &QPushButton::clicked, this,
             [this] { runCommand(tr("Enable"), [](Drive &d) { return d.setEnabled(true); }); });
     connect(m_disable, &QPushButton::clicked, this,
             [this] { runCommand(tr("Disable"), [](Drive &d) { return d.setEnabled(false); }); });
+}
 
-    // Jog.
+void MotionPanel::buildJogBox(const SpeedRange &range)
+{
     m_jogBox = makeGroup(QStringLiteral("jogBox"), &m_jogReason);
     m_jogSpeedLabel = new QLabel(m_jogBox);
     m_jogSpeed = spinBox(m_jogBox, QStringLiteral("jogSpeed"), range.minimum, range.maximum, range.jogDefault);
@@ -107,12 +135,18 @@ MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
     jogLayout->insertLayout(0, jogRow);
     jogLayout->insertWidget(1, m_jogState);
     jogLayout->insertWidget(2, m_jogHint);
+    connectJogButtons();
+}
+
+void MotionPanel::connectJogButtons()
+{
+    const DriveContext &c = context();
     for (JogButton *b : {m_jogMinus, m_jogPlus}) {
-        b->setDrive(context.hub, context.connectionId, context.address);
+        b->setDrive(c.hub, c.connectionId, c.address);
     }
     // How a jog ended when no stop command was confirmed: what stops the axis now.
-    if (context.hub)
-        connect(context.hub, &DriveHub::jogEnded, this, [this](int id, int address, const JogEnd &end) {
+    if (c.hub)
+        connect(c.hub, &DriveHub::jogEnded, this, [this](int id, int address, const JogEnd &end) {
             if (id != this->context().connectionId || address != this->context().address
                 || end.stoppedBy == JogEnd::StoppedBy::Command)
                 return;
@@ -130,8 +164,10 @@ MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
         m_jogMinus->setSpeed(v);
         m_jogPlus->setSpeed(v);
     });
+}
 
-    // Move.
+void MotionPanel::buildMoveBox(const SpeedRange &range)
+{
     m_moveBox = makeGroup(QStringLiteral("moveBox"), &m_moveReason);
     m_relative = new QRadioButton(m_moveBox);
     m_relative->setObjectName(QStringLiteral("moveRelative"));
@@ -154,43 +190,40 @@ MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
     moveGrid->setColumnStretch(4, 1);
     qobject_cast<QVBoxLayout *>(m_moveBox->layout())->insertLayout(0, moveGrid);
     connect(m_moveButton, &QPushButton::clicked, this, &MotionPanel::move);
+}
 
-    // Homing.
+void MotionPanel::buildHomeBox()
+{
     m_homeBox = makeGroup(QStringLiteral("homeBox"), &m_homeReason);
     m_homeDirection = new QComboBox(m_homeBox);
     m_homeDirection->setObjectName(QStringLiteral("homeDirection"));
     m_homeDirection->addItems({QString(), QString()});
     m_homeButton = new QPushButton(m_homeBox);
     m_homeButton->setObjectName(QStringLiteral("homeButton"));
-    auto *homeRow = new QHBoxLayout;
-    homeRow->addWidget(m_homeDirection);
-    homeRow->addWidget(m_homeButton);
-    homeRow->addStretch(1);
-    qobject_cast<QVBoxLayout *>(m_homeBox->layout())->insertLayout(0, homeRow);
+    insertRow(m_homeBox, {m_homeDirection, m_homeButton});
     connect(m_homeButton, &QPushButton::clicked, this, [this] {
         const bool positiveFirst = m_homeDirection->currentIndex() == 0;
         runCommand(tr("Home"), [positiveFirst](Drive &d) { return d.home(positiveFirst); });
     });
+}
 
-    // Set position.
+void MotionPanel::buildPositionBox()
+{
     m_positionBox = makeGroup(QStringLiteral("positionBox"), &m_positionReason);
     m_setPositionLabel = new QLabel(m_positionBox);
     m_setPositionValue = spinBox(m_positionBox, QStringLiteral("setPositionValue"), -kMaxCount, kMaxCount, 0);
     m_setPositionLabel->setBuddy(m_setPositionValue);
     m_setPositionButton = new QPushButton(m_positionBox);
     m_setPositionButton->setObjectName(QStringLiteral("setPositionButton"));
-    auto *positionRow = new QHBoxLayout;
-    positionRow->addWidget(m_setPositionLabel);
-    positionRow->addWidget(m_setPositionValue);
-    positionRow->addWidget(m_setPositionButton);
-    positionRow->addStretch(1);
-    qobject_cast<QVBoxLayout *>(m_positionBox->layout())->insertLayout(0, positionRow);
+    insertRow(m_positionBox, {m_setPositionLabel, m_setPositionValue, m_setPositionButton});
     connect(m_setPositionButton, &QPushButton::clicked, this, [this] {
         const qint64 p = m_setPositionValue->value();
         runCommand(tr("Set position"), [p](Drive &d) { return d.setPosition(p); });
     });
+}
 
-    // Stop this drive.
+void MotionPanel::buildStopButton()
+{
     m_stop = new QPushButton(this);
     m_stop->setObjectName(QStringLiteral("stopDriveButton"));
     m_stop->setMinimumHeight(36);
@@ -198,7 +231,10 @@ MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
     connect(m_stop, &QPushButton::clicked, this, &MotionPanel::stopDrive);
     m_stopHint = new QLabel(this);
     m_stopHint->setWordWrap(true);
+}
 
+void MotionPanel::layOut()
+{
     auto *statusRow = new QFormLayout;
     statusRow->addRow(m_state);
     statusRow->addRow(m_position);
@@ -223,8 +259,6 @@ MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
     layout->addWidget(m_banner);
     layout->addLayout(columns, 1);
     layout->addLayout(stopRow);
-
-    retranslate();
 }
 
 QGroupBox *MotionPanel::makeGroup(const QString &objectName, QLabel **reason)
@@ -232,7 +266,7 @@ QGroupBox *MotionPanel::makeGroup(const QString &objectName, QLabel **reason)
     auto *box = new QGroupBox(this);
     box->setObjectName(objectName);
     auto *layout = new QVBoxLayout(box);
-    *reason = reasonLabel(box);
+    *reason = createReasonLabel(box);
     (*reason)->setObjectName(objectName + QStringLiteral("Reason"));
     layout->addWidget(*reason);
     return box;
@@ -341,26 +375,19 @@ void MotionPanel::statusChanged(const DriveStatus &)
     showStatus();
 }
 
+QString MotionPanel::reasonFor(Capability c) const
+{
+    if (context().can(c))
+        return QString();
+    const QString r = driveInfo().reason(c);
+    if (!r.isEmpty())
+        return r;
+    return driveInfo().valid ? tr("%1 is not available on this drive.").arg(DisplayText::capabilityName(c))
+                             : tr("Waiting for the drive's description…");
+}
+
 void MotionPanel::updateCapabilities()
 {
-    const DriveInfo &info = driveInfo();
-    const bool known = info.valid;
-    auto reasonFor = [&](Capability c) {
-        if (context().can(c))
-            return QString();
-        const QString r = info.reason(c);
-        if (!r.isEmpty())
-            return r;
-        return known ? tr("%1 is not available on this drive.").arg(DisplayText::capabilityName(c))
-                     : tr("Waiting for the drive's description…");
-    };
-    auto apply = [&](const QList<QWidget *> &widgets, const QString &reason) {
-        for (QWidget *w : widgets) {
-            w->setEnabled(reason.isEmpty());
-            w->setToolTip(reason);
-        }
-    };
-
     const QList<Capability> motion{Capability::Enable, Capability::Jog, Capability::MoveRelative,
                                    Capability::MoveAbsolute, Capability::Home, Capability::SetPosition,
                                    Capability::Stop};
@@ -371,25 +398,38 @@ void MotionPanel::updateCapabilities()
     const QString common = none ? reasonFor(Capability::Jog) : QString();
     m_banner->setText(common);
     m_banner->setVisible(!common.isEmpty());
-    auto showReason = [&](QLabel *label, const QString &reason) {
-        label->setText(reason);
-        label->setVisible(!reason.isEmpty() && common.isEmpty());
-    };
+    const bool perBox = common.isEmpty();
 
     const QString power = reasonFor(Capability::Enable);
-    apply({m_enable, m_disable}, power);
-    showReason(m_powerReason, power);
+    setAvailable({m_enable, m_disable}, power);
+    showReason(m_powerReason, power, perBox);
 
     const QString jog = reasonFor(Capability::Jog);
-    apply({m_jogSpeed, m_jogMinus, m_jogPlus}, jog);
-    showReason(m_jogReason, jog);
+    setAvailable({m_jogSpeed, m_jogMinus, m_jogPlus}, jog);
+    showReason(m_jogReason, jog, perBox);
 
+    updateMoveCapabilities(perBox);
+
+    const QString home = reasonFor(Capability::Home);
+    setAvailable({m_homeDirection, m_homeButton}, home);
+    showReason(m_homeReason, home, perBox);
+
+    const QString position = reasonFor(Capability::SetPosition);
+    setAvailable({m_setPositionValue, m_setPositionButton}, position);
+    showReason(m_positionReason, position, perBox);
+
+    const QString stop = reasonFor(Capability::Stop);
+    setAvailable({m_stop}, stop);
+}
+
+void MotionPanel::updateMoveCapabilities(bool showReasons)
+{
     const QString relative = reasonFor(Capability::MoveRelative);
     const QString absolute = reasonFor(Capability::MoveAbsolute);
-    apply({m_relative}, relative);
-    apply({m_absolute}, absolute);
+    setAvailable({m_relative}, relative);
+    setAvailable({m_absolute}, absolute);
     const bool anyMove = relative.isEmpty() || absolute.isEmpty();
-    apply({m_moveValue, m_moveSpeed, m_moveButton}, anyMove ? QString() : relative);
+    setAvailable({m_moveValue, m_moveSpeed, m_moveButton}, anyMove ? QString() : relative);
     if (!relative.isEmpty() && absolute.isEmpty())
         m_absolute->setChecked(true);
     else if (relative.isEmpty() && !absolute.isEmpty())
@@ -398,18 +438,7 @@ void MotionPanel::updateCapabilities()
     for (const QString &r : {relative, absolute})
         if (!r.isEmpty() && !moveReasons.contains(r))
             moveReasons << r;
-    showReason(m_moveReason, moveReasons.join(QLatin1Char('\n')));
-
-    const QString home = reasonFor(Capability::Home);
-    apply({m_homeDirection, m_homeButton}, home);
-    showReason(m_homeReason, home);
-
-    const QString position = reasonFor(Capability::SetPosition);
-    apply({m_setPositionValue, m_setPositionButton}, position);
-    showReason(m_positionReason, position);
-
-    const QString stop = reasonFor(Capability::Stop);
-    apply({m_stop}, stop);
+    showReason(m_moveReason, moveReasons.join(QLatin1Char('\n')), showReasons);
 }
 
 void MotionPanel::showStatus()

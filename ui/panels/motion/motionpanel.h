@@ -54,7 +54,18 @@ protected:
 
 private:
     QGroupBox *makeGroup(const QString &objectName, QLabel **reason);
+    void buildPowerBox();
+    void buildJogBox(const SpeedRange &range);
+    void connectJogButtons();
+    void buildMoveBox(const SpeedRange &range);
+    void buildHomeBox();
+    void buildPositionBox();
+    void buildStopButton();
+    void layOut();
+    // Empty when the drive has `c`; otherwise why not.
+    QString reasonFor(Capability c) const;
     void updateCapabilities();
+    void updateMoveCapabilities(bool showReasons);
     void showStatus();
     void runCommand(const QString &what, DriveHub::Operation op);
     void move();

@@ -49,6 +49,22 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     m_proxy->setFilterKeyColumn(ParameterTableModel::Index);
     m_proxy->setFilterCaseSensitivity(Qt::CaseInsensitive);
 
+    // Made in this order, which is the Tab order.
+    buildSearch();
+    buildButtons();
+    buildUndoActions();
+    buildTable();
+    m_progress = createProgressBar(this);
+    m_message = createMessageLabel(this, QStringLiteral("parameterMessage"));
+    connectMessages();
+    layOut();
+
+    retranslate();
+    m_view->resizeColumnsToContents();
+}
+
+void ParametersPanel::buildSearch()
+{
     m_search = new QLineEdit(this);
     m_search->setObjectName(QStringLiteral("parameterSearch"));
     m_search->setClearButtonEnabled(true);
@@ -57,7 +73,10 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
         updateCount();
     });
     m_count = new QLabel(this);
+}
 
+void ParametersPanel::buildButtons()
+{
     m_readAll = new QPushButton(this);
     m_readAll->setObjectName(QStringLiteral("readAllButton"));
     m_writeSelected = new QPushButton(this);
@@ -73,7 +92,10 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     connect(m_writeChanged, &QPushButton::clicked, this, &ParametersPanel::writeAllChanged);
     connect(m_undoButton, &QPushButton::clicked, m_undo, &QUndoStack::undo);
     connect(m_redoButton, &QPushButton::clicked, m_undo, &QUndoStack::redo);
+}
 
+void ParametersPanel::buildUndoActions()
+{
     // Ctrl+Z / Ctrl+Shift+Z anywhere in the tab (the search box keeps its own).
     m_undoAction = new QAction(this);
     m_undoAction->setShortcut(QKeySequence::Undo);
@@ -86,7 +108,10 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     addAction(m_undoAction);
     addAction(m_redoAction);
     connect(m_undo, &QUndoStack::indexChanged, this, &ParametersPanel::updateActions);
+}
 
+void ParametersPanel::buildTable()
+{
     m_view = new QTableView(this);
     m_view->setObjectName(QStringLiteral("parameterTable"));
     m_view->setModel(m_proxy);
@@ -102,15 +127,10 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     m_delegate = new ParameterValueDelegate(m_model, this);
     m_view->setItemDelegateForColumn(ParameterTableModel::Value, m_delegate);
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, &ParametersPanel::updateActions);
+}
 
-    m_progress = new QProgressBar(this);
-    m_progress->setMaximumWidth(220);
-    m_progress->hide();
-    m_message = new QLabel(this);
-    m_message->setObjectName(QStringLiteral("parameterMessage"));
-    m_message->setWordWrap(true);
-    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
-
+void ParametersPanel::connectMessages()
+{
     connect(m_delegate, &ParameterValueDelegate::problemChanged, this, [this](const QString &reason) {
         if (reason.isEmpty())
             setMessage(QString(), MessageKind::Info);
@@ -124,7 +144,10 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
         setMessage(tr("Not accepted: %1 Nothing was sent to the drive.").arg(reason.message), MessageKind::Problem);
     });
     connect(m_model, &ParameterTableModel::editsChanged, this, &ParametersPanel::updateActions);
+}
 
+void ParametersPanel::layOut()
+{
     auto *top = new QHBoxLayout;
     top->addWidget(m_search, 2);
     top->addWidget(m_count);
@@ -141,9 +164,6 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     layout->addLayout(top);
     layout->addWidget(m_view, 1);
     layout->addLayout(bottom);
-
-    retranslate();
-    m_view->resizeColumnsToContents();
 }
 
 ParametersPanel::~ParametersPanel()
@@ -188,12 +208,7 @@ void ParametersPanel::readAll()
             if (self)
                 self->onRead(r, *dictionary);
         },
-        [self](int done, int total) {
-            if (self && total > 0) {
-                self->m_progress->setRange(0, total);
-                self->m_progress->setValue(done);
-            }
-        });
+        progressOn(m_progress));
 }
 
 void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const ParameterDictionary> dictionary)
@@ -274,12 +289,7 @@ void ParametersPanel::write(const QList<int> &indices, bool onlySelected)
             if (self)
                 self->onWritten(r, requested);
         },
-        [self](int done, int total) {
-            if (self && total > 0) {
-                self->m_progress->setRange(0, total);
-                self->m_progress->setValue(done);
-            }
-        });
+        progressOn(m_progress));
 }
 
 bool ParametersPanel::confirmCommunicationWrites(const QList<int> &indices)
@@ -347,12 +357,7 @@ void ParametersPanel::setBusy(bool busy, const QString &what)
 
 void ParametersPanel::setMessage(const QString &text, MessageKind kind)
 {
-    m_message->setText(text);
-    switch (kind) {
-    case MessageKind::Info: m_message->setStyleSheet(QString()); break;
-    case MessageKind::Success: m_message->setStyleSheet(QStringLiteral("color: #2e7d32;")); break;
-    case MessageKind::Problem: m_message->setStyleSheet(QStringLiteral("color: #c62828;")); break;
-    }
+    showMessage(m_message, text, kind);
 }
 
 void ParametersPanel::updateActions()

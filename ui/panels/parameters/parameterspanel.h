@@ -57,8 +57,12 @@ protected:
     void retranslate() override;
 
 private:
-    enum class MessageKind { Info, Success, Problem };
-
+    void buildSearch();
+    void buildButtons();
+    void buildUndoActions();
+    void buildTable();
+    void connectMessages();
+    void layOut();
     void write(const QList<int> &indices, bool onlySelected);
     bool confirmCommunicationWrites(const QList<int> &indices);
     void onRead(const DriveResult &result, std::shared_ptr<const ParameterDictionary> dictionary);

@@ -285,27 +285,32 @@ QVariant ParameterTableModel::data(const QModelIndex &index, int role) const
             return QBrush(column == Mark ? QColor(0xb2, 0x6a, 0x00) : FailedColor);
         return {};
     case Qt::ToolTipRole:
-        switch (column) {
-        case Name:
-            return r.info.description.text(QLocale());
-        case Mark:
-        case Value:
-            if (!r.info.isWritable())
-                return tr("Read-only: the drive does not accept a new value.");
-            if (changed)
-                return r.drive.source == ValueSource::ReadFromDrive
-                    ? tr("Edited: the drive has %1. Write it to send the new value.").arg(r.drive.value)
-                    : tr("Edited: not yet written to the drive.");
-            return tr("Double-click to edit (%1 to %2).").arg(r.info.min).arg(r.info.max);
-        case DriveValue:
-            if (!r.info.isReadable())
-                return tr("The drive cannot report this parameter: DriveDesk shows the value it last wrote.");
-            return {};
-        case State:
-            return r.message.isEmpty() ? QVariant() : QVariant(r.message);
-        default:
-            return {};
-        }
+        return toolTip(r, column, changed);
+    default:
+        return {};
+    }
+}
+
+QVariant ParameterTableModel::toolTip(const Row &r, int column, bool changed) const
+{
+    switch (column) {
+    case Name:
+        return r.info.description.text(QLocale());
+    case Mark:
+    case Value:
+        if (!r.info.isWritable())
+            return tr("Read-only: the drive does not accept a new value.");
+        if (changed)
+            return r.drive.source == ValueSource::ReadFromDrive
+                ? tr("Edited: the drive has %1. Write it to send the new value.").arg(r.drive.value)
+                : tr("Edited: not yet written to the drive.");
+        return tr("Double-click to edit (%1 to %2).").arg(r.info.min).arg(r.info.max);
+    case DriveValue:
+        if (!r.info.isReadable())
+            return tr("The drive cannot report this parameter: DriveDesk shows the value it last wrote.");
+        return {};
+    case State:
+        return r.message.isEmpty() ? QVariant() : QVariant(r.message);
     default:
         return {};
     }

@@ -104,6 +104,7 @@ private:
     bool rowChanged(const Row &r) const;
     void emitRowChanged(int row);
     QVariant display(const Row &r, int column) const;
+    QVariant toolTip(const Row &r, int column, bool changed) const;
     QString driveText(const Row &r) const;
     QString stateText(const Row &r) const;
     QString searchText(const Row &r) const;

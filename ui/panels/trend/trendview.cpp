@@ -63,9 +63,7 @@ TrendView::TrendView(TrendRecorder *recorder, QWidget *parent)
     connect(m_recorder, &TrendRecorder::channelsChanged, this, &TrendView::rebuildSeries);
     connect(m_recorder, &TrendRecorder::pausedChanged, this, &TrendView::onPausedChanged);
     connect(m_recorder, &TrendRecorder::cleared, this, [this] {
-        m_zoomed = false;
-        m_zoomY = false;
-        m_controls->setZoomed(false);
+        dropZoom();
         invalidate();
     });
     rebuildSeries();
@@ -76,6 +74,27 @@ TrendView::TrendView(TrendRecorder *recorder, QWidget *parent)
 TrendView::~TrendView() = default;
 
 void TrendView::buildUi()
+{
+    buildChart();
+    buildControls();
+    buildChannelPanel();
+    m_readout = new QLabel(this);
+    m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_status = new QLabel(this);
+
+    auto *plotRow = new QHBoxLayout;
+    plotRow->addWidget(m_chartView, 1);
+    plotRow->addWidget(m_panelScroll);
+    auto *bottom = new QHBoxLayout;
+    bottom->addWidget(m_readout, 1);
+    bottom->addWidget(m_status);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_controls);
+    layout->addLayout(plotRow, 1);
+    layout->addLayout(bottom);
+}
+
+void TrendView::buildChart()
 {
     m_chart = new QChart;
     m_chart->setAnimationOptions(QChart::NoAnimation);
@@ -103,7 +122,10 @@ void TrendView::buildUi()
     m_cursorLine->setPen(QPen(QColor(0x40, 0x40, 0x40), 1, Qt::DashLine));
     m_cursorLine->setZValue(1000);
     m_cursorLine->hide();
+}
 
+void TrendView::buildControls()
+{
     m_controls = new TrendControls(this);
     connect(m_controls, &TrendControls::pauseToggled, m_recorder, &TrendRecorder::setPaused);
     connect(m_controls, &TrendControls::resetZoomClicked, this, &TrendView::resetZoom);
@@ -113,7 +135,10 @@ void TrendView::buildUi()
         exportCsvInteractive(whole ? ExportRange::WholeRecording : ExportRange::VisibleWindow);
     });
     connect(m_controls, &TrendControls::exportPngRequested, this, &TrendView::exportPngInteractive);
+}
 
+void TrendView::buildChannelPanel()
+{
     m_panel = new TrendChannelPanel(this);
     connect(m_panel, &TrendChannelPanel::visibilityChanged, this,
             [this](const QString &id, bool) {
@@ -133,21 +158,6 @@ void TrendView::buildUi()
     panelScroll->setFrameShape(QFrame::NoFrame);
     panelScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_panelScroll = panelScroll;
-
-    m_readout = new QLabel(this);
-    m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_status = new QLabel(this);
-
-    auto *plotRow = new QHBoxLayout;
-    plotRow->addWidget(m_chartView, 1);
-    plotRow->addWidget(panelScroll);
-    auto *bottom = new QHBoxLayout;
-    bottom->addWidget(m_readout, 1);
-    bottom->addWidget(m_status);
-    auto *layout = new QVBoxLayout(this);
-    layout->addWidget(m_controls);
-    layout->addLayout(plotRow, 1);
-    layout->addLayout(bottom);
 }
 
 void TrendView::retranslateUi()
@@ -193,11 +203,7 @@ void TrendView::setWindowSeconds(int seconds)
 void TrendView::onWindowChanged()
 {
     // The user asked for a window: show it (zoom off).
-    m_zoomed = false;
-    m_zoomY = false;
-    m_controls->setZoomed(false);
-    invalidate();
-    refreshNow();
+    resetZoom();
 }
 
 double TrendView::sampleRate() const
@@ -325,9 +331,7 @@ void TrendView::refreshNow()
     qint64 to = 0;
     computeWindow(&from, &to);
     const int width = plotWidthPx();
-    const bool live = !m_recorder->isPaused() && !m_zoomed;
-    if (m_drawn && from == m_drawnFrom && to == m_drawnTo && width == m_drawnWidth
-        && m_stateVersion == m_drawnState && (!live || m_recorder->revision() == m_drawnRevision))
+    if (isDrawn(from, to, width))
         return; // a frozen view only changes when its window, size or settings change
     QElapsedTimer cost;
     cost.start();
@@ -345,8 +349,31 @@ void TrendView::refreshNow()
     // axis moves, move the axes, then replace() each series once.
     double yMin = std::numeric_limits<double>::infinity();
     double yMax = -std::numeric_limits<double>::infinity();
-    QList<std::pair<QLineSeries *, QList<QPointF>>> updates;
     ++m_updatingAxes;
+    const SeriesPoints updates = decimate(from, to, width, &yMin, &yMax);
+    moveAxes(from, to, yMin, yMax, updates);
+    for (const auto &u : updates)
+        u.first->replace(u.second); // never append() in a loop: quadratic in Qt Charts
+    --m_updatingAxes;
+    updateCursor();
+    updateStatus();
+    // Keep redrawing under ~25 % of the GUI thread: slow down on a slow machine (the
+    // render that follows costs about as much again), speed up again when it is fast.
+    const int interval = std::clamp(int(cost.elapsed()) * 4, RefreshIntervalMs, SlowestRefreshIntervalMs);
+    if (interval != m_timer.interval())
+        m_timer.setInterval(interval);
+}
+
+bool TrendView::isDrawn(qint64 fromUs, qint64 toUs, int width) const
+{
+    const bool live = !m_recorder->isPaused() && !m_zoomed;
+    return m_drawn && fromUs == m_drawnFrom && toUs == m_drawnTo && width == m_drawnWidth
+        && m_stateVersion == m_drawnState && (!live || m_recorder->revision() == m_drawnRevision);
+}
+
+TrendView::SeriesPoints TrendView::decimate(qint64 fromUs, qint64 toUs, int width, double *yMin, double *yMax)
+{
+    SeriesPoints updates;
     for (const TrendChannel &c : std::as_const(m_channels)) {
         QLineSeries *s = m_series.value(c.id);
         const SampleBuffer *buf = m_recorder->buffer(c.id);
@@ -359,16 +386,21 @@ void TrendView::refreshNow()
             continue;
         }
         TrendPlotBuilder::Result r = TrendPlotBuilder::build(
-            *buf, from, to, width, m_recorder->originUs(), st.scale, st.offset);
+            *buf, fromUs, toUs, width, m_recorder->originUs(), st.scale, st.offset);
         if (r.hasData()) {
-            yMin = std::min(yMin, r.yMin);
-            yMax = std::max(yMax, r.yMax);
+            *yMin = std::min(*yMin, r.yMin);
+            *yMax = std::max(*yMax, r.yMax);
         }
         updates.append({s, std::move(r.points)});
     }
+    return updates;
+}
+
+void TrendView::moveAxes(qint64 fromUs, qint64 toUs, double yMin, double yMax, const SeriesPoints &updates)
+{
     const double o = static_cast<double>(m_recorder->originUs());
-    const double xMin = (static_cast<double>(from) - o) * 1e-6;
-    const double xMax = (static_cast<double>(to) - o) * 1e-6;
+    const double xMin = (static_cast<double>(fromUs) - o) * 1e-6;
+    const double xMax = (static_cast<double>(toUs) - o) * 1e-6;
     std::optional<std::pair<double, double>> yRange;
     if (m_zoomY)
         yRange = std::make_pair(m_zoomYMin, m_zoomYMax);
@@ -376,7 +408,7 @@ void TrendView::refreshNow()
         yRange = TrendAxisScale::fitValueRange(yMin, yMax, m_axisY->min(), m_axisY->max());
     const bool yMoves = yRange && (yRange->first != m_axisY->min() || yRange->second != m_axisY->max());
     if (xMin != m_axisX->min() || xMax != m_axisX->max() || yMoves) {
-        for (const auto &u : std::as_const(updates)) {
+        for (const auto &u : updates) {
             if (u.first->count() > 0)
                 u.first->clear();
         }
@@ -390,16 +422,6 @@ void TrendView::refreshNow()
         if (!m_zoomY)
             m_axisY->applyNiceNumbers();
     }
-    for (const auto &u : std::as_const(updates))
-        u.first->replace(u.second); // never append() in a loop: quadratic in Qt Charts
-    --m_updatingAxes;
-    updateCursor();
-    updateStatus();
-    // Keep redrawing under ~25 % of the GUI thread: slow down on a slow machine (the
-    // render that follows costs about as much again), speed up again when it is fast.
-    const int interval = std::clamp(int(cost.elapsed()) * 4, RefreshIntervalMs, SlowestRefreshIntervalMs);
-    if (interval != m_timer.interval())
-        m_timer.setInterval(interval);
 }
 
 void TrendView::onAxisRangeChanged()
@@ -428,21 +450,23 @@ void TrendView::onAxisRangeChanged()
 
 void TrendView::resetZoom()
 {
+    dropZoom();
+    invalidate();
+    refreshNow();
+}
+
+void TrendView::dropZoom()
+{
     m_zoomed = false;
     m_zoomY = false;
     m_controls->setZoomed(false);
-    invalidate();
-    refreshNow();
 }
 
 void TrendView::onPausedChanged(bool paused)
 {
     m_controls->setPaused(paused);
-    if (!paused) { // back to live: drop the zoom
-        m_zoomed = false;
-        m_zoomY = false;
-        m_controls->setZoomed(false);
-    }
+    if (!paused) // back to live: drop the zoom
+        dropZoom();
     invalidate();
     if (!m_handlingZoom)
         refreshNow();

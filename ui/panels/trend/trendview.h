@@ -5,6 +5,7 @@
 
 #include <QHash>
 #include <QPoint>
+#include <QPointF>
 #include <QTimer>
 #include <QWidget>
 #include <optional>
@@ -97,14 +98,29 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    // The point lists of a refresh, one per visible series.
+    using SeriesPoints = QList<std::pair<QLineSeries *, QList<QPointF>>>;
+
     void buildUi();
+    void buildChart();
+    void buildControls();
+    void buildChannelPanel();
     void retranslateUi();
     void onWindowChanged();
     void rebuildSeries();
     void updateSeriesName(const QString &id);
     void computeWindow(qint64 *fromUs, qint64 *toUs) const;
+    // Whether the last refresh drew this window at this width with nothing changed since.
+    bool isDrawn(qint64 fromUs, qint64 toUs, int width) const;
+    // The decimated points of the visible channels (hidden ones are emptied) and their
+    // value range (widened into *yMin, *yMax).
+    SeriesPoints decimate(qint64 fromUs, qint64 toUs, int width, double *yMin, double *yMax);
+    // Sets the axes to the window and the value range; empties the series first if an axis
+    // moves.
+    void moveAxes(qint64 fromUs, qint64 toUs, double yMin, double yMax, const SeriesPoints &updates);
     int plotWidthPx() const;
     void onAxisRangeChanged();
+    void dropZoom();
     void onPausedChanged(bool paused);
     void updateCursor();
     void updateStatus();

@@ -731,10 +731,6 @@
         <translation>启动时连接并扫描：串口（/dev/ttyUSB0、COM3）、CAN 接口（插件:接口，如 socketcan:can0），或 last 表示上次使用的连接。</translation>
     </message>
     <message>
-        <source>With --connect: servo-can, servo-modbus, shuoke or detect (default).</source>
-        <translation>与 --connect 配合：servo-can、servo-modbus、shuoke 或 detect（默认，自动识别）。</translation>
-    </message>
-    <message>
         <source>With --connect on a serial port: the baud rate (default: the family&apos;s).</source>
         <translation>与 --connect 串口配合：波特率（默认：系列默认值）。</translation>
     </message>
@@ -765,6 +761,10 @@
     <message>
         <source>Unknown family &apos;%1&apos; for --drive: use %2.</source>
         <translation>--drive 的驱动器系列“%1”未知：请用 %2。</translation>
+    </message>
+    <message>
+        <source>With --connect: %1 or detect (default).</source>
+        <translation>与 --connect 配合：%1 或 detect（默认，自动识别）。</translation>
     </message>
 </context>
 <context>

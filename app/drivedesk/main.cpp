@@ -56,7 +56,7 @@ Options parseOptions(const QApplication &app)
                                          "the connection used last."),
         QStringLiteral("link"));
     const QCommandLineOption family(QStringLiteral("family"),
-        dd::DriveDeskMain::tr("With --connect: servo-can, servo-modbus, shuoke or detect (default)."),
+        dd::DriveDeskMain::tr("With --connect: %1 or detect (default).").arg(dd::familyIds().join(QStringLiteral(", "))),
         QStringLiteral("family"));
     const QCommandLineOption baud(QStringLiteral("baud"),
         dd::DriveDeskMain::tr("With --connect on a serial port: the baud rate (default: the family's)."),

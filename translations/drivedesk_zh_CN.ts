@@ -384,22 +384,6 @@
         <translation>%1 插件未报告任何接口，请输入接口名称。</translation>
     </message>
     <message>
-        <source>CAN</source>
-        <translation>CAN</translation>
-    </message>
-    <message>
-        <source>RTU (binary)</source>
-        <translation>RTU（二进制）</translation>
-    </message>
-    <message>
-        <source>ASCII</source>
-        <translation>ASCII</translation>
-    </message>
-    <message>
-        <source>PLC mode (Modbus registers)</source>
-        <translation>PLC 模式（Modbus 寄存器）</translation>
-    </message>
-    <message>
         <source>Choose a serial port, or type its name.</source>
         <translation>请选择串口，或输入串口名称。</translation>
     </message>
@@ -590,18 +574,6 @@
 <context>
     <name>dd::DisplayText</name>
     <message>
-        <source>Servo (CAN)</source>
-        <translation>伺服（CAN）</translation>
-    </message>
-    <message>
-        <source>Servo (Modbus)</source>
-        <translation>伺服（Modbus）</translation>
-    </message>
-    <message>
-        <source>Shuoke stepper</source>
-        <translation>硕科步进</translation>
-    </message>
-    <message>
         <source>%1 #%2</source>
         <translation>%1 #%2</translation>
     </message>
@@ -787,12 +759,12 @@
         <translation>所选驱动器首先显示的标签页：overview、trend 等。</translation>
     </message>
     <message>
-        <source>Select the first drive of this family that is found: servo-can, servo-modbus or shuoke.</source>
-        <translation>选中找到的第一台该系列驱动器：servo-can、servo-modbus 或 shuoke。</translation>
+        <source>Select the first drive of this family that is found: %1.</source>
+        <translation>选中找到的第一台该系列驱动器：%1。</translation>
     </message>
     <message>
-        <source>Unknown family &apos;%1&apos; for --drive: use servo-can, servo-modbus or shuoke.</source>
-        <translation>--drive 的驱动器系列“%1”未知：请用 servo-can、servo-modbus 或 shuoke。</translation>
+        <source>Unknown family &apos;%1&apos; for --drive: use %2.</source>
+        <translation>--drive 的驱动器系列“%1”未知：请用 %2。</translation>
     </message>
 </context>
 <context>
@@ -1255,10 +1227,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>关于 DriveDesk</translation>
     </message>
     <message>
-        <source>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;Commissioning and tuning workbench for servo and stepper drives over RS485 / RS232 and CAN.&lt;/p&gt;&lt;p&gt;Drive families: servo-can, servo-modbus, shuoke.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;通过 RS485 / RS232 和 CAN 调试、整定伺服和步进驱动器的工具。&lt;/p&gt;&lt;p&gt;驱动器系列：servo-can、servo-modbus、shuoke。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>DriveDesk — commissioning workbench</source>
         <translation>DriveDesk — 驱动器调试工具</translation>
     </message>
@@ -1337,6 +1305,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Main tool bar</source>
         <translation>主工具栏</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;Commissioning and tuning workbench for servo and stepper drives over RS485 / RS232 and CAN.&lt;/p&gt;&lt;p&gt;Drive families: %3.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;通过 RS485 / RS232 和 CAN 调试、整定伺服和步进驱动器的工具。&lt;/p&gt;&lt;p&gt;驱动器系列：%3。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -1451,22 +1423,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Motion</source>
         <translation>运动</translation>
-    </message>
-    <message>
-        <source>pulses/s</source>
-        <translation>脉冲/秒</translation>
-    </message>
-    <message>
-        <source>r/min</source>
-        <translation>r/min</translation>
-    </message>
-    <message>
-        <source>pulses</source>
-        <translation>脉冲</translation>
-    </message>
-    <message>
-        <source>counts</source>
-        <translation>计数</translation>
     </message>
     <message>
         <source>Stop</source>
@@ -1803,14 +1759,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：只写参数不能有 readCommand</translation>
     </message>
     <message>
-        <source>%1: a readable shuoke parameter needs a readCommand</source>
-        <translation>%1：可读的硕科参数需要 readCommand</translation>
-    </message>
-    <message>
-        <source>%1: a servo-modbus parameter needs a register</source>
-        <translation>%1：servo-modbus 参数需要寄存器地址</translation>
-    </message>
-    <message>
         <source>%1: models[%2] must be a model name</source>
         <translation>%1：models[%2] 必须是型号名称</translation>
     </message>
@@ -1869,6 +1817,14 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>%1 is read-only: the drive does not accept a new value</source>
         <translation>%1 为只读参数：驱动器不接受新值</translation>
+    </message>
+    <message>
+        <source>%1: a readable %2 parameter needs a readCommand</source>
+        <translation>%1：可读的 %2 参数需要 readCommand</translation>
+    </message>
+    <message>
+        <source>%1: a %2 parameter needs a register</source>
+        <translation>%1：%2 参数需要寄存器地址</translation>
     </message>
 </context>
 <context>
@@ -4261,30 +4217,6 @@ Write anyway?</source>
         <translation>未知的驱动器系列“%1”。可用系列：%2。</translation>
     </message>
     <message>
-        <source>Unknown framing &quot;%1&quot;. Framings: rtu, ascii, can, plc.</source>
-        <translation>未知帧格式“%1”。可用帧格式：rtu、ascii、can、plc。</translation>
-    </message>
-    <message>
-        <source>The servo-can family talks CAN: use --can PLUGIN:INTERFACE instead of --port.</source>
-        <translation>servo-can 系列使用 CAN 通讯：请用 --can PLUGIN:INTERFACE 代替 --port。</translation>
-    </message>
-    <message>
-        <source>The servo-can family has only the can framing.</source>
-        <translation>servo-can 系列只有 can 帧格式。</translation>
-    </message>
-    <message>
-        <source>The servo-modbus family talks RS485: use --port DEVICE instead of --can.</source>
-        <translation>servo-modbus 系列使用 RS485 通讯：请用 --port DEVICE 代替 --can。</translation>
-    </message>
-    <message>
-        <source>The servo-modbus family has only the rtu framing.</source>
-        <translation>servo-modbus 系列只有 rtu 帧格式。</translation>
-    </message>
-    <message>
-        <source>--framing can needs a CAN bus: use --can PLUGIN:INTERFACE.</source>
-        <translation>--framing can 需要 CAN 总线：请使用 --can PLUGIN:INTERFACE。</translation>
-    </message>
-    <message>
         <source>--framing %1 needs a serial port: use --port DEVICE.</source>
         <translation>--framing %1 需要串口：请使用 --port DEVICE。</translation>
     </message>
@@ -4683,6 +4615,26 @@ Servo enable on or off.
         <comment>separator of the state words: online, enabled, idle</comment>
         <translation>，</translation>
     </message>
+    <message>
+        <source>Unknown framing &quot;%1&quot;. Framings: %2.</source>
+        <translation>未知帧格式“%1”。可用帧格式：%2。</translation>
+    </message>
+    <message>
+        <source>The %1 family has no %2 framing. Its framings: %3.</source>
+        <translation>%1 系列没有 %2 帧格式。它的帧格式：%3。</translation>
+    </message>
+    <message>
+        <source>--framing %1 needs a CAN bus: use --can PLUGIN:INTERFACE.</source>
+        <translation>--framing %1 需要 CAN 总线：请使用 --can PLUGIN:INTERFACE。</translation>
+    </message>
+    <message>
+        <source>The %1 family talks CAN: use --can PLUGIN:INTERFACE instead of --port.</source>
+        <translation>%1 系列使用 CAN 通讯：请用 --can PLUGIN:INTERFACE 代替 --port。</translation>
+    </message>
+    <message>
+        <source>The %1 family talks RS485: use --port DEVICE instead of --can.</source>
+        <translation>%1 系列使用 RS485 通讯：请用 --port DEVICE 代替 --can。</translation>
+    </message>
 </context>
 <context>
     <name>dd::CliCommand</name>
@@ -4833,10 +4785,6 @@ Servo enable on or off.
         <translation>ee：未知操作“%1”。可用操作：set、rd、ba、rs、def。</translation>
     </message>
     <message>
-        <source>EEPROM operations exist only on servo-modbus drives (--family servo-modbus).</source>
-        <translation>只有 servo-modbus 驱动器支持 EEPROM 操作（--family servo-modbus）。</translation>
-    </message>
-    <message>
         <source>%1: %2 ...</source>
         <translation>%1：%2 ...</translation>
     </message>
@@ -4847,6 +4795,10 @@ Servo enable on or off.
     <message>
         <source>Waiting for the EEPROM operation to finish (the drive completes it anyway).</source>
         <translation>正在等待 EEPROM 操作完成（驱动器无论如何都会完成该操作）。</translation>
+    </message>
+    <message>
+        <source>EEPROM operations exist only on %1 drives (--family %1).</source>
+        <translation>只有 %1 驱动器支持 EEPROM 操作（--family %1）。</translation>
     </message>
 </context>
 <context>
@@ -5075,6 +5027,53 @@ Servo enable on or off.
         <translation>
             <numerusform>找到 %n 台驱动器。</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>dd::FamilyTraits</name>
+    <message>
+        <source>Servo (CAN)</source>
+        <translation>伺服（CAN）</translation>
+    </message>
+    <message>
+        <source>CAN</source>
+        <translation>CAN</translation>
+    </message>
+    <message>
+        <source>r/min</source>
+        <translation>r/min</translation>
+    </message>
+    <message>
+        <source>counts</source>
+        <translation>计数</translation>
+    </message>
+    <message>
+        <source>Servo (Modbus)</source>
+        <translation>伺服（Modbus）</translation>
+    </message>
+    <message>
+        <source>RTU (binary)</source>
+        <translation>RTU（二进制）</translation>
+    </message>
+    <message>
+        <source>Shuoke stepper</source>
+        <translation>硕科步进</translation>
+    </message>
+    <message>
+        <source>ASCII</source>
+        <translation>ASCII</translation>
+    </message>
+    <message>
+        <source>PLC mode (Modbus registers)</source>
+        <translation>PLC 模式（Modbus 寄存器）</translation>
+    </message>
+    <message>
+        <source>pulses/s</source>
+        <translation>脉冲/秒</translation>
+    </message>
+    <message>
+        <source>pulses</source>
+        <translation>脉冲</translation>
     </message>
 </context>
 </TS>

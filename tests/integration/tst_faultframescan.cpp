@@ -167,6 +167,11 @@ void TestFaultFramesCan::badReplies()
     QVERIFY(!w->writeResults().first().verified);
     QVERIFY2(w->writeResults().first().error.contains(QStringLiteral("could not be read back")),
              qPrintable(w->writeResults().first().error));
+    // Unknown, not a mismatch: the batch keeps the read-back's own error (it was
+    // VerifyMismatch before WriteVerification) and names the parameter.
+    QCOMPARE(w->writeResults().first().outcome, WriteOutcome::Unknown);
+    QCOMPARE(errorCodeName(w->error().code), errorCodeName(ErrorCode::Timeout));
+    QVERIFY2(w->error().message.startsWith(QStringLiteral("P20: ")), qPrintable(w->error().message));
     // Recovery.
     m_dev->mode = Misbehaviour::None;
     r = d->readParameters({10, 11, 12});

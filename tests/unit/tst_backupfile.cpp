@@ -2,6 +2,7 @@
 
 #include "core/params/backupfile.h"
 #include "core/params/parameterdictionary.h"
+#include "tests/support/testdata.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -18,16 +19,7 @@ using namespace dd;
 
 namespace {
 
-QString dataDir()
-{
-    const QByteArray env = qgetenv("DRIVEDESK_SOURCE_DIR");
-    if (!env.isEmpty())
-        return QFile::decodeName(env) + QStringLiteral("/tests/data");
-    QDir dir(QCoreApplication::applicationDirPath());
-    for (int up = 0; up < 5 && !dir.exists(QStringLiteral("tests/data")); ++up)
-        dir.cdUp();
-    return dir.filePath(QStringLiteral("tests/data"));
-}
+using dd::test::dataDir;
 
 const QDateTime fixedTime(QDate(2024, 5, 1), QTime(8, 30, 0), QTimeZone::utc());
 

@@ -1,6 +1,7 @@
 #include <QtTest>
 
 #include "core/params/parameterdictionary.h"
+#include "tests/support/testdata.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -15,17 +16,7 @@ Q_DECLARE_METATYPE(dd::ErrorCode)
 
 namespace {
 
-// tests/data: from DRIVEDESK_SOURCE_DIR (set by ctest), else above the executable.
-QString dataDir()
-{
-    const QByteArray env = qgetenv("DRIVEDESK_SOURCE_DIR");
-    if (!env.isEmpty())
-        return QFile::decodeName(env) + QStringLiteral("/tests/data");
-    QDir dir(QCoreApplication::applicationDirPath());
-    for (int up = 0; up < 5 && !dir.exists(QStringLiteral("tests/data")); ++up)
-        dir.cdUp();
-    return dir.filePath(QStringLiteral("tests/data"));
-}
+using dd::test::dataDir;
 
 QJsonObject entry(int index, const QString &key, qint64 min = -100, qint64 max = 100)
 {

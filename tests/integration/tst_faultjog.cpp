@@ -17,6 +17,7 @@
 #include "sim/bus/simcanbus.h"
 #include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "tests/support/replywait.h"
 #include "tests/support/simcanconnect.h"
 
 #include <QElapsedTimer>
@@ -39,12 +40,7 @@ bool waitUntil(const std::function<bool()> &cond, int ms)
 
 bool waitFinished(DriveReply *r, int ms = 3000)
 {
-    if (r->isFinished()) {
-        QCoreApplication::processEvents(); // deliver the queued finished()
-        return true;
-    }
-    QSignalSpy done(r, &DriveReply::finished);
-    return done.wait(ms);
+    return test::waitFinished(r, ms);
 }
 
 JogEnd jogEndOf(const QSignalSpy &spy)

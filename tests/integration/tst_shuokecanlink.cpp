@@ -7,8 +7,10 @@
 #include "core/drive/shuoke/shuokebackend.h"
 #include "core/drive/shuoke/shuokecantransport.h"
 #include "core/drive/shuoke/shuokedrive.h"
+#include "tests/support/driveprobe.h"
 #include "tests/support/shuokecanbench.h"
 #include "tests/support/shuokeserialbench.h"
+#include "tests/support/waitok.h"
 #include "sim/bus/simcanbus.h"
 
 #include <cmath>
@@ -16,13 +18,6 @@
 
 using namespace dd;
 using namespace dd::shuoke;
-
-#define WAIT_OK(reply)                                                                              \
-    do {                                                                                            \
-        DriveReply *r_ = (reply);                                                                   \
-        QVERIFY2(ShuokeSerialBench::wait(r_, 8000), "no answer in time");                           \
-        QVERIFY2(r_->ok(), qPrintable(r_->error().message));                                        \
-    } while (false)
 
 class TestShuokeCanLink : public QObject
 {
@@ -66,17 +61,10 @@ class TestShuokeCanLink : public QObject
 
     double channel(const QString &id, ShuokeDrive *drive = nullptr)
     {
-        DriveReply *r = (drive ? drive : m_drive)->readChannels({id});
-        if (!ShuokeSerialBench::wait(r, 5000) || !r->ok() || !r->samples().contains(id))
-            return std::nan("");
-        return r->samples().value(id);
+        return test::readChannel(drive ? drive : m_drive, id);
     }
 
-    bool running()
-    {
-        DriveReply *r = m_drive->readStatus();
-        return ShuokeSerialBench::wait(r, 5000) && r->ok() && r->status().running;
-    }
+    bool running() { return test::readRunning(m_drive); }
 
 private slots:
     void cleanup()

@@ -9,7 +9,9 @@
 #include "core/drive/shuoke/shuokedrive.h"
 #include "core/drive/shuoke/shuokeplctransport.h"
 #include "core/link/modbuslink.h"
+#include "tests/support/driveprobe.h"
 #include "tests/support/shuokeserialbench.h"
+#include "tests/support/waitok.h"
 #include "sim/bus/simserialbus.h"
 
 #include <cmath>
@@ -17,13 +19,6 @@
 
 using namespace dd;
 using namespace dd::shuoke;
-
-#define WAIT_OK(reply)                                                                              \
-    do {                                                                                            \
-        DriveReply *r_ = (reply);                                                                   \
-        QVERIFY2(ShuokeSerialBench::wait(r_, 8000), "no answer in time");                           \
-        QVERIFY2(r_->ok(), qPrintable(r_->error().message));                                        \
-    } while (false)
 
 class TestShuokePlcMode : public QObject
 {
@@ -69,19 +64,9 @@ class TestShuokePlcMode : public QObject
         return true;
     }
 
-    double channel(const QString &id)
-    {
-        DriveReply *r = m_drive->readChannels({id});
-        if (!ShuokeSerialBench::wait(r, 5000) || !r->ok() || !r->samples().contains(id))
-            return std::nan("");
-        return r->samples().value(id);
-    }
+    double channel(const QString &id) { return test::readChannel(m_drive, id); }
 
-    bool running()
-    {
-        DriveReply *r = m_drive->readStatus();
-        return ShuokeSerialBench::wait(r, 5000) && r->ok() && r->status().running;
-    }
+    bool running() { return test::readRunning(m_drive); }
 
 private slots:
     void cleanup()

@@ -8,7 +8,9 @@
 #include "core/drive/shuoke/shuokeserialtransport.h"
 #include "core/link/seriallink.h"
 #include "core/protocol/shuoke/shuokeascii.h"
+#include "tests/support/driveprobe.h"
 #include "tests/support/shuokeserialbench.h"
+#include "tests/support/waitok.h"
 #include "sim/bus/simserialbus.h"
 
 #include <cmath>
@@ -16,13 +18,6 @@
 
 using namespace dd;
 using namespace dd::shuoke;
-
-#define WAIT_OK(reply)                                                                              \
-    do {                                                                                            \
-        DriveReply *r_ = (reply);                                                                   \
-        QVERIFY2(ShuokeSerialBench::wait(r_, 8000), "no answer in time");                           \
-        QVERIFY2(r_->ok(), qPrintable(r_->error().message));                                        \
-    } while (false)
 
 class TestShuokeSerialAscii : public QObject
 {
@@ -58,13 +53,7 @@ class TestShuokeSerialAscii : public QObject
         return true;
     }
 
-    double channel(const QString &id)
-    {
-        DriveReply *r = m_drive->readChannels({id});
-        if (!ShuokeSerialBench::wait(r, 5000) || !r->ok() || !r->samples().contains(id))
-            return std::nan("");
-        return r->samples().value(id);
-    }
+    double channel(const QString &id) { return test::readChannel(m_drive, id); }
 
 private slots:
     void cleanup()

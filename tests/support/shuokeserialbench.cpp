@@ -7,8 +7,7 @@
 #include "core/link/traffictap.h"
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simserialbus.h"
-
-#include <QSignalSpy>
+#include "tests/support/replywait.h"
 
 namespace dd {
 
@@ -96,12 +95,7 @@ int ShuokeSerialBench::txCount() const
 
 bool ShuokeSerialBench::wait(DriveReply *reply, int timeoutMs)
 {
-    if (!reply)
-        return false;
-    if (reply->isFinished())
-        return true; // its results are complete; finished() is only queued
-    QSignalSpy spy(reply, &DriveReply::finished);
-    return spy.wait(timeoutMs);
+    return test::waitForReply(reply, timeoutMs);
 }
 
 } // namespace dd

@@ -24,19 +24,23 @@ qint64 nowUsSinceEpoch()
     return QDateTime::currentMSecsSinceEpoch() * 1000;
 }
 
+ModbusRequest request(int address, quint8 function, quint16 start, quint16 count, const QString &note)
+{
+    ModbusRequest q;
+    q.pdu.address = static_cast<quint8>(address);
+    q.pdu.function = function;
+    q.pdu.start = start;
+    q.pdu.count = count;
+    q.note = note;
+    return q;
+}
+
 QList<ModbusRequest> readRequests(int address, const QList<servomodbus::RegisterRange> &ranges,
                                   const QString &note)
 {
     QList<ModbusRequest> out;
-    for (const auto &r : ranges) {
-        ModbusRequest q;
-        q.pdu.address = static_cast<quint8>(address);
-        q.pdu.function = modbusrtu::ReadHoldingRegisters;
-        q.pdu.start = r.start;
-        q.pdu.count = r.count;
-        q.note = note;
-        out.append(q);
-    }
+    for (const auto &r : ranges)
+        out.append(request(address, modbusrtu::ReadHoldingRegisters, r.start, r.count, note));
     return out;
 }
 
@@ -57,13 +61,9 @@ QList<ModbusRequest> writeRequests(int address, const QList<servomodbus::Registe
 {
     QList<ModbusRequest> out;
     for (const auto &run : plan) {
-        ModbusRequest q;
-        q.pdu.address = static_cast<quint8>(address);
-        q.pdu.function = modbusrtu::WriteMultipleRegisters;
-        q.pdu.start = run.start;
-        q.pdu.count = static_cast<quint16>(run.values.size());
+        ModbusRequest q = request(address, modbusrtu::WriteMultipleRegisters, run.start,
+                                  static_cast<quint16>(run.values.size()), QStringLiteral("write parameters"));
         q.pdu.values = run.values;
-        q.note = QStringLiteral("write parameters");
         out.append(q);
     }
     return out;

@@ -37,23 +37,13 @@ class TestShuokeCanLink : public QObject
 
     bool setUp(const QList<SimShuokeDrive::Config> &drives, const QVariantMap &options = {})
     {
-        m_bench = std::make_unique<ShuokeCanBench>();
-        QString error;
-        if (!m_bench->start(&error)) {
-            qWarning() << error;
-            return false;
-        }
-        for (const SimShuokeDrive::Config &c : drives) {
-            SimShuokeCanDevice *d = m_bench->addDrive(c);
-            if (!m_sim)
-                m_sim = d;
-        }
         ConnectionSettings s;
         s.options = options;
-        if (!m_bench->connectHost(s, &error)) {
-            qWarning() << error;
+        m_bench = ShuokeCanBench::create(drives, s);
+        if (!m_bench)
             return false;
-        }
+        if (!m_sim)
+            m_sim = m_bench->devices().first();
         m_drive = m_bench->drive(drives.first().address);
         m_drive->setJogLeaseMs(60000);
         return true;

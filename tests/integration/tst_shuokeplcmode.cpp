@@ -40,25 +40,15 @@ class TestShuokePlcMode : public QObject
 
     bool setUp(const QList<SimShuokeDrive::Config> &drives, quint16 hostBase = 0x1000)
     {
-        m_bench = std::make_unique<ShuokeSerialBench>();
-        QString error;
-        if (!m_bench->start(&error)) {
-            qWarning() << error;
-            return false;
-        }
-        for (const SimShuokeDrive::Config &c : drives) {
-            SimShuokeSerialDevice *d = m_bench->addDrive(c, SimShuokeSerialDevice::Framing::Plc);
-            if (!m_sim)
-                m_sim = d;
-        }
         ConnectionSettings s;
         s.framing = QStringLiteral("plc");
         s.baud = 19200;
         s.options.insert(QStringLiteral("shuoke.plcBase"), QStringLiteral("0x%1").arg(hostBase, 0, 16));
-        if (!m_bench->connectHost(s, &error)) {
-            qWarning() << error;
+        m_bench = ShuokeSerialBench::create(drives, s, SimShuokeSerialDevice::Framing::Plc);
+        if (!m_bench)
             return false;
-        }
+        if (!m_sim)
+            m_sim = m_bench->devices().first();
         m_drive = m_bench->drive(drives.first().address);
         m_drive->setJogLeaseMs(60000);
         return true;

@@ -29,25 +29,18 @@ class TestShuokeSerialAscii : public QObject
 
     bool setUp(AsciiCheck hostCheck, AsciiCheck driveCheck, Model model = Model::M6505)
     {
-        m_bench = std::make_unique<ShuokeSerialBench>();
-        QString error;
-        if (!m_bench->start(&error)) {
-            qWarning() << error;
-            return false;
-        }
         SimShuokeDrive::Config c;
         c.model = model;
         c.address = 2;
         c.powerUpWindowMs = 0;
-        m_sim = m_bench->addDrive(c, SimShuokeSerialDevice::Framing::Ascii, driveCheck);
         ConnectionSettings s;
         s.framing = QStringLiteral("ascii");
         s.options.insert(QStringLiteral("shuoke.checksum"),
                          hostCheck == AsciiCheck::PlainSum ? QStringLiteral("sum") : QStringLiteral("twos-complement"));
-        if (!m_bench->connectHost(s, &error)) {
-            qWarning() << error;
+        m_bench = ShuokeSerialBench::create({c}, s, SimShuokeSerialDevice::Framing::Ascii, driveCheck);
+        if (!m_bench)
             return false;
-        }
+        m_sim = m_bench->devices().first();
         m_drive = m_bench->drive(2);
         m_drive->setJogLeaseMs(60000);
         return true;

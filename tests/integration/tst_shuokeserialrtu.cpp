@@ -41,21 +41,14 @@ class TestShuokeSerialRtu : public QObject
     // One simulated drive at address 1 and the host connected to it.
     bool setUp(const SimShuokeDrive::Config &c, const QVariantMap &options = {}, int baud = 9600)
     {
-        m_bench = std::make_unique<ShuokeSerialBench>();
-        QString error;
-        if (!m_bench->start(&error)) {
-            qWarning() << error;
-            return false;
-        }
-        m_sim = m_bench->addDrive(c);
         ConnectionSettings s;
         s.framing = QStringLiteral("rtu");
         s.baud = baud;
         s.options = options;
-        if (!m_bench->connectHost(s, &error)) {
-            qWarning() << error;
+        m_bench = ShuokeSerialBench::create({c}, s);
+        if (!m_bench)
             return false;
-        }
+        m_sim = m_bench->devices().first();
         m_drive = m_bench->drive(c.address);
         m_drive->setJogLeaseMs(60000);
         return m_drive != nullptr;

@@ -2,6 +2,7 @@
 
 #include "core/params/backupfile.h"
 #include "core/params/parameterdictionary.h"
+#include "tests/support/jsonmutation.h"
 #include "tests/support/testdata.h"
 
 #include <QJsonArray>
@@ -80,7 +81,7 @@ bool writeAll(const QString &path, const QByteArray &bytes)
     return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
 }
 
-using Mutation = std::function<void(QJsonObject &)>;
+using Mutation = test::JsonMutation;
 
 QByteArray mutated(const QByteArray &json, const Mutation &m)
 {
@@ -89,16 +90,7 @@ QByteArray mutated(const QByteArray &json, const Mutation &m)
     return QJsonDocument(o).toJson();
 }
 
-Mutation onParameter(int i, std::function<void(QJsonObject &)> f)
-{
-    return [i, f](QJsonObject &root) {
-        QJsonArray a = root.value("parameters").toArray();
-        QJsonObject e = a.at(i).toObject();
-        f(e);
-        a[i] = e;
-        root["parameters"] = a;
-    };
-}
+const auto onParameter = test::onParameterEntry;
 
 // Recomputes the checksum, so that a mutation reaches the checks after it.
 Mutation rehashed(const Mutation &m)

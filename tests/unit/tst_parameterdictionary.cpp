@@ -1,6 +1,7 @@
 #include <QtTest>
 
 #include "core/params/parameterdictionary.h"
+#include "tests/support/jsonmutation.h"
 #include "tests/support/testdata.h"
 
 #include <QJsonArray>
@@ -45,19 +46,10 @@ QByteArray toBytes(const QJsonObject &o)
     return QJsonDocument(o).toJson();
 }
 
-using Mutation = std::function<void(QJsonObject &)>;
+using Mutation = test::JsonMutation;
 
 // Applies f to parameters[i].
-Mutation onEntry(int i, std::function<void(QJsonObject &)> f)
-{
-    return [i, f](QJsonObject &root) {
-        QJsonArray a = root.value("parameters").toArray();
-        QJsonObject e = a.at(i).toObject();
-        f(e);
-        a[i] = e;
-        root["parameters"] = a;
-    };
-}
+const auto onEntry = test::onParameterEntry;
 
 // Replaces the text of a JSON number: QJsonObject cannot hold numbers beyond a double.
 QByteArray withRawNumber(const QJsonObject &root, const QByteArray &placeholder, const QByteArray &number)

@@ -2036,10 +2036,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>P%1 = %2 超出范围：servo-can 参数为 -32768 到 32767 的 16 位数值。未写入任何数据。</translation>
     </message>
     <message>
-        <source>P%1: wrote %2 but the drive reads back %3 (%4 attempts). The drive may limit this parameter or not accept writes in its present state.</source>
-        <translation>P%1：写入 %2，但回读为 %3（尝试 %4 次）。驱动器可能限制了该参数，或在当前状态下不接受写入。</translation>
-    </message>
-    <message>
         <source>A servo-can drive has no channel &quot;%1&quot;.</source>
         <translation>servo-can 驱动器没有通道“%1”。</translation>
     </message>
@@ -2074,10 +2070,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>%1 reads of P%2 gave no value often enough to trust it.</source>
         <translation>读取 P%2 共 %1 次，没有一个值出现足够多次，无法确认。</translation>
-    </message>
-    <message>
-        <source>P%1 was sent but could not be read back, so whether the drive took it is unknown: %2</source>
-        <translation>P%1 已发送但无法回读，驱动器是否接受未知：%2</translation>
     </message>
     <message>
         <source>The stop command was sent, but station %1 has sent no heartbeat since (%2 ms): it may not have received it.</source>
@@ -2234,16 +2226,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>未写入任何数据。</translation>
     </message>
     <message>
-        <source>Wrote %1, the drive reports %2.</source>
-        <translation>写入 %1，驱动器报告 %2。</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n parameter(s) read back with another value than written (first: PA%1: %2). The drive may limit the value, or the parameter may be read-only.</source>
-        <translation>
-            <numerusform>%n 个参数的回读值与写入值不同（第一个：PA%1：%2）。驱动器可能限制了该值，或该参数为只读。</numerusform>
-        </translation>
-    </message>
-    <message>
         <source>Unknown EE operation.</source>
         <translation>未知的 EE 操作。</translation>
     </message>
@@ -2262,10 +2244,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>PA%1..PA%2: %3</source>
         <translation>PA%1..PA%2：%3</translation>
-    </message>
-    <message>
-        <source>Whether the drive took the value is unknown: read it again.</source>
-        <translation>驱动器是否接受该值未知：请重新读取。</translation>
     </message>
 </context>
 <context>
@@ -2452,28 +2430,8 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1 必须在 %2..%3 之间；%4 未发送。</translation>
     </message>
     <message>
-        <source>Not readable: the drive cannot report this setting; %1 is kept as the last value written.</source>
-        <translation>不可读：驱动器无法报告该设置；保留最后写入的值 %1。</translation>
-    </message>
-    <message>
-        <source>Written, but reading it back failed: %1</source>
-        <translation>已写入，但回读失败：%1</translation>
-    </message>
-    <message>
-        <source>The drive reports %1 after %2 was written.</source>
-        <translation>写入 %2 后，驱动器报告的值为 %1。</translation>
-    </message>
-    <message>
-        <source>Parameter %1: %2</source>
-        <translation>参数 %1：%2</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
-    </message>
-    <message>
-        <source>Whether the drive took the value is unknown: read it again.</source>
-        <translation>驱动器是否接受该值未知：请重新读取。</translation>
     </message>
 </context>
 <context>
@@ -5074,6 +5032,45 @@ Servo enable on or off.
     <message>
         <source>pulses</source>
         <translation>脉冲</translation>
+    </message>
+</context>
+<context>
+    <name>dd::WriteVerification</name>
+    <message>
+        <source>Not readable: the drive cannot report this setting; %1 is kept as the last value written.</source>
+        <translation>不可读：驱动器无法报告该设置；保留最后写入的值 %1。</translation>
+    </message>
+    <message>
+        <source>The drive did not take the value: it reads back %1.</source>
+        <translation>驱动器未接受该值：回读为 %1。</translation>
+    </message>
+    <message>
+        <source>Wrote %1, but the drive reads back %2.</source>
+        <translation>写入 %1，但驱动器回读为 %2。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Written %n time(s).</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The write was not confirmed and could not be read back, so whether the drive took the value is unknown: %1 Read it again.</source>
+        <translation>写入未得到确认，也无法回读，驱动器是否接受该值未知：%1 请重新读取。</translation>
+    </message>
+    <message>
+        <source>Written, but it could not be read back: %1</source>
+        <translation>已写入，但无法回读：%1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) read back with another value than written (first: %1: %2). The drive may limit the value or not accept it in its present state, or the parameter may be read-only.</source>
+        <translation>
+            <numerusform>%n 个参数的回读值与写入值不同（第一个：%1：%2）。驱动器可能限制了该值或在当前状态下不接受它，或该参数为只读。</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -72,6 +72,17 @@ struct ParameterWrite
     qint64 value = 0;
 };
 
+// How one parameter write ended; WriteVerification decides it the same way for every family.
+enum class WriteOutcome {
+    Verified,        // read back equal to the value written
+    Mismatch,        // the drive took the write, but reads back another value
+    NotWritten,      // refused by the drive or never sent, or unanswered and the read-back
+                     // shows another value: the drive did not take it
+    Unknown,         // the write was not confirmed and could not be read back
+    ReadBackFailed,  // the drive took the write, but the read-back got no (valid) answer
+    WriteOnly        // written; a write-only setting, which nothing can read back
+};
+
 struct ParameterWriteResult
 {
     int index = 0;
@@ -83,6 +94,7 @@ struct ParameterWriteResult
     bool readBackFailed = false; // no answer to the read-back (nor to the write, if !written):
                                  // what the drive holds is unknown
     QString error;             // translated reason when !written or !verified
+    WriteOutcome outcome = WriteOutcome::NotWritten; // what the fields above add up to
 };
 
 // How a jog ended and what brings the axis to rest (Drive::jogEnded(), the "stoppedBy" info

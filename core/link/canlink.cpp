@@ -1,6 +1,7 @@
 #include "core/link/canlink.h"
 
 #include "core/link/traffictap.h"
+#include "core/link/urgentqueue.h"
 
 #include <QCanBus>
 #include <QCanBusFrame>
@@ -112,14 +113,7 @@ LinkReply *CanLink::request(const CanRequest &request)
         reply->finishWithError({ErrorCode::LinkClosed, tr("The CAN link is not open.")});
         return reply;
     }
-    // Urgent requests go ahead of the ordinary ones waiting, in the order they came.
-    qsizetype at = m_waiting.size();
-    if (request.urgent) {
-        at = 0;
-        while (at < m_waiting.size() && m_waiting.at(at).request.urgent)
-            ++at;
-    }
-    m_waiting.insert(at, Pending{request, reply, 0, 0, 0});
+    enqueueByUrgency(m_waiting, Pending{request, reply, 0, 0, 0});
     pump();
     return reply;
 }

@@ -2,6 +2,7 @@
 
 #include "core/common/timerslack.h"
 #include "core/link/traffictap.h"
+#include "core/link/urgentqueue.h"
 #include "core/protocol/modbus/crc16.h"
 
 #include <QLoggingCategory>
@@ -176,14 +177,7 @@ LinkReply *ModbusLink::Private::enqueue(const ModbusRequest &request)
                                                                                : r.pdu.values.size())});
         return reply;
     }
-    // Urgent requests go ahead of the ordinary ones waiting, in the order they came.
-    qsizetype at = m_queue.size();
-    if (r.urgent) {
-        at = 0;
-        while (at < m_queue.size() && m_queue.at(at).request.urgent)
-            ++at;
-    }
-    m_queue.insert(at, Pending{r, reply, 0});
+    enqueueByUrgency(m_queue, Pending{r, reply, 0});
     if (m_state == State::Idle)
         scheduleNext();
     return reply;

@@ -2,6 +2,7 @@
 
 #include "core/common/timerslack.h"
 #include "core/link/traffictap.h"
+#include "core/link/urgentqueue.h"
 
 #include <QCoreApplication>
 #include <QLoggingCategory>
@@ -112,14 +113,7 @@ LinkReply *SerialLink::send(const SerialRequest &request)
         reply->finishWithError({ErrorCode::LinkClosed, tr("The serial port is not open.")});
         return reply;
     }
-    // Urgent requests go ahead of the ordinary ones waiting, in the order they came.
-    qsizetype at = m_queue.size();
-    if (request.urgent) {
-        at = 0;
-        while (at < m_queue.size() && m_queue.at(at).request.urgent)
-            ++at;
-    }
-    m_queue.insert(at, Pending{request, reply, 0});
+    enqueueByUrgency(m_queue, Pending{request, reply, 0});
     if (m_state == State::Idle)
         scheduleNext();
     return reply;

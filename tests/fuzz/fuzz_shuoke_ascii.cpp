@@ -16,9 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fuzz::initialise();
     fuzz::FuzzInput in(data, size);
     const quint8 control = in.byte();
-    AsciiOptions options;
-    options.check = (control & 1) ? AsciiCheck::TwosComplement : AsciiCheck::PlainSum;
-    options.acceptLengthPlusOne = control & 2;
+    const AsciiOptions options = fuzz::asciiOptions(control);
     const QByteArray line = (control & 4) ? fuzz::withRepairedAsciiCheck(in.rest(), options.check) : in.rest();
 
     const Decoded<Frame> d = decodeAscii(line, options);

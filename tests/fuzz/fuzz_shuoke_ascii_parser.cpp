@@ -35,9 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fuzz::initialise();
     fuzz::FuzzInput in(data, size);
     const quint8 control = in.byte();
-    AsciiOptions options;
-    options.check = (control & 1) ? AsciiCheck::TwosComplement : AsciiCheck::PlainSum;
-    options.acceptLengthPlusOne = control & 2;
+    const AsciiOptions options = fuzz::asciiOptions(control);
     const quint8 capacitySelector = in.byte();
     const qsizetype chunk = 1 + in.byte();
     const QByteArray stream = (control & 4) ? fuzz::asciiSegments(in, options.check) : in.rest();

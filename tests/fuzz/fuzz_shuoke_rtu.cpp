@@ -18,10 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fuzz::initialise();
     fuzz::FuzzInput in(data, size);
     const quint8 control = in.byte();
-    RtuOptions options;
-    options.acceptLengthWithCrc = control & 1;
-    options.acceptFixedLength = control & 2;
-    options.skipHandshakeCrc = control & 4;
+    const RtuOptions options = fuzz::rtuOptions(control);
     const QByteArray bytes = (control & 8) ? fuzz::withRepairedCrc(in.rest()) : in.rest();
 
     RtuLayout layout = static_cast<RtuLayout>(0xFF);

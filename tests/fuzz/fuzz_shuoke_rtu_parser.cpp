@@ -55,10 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fuzz::initialise();
     fuzz::FuzzInput in(data, size);
     const quint8 control = in.byte();
-    RtuOptions options;
-    options.acceptLengthWithCrc = control & 1;
-    options.acceptFixedLength = control & 2;
-    options.skipHandshakeCrc = control & 4;
+    const RtuOptions options = fuzz::rtuOptions(control);
     const bool useFeed = control & 8;
     const quint8 capacitySelector = in.byte();
     const qsizetype chunk = 1 + in.byte();

@@ -7,11 +7,33 @@
 #include "core/protocol/shuoke/shuokeascii.h"
 #include "core/protocol/shuoke/shuokecommands.h"
 #include "core/protocol/shuoke/shuokeframe.h"
+#include "core/protocol/shuoke/shuokertu.h"
 #include "core/protocol/shuoke/shuokevalues.h"
 
 #include <cctype>
 
 namespace dd::fuzz {
+
+// The RTU receive options of a control byte: bit0 acceptLengthWithCrc, bit1
+// acceptFixedLength, bit2 skipHandshakeCrc.
+inline shuoke::RtuOptions rtuOptions(quint8 control)
+{
+    shuoke::RtuOptions options;
+    options.acceptLengthWithCrc = control & 1;
+    options.acceptFixedLength = control & 2;
+    options.skipHandshakeCrc = control & 4;
+    return options;
+}
+
+// The ASCII options of a control byte: bit0 check = two's complement, bit1
+// acceptLengthPlusOne.
+inline shuoke::AsciiOptions asciiOptions(quint8 control)
+{
+    shuoke::AsciiOptions options;
+    options.check = (control & 1) ? shuoke::AsciiCheck::TwosComplement : shuoke::AsciiCheck::PlainSum;
+    options.acceptLengthPlusOne = control & 2;
+    return options;
+}
 
 // An ASCII line with its check byte (the two hex digits before the terminator) recomputed,
 // when everything between ':' and them is hex; otherwise the line as it is.

@@ -8,6 +8,7 @@
 #include "core/drive/parametertransfer.h"
 #include "core/params/backupfile.h"
 #include "core/params/parameterdictionary.h"
+#include "tests/support/replywait.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -19,15 +20,7 @@
 namespace dd::faultcheck {
 
 // Waits for a reply; false if it did not finish within `ms` (the operation hangs).
-inline bool waitFinished(DriveReply *r, int ms)
-{
-    if (r->isFinished()) {
-        QCoreApplication::processEvents(); // deliver the queued finished()
-        return true;
-    }
-    QSignalSpy done(r, &DriveReply::finished);
-    return done.wait(ms);
-}
+using test::waitFinished;
 
 inline bool waitUntil(const std::function<bool()> &cond, int ms)
 {

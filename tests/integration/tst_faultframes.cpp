@@ -287,7 +287,12 @@ void TestFaultFrames::refusedReadBackLeavesTheWriteUnconfirmed()
     QVERIFY(w.written);
     QVERIFY(!w.verified);
     QVERIFY(!w.error.isEmpty());
+    QVERIFY(w.readBackFailed);
+    QCOMPARE(w.outcome, WriteOutcome::ReadBackFailed);
     QCOMPARE(r->error().code, ErrorCode::DriveException);
+    // The batch's error names the parameter (before WriteVerification: the bare read error).
+    QVERIFY2(r->error().message.startsWith(QStringLiteral("PA20: Written, but it could not be read back: ")),
+             qPrintable(r->error().message));
 }
 
 QTEST_GUILESS_MAIN(TestFaultFrames)

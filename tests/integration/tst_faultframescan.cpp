@@ -14,6 +14,7 @@
 #include "sim/bus/simcanbus.h"
 #include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "tests/support/simcanconnect.h"
 
 #include <memory>
 
@@ -111,11 +112,8 @@ void TestFaultFramesCan::initTestCase()
     QVERIFY(m_hub->start());
     m_bus = std::make_unique<SimCanBus>();
     m_dev = static_cast<MisbehavingCanDrive *>(m_bus->addDevice(std::make_unique<MisbehavingCanDrive>(3)));
-    const Error e = m_bus->open(QStringLiteral("virtualcan"), m_hub->interfaceName(0));
-    QVERIFY2(!e.isError(), qPrintable(e.message));
-    QSignalSpy connected(m_bus.get(), &SimCanBus::connected);
-    QVERIFY(m_bus->isConnected() || connected.wait(5000));
-    VirtualCanHub::setLowDelay(m_bus->canDevice());
+    const QString busError = test::connectSimCanBus(m_bus.get(), m_hub->interfaceName(0));
+    QVERIFY2(busError.isEmpty(), qPrintable(busError));
     ConnectionSettings cs;
     cs.family = Family::ServoCan;
     cs.can = QStringLiteral("virtualcan:") + m_hub->interfaceName(0);
@@ -167,6 +165,11 @@ void TestFaultFramesCan::badReplies()
     QVERIFY(!w->writeResults().first().verified);
     QVERIFY2(w->writeResults().first().error.contains(QStringLiteral("could not be read back")),
              qPrintable(w->writeResults().first().error));
+    // Unknown, not a mismatch: the batch keeps the read-back's own error (it was
+    // VerifyMismatch before WriteVerification) and names the parameter.
+    QCOMPARE(w->writeResults().first().outcome, WriteOutcome::Unknown);
+    QCOMPARE(errorCodeName(w->error().code), errorCodeName(ErrorCode::Timeout));
+    QVERIFY2(w->error().message.startsWith(QStringLiteral("P20: ")), qPrintable(w->error().message));
     // Recovery.
     m_dev->mode = Misbehaviour::None;
     r = d->readParameters({10, 11, 12});

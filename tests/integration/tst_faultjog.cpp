@@ -17,6 +17,8 @@
 #include "sim/bus/simcanbus.h"
 #include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "tests/support/replywait.h"
+#include "tests/support/simcanconnect.h"
 
 #include <QElapsedTimer>
 
@@ -38,12 +40,7 @@ bool waitUntil(const std::function<bool()> &cond, int ms)
 
 bool waitFinished(DriveReply *r, int ms = 3000)
 {
-    if (r->isFinished()) {
-        QCoreApplication::processEvents(); // deliver the queued finished()
-        return true;
-    }
-    QSignalSpy done(r, &DriveReply::finished);
-    return done.wait(ms);
+    return test::waitFinished(r, ms);
 }
 
 JogEnd jogEndOf(const QSignalSpy &spy)
@@ -85,11 +82,8 @@ void TestFaultJog::initTestCase()
     m_bus = std::make_unique<SimCanBus>();
     m_sim1 = static_cast<SimServoCanDrive *>(m_bus->addDevice(std::make_unique<SimServoCanDrive>(1)));
     m_sim7 = static_cast<SimServoCanDrive *>(m_bus->addDevice(std::make_unique<SimServoCanDrive>(7)));
-    const Error e = m_bus->open(QStringLiteral("virtualcan"), m_hub->interfaceName(1));
-    QVERIFY2(!e.isError(), qPrintable(e.message));
-    QSignalSpy connected(m_bus.get(), &SimCanBus::connected);
-    QVERIFY(m_bus->isConnected() || connected.wait(5000));
-    VirtualCanHub::setLowDelay(m_bus->canDevice());
+    const QString busError = test::connectSimCanBus(m_bus.get(), m_hub->interfaceName(1));
+    QVERIFY2(busError.isEmpty(), qPrintable(busError));
 
     m_backend = std::make_unique<ServoCanBackend>();
     ConnectionSettings cs;

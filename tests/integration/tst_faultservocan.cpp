@@ -22,6 +22,7 @@
 #include "sim/bus/simcanbus.h"
 #include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "tests/support/simcanconnect.h"
 
 #include <QTemporaryDir>
 
@@ -74,11 +75,8 @@ void TestFaultServoCan::init()
     QVERIFY(m_hub->start());
     m_bus = std::make_unique<SimCanBus>();
     m_sim = static_cast<SimServoCanDrive *>(m_bus->addDevice(std::make_unique<SimServoCanDrive>(1)));
-    const Error e = m_bus->open(QStringLiteral("virtualcan"), m_hub->interfaceName(0));
-    QVERIFY2(!e.isError(), qPrintable(e.message));
-    QSignalSpy connected(m_bus.get(), &SimCanBus::connected);
-    QVERIFY(m_bus->isConnected() || connected.wait(5000));
-    VirtualCanHub::setLowDelay(m_bus->canDevice());
+    const QString busError = test::connectSimCanBus(m_bus.get(), m_hub->interfaceName(0));
+    QVERIFY2(busError.isEmpty(), qPrintable(busError));
     ConnectionSettings cs;
     cs.family = Family::ServoCan;
     cs.can = QStringLiteral("virtualcan:") + m_hub->interfaceName(0); // timeout 50 ms, 2 retries

@@ -66,26 +66,19 @@ private:
 
 bool TestFaultShuoke::setUp(int timeoutMs)
 {
-    m_bench = std::make_unique<ShuokeSerialBench>();
-    QString error;
-    if (!m_bench->start(&error)) {
-        qWarning() << error;
-        return false;
-    }
     SimShuokeDrive::Config c;
     c.powerUpWindowMs = 0;
     c.minCommandGapMs = 0;
     c.baudCode = baudCodeForRate(38400);
-    m_sim = m_bench->addDrive(c);
     ConnectionSettings s;
     s.framing = QStringLiteral("rtu");
     s.baud = 38400;
     s.timeoutMs = timeoutMs;
     s.options = {{QStringLiteral("shuoke.minGapMs"), 0}, {QStringLiteral("shuoke.model"), QStringLiteral("M6505")}};
-    if (!m_bench->connectHost(s, &error)) {
-        qWarning() << error;
+    m_bench = ShuokeSerialBench::create({c}, s);
+    if (!m_bench)
         return false;
-    }
+    m_sim = m_bench->devices().first();
     m_drive = m_bench->drive(1);
     return m_drive != nullptr;
 }

@@ -7,6 +7,7 @@
 #include "core/protocol/modbus/modbusrtu.h"
 #include "core/protocol/modbus/modbusrtuparser.h"
 #include "sim/bus/ptyendpoint.h"
+#include "tests/support/replywait.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -88,16 +89,7 @@ private:
 // distort every timing this test is about.
 bool waitFinished(LinkReply *r, int ms = 5000)
 {
-    if (r->isFinished())
-        return true;
-    QEventLoop loop;
-    QTimer guard;
-    guard.setSingleShot(true);
-    QObject::connect(&guard, &QTimer::timeout, &loop, &QEventLoop::quit);
-    QObject::connect(r, &LinkReply::finished, &loop, &QEventLoop::quit);
-    guard.start(ms);
-    loop.exec();
-    return r->isFinished();
+    return test::waitInEventLoop(r, ms);
 }
 
 } // namespace

@@ -318,6 +318,9 @@ void TestServoCanDrive::refusedWriteIsAMismatch()
     QVERIFY(!w.verified);
     QCOMPARE(w.readBack, qint64(before));
     QVERIFY(!w.error.isEmpty());
+    QCOMPARE(w.outcome, WriteOutcome::Mismatch);
+    QCOMPARE(w.error, QStringLiteral("Wrote 99, but the drive reads back %1. Written 7 time(s).").arg(before));
+    QVERIFY2(r->error().message.contains(QStringLiteral("(first: P30: Wrote 99")), qPrintable(r->error().message));
     QCOMPARE(sentFrames(sc::Command::Write).size(), 1 + 7); // P31 once, P30 1 + retries (6)
 }
 

@@ -13,6 +13,7 @@
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simserialbus.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
+#include "tests/support/replywait.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -26,16 +27,7 @@ namespace {
 template <typename R>
 bool waitDone(R *r, int ms = 10000)
 {
-    if (r->isFinished())
-        return true;
-    QEventLoop loop;
-    QTimer guard;
-    guard.setSingleShot(true);
-    QObject::connect(&guard, &QTimer::timeout, &loop, &QEventLoop::quit);
-    QObject::connect(r, &R::finished, &loop, &QEventLoop::quit);
-    guard.start(ms);
-    loop.exec();
-    return r->isFinished();
+    return test::waitInEventLoop(r, ms);
 }
 
 void spin(int ms)

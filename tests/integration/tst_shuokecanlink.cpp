@@ -7,8 +7,10 @@
 #include "core/drive/shuoke/shuokebackend.h"
 #include "core/drive/shuoke/shuokecantransport.h"
 #include "core/drive/shuoke/shuokedrive.h"
+#include "tests/support/driveprobe.h"
 #include "tests/support/shuokecanbench.h"
 #include "tests/support/shuokeserialbench.h"
+#include "tests/support/waitok.h"
 #include "sim/bus/simcanbus.h"
 
 #include <cmath>
@@ -16,13 +18,6 @@
 
 using namespace dd;
 using namespace dd::shuoke;
-
-#define WAIT_OK(reply)                                                                              \
-    do {                                                                                            \
-        DriveReply *r_ = (reply);                                                                   \
-        QVERIFY2(ShuokeSerialBench::wait(r_, 8000), "no answer in time");                           \
-        QVERIFY2(r_->ok(), qPrintable(r_->error().message));                                        \
-    } while (false)
 
 class TestShuokeCanLink : public QObject
 {
@@ -42,23 +37,13 @@ class TestShuokeCanLink : public QObject
 
     bool setUp(const QList<SimShuokeDrive::Config> &drives, const QVariantMap &options = {})
     {
-        m_bench = std::make_unique<ShuokeCanBench>();
-        QString error;
-        if (!m_bench->start(&error)) {
-            qWarning() << error;
-            return false;
-        }
-        for (const SimShuokeDrive::Config &c : drives) {
-            SimShuokeCanDevice *d = m_bench->addDrive(c);
-            if (!m_sim)
-                m_sim = d;
-        }
         ConnectionSettings s;
         s.options = options;
-        if (!m_bench->connectHost(s, &error)) {
-            qWarning() << error;
+        m_bench = ShuokeCanBench::create(drives, s);
+        if (!m_bench)
             return false;
-        }
+        if (!m_sim)
+            m_sim = m_bench->devices().first();
         m_drive = m_bench->drive(drives.first().address);
         m_drive->setJogLeaseMs(60000);
         return true;
@@ -66,17 +51,10 @@ class TestShuokeCanLink : public QObject
 
     double channel(const QString &id, ShuokeDrive *drive = nullptr)
     {
-        DriveReply *r = (drive ? drive : m_drive)->readChannels({id});
-        if (!ShuokeSerialBench::wait(r, 5000) || !r->ok() || !r->samples().contains(id))
-            return std::nan("");
-        return r->samples().value(id);
+        return test::readChannel(drive ? drive : m_drive, id);
     }
 
-    bool running()
-    {
-        DriveReply *r = m_drive->readStatus();
-        return ShuokeSerialBench::wait(r, 5000) && r->ok() && r->status().running;
-    }
+    bool running() { return test::readRunning(m_drive); }
 
 private slots:
     void cleanup()

@@ -9,7 +9,9 @@
 #include "core/drive/shuoke/shuokedrive.h"
 #include "core/drive/shuoke/shuokeplctransport.h"
 #include "core/link/modbuslink.h"
+#include "tests/support/driveprobe.h"
 #include "tests/support/shuokeserialbench.h"
+#include "tests/support/waitok.h"
 #include "sim/bus/simserialbus.h"
 
 #include <cmath>
@@ -17,13 +19,6 @@
 
 using namespace dd;
 using namespace dd::shuoke;
-
-#define WAIT_OK(reply)                                                                              \
-    do {                                                                                            \
-        DriveReply *r_ = (reply);                                                                   \
-        QVERIFY2(ShuokeSerialBench::wait(r_, 8000), "no answer in time");                           \
-        QVERIFY2(r_->ok(), qPrintable(r_->error().message));                                        \
-    } while (false)
 
 class TestShuokePlcMode : public QObject
 {
@@ -45,43 +40,23 @@ class TestShuokePlcMode : public QObject
 
     bool setUp(const QList<SimShuokeDrive::Config> &drives, quint16 hostBase = 0x1000)
     {
-        m_bench = std::make_unique<ShuokeSerialBench>();
-        QString error;
-        if (!m_bench->start(&error)) {
-            qWarning() << error;
-            return false;
-        }
-        for (const SimShuokeDrive::Config &c : drives) {
-            SimShuokeSerialDevice *d = m_bench->addDrive(c, SimShuokeSerialDevice::Framing::Plc);
-            if (!m_sim)
-                m_sim = d;
-        }
         ConnectionSettings s;
         s.framing = QStringLiteral("plc");
         s.baud = 19200;
         s.options.insert(QStringLiteral("shuoke.plcBase"), QStringLiteral("0x%1").arg(hostBase, 0, 16));
-        if (!m_bench->connectHost(s, &error)) {
-            qWarning() << error;
+        m_bench = ShuokeSerialBench::create(drives, s, SimShuokeSerialDevice::Framing::Plc);
+        if (!m_bench)
             return false;
-        }
+        if (!m_sim)
+            m_sim = m_bench->devices().first();
         m_drive = m_bench->drive(drives.first().address);
         m_drive->setJogLeaseMs(60000);
         return true;
     }
 
-    double channel(const QString &id)
-    {
-        DriveReply *r = m_drive->readChannels({id});
-        if (!ShuokeSerialBench::wait(r, 5000) || !r->ok() || !r->samples().contains(id))
-            return std::nan("");
-        return r->samples().value(id);
-    }
+    double channel(const QString &id) { return test::readChannel(m_drive, id); }
 
-    bool running()
-    {
-        DriveReply *r = m_drive->readStatus();
-        return ShuokeSerialBench::wait(r, 5000) && r->ok() && r->status().running;
-    }
+    bool running() { return test::readRunning(m_drive); }
 
 private slots:
     void cleanup()

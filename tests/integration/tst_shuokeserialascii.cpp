@@ -8,7 +8,9 @@
 #include "core/drive/shuoke/shuokeserialtransport.h"
 #include "core/link/seriallink.h"
 #include "core/protocol/shuoke/shuokeascii.h"
+#include "tests/support/driveprobe.h"
 #include "tests/support/shuokeserialbench.h"
+#include "tests/support/waitok.h"
 #include "sim/bus/simserialbus.h"
 
 #include <cmath>
@@ -16,13 +18,6 @@
 
 using namespace dd;
 using namespace dd::shuoke;
-
-#define WAIT_OK(reply)                                                                              \
-    do {                                                                                            \
-        DriveReply *r_ = (reply);                                                                   \
-        QVERIFY2(ShuokeSerialBench::wait(r_, 8000), "no answer in time");                           \
-        QVERIFY2(r_->ok(), qPrintable(r_->error().message));                                        \
-    } while (false)
 
 class TestShuokeSerialAscii : public QObject
 {
@@ -34,37 +29,24 @@ class TestShuokeSerialAscii : public QObject
 
     bool setUp(AsciiCheck hostCheck, AsciiCheck driveCheck, Model model = Model::M6505)
     {
-        m_bench = std::make_unique<ShuokeSerialBench>();
-        QString error;
-        if (!m_bench->start(&error)) {
-            qWarning() << error;
-            return false;
-        }
         SimShuokeDrive::Config c;
         c.model = model;
         c.address = 2;
         c.powerUpWindowMs = 0;
-        m_sim = m_bench->addDrive(c, SimShuokeSerialDevice::Framing::Ascii, driveCheck);
         ConnectionSettings s;
         s.framing = QStringLiteral("ascii");
         s.options.insert(QStringLiteral("shuoke.checksum"),
                          hostCheck == AsciiCheck::PlainSum ? QStringLiteral("sum") : QStringLiteral("twos-complement"));
-        if (!m_bench->connectHost(s, &error)) {
-            qWarning() << error;
+        m_bench = ShuokeSerialBench::create({c}, s, SimShuokeSerialDevice::Framing::Ascii, driveCheck);
+        if (!m_bench)
             return false;
-        }
+        m_sim = m_bench->devices().first();
         m_drive = m_bench->drive(2);
         m_drive->setJogLeaseMs(60000);
         return true;
     }
 
-    double channel(const QString &id)
-    {
-        DriveReply *r = m_drive->readChannels({id});
-        if (!ShuokeSerialBench::wait(r, 5000) || !r->ok() || !r->samples().contains(id))
-            return std::nan("");
-        return r->samples().value(id);
-    }
+    double channel(const QString &id) { return test::readChannel(m_drive, id); }
 
 private slots:
     void cleanup()

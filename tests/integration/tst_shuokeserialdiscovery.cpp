@@ -33,25 +33,14 @@ class TestShuokeSerialDiscovery : public QObject
     bool start(const QList<SimShuokeDrive::Config> &drives, const QString &framing = QStringLiteral("rtu"),
                const QVariantMap &options = {})
     {
-        m_bench = std::make_unique<ShuokeSerialBench>();
-        QString error;
-        if (!m_bench->start(&error)) {
-            qWarning() << error;
-            return false;
-        }
         const auto f = framing == QLatin1String("ascii") ? SimShuokeSerialDevice::Framing::Ascii
                                                          : SimShuokeSerialDevice::Framing::Rtu;
-        for (const SimShuokeDrive::Config &c : drives)
-            m_bench->addDrive(c, f);
         ConnectionSettings s;
         s.framing = framing;
         s.baud = 9600;
         s.options = options;
-        if (!m_bench->connectHost(s, &error)) {
-            qWarning() << error;
-            return false;
-        }
-        return true;
+        m_bench = ShuokeSerialBench::create(drives, s, f);
+        return m_bench != nullptr;
     }
 
     QList<DiscoveredDrive> scan(const ScanOptions &o, int *skipped = nullptr, Error *error = nullptr)

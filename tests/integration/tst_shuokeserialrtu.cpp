@@ -10,7 +10,9 @@
 #include "core/link/linkreply.h"
 #include "core/link/seriallink.h"
 #include "core/protocol/shuoke/shuokertu.h"
+#include "tests/support/driveprobe.h"
 #include "tests/support/shuokeserialbench.h"
+#include "tests/support/waitok.h"
 #include "sim/bus/simserialbus.h"
 
 #include <cmath>
@@ -18,13 +20,6 @@
 
 using namespace dd;
 using namespace dd::shuoke;
-
-#define WAIT_OK(reply)                                                                              \
-    do {                                                                                            \
-        DriveReply *r_ = (reply);                                                                   \
-        QVERIFY2(ShuokeSerialBench::wait(r_, 8000), "no answer in time");                           \
-        QVERIFY2(r_->ok(), qPrintable(r_->error().message));                                        \
-    } while (false)
 
 class TestShuokeSerialRtu : public QObject
 {
@@ -46,39 +41,22 @@ class TestShuokeSerialRtu : public QObject
     // One simulated drive at address 1 and the host connected to it.
     bool setUp(const SimShuokeDrive::Config &c, const QVariantMap &options = {}, int baud = 9600)
     {
-        m_bench = std::make_unique<ShuokeSerialBench>();
-        QString error;
-        if (!m_bench->start(&error)) {
-            qWarning() << error;
-            return false;
-        }
-        m_sim = m_bench->addDrive(c);
         ConnectionSettings s;
         s.framing = QStringLiteral("rtu");
         s.baud = baud;
         s.options = options;
-        if (!m_bench->connectHost(s, &error)) {
-            qWarning() << error;
+        m_bench = ShuokeSerialBench::create({c}, s);
+        if (!m_bench)
             return false;
-        }
+        m_sim = m_bench->devices().first();
         m_drive = m_bench->drive(c.address);
         m_drive->setJogLeaseMs(60000);
         return m_drive != nullptr;
     }
 
-    double channel(const QString &id)
-    {
-        DriveReply *r = m_drive->readChannels({id});
-        if (!ShuokeSerialBench::wait(r, 5000) || !r->ok() || !r->samples().contains(id))
-            return std::nan("");
-        return r->samples().value(id);
-    }
+    double channel(const QString &id) { return test::readChannel(m_drive, id); }
 
-    bool running()
-    {
-        DriveReply *r = m_drive->readStatus();
-        return ShuokeSerialBench::wait(r, 5000) && r->ok() && r->status().running;
-    }
+    bool running() { return test::readRunning(m_drive); }
 
 private slots:
     void cleanup()

@@ -13,6 +13,7 @@
 #include "core/protocol/shuoke/shuokecommands.h"
 #include "sim/bench/simbench.h"
 #include "core/trend/channelsampler.h"
+#include "tests/support/replywait.h"
 
 #include <QSignalSpy>
 #include <QTimer>
@@ -24,12 +25,7 @@ namespace {
 
 bool waitFinished(DriveReply *r, int ms = 5000)
 {
-    if (r->isFinished()) {
-        QCoreApplication::processEvents();
-        return true;
-    }
-    QSignalSpy done(r, &DriveReply::finished);
-    return done.wait(ms);
+    return test::waitFinished(r, ms);
 }
 
 // Runs a real event loop until `cond` holds or `ms` pass.

@@ -6,6 +6,7 @@
 #include "core/drive/servomodbus/servomodbusdrive.h"
 #include "core/link/modbuslink.h"
 #include "sim/bus/ptyendpoint.h"
+#include "tests/support/replywait.h"
 
 #include <QProcess>
 
@@ -23,16 +24,7 @@ constexpr int Baud = 19200;
 template <typename R>
 bool waitDone(R *r, int ms = 5000)
 {
-    if (r->isFinished())
-        return true;
-    QEventLoop loop;
-    QTimer guard;
-    guard.setSingleShot(true);
-    QObject::connect(&guard, &QTimer::timeout, &loop, &QEventLoop::quit);
-    QObject::connect(r, &R::finished, &loop, &QEventLoop::quit);
-    guard.start(ms);
-    loop.exec();
-    return r->isFinished();
+    return test::waitInEventLoop(r, ms);
 }
 
 quint16 initial(int reg) { return quint16(1000 + reg); }

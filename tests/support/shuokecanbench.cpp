@@ -1,10 +1,7 @@
 #include "tests/support/shuokecanbench.h"
 
-#include "core/drive/driveconnection.h"
 #include "core/drive/shuoke/shuokebackend.h"
 #include "core/drive/shuoke/shuokecantransport.h"
-#include "core/drive/shuoke/shuokedrive.h"
-#include "core/link/traffictap.h"
 #include "sim/bus/simcanbus.h"
 #include "sim/bus/virtualcanhub.h"
 
@@ -16,15 +13,21 @@
 namespace dd {
 
 ShuokeCanBench::ShuokeCanBench(QObject *parent)
-    : QObject(parent)
+    : ShuokeHostBench(parent)
 {
 }
 
 ShuokeCanBench::~ShuokeCanBench()
 {
-    m_connection.reset();
+    closeHost();
     m_bus.reset();
     m_hub.reset();
+}
+
+std::unique_ptr<ShuokeCanBench> ShuokeCanBench::create(const QList<SimShuokeDrive::Config> &drives,
+                                                       const ConnectionSettings &settings)
+{
+    return createBench<ShuokeCanBench>(drives, settings);
 }
 
 bool ShuokeCanBench::start(QString *error)
@@ -68,22 +71,15 @@ SimShuokeCanDevice *ShuokeCanBench::addDrive(const SimShuokeDrive::Config &confi
     SimCanBus *bus = m_bus.get();
     raw->setClock([bus] { return bus->nowUs(); });
     m_bus->addDevice(std::move(device));
+    m_devices.append(raw);
     return raw;
 }
 
 bool ShuokeCanBench::connectHost(ConnectionSettings settings, QString *error)
 {
-    settings.family = Family::Shuoke;
     settings.can = QStringLiteral("virtualcan:") + m_interface;
-    m_connection = std::make_unique<DriveConnection>();
-    connect(m_connection->tap(), &TrafficTap::frameRecorded, this,
-            [this](const TrafficRecord &r) { m_records.append(r); });
-    Error e;
-    if (!m_connection->open(settings, &e)) {
-        if (error)
-            *error = e.message;
+    if (!openHost(settings, error))
         return false;
-    }
     auto *can = qobject_cast<ShuokeCanTransport *>(backend()->transport());
     QDeadlineTimer deadline(3000);
     while (!can->link()->isConnected() && !deadline.hasExpired()) {
@@ -97,25 +93,6 @@ bool ShuokeCanBench::connectHost(ConnectionSettings settings, QString *error)
     }
     VirtualCanHub::setLowDelay(can->link());
     return true;
-}
-
-ShuokeBackend *ShuokeCanBench::backend() const
-{
-    return m_connection ? qobject_cast<ShuokeBackend *>(m_connection->backend()) : nullptr;
-}
-
-ShuokeDrive *ShuokeCanBench::drive(int address) const
-{
-    return backend() ? backend()->shuokeDrive(address) : nullptr;
-}
-
-int ShuokeCanBench::txCount() const
-{
-    int n = 0;
-    for (const TrafficRecord &r : m_records)
-        if (r.direction == TrafficRecord::Direction::Tx)
-            ++n;
-    return n;
 }
 
 } // namespace dd

@@ -1,17 +1,12 @@
 #pragma once
 
-#include "core/link/connectionsettings.h"
-#include "core/link/trafficrecord.h"
 #include "sim/shuoke/simshuokecandevice.h"
+#include "tests/support/shuokehostbench.h"
 
-#include <QObject>
 #include <memory>
 
 namespace dd {
 
-class DriveConnection;
-class ShuokeBackend;
-class ShuokeDrive;
 class SimCanBus;
 class VirtualCanHub;
 
@@ -19,12 +14,17 @@ class VirtualCanHub;
 // DriveConnection (the real ShuokeBackend on a CanLink) on Qt's virtualcan, through a
 // VirtualCanHub on a free TCP port (no other test process shares the bus). Every frame the host's TrafficTap
 // records is kept in records().
-class ShuokeCanBench : public QObject
+class ShuokeCanBench : public ShuokeHostBench
 {
     Q_OBJECT
 public:
     explicit ShuokeCanBench(QObject *parent = nullptr);
     ~ShuokeCanBench() override;
+
+    // A started bench with `drives` on its bus and the host connected with `settings`;
+    // nullptr, with a warning saying why, when a step fails.
+    static std::unique_ptr<ShuokeCanBench> create(const QList<SimShuokeDrive::Config> &drives,
+                                                  const ConnectionSettings &settings);
 
     // False (and `error`) when virtualcan is missing or the bus does not come up.
     bool start(QString *error = nullptr);
@@ -33,20 +33,14 @@ public:
     bool connectHost(ConnectionSettings settings, QString *error = nullptr);
 
     SimCanBus *bus() const { return m_bus.get(); }
-    DriveConnection *connection() const { return m_connection.get(); }
-    ShuokeBackend *backend() const;
-    ShuokeDrive *drive(int address) const;
+    QList<SimShuokeCanDevice *> devices() const { return m_devices; } // as added
     QString interfaceName() const { return m_interface; }
-
-    const QList<TrafficRecord> &records() const { return m_records; }
-    int txCount() const;
 
 private:
     std::unique_ptr<VirtualCanHub> m_hub;
     std::unique_ptr<SimCanBus> m_bus;
-    std::unique_ptr<DriveConnection> m_connection;
+    QList<SimShuokeCanDevice *> m_devices;
     QString m_interface;
-    QList<TrafficRecord> m_records;
 };
 
 } // namespace dd

@@ -1,26 +1,29 @@
 #include "tests/support/shuokeserialbench.h"
 
-#include "core/drive/driveconnection.h"
 #include "core/drive/drivereply.h"
-#include "core/drive/shuoke/shuokebackend.h"
-#include "core/drive/shuoke/shuokedrive.h"
-#include "core/link/traffictap.h"
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simserialbus.h"
-
-#include <QSignalSpy>
+#include "tests/support/replywait.h"
 
 namespace dd {
 
 ShuokeSerialBench::ShuokeSerialBench(QObject *parent)
-    : QObject(parent)
+    : ShuokeHostBench(parent)
 {
 }
 
 ShuokeSerialBench::~ShuokeSerialBench()
 {
-    m_connection.reset();
+    closeHost();
     m_bus.reset();
+}
+
+std::unique_ptr<ShuokeSerialBench> ShuokeSerialBench::create(const QList<SimShuokeDrive::Config> &drives,
+                                                             const ConnectionSettings &settings,
+                                                             SimShuokeSerialDevice::Framing framing,
+                                                             shuoke::AsciiCheck check)
+{
+    return createBench<ShuokeSerialBench>(drives, settings, framing, check);
 }
 
 bool ShuokeSerialBench::start(QString *error)
@@ -51,33 +54,14 @@ SimShuokeSerialDevice *ShuokeSerialBench::addDrive(const SimShuokeDrive::Config 
     SimSerialBus *bus = m_bus.get();
     raw->setClock([bus] { return bus->nowUs(); });
     m_bus->addDevice(std::move(device));
+    m_devices.append(raw);
     return raw;
 }
 
 bool ShuokeSerialBench::connectHost(ConnectionSettings settings, QString *error)
 {
-    settings.family = Family::Shuoke;
     settings.port = m_port;
-    m_connection = std::make_unique<DriveConnection>();
-    connect(m_connection->tap(), &TrafficTap::frameRecorded, this,
-            [this](const TrafficRecord &r) { m_records.append(r); });
-    Error e;
-    if (!m_connection->open(settings, &e)) {
-        if (error)
-            *error = e.message;
-        return false;
-    }
-    return true;
-}
-
-ShuokeBackend *ShuokeSerialBench::backend() const
-{
-    return m_connection ? qobject_cast<ShuokeBackend *>(m_connection->backend()) : nullptr;
-}
-
-ShuokeDrive *ShuokeSerialBench::drive(int address) const
-{
-    return backend() ? backend()->shuokeDrive(address) : nullptr;
+    return openHost(settings, error);
 }
 
 QString ShuokeSerialBench::portPath() const
@@ -85,23 +69,9 @@ QString ShuokeSerialBench::portPath() const
     return m_port;
 }
 
-int ShuokeSerialBench::txCount() const
-{
-    int n = 0;
-    for (const TrafficRecord &r : m_records)
-        if (r.direction == TrafficRecord::Direction::Tx)
-            ++n;
-    return n;
-}
-
 bool ShuokeSerialBench::wait(DriveReply *reply, int timeoutMs)
 {
-    if (!reply)
-        return false;
-    if (reply->isFinished())
-        return true; // its results are complete; finished() is only queued
-    QSignalSpy spy(reply, &DriveReply::finished);
-    return spy.wait(timeoutMs);
+    return test::waitForReply(reply, timeoutMs);
 }
 
 } // namespace dd

@@ -1,6 +1,7 @@
 #include <QtTest>
 
 #include "core/params/alarmdictionary.h"
+#include "tests/support/testdata.h"
 
 using namespace dd;
 
@@ -8,16 +9,7 @@ Q_DECLARE_METATYPE(dd::Family)
 
 namespace {
 
-QString dataDir()
-{
-    const QByteArray env = qgetenv("DRIVEDESK_SOURCE_DIR");
-    if (!env.isEmpty())
-        return QFile::decodeName(env) + QStringLiteral("/tests/data");
-    QDir dir(QCoreApplication::applicationDirPath());
-    for (int up = 0; up < 5 && !dir.exists(QStringLiteral("tests/data")); ++up)
-        dir.cdUp();
-    return dir.filePath(QStringLiteral("tests/data"));
-}
+using dd::test::dataDir;
 
 const QLocale zh(QLocale::Chinese, QLocale::China);
 const QLocale en(QLocale::English, QLocale::UnitedStates);

@@ -2,6 +2,8 @@
 
 #include "core/params/backupfile.h"
 #include "core/params/parameterdictionary.h"
+#include "tests/support/jsonmutation.h"
+#include "tests/support/testdata.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -18,16 +20,7 @@ using namespace dd;
 
 namespace {
 
-QString dataDir()
-{
-    const QByteArray env = qgetenv("DRIVEDESK_SOURCE_DIR");
-    if (!env.isEmpty())
-        return QFile::decodeName(env) + QStringLiteral("/tests/data");
-    QDir dir(QCoreApplication::applicationDirPath());
-    for (int up = 0; up < 5 && !dir.exists(QStringLiteral("tests/data")); ++up)
-        dir.cdUp();
-    return dir.filePath(QStringLiteral("tests/data"));
-}
+using dd::test::dataDir;
 
 const QDateTime fixedTime(QDate(2024, 5, 1), QTime(8, 30, 0), QTimeZone::utc());
 
@@ -88,7 +81,7 @@ bool writeAll(const QString &path, const QByteArray &bytes)
     return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
 }
 
-using Mutation = std::function<void(QJsonObject &)>;
+using Mutation = test::JsonMutation;
 
 QByteArray mutated(const QByteArray &json, const Mutation &m)
 {
@@ -97,16 +90,7 @@ QByteArray mutated(const QByteArray &json, const Mutation &m)
     return QJsonDocument(o).toJson();
 }
 
-Mutation onParameter(int i, std::function<void(QJsonObject &)> f)
-{
-    return [i, f](QJsonObject &root) {
-        QJsonArray a = root.value("parameters").toArray();
-        QJsonObject e = a.at(i).toObject();
-        f(e);
-        a[i] = e;
-        root["parameters"] = a;
-    };
-}
+const auto onParameter = test::onParameterEntry;
 
 // Recomputes the checksum, so that a mutation reaches the checks after it.
 Mutation rehashed(const Mutation &m)

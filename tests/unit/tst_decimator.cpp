@@ -2,20 +2,13 @@
 
 #include "core/trend/decimator.h"
 #include "core/trend/samplebuffer.h"
+#include "tests/support/trendsamplestring.h"
 
 #include <QRandomGenerator>
 #include <cmath>
 #include <limits>
 
 using namespace dd;
-
-namespace QTest {
-template<>
-char *toString(const TrendSample &s)
-{
-    return QTest::toString(QStringLiteral("(%1 us, %2)").arg(s.timeUs).arg(s.value));
-}
-} // namespace QTest
 
 using Samples = QList<TrendSample>;
 

@@ -5,6 +5,7 @@
 #include "core/protocol/shuoke/shuokecan.h"
 #include "core/protocol/shuoke/shuokeplc.h"
 #include "core/protocol/shuoke/shuokevalues.h"
+#include "tests/support/hex.h"
 
 #include <QTest>
 
@@ -19,10 +20,7 @@ CanFrameData can(quint32 id, const char *hex)
     f.data = QByteArray::fromHex(hex);
     return f;
 }
-QByteArray hex(const char *h)
-{
-    return QByteArray::fromHex(h);
-}
+using dd::test::hex;
 } // namespace
 
 class TestFrameDescriber : public QObject

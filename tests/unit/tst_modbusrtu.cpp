@@ -2,6 +2,7 @@
 
 #include "core/protocol/modbus/crc16.h"
 #include "core/protocol/modbus/modbusrtu.h"
+#include "tests/support/hex.h"
 
 using namespace dd;
 using namespace dd::modbusrtu;
@@ -11,7 +12,7 @@ Q_DECLARE_METATYPE(dd::modbusrtu::Request)
 
 namespace {
 
-QByteArray hex(const char *h) { return QByteArray::fromHex(h); }
+using dd::test::hex;
 // A frame with a correct CRC over arbitrary (possibly malformed) content.
 QByteArray crcd(const char *h) { return withCrc16(QByteArray::fromHex(h)); }
 

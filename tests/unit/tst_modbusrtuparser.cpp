@@ -2,6 +2,7 @@
 
 #include "core/protocol/modbus/crc16.h"
 #include "core/protocol/modbus/modbusrtuparser.h"
+#include "tests/support/hex.h"
 
 #include <QRandomGenerator>
 
@@ -11,7 +12,7 @@ using FrameState = ModbusRtuStreamParser::FrameState;
 
 namespace {
 
-QByteArray hex(const char *h) { return QByteArray::fromHex(h); }
+using dd::test::hex;
 
 // Drive side (requests), address 5.
 const QByteArray R_read = hex("05 03 00 64 00 14 05 9E");                 // read PA0..PA19

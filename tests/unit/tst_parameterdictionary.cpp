@@ -1,6 +1,8 @@
 #include <QtTest>
 
 #include "core/params/parameterdictionary.h"
+#include "tests/support/jsonmutation.h"
+#include "tests/support/testdata.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -15,17 +17,7 @@ Q_DECLARE_METATYPE(dd::ErrorCode)
 
 namespace {
 
-// tests/data: from DRIVEDESK_SOURCE_DIR (set by ctest), else above the executable.
-QString dataDir()
-{
-    const QByteArray env = qgetenv("DRIVEDESK_SOURCE_DIR");
-    if (!env.isEmpty())
-        return QFile::decodeName(env) + QStringLiteral("/tests/data");
-    QDir dir(QCoreApplication::applicationDirPath());
-    for (int up = 0; up < 5 && !dir.exists(QStringLiteral("tests/data")); ++up)
-        dir.cdUp();
-    return dir.filePath(QStringLiteral("tests/data"));
-}
+using dd::test::dataDir;
 
 QJsonObject entry(int index, const QString &key, qint64 min = -100, qint64 max = 100)
 {
@@ -54,19 +46,10 @@ QByteArray toBytes(const QJsonObject &o)
     return QJsonDocument(o).toJson();
 }
 
-using Mutation = std::function<void(QJsonObject &)>;
+using Mutation = test::JsonMutation;
 
 // Applies f to parameters[i].
-Mutation onEntry(int i, std::function<void(QJsonObject &)> f)
-{
-    return [i, f](QJsonObject &root) {
-        QJsonArray a = root.value("parameters").toArray();
-        QJsonObject e = a.at(i).toObject();
-        f(e);
-        a[i] = e;
-        root["parameters"] = a;
-    };
-}
+const auto onEntry = test::onParameterEntry;
 
 // Replaces the text of a JSON number: QJsonObject cannot hold numbers beyond a double.
 QByteArray withRawNumber(const QJsonObject &root, const QByteArray &placeholder, const QByteArray &number)

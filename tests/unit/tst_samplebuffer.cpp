@@ -1,16 +1,9 @@
 #include <QtTest>
 
 #include "core/trend/samplebuffer.h"
+#include "tests/support/trendsamplestring.h"
 
 using namespace dd;
-
-namespace QTest {
-template<>
-char *toString(const TrendSample &s)
-{
-    return QTest::toString(QStringLiteral("(%1 us, %2)").arg(s.timeUs).arg(s.value));
-}
-} // namespace QTest
 
 class TestSampleBuffer : public QObject
 {

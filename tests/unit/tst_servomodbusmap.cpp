@@ -3,6 +3,7 @@
 #include "core/protocol/modbus/crc16.h"
 #include "core/protocol/modbus/modbusrtu.h"
 #include "core/protocol/servomodbus/servomodbus.h"
+#include "tests/support/hex.h"
 
 using namespace dd;
 using namespace dd::servomodbus;
@@ -10,7 +11,7 @@ namespace rtu = dd::modbusrtu;
 
 namespace {
 
-QByteArray hex(const char *h) { return QByteArray::fromHex(h); }
+using dd::test::hex;
 
 QList<int> range(int first, int last)
 {

@@ -3,26 +3,15 @@
 #include "core/protocol/shuoke/shuokeascii.h"
 #include "core/protocol/shuoke/shuokeasciistreamparser.h"
 #include "core/protocol/shuoke/shuokecommands.h"
+#include "tests/support/shuokeframestring.h"
+#include "tests/support/hex.h"
 
 using namespace dd::shuoke;
 using dd::Decoded;
 
-namespace dd::shuoke {
-char *toString(const Frame &f)
-{
-    const QByteArray s = QStringLiteral("Frame(addr %1 cmd 0x%2 %3)")
-                             .arg(f.address)
-                             .arg(f.command, 2, 16, QLatin1Char('0'))
-                             .arg(f.failure ? QStringLiteral("failure %1").arg(f.failureCode)
-                                            : QString::fromLatin1(f.data.toHex(' ')))
-                             .toLatin1();
-    return qstrdup(s.constData());
-}
-} // namespace dd::shuoke
-
 namespace {
 
-QByteArray hex(const char *h) { return QByteArray::fromHex(h); }
+using dd::test::hex;
 QByteArray data(int n, int seed)
 {
     QByteArray d;

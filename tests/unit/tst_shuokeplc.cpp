@@ -3,26 +3,15 @@
 #include "core/protocol/modbus/crc16.h"
 #include "core/protocol/shuoke/shuokecommands.h"
 #include "core/protocol/shuoke/shuokeplc.h"
+#include "tests/support/shuokeframestring.h"
+#include "tests/support/hex.h"
 
 using namespace dd::shuoke;
 using dd::Decoded;
 
-namespace dd::shuoke {
-char *toString(const Frame &f)
-{
-    const QByteArray s = QStringLiteral("Frame(addr %1 cmd 0x%2 %3)")
-                             .arg(f.address)
-                             .arg(f.command, 2, 16, QLatin1Char('0'))
-                             .arg(f.failure ? QStringLiteral("failure %1").arg(f.failureCode)
-                                            : QString::fromLatin1(f.data.toHex(' ')))
-                             .toLatin1();
-    return qstrdup(s.constData());
-}
-} // namespace dd::shuoke
-
 namespace {
 
-QByteArray hex(const char *h) { return QByteArray::fromHex(h); }
+using dd::test::hex;
 QByteArray request(const Frame &f, quint16 base = 0)
 {
     const Decoded<QByteArray> e = encodePlcRequest(f, PlcOptions{base});

@@ -1,13 +1,14 @@
 #include <QtTest>
 
 #include "core/protocol/shuoke/shuokevalues.h"
+#include "tests/support/hex.h"
 
 #include <limits>
 
 using namespace dd::shuoke;
 
 namespace {
-QByteArray hex(const char *h) { return QByteArray::fromHex(h); }
+using dd::test::hex;
 constexpr ByteOrder LE = ByteOrder::LittleEndian;
 constexpr ByteOrder BE = ByteOrder::BigEndian;
 } // namespace

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/drive/drive.h"
+#include "core/drive/writeverification.h"
 #include "core/protocol/servocan/servocan.h"
 
 #include <QPointer>
@@ -107,7 +108,7 @@ private:
     void sendCommand(const CanFrameData &frame, const QString &note, const Done &done = {},
                      bool urgent = false);
     void writeOne(const ParameterWrite &w, int attempt, DriveReply *reply,
-                  const std::function<void(const ParameterWriteResult &)> &done);
+                  const std::function<void(const WriteVerification::Check &)> &done);
     // Waits for a heartbeat, arriving from now on, for which `pred` holds.
     void awaitHeartbeat(const std::function<bool(quint8 state, qint32 position)> &pred,
                         int timeoutMs, const Done &done);

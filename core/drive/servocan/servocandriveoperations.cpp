@@ -4,6 +4,7 @@
 #include "core/drive/operationjoin.h"
 #include "core/drive/servocan/servocanchannels.h"
 #include "core/drive/servocan/servocanstationtracker.h"
+#include "core/drive/writeverification.h"
 #include "core/link/canlink.h"
 
 #include <QDateTime>
@@ -76,22 +77,19 @@ DriveReply *ServoCanDrive::writeParameters(const QList<ParameterWrite> &writes)
     if (const Error e = validateWrites(writes))
         return finishedReply(e);
     DriveReply *reply = newReply();
-    auto results = std::make_shared<QList<ParameterWriteResult>>(writes.size());
+    auto checks = std::make_shared<QList<WriteVerification::Check>>(writes.size());
     auto join = OperationJoin::create(
         writes.size(),
-        [reply, results](const Error &e) {
-            Error first = e;
-            for (const ParameterWriteResult &r : std::as_const(*results)) {
-                reply->addWriteResult(r);
-                if (!first.isError() && !r.verified)
-                    first = {ErrorCode::VerifyMismatch, r.error};
-            }
-            reply->finish(first);
+        [reply, checks](const Error &e) {
+            WriteVerification verification;
+            for (const WriteVerification::Check &c : std::as_const(*checks))
+                reply->addWriteResult(verification.add(c));
+            reply->finish(e.isError() ? e : verification.summary());
         },
         [reply](int done, int total) { reply->reportProgress(done, total); });
     for (int k = 0; k < writes.size(); ++k) {
-        writeOne(writes.at(k), 1, reply, [join, results, k](const ParameterWriteResult &r) {
-            (*results)[k] = r;
+        writeOne(writes.at(k), 1, reply, [join, checks, k](const WriteVerification::Check &c) {
+            (*checks)[k] = c;
             join->complete();
         });
     }
@@ -99,7 +97,7 @@ DriveReply *ServoCanDrive::writeParameters(const QList<ParameterWrite> &writes)
 }
 
 void ServoCanDrive::writeOne(const ParameterWrite &w, int attempt, DriveReply *reply,
-                             const std::function<void(const ParameterWriteResult &)> &done)
+                             const std::function<void(const WriteVerification::Check &)> &done)
 {
     const int maxAttempts = 1 + std::max(0, m_link ? m_link->settings().retries : 0);
     const quint8 index = static_cast<quint8>(w.index);
@@ -108,37 +106,23 @@ void ServoCanDrive::writeOne(const ParameterWrite &w, int attempt, DriveReply *r
                             : QStringLiteral("write P%1").arg(index));
     // The read-back is queued behind the write, so the drive has handled the write first.
     readParameterValue(index, [this, w, attempt, maxAttempts, reply, done](const Error &e, qint32 v) {
-        ParameterWriteResult r;
-        r.index = w.index;
-        r.requested = w.value;
-        r.written = true; // sent; the drive acknowledges nothing: the read-back tells
+        WriteVerification::Check c;
+        c.index = w.index;
+        c.requested = w.value;
+        c.label = QStringLiteral("P%1").arg(w.index);
+        c.acknowledged = false; // the drive acknowledges nothing: the read-back tells
+        c.attempts = attempt;
         if (e.isError()) {
-            r.written = false;
-            r.readBackFailed = true;
-            r.error = tr("P%1 was sent but could not be read back, so whether the drive took it "
-                         "is unknown: %2")
-                          .arg(w.index)
-                          .arg(e.message);
-            done(r);
+            c.readError = e;
+            done(c);
             return;
         }
-        r.readBack = v;
-        if (v == w.value) {
-            r.verified = true;
-            done(r);
-            return;
-        }
-        if (attempt < maxAttempts) {
+        if (v != w.value && attempt < maxAttempts) {
             writeOne(w, attempt + 1, reply, done);
             return;
         }
-        r.error = tr("P%1: wrote %2 but the drive reads back %3 (%4 attempts). The drive may "
-                     "limit this parameter or not accept writes in its present state.")
-                      .arg(w.index)
-                      .arg(w.value)
-                      .arg(v)
-                      .arg(attempt);
-        done(r);
+        c.readBack = v;
+        done(c);
     });
 }
 

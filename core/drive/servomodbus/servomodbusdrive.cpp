@@ -1,6 +1,7 @@
 #include "core/drive/servomodbus/servomodbusdrive.h"
 
 #include "core/drive/servomodbus/servomodbuschannels.h"
+#include "core/drive/writeverification.h"
 
 #include "core/link/modbusbatch.h"
 #include "core/link/modbuslink.h"
@@ -18,29 +19,28 @@ namespace {
 
 constexpr quint16 AlarmRegister = 0x13;
 
-QString trDrive(const char *text, const char *disambiguation = nullptr, int n = -1)
-{
-    return QCoreApplication::translate("dd::ServoModbusDrive", text, disambiguation, n);
-}
-
 qint64 nowUsSinceEpoch()
 {
     return QDateTime::currentMSecsSinceEpoch() * 1000;
+}
+
+ModbusRequest request(int address, quint8 function, quint16 start, quint16 count, const QString &note)
+{
+    ModbusRequest q;
+    q.pdu.address = static_cast<quint8>(address);
+    q.pdu.function = function;
+    q.pdu.start = start;
+    q.pdu.count = count;
+    q.note = note;
+    return q;
 }
 
 QList<ModbusRequest> readRequests(int address, const QList<servomodbus::RegisterRange> &ranges,
                                   const QString &note)
 {
     QList<ModbusRequest> out;
-    for (const auto &r : ranges) {
-        ModbusRequest q;
-        q.pdu.address = static_cast<quint8>(address);
-        q.pdu.function = modbusrtu::ReadHoldingRegisters;
-        q.pdu.start = r.start;
-        q.pdu.count = r.count;
-        q.note = note;
-        out.append(q);
-    }
+    for (const auto &r : ranges)
+        out.append(request(address, modbusrtu::ReadHoldingRegisters, r.start, r.count, note));
     return out;
 }
 
@@ -54,6 +54,43 @@ QHash<quint16, quint16> collect(const QList<ModbusRequest> &requests, const QLis
             regs.insert(static_cast<quint16>(requests.at(i).pdu.start + k), values.at(k));
     }
     return regs;
+}
+
+// The 0x10 requests for the runs of consecutive parameters servomodbus::planWrites made.
+QList<ModbusRequest> writeRequests(int address, const QList<servomodbus::RegisterWrite> &plan)
+{
+    QList<ModbusRequest> out;
+    for (const auto &run : plan) {
+        ModbusRequest q = request(address, modbusrtu::WriteMultipleRegisters, run.start,
+                                  static_cast<quint16>(run.values.size()), QStringLiteral("write parameters"));
+        q.pdu.values = run.values;
+        out.append(q);
+    }
+    return out;
+}
+
+// Parameter -> the error of the failed request (read or write) that carried it.
+QHash<int, Error> errorsByParameter(const QList<ModbusRequest> &requests, const QList<ModbusBatch::Result> &results)
+{
+    QHash<int, Error> errors;
+    for (int i = 0; i < requests.size() && i < results.size(); ++i) {
+        if (!results.at(i).error)
+            continue;
+        for (int k = 0; k < requests.at(i).pdu.count; ++k)
+            errors.insert(servomodbus::parameterIndex(quint16(requests.at(i).pdu.start + k)), results.at(i).error);
+    }
+    return errors;
+}
+
+// Everything the drive did not refuse is read back: a write whose answer was lost or
+// damaged may have been carried out, and only the read-back can tell.
+QList<int> parametersToReadBack(const QList<ParameterWrite> &writes, const QHash<int, Error> &writeErrors)
+{
+    QList<int> out;
+    for (const ParameterWrite &w : writes)
+        if (writeErrors.value(w.index).code != ErrorCode::DriveException)
+            out.append(w.index);
+    return out;
 }
 
 } // namespace
@@ -129,7 +166,7 @@ QString ServoModbusDrive::unsupportedReason(Capability c) const
 {
     switch (c) {
     case Capability::ClearAlarm:
-        return trDrive("The servo-modbus protocol has no command to clear an alarm. Remove the "
+        return tr("The servo-modbus protocol has no command to clear an alarm. Remove the "
                        "cause, then reset the alarm at the drive (its panel, an alarm-reset input "
                        "or a power cycle) and read the alarm again.");
     case Capability::Jog:
@@ -140,7 +177,7 @@ QString ServoModbusDrive::unsupportedReason(Capability c) const
     case Capability::Stop:
     case Capability::EmergencyStop:
     case Capability::SetPosition:
-        return trDrive("The servo-modbus protocol reads and writes parameters and monitor values "
+        return tr("The servo-modbus protocol reads and writes parameters and monitor values "
                        "only; it has no motion, enable or stop commands. The axis runs from the "
                        "drive's own control inputs (pulses, analog command, I/O).");
     default:
@@ -156,10 +193,10 @@ QList<ChannelInfo> ServoModbusDrive::channels() const
 Error ServoModbusDrive::checkLink() const
 {
     if (!m_link || !m_link->isOpen())
-        return {ErrorCode::LinkClosed, trDrive("The serial port is not open.")};
+        return {ErrorCode::LinkClosed, tr("The serial port is not open.")};
     if (address() < 1 || address() > 247)
         return {ErrorCode::InvalidArgument,
-                trDrive("Address %1 cannot answer: servo drives use 1..247 (0 is broadcast).").arg(address())};
+                tr("Address %1 cannot answer: servo drives use 1..247 (0 is broadcast).").arg(address())};
     return {};
 }
 
@@ -259,7 +296,7 @@ DriveReply *ServoModbusDrive::readParameters(const QList<int> &indices)
     for (int n : indices) {
         if (!servomodbus::isParameterIndex(n))
             return finishedReply({ErrorCode::InvalidArgument,
-                                  trDrive("PA%1 does not exist: this drive has PA0..PA59.").arg(n)});
+                                  tr("PA%1 does not exist: this drive has PA0..PA59.").arg(n)});
     }
     DriveReply *reply = newReply();
     const QList<ModbusRequest> requests =
@@ -274,7 +311,7 @@ DriveReply *ServoModbusDrive::readParameters(const QList<int> &indices)
                     if (!results.at(i).error)
                         continue;
                     const int first = servomodbus::parameterIndex(requests.at(i).pdu.start);
-                    e.message = trDrive("PA%1..PA%2: %3")
+                    e.message = tr("PA%1..PA%2: %3")
                                     .arg(first)
                                     .arg(first + requests.at(i).pdu.count - 1)
                                     .arg(error.message);
@@ -304,7 +341,7 @@ DriveReply *ServoModbusDrive::readChannels(const QStringList &channelIds)
         const QList<quint16> r = ServoModbusChannels::registers(id);
         if (r.isEmpty())
             return finishedReply({ErrorCode::InvalidArgument,
-                                  trDrive("Unknown channel \"%1\". This drive offers: %2.")
+                                  tr("Unknown channel \"%1\". This drive offers: %2.")
                                       .arg(id, ServoModbusChannels::ids().join(QStringLiteral(", ")))});
         regs += r;
     }
@@ -347,24 +384,24 @@ Error ServoModbusDrive::checkWrites(const QList<ParameterWrite> &writes) const
     for (const ParameterWrite &w : writes) {
         if (!servomodbus::isParameterIndex(w.index))
             return {ErrorCode::InvalidArgument,
-                    trDrive("PA%1 does not exist: this drive has PA0..PA59. Nothing was written.").arg(w.index)};
+                    tr("PA%1 does not exist: this drive has PA0..PA59. Nothing was written.").arg(w.index)};
         if (seen.contains(w.index))
             return {ErrorCode::InvalidArgument,
-                    trDrive("PA%1 is given twice. Nothing was written.").arg(w.index)};
+                    tr("PA%1 is given twice. Nothing was written.").arg(w.index)};
         seen.insert(w.index);
         if (w.index == servomodbus::FirmwareParameter)
             return {ErrorCode::NotSupported,
-                    trDrive("PA2 is the firmware version and cannot be written. Nothing was written.")};
+                    tr("PA2 is the firmware version and cannot be written. Nothing was written.")};
         if (w.value < -32768 || w.value > 65535)
             return {ErrorCode::OutOfRange,
-                    trDrive("%1 does not fit the 16-bit register of PA%2 (-32768..32767, or 0..65535 "
+                    tr("%1 does not fit the 16-bit register of PA%2 (-32768..32767, or 0..65535 "
                             "unsigned). Nothing was written.")
                         .arg(w.value)
                         .arg(w.index)};
     }
     // The dictionary (a user's file or the bundled one): ranges, read-only parameters.
     if (Error e = validateWrites(writes)) {
-        e.message += QLatin1Char(' ') + trDrive("Nothing was written.");
+        e.message += QLatin1Char(' ') + tr("Nothing was written.");
         return e;
     }
     return {};
@@ -386,32 +423,13 @@ void ServoModbusDrive::writeThenVerify(DriveReply *reply, const QList<ParameterW
     QMap<int, quint16> values;
     for (const ParameterWrite &w : writes)
         values.insert(w.index, static_cast<quint16>(w.value));
-    const QList<servomodbus::RegisterWrite> plan = servomodbus::planWrites(values);
-    QList<ModbusRequest> requests;
-    for (const auto &run : plan) {
-        ModbusRequest q;
-        q.pdu.address = static_cast<quint8>(address());
-        q.pdu.function = modbusrtu::WriteMultipleRegisters;
-        q.pdu.start = run.start;
-        q.pdu.count = static_cast<quint16>(run.values.size());
-        q.pdu.values = run.values;
-        q.note = QStringLiteral("write parameters");
-        requests.append(q);
-    }
+    const QList<ModbusRequest> requests = writeRequests(address(), servomodbus::planWrites(values));
     const int readCount = int(servomodbus::planReads(values.keys()).size());
     const int total = int(requests.size()) + readCount;
     ModbusBatch::run(
         m_link, requests, reply, ModbusBatch::Mode::ContinueOnError,
         [this, reply, requests, writes](const Error &, const QList<ModbusBatch::Result> &results) {
-            QHash<int, Error> writeErrors;
-            for (int i = 0; i < requests.size(); ++i) {
-                if (!results.at(i).error)
-                    continue;
-                for (int k = 0; k < requests.at(i).pdu.values.size(); ++k)
-                    writeErrors.insert(servomodbus::parameterIndex(quint16(requests.at(i).pdu.start + k)),
-                                       results.at(i).error);
-            }
-            verifyWrites(reply, writes, writeErrors);
+            verifyWrites(reply, writes, errorsByParameter(requests, results));
         },
         [reply, total](int done, int) { reply->reportProgress(done, total); });
 }
@@ -419,12 +437,7 @@ void ServoModbusDrive::writeThenVerify(DriveReply *reply, const QList<ParameterW
 void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrite> &writes,
                                     const QHash<int, Error> &writeErrors)
 {
-    // Read back everything the drive did not refuse: a write whose answer was lost or
-    // damaged may have been carried out, and only the read-back can tell.
-    QList<int> toRead;
-    for (const ParameterWrite &w : writes)
-        if (writeErrors.value(w.index).code != ErrorCode::DriveException)
-            toRead.append(w.index);
+    const QList<int> toRead = parametersToReadBack(writes, writeErrors);
     const QList<ModbusRequest> requests =
         readRequests(address(), servomodbus::planReads(toRead), QStringLiteral("verify"));
     QMap<int, quint16> all;
@@ -434,76 +447,42 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
     const int total = writesDone + int(requests.size());
     ModbusBatch::run(
         m_link, requests, reply, ModbusBatch::Mode::ContinueOnError,
-        [this, reply, requests, writes, writeErrors](const Error &, const QList<ModbusBatch::Result> &results) {
-            QHash<int, Error> readErrors;
-            QHash<quint16, quint16> regs;
-            for (int i = 0; i < requests.size(); ++i) {
-                const ModbusRequest &q = requests.at(i);
-                for (int k = 0; k < q.pdu.count; ++k) {
-                    const quint16 reg = quint16(q.pdu.start + k);
-                    if (results.at(i).error)
-                        readErrors.insert(servomodbus::parameterIndex(reg), results.at(i).error);
-                    else
-                        regs.insert(reg, results.at(i).registers.value(k));
-                }
-            }
-            Error first;
-            int mismatches = 0;
+        [this, reply, requests, writes, writeErrors, toRead](const Error &,
+                                                             const QList<ModbusBatch::Result> &results) {
+            const QHash<quint16, quint16> regs = collect(requests, results);
+            const QHash<int, Error> readErrors = errorsByParameter(requests, results);
+            WriteVerification verification;
             for (const ParameterWrite &w : writes) {
-                ParameterWriteResult r;
-                r.index = w.index;
-                r.requested = w.value;
-                r.written = !writeErrors.contains(w.index);
-                const quint16 reg = servomodbus::parameterRegister(w.index);
-                const bool readBack = regs.contains(reg);
-                if (!r.written && readBack && regs.value(reg) == static_cast<quint16>(w.value)) {
-                    // The answer to the write was lost or damaged, but the drive holds the value.
-                    r.written = true;
-                    r.verified = true;
-                    r.readBack = w.value;
-                } else if (!r.written) {
-                    r.error = writeErrors.value(w.index).message;
-                    if (readBack) {
-                        r.readBack = w.value > 32767 ? qint64(regs.value(reg)) : parameterValue(w.index, regs.value(reg));
-                    } else if (writeErrors.value(w.index).code != ErrorCode::DriveException) {
-                        r.readBackFailed = true;
-                        r.error += QLatin1Char(' ')
-                                 + trDrive("Whether the drive took the value is unknown: read it again.");
-                    }
-                    if (!first)
-                        first = writeErrors.value(w.index);
-                } else if (readErrors.contains(w.index)) {
-                    r.readBackFailed = true;
-                    r.error = readErrors.value(w.index).message;
-                    if (!first)
-                        first = readErrors.value(w.index);
-                } else {
-                    const quint16 raw = regs.value(reg);
-                    r.readBack = w.value > 32767 ? qint64(raw) : parameterValue(w.index, raw);
-                    r.verified = raw == static_cast<quint16>(w.value);
-                    if (!r.verified) {
-                        ++mismatches;
-                        r.error = trDrive("Wrote %1, the drive reports %2.").arg(w.value).arg(r.readBack);
-                    }
-                }
-                reply->addWriteResult(r);
+                // A read error counts only where a read-back was asked for: a refused write
+                // may share a failed read request with its neighbours.
+                const Error readError = toRead.contains(w.index) ? readErrors.value(w.index) : Error::none();
+                reply->addWriteResult(verification.add(verificationCheck(w, writeErrors.value(w.index), regs, readError)));
             }
-            if (!first && mismatches > 0) {
-                const ParameterWriteResult *bad = nullptr;
-                for (const auto &r : reply->writeResults())
-                    if (r.written && !r.verified && r.error.size() && !bad)
-                        bad = &r;
-                first = {ErrorCode::VerifyMismatch,
-                         trDrive("%n parameter(s) read back with another value than written "
-                                 "(first: PA%1: %2). The drive may limit the value, or the "
-                                 "parameter may be read-only.",
-                                 nullptr, mismatches)
-                             .arg(bad ? bad->index : 0)
-                             .arg(bad ? bad->error : QString())};
-            }
-            reply->finish(first);
+            reply->finish(verification.summary());
         },
         [reply, writesDone, total](int done, int) { reply->reportProgress(writesDone + done, total); });
+}
+
+WriteVerification::Check ServoModbusDrive::verificationCheck(const ParameterWrite &w, const Error &writeError,
+                                                             const QHash<quint16, quint16> &regs,
+                                                             const Error &readError) const
+{
+    WriteVerification::Check c;
+    c.index = w.index;
+    c.requested = w.value;
+    c.label = QStringLiteral("PA%1").arg(w.index);
+    c.writeError = writeError;
+    c.readError = readError;
+    const quint16 reg = servomodbus::parameterRegister(w.index);
+    if (regs.contains(reg)) {
+        // The register holds 16 bits: equal bits are the value written; otherwise a value
+        // above 32767 was meant unsigned, the rest reads as the dictionary types it.
+        const quint16 raw = regs.value(reg);
+        c.readBack = raw == static_cast<quint16>(w.value) ? w.value
+                   : w.value > 32767                      ? qint64(raw)
+                                                          : parameterValue(w.index, raw);
+    }
+    return c;
 }
 
 // ---- EE operations ----
@@ -514,7 +493,7 @@ DriveReply *ServoModbusDrive::eeOperation(EeOperation op)
         return finishedReply(e);
     const auto sop = servomodbus::eeOpFromCode(static_cast<quint16>(op));
     if (!sop)
-        return finishedReply({ErrorCode::InvalidArgument, trDrive("Unknown EE operation.")});
+        return finishedReply({ErrorCode::InvalidArgument, tr("Unknown EE operation.")});
     DriveReply *reply = newReply();
     reply->setInfo(QStringLiteral("operation"), eeMnemonic(op));
     if (const auto format = servomodbus::chooseEeFormat(m_options.eeFormat, m_firmware)) {
@@ -527,7 +506,7 @@ DriveReply *ServoModbusDrive::eeOperation(EeOperation op)
         r->deleteLater();
         if (r->error()) {
             Error e = r->error();
-            e.message = trDrive("The firmware version (PA2) could not be read, so the EE command "
+            e.message = tr("The firmware version (PA2) could not be read, so the EE command "
                                 "format is unknown: %1 Choose the format by hand (option "
                                 "servo-modbus.eeFormat = legacy or new).")
                             .arg(e.message);
@@ -582,7 +561,7 @@ void ServoModbusDrive::pollLegacyEe(DriveReply *reply, servomodbus::EeOp op, qin
             return;
         case servomodbus::EeProgress::Failed:
             reply->finish({ErrorCode::DriveException,
-                           trDrive("The drive answered %1 with %2 instead of 0 (running) or %3 "
+                           tr("The drive answered %1 with %2 instead of 0 (running) or %3 "
                                    "(done): the operation failed or another one is running.")
                                .arg(name)
                                .arg(value)
@@ -594,7 +573,7 @@ void ServoModbusDrive::pollLegacyEe(DriveReply *reply, servomodbus::EeOp op, qin
         }
         if (QDateTime::currentMSecsSinceEpoch() >= deadlineMs) {
             reply->finish({ErrorCode::Timeout,
-                           trDrive("%1 did not finish within %2 s: the drive still reports it "
+                           tr("%1 did not finish within %2 s: the drive still reports it "
                                    "running after %3 polls. Do not switch the drive off; read its "
                                    "parameters again to see what was stored.")
                                .arg(name)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/drive/drive.h"
+#include "core/drive/writeverification.h"
 #include "core/link/modbuslink.h"
 #include "core/protocol/servomodbus/servomodbus.h"
 
@@ -68,8 +69,12 @@ private:
     void runEe(DriveReply *reply, servomodbus::EeOp op, servomodbus::EeFormat format);
     void pollLegacyEe(DriveReply *reply, servomodbus::EeOp op, qint64 deadlineMs, int polls);
     void writeThenVerify(DriveReply *reply, const QList<ParameterWrite> &writes);
+    // Reads back every write the drive did not refuse and reports each (WriteVerification).
     void verifyWrites(DriveReply *reply, const QList<ParameterWrite> &writes,
                       const QHash<int, Error> &writeErrors);
+    WriteVerification::Check verificationCheck(const ParameterWrite &w, const Error &writeError,
+                                               const QHash<quint16, quint16> &regs,
+                                               const Error &readError) const;
 
     QPointer<ModbusLink> m_link;
     ServoModbusOptions m_options;

@@ -6,11 +6,13 @@
 
 #include <QHash>
 #include <QPointer>
+#include <memory>
 #include <optional>
 
 namespace dd {
 
 struct ShuokeParameter;
+class WriteVerification;
 
 // A Shuoke stepper drive (M6505 closed loop, M4505 / M4505S open loop;
 // docs/protocols/shuoke.md) on any of the four framings, through a ShuokeTransport.
@@ -125,7 +127,8 @@ private:
     // readParameters / writeParameters helpers (shuokedriveparameters.cpp)
     Error checkParameterWrite(const ParameterWrite &w, const ShuokeParameter **param) const;
     void readOneParameter(DriveReply *reply, const ShuokeParameter &p, std::function<void(const Error &, qint64)> done);
-    void writeNext(DriveReply *reply, QList<ParameterWrite> writes, int at, Error first);
+    void writeNext(DriveReply *reply, QList<ParameterWrite> writes, int at,
+                   std::shared_ptr<WriteVerification> verification);
     // readChannels helpers (shuokedrivechannels.cpp)
     QList<quint8> channelCommands(const QStringList &ids) const;
     void fillSamples(DriveReply *reply, const QStringList &ids, const QHash<quint8, QByteArray> &data) const;

@@ -1,6 +1,7 @@
 // ShuokeDrive: parameter reads and verified writes (see shuokedrive.h).
 #include "core/drive/shuoke/shuokedrive.h"
 #include "core/drive/shuoke/shuokeparameter.h"
+#include "core/drive/writeverification.h"
 
 #include <QVariantMap>
 #include <memory>
@@ -149,62 +150,54 @@ DriveReply *ShuokeDrive::writeParameters(const QList<ParameterWrite> &writes)
             return finishedReply(e);
     }
     DriveReply *reply = newReply();
-    writeNext(reply, writes, 0, Error::none());
+    writeNext(reply, writes, 0, std::make_shared<WriteVerification>());
     return reply;
 }
 
-void ShuokeDrive::writeNext(DriveReply *reply, QList<ParameterWrite> writes, int at, Error first)
+void ShuokeDrive::writeNext(DriveReply *reply, QList<ParameterWrite> writes, int at,
+                            std::shared_ptr<WriteVerification> verification)
 {
     if (at >= writes.size()) {
-        reply->finish(first);
+        reply->finish(verification->summary());
         return;
     }
     const ParameterWrite w = writes.at(at);
     const ShuokeParameter p = *ShuokeParameter::byIndex(w.index);
-    auto next = [this, reply, writes, at](const ParameterWriteResult &result, const Error &first) {
-        reply->addWriteResult(result);
+    WriteVerification::Check check;
+    check.index = w.index;
+    check.requested = w.value;
+    check.label = QString::fromLatin1(p.key);
+    check.readable = p.isReadable();
+    auto next = [this, reply, writes, at, verification](const WriteVerification::Check &check) {
+        reply->addWriteResult(verification->add(check));
         reply->reportProgress(at + 1, static_cast<int>(writes.size()));
-        writeNext(reply, writes, at + 1, first);
+        writeNext(reply, writes, at + 1, verification);
+    };
+    // Reads the value back into `check`, then goes on with the next write.
+    auto readBack = [this, reply, p, next](WriteVerification::Check check) {
+        readOneParameter(reply, p, [check, next](const Error &e, qint64 value) mutable {
+            if (e)
+                check.readError = e;
+            else
+                check.readBack = value;
+            next(check);
+        });
     };
     exchange(reply, p.setCommand, p.encode(w.value, byteOrder()),
-             [this, reply, w, p, first, next](const Error &e, const Frame &) {
-        ParameterWriteResult res;
-        res.index = w.index;
-        res.requested = w.value;
-        res.readable = p.isReadable();
-        if (e && e.code != ErrorCode::DriveException && p.isReadable() && e.code != ErrorCode::LinkClosed) {
-            // The answer was lost or damaged; the write may have been carried out: the
-            // read-back tells.
-            readOneParameter(reply, p, [res, e, first, next, w](const Error &e2, qint64 value) mutable {
-                if (!e2 && value == w.value) {
-                    res.written = true;
-                    res.verified = true;
-                    res.readBack = value;
-                    next(res, first);
-                    return;
-                }
-                res.error = e.message;
-                res.readBackFailed = bool(e2);
-                if (!e2)
-                    res.readBack = value;
-                else
-                    res.error += QLatin1Char(' ') + tr("Whether the drive took the value is unknown: read it again.");
-                next(res, first ? first : e);
-            });
-            return;
-        }
+             [this, reply, w, p, check, next, readBack](const Error &e, const Frame &) mutable {
+        check.writeError = e;
         if (e) {
-            res.error = e.message;
-            next(res, first ? first : e);
+            // The answer was lost or damaged; the write may have been carried out: the
+            // read-back tells. A refusal or a closed link leaves nothing to read back.
+            if (e.code != ErrorCode::DriveException && p.isReadable() && e.code != ErrorCode::LinkClosed)
+                readBack(check);
+            else
+                next(check);
             return;
         }
-        res.written = true;
         m_lastWritten.insert(w.index, w.value);
         if (!p.isReadable()) {
-            res.error = tr("Not readable: the drive cannot report this setting; %1 is kept as the "
-                           "last value written.")
-                            .arg(w.value);
-            next(res, first);
+            next(check);
             return;
         }
         if (p.setCommand == CmdSetBaudCode && m_transport && m_transport->baud() > 0) {
@@ -215,24 +208,7 @@ void ShuokeDrive::writeNext(DriveReply *reply, QList<ParameterWrite> writes, int
             else
                 reply->setInfo(QStringLiteral("linkBaud"), baud);
         }
-        readOneParameter(reply, p, [this, res, first, next, w](const Error &e2, qint64 value) mutable {
-            Error f = first;
-            if (e2) {
-                res.readBackFailed = true;
-                res.error = tr("Written, but reading it back failed: %1").arg(e2.message);
-                if (!f)
-                    f = e2;
-            } else {
-                res.readBack = value;
-                res.verified = value == w.value;
-                if (!res.verified) {
-                    res.error = tr("The drive reports %1 after %2 was written.").arg(value).arg(w.value);
-                    if (!f)
-                        f = {ErrorCode::VerifyMismatch, tr("Parameter %1: %2").arg(w.index).arg(res.error)};
-                }
-            }
-            next(res, f);
-        });
+        readBack(check);
     });
 }
 

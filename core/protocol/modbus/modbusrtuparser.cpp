@@ -98,22 +98,17 @@ bool isKnownReplyFunction(quint8 fc)
 ModbusRtuStreamParser::ModbusRtuStreamParser(Mode mode, int bufferCap)
     : m_mode(mode)
     , m_bufferCap(std::max(bufferCap, MinBufferCap))
+    , m_buffer(m_bufferCap)
 {
 }
 
 void ModbusRtuStreamParser::feed(const QByteArray &bytes)
 {
-    qsizetype i = 0;
-    while (i < bytes.size()) {
-        // extract() leaves fewer than m_bufferCap bytes (a pending frame is shorter than the
-        // cap); should that ever fail, dropping the oldest bytes keeps the bound.
-        if (m_buffer.size() >= m_bufferCap)
-            discardFront(m_buffer.size() - m_bufferCap + 1);
-        const qsizetype take = std::min<qsizetype>(m_bufferCap - m_buffer.size(), bytes.size() - i);
-        m_buffer.append(bytes.constData() + i, take);
-        i += take;
-        extract();
-    }
+    if (bytes.isEmpty())
+        return;
+    // extract() leaves fewer than m_bufferCap bytes (a pending frame is shorter than the
+    // cap); should that ever fail, the buffer drops the oldest bytes to keep the bound.
+    m_buffer.appendInSlices(bytes, [this] { extract(); });
 }
 
 QByteArray ModbusRtuStreamParser::takeFrame()
@@ -124,41 +119,30 @@ QByteArray ModbusRtuStreamParser::takeFrame()
 qsizetype ModbusRtuStreamParser::discardPending()
 {
     const qsizetype n = m_buffer.size();
-    discardFront(n);
+    m_buffer.discard(n);
     return n;
 }
 
 void ModbusRtuStreamParser::reset()
 {
-    m_buffer.clear();
+    m_buffer.reset();
     m_frames.clear();
-    m_discardedBytes = 0;
     m_droppedFrames = 0;
 }
 
 void ModbusRtuStreamParser::extract()
 {
     while (!m_buffer.isEmpty()) {
-        const FrameCheck c = scan(m_buffer, m_mode, m_bufferCap);
-        discardFront(c.offset);
+        const FrameCheck c = scan(m_buffer.bytes(), m_mode, m_bufferCap);
+        m_buffer.discard(c.offset);
         if (c.state != FrameState::Complete)
             return;
         if (m_frames.size() >= m_maxQueuedFrames) {
             m_frames.removeFirst();
             ++m_droppedFrames;
         }
-        m_frames.append(m_buffer.left(c.length));
-        m_buffer.remove(0, c.length);
+        m_frames.append(m_buffer.takeFront(c.length));
     }
-}
-
-void ModbusRtuStreamParser::discardFront(qsizetype n)
-{
-    if (n <= 0)
-        return;
-    n = std::min(n, m_buffer.size());
-    m_buffer.remove(0, n);
-    m_discardedBytes += static_cast<quint64>(n);
 }
 
 ModbusRtuStreamParser::FrameCheck ModbusRtuStreamParser::checkFrame(const QByteArray &bytes, Mode mode,

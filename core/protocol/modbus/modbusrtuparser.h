@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/protocol/streambuffer.h"
+
 #include <QByteArray>
 #include <QList>
 #include <QtGlobal>
@@ -67,7 +69,7 @@ public:
     Mode mode() const { return m_mode; }
     int bufferCap() const { return m_bufferCap; }
     qsizetype pendingBytes() const { return m_buffer.size(); }
-    quint64 discardedBytes() const { return m_discardedBytes; }
+    quint64 discardedBytes() const { return m_buffer.discardedBytes(); }
     quint64 droppedFrames() const { return m_droppedFrames; }
 
     // Tolerant "is a frame complete?" for a serial link's reply matcher, over everything
@@ -81,14 +83,12 @@ public:
 
 private:
     void extract();
-    void discardFront(qsizetype n);
 
     Mode m_mode;
     int m_bufferCap;
     int m_maxQueuedFrames = DefaultMaxQueuedFrames;
-    QByteArray m_buffer;
+    StreamBuffer m_buffer;
     QList<QByteArray> m_frames;
-    quint64 m_discardedBytes = 0;
     quint64 m_droppedFrames = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include "core/protocol/shuoke/shuokeascii.h"
 #include "core/protocol/shuoke/shuokeframe.h"
+#include "core/protocol/streambuffer.h"
 
 #include <QByteArray>
 #include <QList>
@@ -38,21 +39,18 @@ public:
     void clear();
 
     qsizetype bufferedSize() const { return m_buffer.size(); }
-    qsizetype capacity() const { return m_capacity; }
-    quint64 discardedBytes() const { return m_discarded; } // bytes outside any frame, or of rejected frames
+    qsizetype capacity() const { return m_buffer.capacity(); }
+    quint64 discardedBytes() const { return m_buffer.discardedBytes(); } // bytes outside any frame, or of rejected frames
     quint64 rejectedFrames() const { return m_rejected; }
     QString lastError() const { return m_lastError; }
     const AsciiOptions &options() const { return m_options; }
     void setOptions(const AsciiOptions &options) { m_options = options; }
 
 private:
-    void discard(qsizetype count);
     void reject(qsizetype count, const QString &why);
 
     AsciiOptions m_options;
-    qsizetype m_capacity;
-    QByteArray m_buffer;
-    quint64 m_discarded = 0;
+    StreamBuffer m_buffer;
     quint64 m_rejected = 0;
     QString m_lastError;
 };

@@ -8,20 +8,12 @@ namespace dd::shuoke {
 
 RtuStreamParser::RtuStreamParser(const RtuOptions &options, qsizetype capacity)
     : m_options(options)
-    , m_capacity(std::max<qsizetype>(capacity, 2 * (kMaxDataLength + kRtuOverhead + 2)))
+    , m_buffer(std::max<qsizetype>(capacity, 2 * (kMaxDataLength + kRtuOverhead + 2)))
 {
 }
 
 void RtuStreamParser::append(const QByteArray &bytes)
 {
-    if (bytes.size() >= m_capacity) {
-        m_discarded += static_cast<quint64>(m_buffer.size() + bytes.size() - m_capacity);
-        m_buffer = bytes.right(m_capacity);
-        return;
-    }
-    const qsizetype overflow = m_buffer.size() + bytes.size() - m_capacity;
-    if (overflow > 0)
-        discard(overflow);
     m_buffer.append(bytes);
 }
 
@@ -30,20 +22,13 @@ void RtuStreamParser::clear()
     m_buffer.clear();
 }
 
-void RtuStreamParser::discard(qsizetype count)
-{
-    count = std::min(count, m_buffer.size());
-    m_buffer.remove(0, count);
-    m_discarded += static_cast<quint64>(count);
-}
-
 RtuStreamParser::Scan RtuStreamParser::scanAt(qsizetype offset, bool knownLayoutsOnly,
                                               detail::RtuCandidate *found) const
 {
     const qsizetype available = m_buffer.size() - offset;
     if (available < 3)
         return Scan::NeedMore;
-    const char *p = m_buffer.constData() + offset;
+    const char *p = m_buffer.bytes().constData() + offset;
     const quint8 commandByte = static_cast<quint8>(p[1]);
     const quint8 len = static_cast<quint8>(p[2]);
     bool pending = false;
@@ -70,7 +55,7 @@ std::optional<Frame> RtuStreamParser::takeFrame()
     while (!m_buffer.isEmpty()) {
         const Scan head = scanAt(0, false, &c);
         if (head == Scan::Invalid) {
-            discard(1);
+            m_buffer.discard(1);
             continue;
         }
         qsizetype offset = 0;
@@ -85,10 +70,10 @@ std::optional<Frame> RtuStreamParser::takeFrame()
             }
             if (offset < 0)
                 return std::nullopt;
-            discard(offset);
+            m_buffer.discard(offset);
         }
-        const Frame frame = detail::rtuFrameFrom(m_buffer.constData(), c);
-        m_buffer.remove(0, c.size);
+        const Frame frame = detail::rtuFrameFrom(m_buffer.bytes().constData(), c);
+        m_buffer.takeFront(c.size);
         m_lastLayout = c.layout;
         return frame;
     }
@@ -97,17 +82,13 @@ std::optional<Frame> RtuStreamParser::takeFrame()
 
 QList<Frame> RtuStreamParser::feed(const QByteArray &bytes)
 {
-    // In pieces that fit the free space: after the frames are taken, the buffer holds at
-    // most one incomplete frame, so nothing is lost however large `bytes` is.
+    // After the frames are taken the buffer holds at most one incomplete frame, so nothing
+    // is lost however large `bytes` is.
     QList<Frame> out;
-    qsizetype at = 0;
-    do {
-        const qsizetype n = std::min(bytes.size() - at, std::max<qsizetype>(1, m_capacity - m_buffer.size()));
-        append(bytes.mid(at, n));
-        at += n;
+    m_buffer.appendInSlices(bytes, [this, &out] {
         while (std::optional<Frame> f = takeFrame())
             out.append(*f);
-    } while (at < bytes.size());
+    });
     return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/protocol/shuoke/shuokeframe.h"
 #include "core/protocol/shuoke/shuokertu.h"
+#include "core/protocol/streambuffer.h"
 
 #include <QByteArray>
 #include <QList>
@@ -38,8 +39,8 @@ public:
     void clear();
 
     qsizetype bufferedSize() const { return m_buffer.size(); }
-    qsizetype capacity() const { return m_capacity; }
-    quint64 discardedBytes() const { return m_discarded; }
+    qsizetype capacity() const { return m_buffer.capacity(); }
+    quint64 discardedBytes() const { return m_buffer.discardedBytes(); }
     // Layout of the last frame taken (shows a drive that counts the CRC in len).
     RtuLayout lastLayout() const { return m_lastLayout; }
     const RtuOptions &options() const { return m_options; }
@@ -48,12 +49,9 @@ public:
 private:
     enum class Scan { Complete, NeedMore, Invalid };
     Scan scanAt(qsizetype offset, bool knownLayoutsOnly, detail::RtuCandidate *found) const;
-    void discard(qsizetype count);
 
     RtuOptions m_options;
-    qsizetype m_capacity;
-    QByteArray m_buffer;
-    quint64 m_discarded = 0;
+    StreamBuffer m_buffer;
     RtuLayout m_lastLayout = RtuLayout::Standard;
 };
 

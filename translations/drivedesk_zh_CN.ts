@@ -5050,8 +5050,8 @@ Servo enable on or off.
     </message>
     <message numerus="yes">
         <source>Written %n time(s).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>已写入 %n 次。</numerusform>
         </translation>
     </message>
     <message>

@@ -22,6 +22,29 @@ namespace dd {
 namespace {
 constexpr quint16 kVirtualCanDefaultPort = 35468; // the plugin's default server port
 const char kStateFormat[] = "drivedesk-sim-state";
+
+// One simulated drive per address on `bus`, made by the family's simulator, with the
+// bench's latency and fault settings (each drive its own fault seed).
+template <class Bus, class Device>
+Error addDevices(Bus *bus, const SimBenchOptions &o,
+                 std::unique_ptr<Device> (*make)(const SimDeviceSpec &, Error *))
+{
+    for (int address : std::as_const(o.addresses)) {
+        Error e;
+        const SimDeviceSpec spec{address, o.bauds.value(address, o.baud), o.bitrate, o.framing, o.demoMotion,
+                                 [bus] { return bus->nowUs(); }};
+        std::unique_ptr<Device> device = make(spec, &e);
+        if (!device)
+            return e;
+        if (o.latencyUs >= 0)
+            device->setLatencyUs(o.latencyUs);
+        FaultSettings f = o.faults;
+        f.seed = o.faults.seed + static_cast<quint32>(address);
+        device->faults().setSettings(f);
+        bus->addDevice(std::move(device));
+    }
+    return Error::none();
+}
 } // namespace
 
 int SimBenchOptions::defaultAddress(Family) { return 1; }
@@ -100,22 +123,7 @@ Error SimBench::startSerial()
     if (!family.serial)
         return {ErrorCode::InvalidArgument,
                 tr("%1 drives live on a CAN bus: give --can PLUGIN:INTERFACE.").arg(familyId(m_options.family))};
-    for (int address : std::as_const(m_options.addresses)) {
-        Error e;
-        SimSerialBus *bus = m_serial;
-        const SimDeviceSpec spec{address, m_options.bauds.value(address, m_options.baud), m_options.bitrate,
-                                 m_options.framing, m_options.demoMotion, [bus] { return bus->nowUs(); }};
-        std::unique_ptr<SimSerialDevice> device = family.serial(spec, &e);
-        if (!device)
-            return e;
-        if (m_options.latencyUs >= 0)
-            device->setLatencyUs(m_options.latencyUs);
-        FaultSettings f = m_options.faults;
-        f.seed = m_options.faults.seed + static_cast<quint32>(address);
-        device->faults().setSettings(f);
-        m_serial->addDevice(std::move(device));
-    }
-    return Error::none();
+    return addDevices(m_serial, m_options, family.serial);
 }
 
 Error SimBench::startCan()
@@ -153,22 +161,7 @@ Error SimBench::startCan()
     const SimFamily &family = simFamily(m_options.family);
     if (!family.can)
         return {ErrorCode::InvalidArgument, tr("%1 drives live on RS485: use --pty.").arg(familyId(m_options.family))};
-    for (int address : std::as_const(m_options.addresses)) {
-        Error e;
-        SimCanBus *bus = m_can;
-        const SimDeviceSpec spec{address, m_options.baud, m_options.bitrate, m_options.framing,
-                                 m_options.demoMotion, [bus] { return bus->nowUs(); }};
-        std::unique_ptr<SimCanDevice> device = family.can(spec, &e);
-        if (!device)
-            return e;
-        if (m_options.latencyUs >= 0)
-            device->setLatencyUs(m_options.latencyUs);
-        FaultSettings f = m_options.faults;
-        f.seed = m_options.faults.seed + static_cast<quint32>(address);
-        device->faults().setSettings(f);
-        m_can->addDevice(std::move(device));
-    }
-    return Error::none();
+    return addDevices(m_can, m_options, family.can);
 }
 
 void SimBench::stop()

@@ -1,9 +1,11 @@
 #pragma once
 
 #include <QByteArray>
+#include <QList>
 #include <QtGlobal>
 
 #include <algorithm>
+#include <type_traits>
 
 namespace dd {
 
@@ -30,6 +32,18 @@ public:
             at += n;
             drain();
         } while (at < bytes.size());
+    }
+    // appendInSlices() that takes every complete frame after each slice: `takeFrame`
+    // returns a std::optional frame, empty when no frame is complete. The frames in order.
+    template <typename TakeFrame>
+    auto appendAndTakeFrames(const QByteArray &bytes, TakeFrame takeFrame)
+    {
+        QList<typename std::invoke_result_t<TakeFrame>::value_type> frames;
+        appendInSlices(bytes, [&] {
+            while (auto f = takeFrame())
+                frames.append(*f);
+        });
+        return frames;
     }
     // Drops the first `count` bytes (all there are, if fewer), counted as discarded.
     void discard(qsizetype count);

@@ -5,6 +5,8 @@
 
 #include <QtTest>
 
+#include <optional>
+
 using namespace dd;
 
 class TestStreamBuffer : public QObject
@@ -88,6 +90,18 @@ private slots:
         QCOMPARE(drains, 2);
         QCOMPARE(b.bytes(), QByteArray("cdefghxy"));
         QCOMPARE(b.discardedBytes(), quint64(2));
+    }
+
+    void appendAndTakeFramesCollectsInOrder()
+    {
+        StreamBuffer b(8);
+        const QList<QByteArray> frames = b.appendAndTakeFrames("aaabbbcccdd", [&b]() -> std::optional<QByteArray> {
+            if (b.size() < 3)
+                return std::nullopt;
+            return b.takeFront(3);
+        });
+        QCOMPARE(frames, (QList<QByteArray>{"aaa", "bbb", "ccc"}));
+        QCOMPARE(b.bytes(), QByteArray("dd"));
     }
 
     void appendInSlicesDrainsOnceForNothing()

@@ -84,12 +84,7 @@ QList<Frame> RtuStreamParser::feed(const QByteArray &bytes)
 {
     // After the frames are taken the buffer holds at most one incomplete frame, so nothing
     // is lost however large `bytes` is.
-    QList<Frame> out;
-    m_buffer.appendInSlices(bytes, [this, &out] {
-        while (std::optional<Frame> f = takeFrame())
-            out.append(*f);
-    });
-    return out;
+    return m_buffer.appendAndTakeFrames(bytes, [this] { return takeFrame(); });
 }
 
 } // namespace dd::shuoke

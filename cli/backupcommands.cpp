@@ -1,7 +1,7 @@
 #include "cli/backupcommands.h"
 
-#include "core/protocol/familytraits.h"
 #include "cli/clidescribe.h"
+#include "core/protocol/familytraits.h"
 
 #include "core/drive/drive.h"
 #include "core/drive/parametertransfer.h"

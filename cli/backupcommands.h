@@ -16,7 +16,10 @@ class BackupCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit BackupCommand(CliContext *c) : CliCommand(QStringLiteral("backup"), c) {}
+    explicit BackupCommand(CliContext *c)
+        : CliCommand(QStringLiteral("backup"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
 
@@ -45,7 +48,10 @@ class DiffCommand : public FileCommand
 {
     Q_OBJECT
 public:
-    explicit DiffCommand(CliContext *c) : FileCommand(QStringLiteral("diff"), c) {}
+    explicit DiffCommand(CliContext *c)
+        : FileCommand(QStringLiteral("diff"), c)
+    {
+    }
     void start() override;
 };
 
@@ -53,7 +59,10 @@ class RestoreCommand : public FileCommand
 {
     Q_OBJECT
 public:
-    explicit RestoreCommand(CliContext *c) : FileCommand(QStringLiteral("restore"), c) {}
+    explicit RestoreCommand(CliContext *c)
+        : FileCommand(QStringLiteral("restore"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
     // Writes in flight finish and are verified; the report tells what was done.

@@ -81,18 +81,18 @@ bool Cli::applyLanguage(const QStringList &arguments, bool json, CliOutput &out)
     // document is the same in every language, messages included: scripts parse it and logs
     // compare across machines. So with --json the CLI speaks English, whatever --lang says.
     const std::optional<QString> lang = CliLanguage::requested(arguments);
-    const std::optional<CliLanguage::Language> chosen =
-        lang ? CliLanguage::fromId(*lang) : std::optional(CliLanguage::systemLanguage());
-    const CliLanguage::Language language =
-        json ? CliLanguage::Language::English : chosen.value_or(CliLanguage::systemLanguage());
+    const std::optional<CliLanguage::Language> chosen = lang ? CliLanguage::fromId(*lang)
+                                                             : std::optional(CliLanguage::systemLanguage());
+    const CliLanguage::Language language = json ? CliLanguage::Language::English
+                                                : chosen.value_or(CliLanguage::systemLanguage());
     if (!m_language.apply(language))
-        out.note(QStringLiteral("The %1 translation is missing; messages stay in English.")
-                     .arg(CliLanguage::id(language)));
+        out.note(
+            QStringLiteral("The %1 translation is missing; messages stay in English.").arg(CliLanguage::id(language)));
     if (!chosen) {
-        out.failure(QString(), int(CliExit::Usage),
-                    {ErrorCode::InvalidArgument,
-                     tr("Unknown language \"%1\" for --lang. Languages: en, zh_CN, system (the locale's).")
-                         .arg(*lang)});
+        out.failure(
+            QString(), int(CliExit::Usage),
+            {ErrorCode::InvalidArgument,
+             tr("Unknown language \"%1\" for --lang. Languages: en, zh_CN, system (the locale's).").arg(*lang)});
         return false;
     }
     return true;
@@ -110,8 +110,7 @@ std::optional<CliExit> Cli::answerWithoutCommand(const CliInvocation &inv, CliOu
         return CliExit::Ok;
     }
     if (inv.command.isEmpty()) {
-        out.failure(QString(), int(CliExit::Usage),
-                    {ErrorCode::InvalidArgument, tr("No command given.")});
+        out.failure(QString(), int(CliExit::Usage), {ErrorCode::InvalidArgument, tr("No command given.")});
         out.note(tr("Try: drivedesk-cli --help"));
         return CliExit::Usage;
     }
@@ -150,7 +149,7 @@ Error Cli::startBench(SimBench *bench, CliGlobals *globals)
     o.stateFile = globals->simStateFile;
     o.demoMotion = globals->simMotion;
     if (globals->isCanLink())
-        o.can = QStringLiteral("virtualcan:auto");   // a private hub: nobody else on this bus
+        o.can = QStringLiteral("virtualcan:auto"); // a private hub: nobody else on this bus
     if (globals->simDrives.isEmpty())
         o.addresses = {globals->address};
     for (const CliGlobals::SimDrive &d : std::as_const(globals->simDrives)) {
@@ -177,8 +176,7 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
     CliOutput &out = *context.out;
     DriveConnection connection;
     if (context.globals.trace)
-        connect(connection.tap(), &TrafficTap::frameRecorded, this,
-                [&out](const TrafficRecord &r) { out.trace(r); });
+        connect(connection.tap(), &TrafficTap::frameRecorded, this, [&out](const TrafficRecord &r) { out.trace(r); });
 
     SimBench bench;
     if (context.globals.sim && command->needsLink()) {
@@ -197,7 +195,8 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
                 e.message = tr("Could not open %1.").arg(context.globals.connection.linkName());
             const CliExit code = e.code == ErrorCode::OpenFailed || e.code == ErrorCode::LinkClosed
                 ? CliExit::OpenFailed
-                : e.code == ErrorCode::InvalidArgument ? CliExit::Usage : CliExit::DriveFailed;
+                : e.code == ErrorCode::InvalidArgument ? CliExit::Usage
+                                                       : CliExit::DriveFailed;
             out.failure(command->name(), int(code), e);
             return int(code);
         }

@@ -73,8 +73,7 @@ void CliCommand::fail(const Error &error, const QJsonObject &partial, std::optio
     const CliExit c = code.value_or(exitFor(error) == CliExit::Ok ? CliExit::DriveFailed : exitFor(error));
     Error shown = error;
     if (error.code == ErrorCode::Timeout && m_name != QLatin1String("scan"))
-        shown.message += QLatin1Char(' ')
-            + tr("If the address or baud rate may be wrong, try: drivedesk-cli ... scan");
+        shown.message += QLatin1Char(' ') + tr("If the address or baud rate may be wrong, try: drivedesk-cli ... scan");
     out()->failure(m_name, int(c), shown, partial);
     finish(c);
 }
@@ -87,8 +86,7 @@ void CliCommand::finish(CliExit code)
     emit done(int(code));
 }
 
-bool CliCommand::expectArguments(const CliInvocation &inv, int min, int max, const QString &what,
-                                 QString *error) const
+bool CliCommand::expectArguments(const CliInvocation &inv, int min, int max, const QString &what, QString *error) const
 {
     const int n = int(inv.positionals.size());
     if (n < min) {

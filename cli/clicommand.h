@@ -74,12 +74,10 @@ protected:
 
     void succeed(const QJsonObject &json, const QString &text);
     // Report `error` and finish with `code` (default: the code for the error).
-    void fail(const Error &error, const QJsonObject &partial = {},
-              std::optional<CliExit> code = std::nullopt);
+    void fail(const Error &error, const QJsonObject &partial = {}, std::optional<CliExit> code = std::nullopt);
     void finish(CliExit code);
     // Checks the number of arguments; false with a message when it does not fit.
-    bool expectArguments(const CliInvocation &inv, int min, int max, const QString &what,
-                         QString *error) const;
+    bool expectArguments(const CliInvocation &inv, int min, int max, const QString &what, QString *error) const;
 
     // Call `handler` when `reply` finishes (from the event loop), then delete the reply.
     void onFinished(DriveReply *reply, std::function<void(DriveReply *)> handler);

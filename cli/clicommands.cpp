@@ -2,18 +2,24 @@
 
 #include "cli/backupcommands.h"
 #include "cli/drivecommands.h"
-#include "cli/paramcommands.h"
 #include "cli/eecommand.h"
 #include "cli/monitorcommand.h"
 #include "cli/motioncommands.h"
+#include "cli/paramcommands.h"
 #include "cli/scancommand.h"
 
 namespace dd {
 
 namespace {
 
-CliOptionSpec flag(const char *name) { return {QLatin1String(name), false, {}}; }
-CliOptionSpec valued(const char *name, QChar shortName = {}) { return {QLatin1String(name), true, shortName}; }
+CliOptionSpec flag(const char *name)
+{
+    return {QLatin1String(name), false, {}};
+}
+CliOptionSpec valued(const char *name, QChar shortName = {})
+{
+    return {QLatin1String(name), true, shortName};
+}
 
 } // namespace
 

@@ -64,8 +64,7 @@ QJsonObject CliDescribe::discovered(const DiscoveredDrive &d)
 
 QString CliDescribe::discoveredText(const DiscoveredDrive &d)
 {
-    const QString speed = d.baud ? tr("%1 baud").arg(d.baud)
-                                 : d.bitrate ? tr("%1 bit/s").arg(d.bitrate) : QString();
+    const QString speed = d.baud ? tr("%1 baud").arg(d.baud) : d.bitrate ? tr("%1 bit/s").arg(d.bitrate) : QString();
     QStringList cols{familyId(d.family), tr("address %1").arg(d.address)};
     if (!speed.isEmpty())
         cols << speed;
@@ -104,12 +103,10 @@ int CliDescribe::displayWidth(const QString &text)
 {
     int width = 0;
     for (const char32_t c : text.toUcs4()) {
-        const bool wide = (c >= 0x1100 && c <= 0x115F) || (c >= 0x2E80 && c <= 0x303E)
-            || (c >= 0x3041 && c <= 0x33FF) || (c >= 0x3400 && c <= 0x4DBF)
-            || (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0xA000 && c <= 0xA4CF)
-            || (c >= 0xAC00 && c <= 0xD7A3) || (c >= 0xF900 && c <= 0xFAFF)
-            || (c >= 0xFE30 && c <= 0xFE4F) || (c >= 0xFF00 && c <= 0xFF60)
-            || (c >= 0xFFE0 && c <= 0xFFE6) || (c >= 0x20000 && c <= 0x3FFFD);
+        const bool wide = (c >= 0x1100 && c <= 0x115F) || (c >= 0x2E80 && c <= 0x303E) || (c >= 0x3041 && c <= 0x33FF)
+            || (c >= 0x3400 && c <= 0x4DBF) || (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0xA000 && c <= 0xA4CF)
+            || (c >= 0xAC00 && c <= 0xD7A3) || (c >= 0xF900 && c <= 0xFAFF) || (c >= 0xFE30 && c <= 0xFE4F)
+            || (c >= 0xFF00 && c <= 0xFF60) || (c >= 0xFFE0 && c <= 0xFFE6) || (c >= 0x20000 && c <= 0x3FFFD);
         width += wide ? 2 : 1;
     }
     return width;

@@ -26,7 +26,7 @@ QList<CliOptionSpec> CliGlobals::optionSpecs()
         {QStringLiteral("sim-drives"), true, {}},
         {QStringLiteral("sim-state"), true, {}},
         {QStringLiteral("sim-motion"), false, {}},
-        {QStringLiteral("lang"), true, {}},   // read by Cli::run before parsing (CliLanguage)
+        {QStringLiteral("lang"), true, {}}, // read by Cli::run before parsing (CliLanguage)
         {QStringLiteral("help"), false, QLatin1Char('h')},
         {QStringLiteral("version"), false, QLatin1Char('V')},
     };
@@ -49,9 +49,8 @@ int CliGlobals::defaultAddress(Family)
 
 bool CliGlobals::load(const CliInvocation &inv, QString *error)
 {
-    return loadFlags(inv, error) && loadLink(inv, error) && loadFamily(inv, error)
-        && loadNumbers(inv, error) && loadOptions(inv, error) && loadAddress(inv, error)
-        && loadSimDrives(inv, error);
+    return loadFlags(inv, error) && loadLink(inv, error) && loadFamily(inv, error) && loadNumbers(inv, error)
+        && loadOptions(inv, error) && loadAddress(inv, error) && loadSimDrives(inv, error);
 }
 
 bool CliGlobals::loadFlags(const CliInvocation &inv, QString *error)
@@ -94,8 +93,7 @@ bool CliGlobals::loadLink(const CliInvocation &inv, QString *error)
     if (!c.can.isEmpty()) {
         CanSettings cs;
         if (!CanSettings::parse(c.can, &cs) || cs.plugin.isEmpty() || cs.interface.isEmpty()) {
-            *error = tr("--can \"%1\": write PLUGIN:INTERFACE, e.g. socketcan:can0 or virtualcan:can0.")
-                         .arg(c.can);
+            *error = tr("--can \"%1\": write PLUGIN:INTERFACE, e.g. socketcan:can0 or virtualcan:can0.").arg(c.can);
             return false;
         }
     }
@@ -209,7 +207,8 @@ bool CliGlobals::loadOptions(const CliInvocation &inv, QString *error)
         const QString key = item.left(eq).trimmed();
         if (eq <= 0 || key.isEmpty() || !key.contains(QLatin1Char('.'))) {
             *error = tr("--option: write FAMILY.KEY=VALUE, e.g. --option shuoke.checksum=twos-complement "
-                        "(got \"%1\").").arg(item);
+                        "(got \"%1\").")
+                         .arg(item);
             return false;
         }
         connection.options.insert(key, item.mid(eq + 1).trimmed());

@@ -21,11 +21,15 @@ public:
     QString dictionaryFile;
     bool sim = false;
     // --sim-drives ADDR[@BAUD],...: the simulated drives (empty: one at `address`).
-    struct SimDrive { int address = 1; int baud = 0; };
+    struct SimDrive
+    {
+        int address = 1;
+        int baud = 0;
+    };
     QList<SimDrive> simDrives;
-    bool simMotion = false;      // --sim-motion: the simulated drives move on their own
-    QString simStateFile;        // --sim-state FILE: the bench's state, loaded and saved
-    QString simDescription;      // set once the bench runs
+    bool simMotion = false; // --sim-motion: the simulated drives move on their own
+    QString simStateFile;   // --sim-state FILE: the bench's state, loaded and saved
+    QString simDescription; // set once the bench runs
 
     // The option table (for the parser and the help).
     static QList<CliOptionSpec> optionSpecs();

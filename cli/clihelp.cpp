@@ -6,8 +6,7 @@ QString CliHelp::general()
 {
     // One text per section, so that a change to one section leaves the translations of the
     // others valid.
-    return QStringList{usage(), linkOptions(), outputOptions(), commandList(), exitCodes(), simulator(),
-                       examples()}
+    return QStringList{usage(), linkOptions(), outputOptions(), commandList(), exitCodes(), simulator(), examples()}
         .join(QLatin1Char('\n'));
 }
 
@@ -104,13 +103,12 @@ QString CliHelp::simulator()
 QString CliHelp::examples()
 {
     return tr("Examples:\n")
-        + QStringLiteral(
-            "  drivedesk-cli --port /dev/ttyUSB0 scan --bauds 9600,19200,115200\n"
-            "  drivedesk-cli --port /dev/ttyUSB0 --address 3 set PA12=300 PA13=50\n"
-            "  drivedesk-cli --can socketcan:can0 --address 1 backup -o axis1.ddbackup\n"
-            "  drivedesk-cli --family shuoke --port COM3 --json monitor speed,position --rate 20\n"
-            "  drivedesk-cli --sim --family servo-can jog 100 --duration 2\n"
-            "  drivedesk-cli --lang zh_CN --sim get PA0 PA1\n");
+        + QStringLiteral("  drivedesk-cli --port /dev/ttyUSB0 scan --bauds 9600,19200,115200\n"
+                         "  drivedesk-cli --port /dev/ttyUSB0 --address 3 set PA12=300 PA13=50\n"
+                         "  drivedesk-cli --can socketcan:can0 --address 1 backup -o axis1.ddbackup\n"
+                         "  drivedesk-cli --family shuoke --port COM3 --json monitor speed,position --rate 20\n"
+                         "  drivedesk-cli --sim --family servo-can jog 100 --duration 2\n"
+                         "  drivedesk-cli --lang zh_CN --sim get PA0 PA1\n");
 }
 
 QString CliHelp::command(const QString &name)

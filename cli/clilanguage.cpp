@@ -51,7 +51,7 @@ std::optional<QString> CliLanguage::requested(const QStringList &arguments)
             value = a.mid(7);
         }
     }
-    return value;   // the last one wins, as for every option
+    return value; // the last one wins, as for every option
 }
 
 void CliLanguage::remove()

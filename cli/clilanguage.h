@@ -19,11 +19,11 @@ public:
     enum class Language { English, Chinese };
 
     CliLanguage();
-    ~CliLanguage();   // removes the translators it installed
+    ~CliLanguage(); // removes the translators it installed
     CliLanguage(const CliLanguage &) = delete;
     CliLanguage &operator=(const CliLanguage &) = delete;
 
-    static QString id(Language language);    // "en", "zh_CN"
+    static QString id(Language language); // "en", "zh_CN"
     // "en", "zh_CN" and their variants ("en_US", "zh", "zh-CN", ...) or "system" (the
     // locale's); nullopt for anything else.
     static std::optional<Language> fromId(const QString &id);

@@ -50,15 +50,13 @@ void CliOutput::note(const QString &text)
 
 QJsonObject CliOutput::errorJson(const Error &error)
 {
-    QJsonObject e{{QStringLiteral("code"), errorCodeName(error.code)},
-                  {QStringLiteral("message"), error.message}};
+    QJsonObject e{{QStringLiteral("code"), errorCodeName(error.code)}, {QStringLiteral("message"), error.message}};
     if (error.driveCode)
         e.insert(QStringLiteral("driveCode"), error.driveCode);
     return e;
 }
 
-void CliOutput::failure(const QString &command, int exitCode, const Error &error,
-                        const QJsonObject &partial)
+void CliOutput::failure(const QString &command, int exitCode, const Error &error, const QJsonObject &partial)
 {
     note(error.message.isEmpty() ? errorCodeName(error.code) : error.message);
     if (!m_json)

@@ -25,14 +25,13 @@ public:
 
     // The result of a command: `json` in JSON mode, `text` (may be several lines) otherwise.
     void result(const QJsonObject &json, const QString &text);
-    void line(const QString &text);            // stdout, text mode only
-    void jsonLine(const QJsonObject &json);    // stdout, always
-    void note(const QString &text);            // stderr, "drivedesk-cli: ..."
+    void line(const QString &text);         // stdout, text mode only
+    void jsonLine(const QJsonObject &json); // stdout, always
+    void note(const QString &text);         // stderr, "drivedesk-cli: ..."
     // A failed command: the message on stderr; in JSON mode also a document on stdout
     // {"command", "ok": false, "exitCode", "error": {"code", "message"}} merged into `partial`.
-    void failure(const QString &command, int exitCode, const Error &error,
-                 const QJsonObject &partial = {});
-    void trace(const TrafficRecord &record);   // stderr, one timestamped line per frame
+    void failure(const QString &command, int exitCode, const Error &error, const QJsonObject &partial = {});
+    void trace(const TrafficRecord &record); // stderr, one timestamped line per frame
 
     static QJsonObject errorJson(const Error &error);
 

@@ -7,8 +7,7 @@ namespace {
 bool looksLikeNumber(const QString &arg)
 {
     // "-100", "-0.5", "-.5": a negative value, not an option.
-    return arg.size() > 1 && arg.at(0) == QLatin1Char('-')
-        && (arg.at(1).isDigit() || arg.at(1) == QLatin1Char('.'));
+    return arg.size() > 1 && arg.at(0) == QLatin1Char('-') && (arg.at(1).isDigit() || arg.at(1) == QLatin1Char('.'));
 }
 
 } // namespace
@@ -105,8 +104,7 @@ bool CliParser::parse(const QStringList &arguments, CliInvocation *out, QString 
     return true;
 }
 
-bool CliParser::takeWord(const QString &arg, const CliCommandSpec **command, CliInvocation *out,
-                         QString *error) const
+bool CliParser::takeWord(const QString &arg, const CliCommandSpec **command, CliInvocation *out, QString *error) const
 {
     if (*command) {
         out->positionals << arg;
@@ -114,16 +112,14 @@ bool CliParser::takeWord(const QString &arg, const CliCommandSpec **command, Cli
     }
     *command = findCommand(arg);
     if (!*command) {
-        *error = tr("Unknown command \"%1\". Commands: %2.")
-                     .arg(arg, commandNames().join(QLatin1String(", ")));
+        *error = tr("Unknown command \"%1\". Commands: %2.").arg(arg, commandNames().join(QLatin1String(", ")));
         return false;
     }
     out->command = (*command)->name;
     return true;
 }
 
-bool CliParser::readOption(const QString &arg, const CliCommandSpec *command, OptionWord *word,
-                           QString *error) const
+bool CliParser::readOption(const QString &arg, const CliCommandSpec *command, OptionWord *word, QString *error) const
 {
     QString shown;
     if (arg.startsWith(QLatin1String("--"))) {
@@ -144,7 +140,7 @@ bool CliParser::readOption(const QString &arg, const CliCommandSpec *command, Op
         if (!word->spec && command)
             word->spec = findShort(command->options, arg.at(1));
         if (word->spec && arg.size() > 2) {
-            word->inlineValue = arg.mid(2);  // -oFILE
+            word->inlineValue = arg.mid(2); // -oFILE
             word->hasInlineValue = true;
         }
     }

@@ -15,7 +15,7 @@ struct CliOptionSpec
     QString name;
     bool takesValue = false;
     QChar shortName;
-    bool repeatable = false;   // every value is kept (CliInvocation::values)
+    bool repeatable = false; // every value is kept (CliInvocation::values)
 };
 
 // A command and the options it accepts besides the global ones.
@@ -29,9 +29,9 @@ struct CliCommandSpec
 struct CliInvocation
 {
     QString command;
-    QStringList positionals;              // the command's arguments, in order
-    QHash<QString, QString> options;      // long name → value ("" for flags); last one wins
-    QHash<QString, QStringList> lists;    // repeatable options: every value, in order
+    QStringList positionals;           // the command's arguments, in order
+    QHash<QString, QString> options;   // long name → value ("" for flags); last one wins
+    QHash<QString, QStringList> lists; // repeatable options: every value, in order
 
     bool has(const QString &name) const { return options.contains(name); }
     QString value(const QString &name) const { return options.value(name); }

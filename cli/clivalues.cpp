@@ -5,8 +5,8 @@
 
 namespace dd {
 
-std::optional<qint64> CliValues::integer(const QString &text, qint64 min, qint64 max,
-                                         const QString &what, QString *error)
+std::optional<qint64> CliValues::integer(const QString &text, qint64 min, qint64 max, const QString &what,
+                                         QString *error)
 {
     QString t = text.trimmed();
     bool negative = false;
@@ -33,8 +33,7 @@ std::optional<qint64> CliValues::integer(const QString &text, qint64 min, qint64
     return v;
 }
 
-std::optional<double> CliValues::real(const QString &text, double min, double max,
-                                      const QString &what, QString *error)
+std::optional<double> CliValues::real(const QString &text, double min, double max, const QString &what, QString *error)
 {
     bool ok = false;
     const double v = text.trimmed().toDouble(&ok);
@@ -49,8 +48,8 @@ std::optional<double> CliValues::real(const QString &text, double min, double ma
     return v;
 }
 
-std::optional<QList<qint64>> CliValues::integerList(const QString &text, qint64 min, qint64 max,
-                                                    const QString &what, QString *error)
+std::optional<QList<qint64>> CliValues::integerList(const QString &text, qint64 min, qint64 max, const QString &what,
+                                                    QString *error)
 {
     QList<qint64> out;
     const QStringList items = text.split(QLatin1Char(','));
@@ -71,11 +70,9 @@ std::optional<QList<qint64>> CliValues::integerList(const QString &text, qint64 
 std::optional<bool> CliValues::onOff(const QString &text, const QString &what, QString *error)
 {
     const QString t = text.trimmed().toLower();
-    if (t == QLatin1String("on") || t == QLatin1String("1") || t == QLatin1String("true")
-        || t == QLatin1String("yes"))
+    if (t == QLatin1String("on") || t == QLatin1String("1") || t == QLatin1String("true") || t == QLatin1String("yes"))
         return true;
-    if (t == QLatin1String("off") || t == QLatin1String("0") || t == QLatin1String("false")
-        || t == QLatin1String("no"))
+    if (t == QLatin1String("off") || t == QLatin1String("0") || t == QLatin1String("false") || t == QLatin1String("no"))
         return false;
     *error = tr("%1: expected on or off, not \"%2\".").arg(what, text);
     return std::nullopt;

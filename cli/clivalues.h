@@ -14,13 +14,12 @@ class CliValues
     Q_DECLARE_TR_FUNCTIONS(dd::Cli)
 public:
     // Decimal, or hexadecimal with 0x; an optional sign. No leading zeros read as octal.
-    static std::optional<qint64> integer(const QString &text, qint64 min, qint64 max,
-                                         const QString &what, QString *error);
-    static std::optional<double> real(const QString &text, double min, double max,
-                                      const QString &what, QString *error);
+    static std::optional<qint64> integer(const QString &text, qint64 min, qint64 max, const QString &what,
+                                         QString *error);
+    static std::optional<double> real(const QString &text, double min, double max, const QString &what, QString *error);
     // "9600,19200" → {9600, 19200}; empty items are an error.
-    static std::optional<QList<qint64>> integerList(const QString &text, qint64 min, qint64 max,
-                                                    const QString &what, QString *error);
+    static std::optional<QList<qint64>> integerList(const QString &text, qint64 min, qint64 max, const QString &what,
+                                                    QString *error);
     // "on" / "off" (also 1/0, true/false, yes/no).
     static std::optional<bool> onOff(const QString &text, const QString &what, QString *error);
 };

@@ -102,8 +102,8 @@ void ChannelsCommand::start()
     // fall back to the family's list when the drive does not answer.
     onFinished(drive()->refreshIdentity(), [this](DriveReply *r) {
         if (!r->ok())
-            out()->note(tr("Could not identify the drive (%1); listing the family's channels.")
-                            .arg(r->error().message));
+            out()->note(
+                tr("Could not identify the drive (%1); listing the family's channels.").arg(r->error().message));
         const QList<ChannelInfo> channels = drive()->channels();
         QList<QPair<QString, QString>> rows;
         for (const ChannelInfo &c : channels)
@@ -148,8 +148,7 @@ void EnableCommand::start()
     onFinished(drive()->setEnabled(m_on), [this](DriveReply *r) {
         if (!r->ok())
             return fail(r->error());
-        succeed({{QStringLiteral("enabled"), m_on}},
-                m_on ? tr("Servo enabled.") : tr("Servo disabled."));
+        succeed({{QStringLiteral("enabled"), m_on}}, m_on ? tr("Servo enabled.") : tr("Servo disabled."));
     });
 }
 
@@ -177,10 +176,10 @@ void ClearAlarmCommand::start()
                 return fail({ErrorCode::DriveException,
                              tr("Alarm %1 is still active: its cause persists. Remove the cause "
                                 "(see the drive's manual), then clear again.")
-                                 .arg(alarmText(drive()->family(), code)), code},
+                                 .arg(alarmText(drive()->family(), code)),
+                             code},
                             {{QStringLiteral("alarm"), code}});
-            succeed({{QStringLiteral("alarm"), 0}, {QStringLiteral("verified"), true}},
-                    tr("Alarm cleared."));
+            succeed({{QStringLiteral("alarm"), 0}, {QStringLiteral("verified"), true}}, tr("Alarm cleared."));
         });
     });
 }

@@ -10,9 +10,12 @@ class InfoCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit InfoCommand(CliContext *c) : CliCommand(QStringLiteral("info"), c) {}
+    explicit InfoCommand(CliContext *c)
+        : CliCommand(QStringLiteral("info"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
-    bool identifyFirst() const override { return false; }   // start() does
+    bool identifyFirst() const override { return false; } // start() does
     void start() override;
 
 private:
@@ -25,9 +28,12 @@ class ChannelsCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit ChannelsCommand(CliContext *c) : CliCommand(QStringLiteral("channels"), c) {}
+    explicit ChannelsCommand(CliContext *c)
+        : CliCommand(QStringLiteral("channels"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
-    bool identifyFirst() const override { return false; }   // start() does
+    bool identifyFirst() const override { return false; } // start() does
     void start() override;
 };
 
@@ -35,10 +41,13 @@ class StopCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit StopCommand(CliContext *c) : CliCommand(QStringLiteral("stop"), c) {}
+    explicit StopCommand(CliContext *c)
+        : CliCommand(QStringLiteral("stop"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
-    void interrupt(int) override {}   // a stop is never abandoned half-way
+    void interrupt(int) override { } // a stop is never abandoned half-way
     bool identifyMayFail() const override { return true; }
 
 private:
@@ -49,7 +58,10 @@ class EnableCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit EnableCommand(CliContext *c) : CliCommand(QStringLiteral("enable"), c) {}
+    explicit EnableCommand(CliContext *c)
+        : CliCommand(QStringLiteral("enable"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
 
@@ -61,7 +73,10 @@ class ClearAlarmCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit ClearAlarmCommand(CliContext *c) : CliCommand(QStringLiteral("clear-alarm"), c) {}
+    explicit ClearAlarmCommand(CliContext *c)
+        : CliCommand(QStringLiteral("clear-alarm"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
 };

@@ -1,7 +1,7 @@
 #include "cli/eecommand.h"
 
-#include "core/protocol/familytraits.h"
 #include "core/drive/drive.h"
+#include "core/protocol/familytraits.h"
 
 namespace dd {
 
@@ -11,8 +11,7 @@ bool EeCommand::prepare(const CliInvocation &inv, QString *error)
         return false;
     const auto op = eeFromText(inv.positionals.at(0));
     if (!op) {
-        *error = tr("ee: unknown operation \"%1\". Operations: set, rd, ba, rs, def.")
-                     .arg(inv.positionals.at(0));
+        *error = tr("ee: unknown operation \"%1\". Operations: set, rd, ba, rs, def.").arg(inv.positionals.at(0));
         return false;
     }
     if (!familyTraits(context()->globals.connection.family).eeOperations) {
@@ -20,8 +19,7 @@ bool EeCommand::prepare(const CliInvocation &inv, QString *error)
         for (const FamilyTraits *t : allFamilyTraits())
             if (t->eeOperations)
                 families << t->id();
-        *error = tr("EEPROM operations exist only on %1 drives (--family %1).")
-                     .arg(families.join(QLatin1String(", ")));
+        *error = tr("EEPROM operations exist only on %1 drives (--family %1).").arg(families.join(QLatin1String(", ")));
         return false;
     }
     m_op = *op;
@@ -32,8 +30,7 @@ void EeCommand::start()
 {
     out()->note(tr("%1: %2 ...").arg(eeMnemonic(m_op), eeMeaning(m_op)));
     onFinished(drive()->eeOperation(m_op), [this](DriveReply *r) {
-        const QJsonObject json{{QStringLiteral("operation"), eeMnemonic(m_op)},
-                               {QStringLiteral("code"), int(m_op)}};
+        const QJsonObject json{{QStringLiteral("operation"), eeMnemonic(m_op)}, {QStringLiteral("code"), int(m_op)}};
         if (!r->ok())
             return fail(r->error(), json);
         succeed(json, tr("%1 done.").arg(eeMnemonic(m_op)));

@@ -9,7 +9,10 @@ class EeCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit EeCommand(CliContext *c) : CliCommand(QStringLiteral("ee"), c) {}
+    explicit EeCommand(CliContext *c)
+        : CliCommand(QStringLiteral("ee"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
     // An EEPROM operation in progress is not abandoned: the drive finishes it anyway.

@@ -26,8 +26,10 @@ MonitorCommand::MonitorCommand(CliContext *c)
 
 bool MonitorCommand::prepare(const CliInvocation &inv, QString *error)
 {
-    if (!expectArguments(inv, 1, -1, tr("a comma-separated list of channels, e.g. speed,torque "
-                                        "(see the channels command)"), error))
+    if (!expectArguments(inv, 1, -1,
+                         tr("a comma-separated list of channels, e.g. speed,torque "
+                            "(see the channels command)"),
+                         error))
         return false;
     for (const QString &arg : inv.positionals) {
         for (const QString &id : arg.split(QLatin1Char(','))) {
@@ -41,8 +43,7 @@ bool MonitorCommand::prepare(const CliInvocation &inv, QString *error)
         }
     }
     if (inv.has(QStringLiteral("rate"))) {
-        const auto v = CliValues::real(inv.value(QStringLiteral("rate")), 0.01, 1000,
-                                       QStringLiteral("--rate"), error);
+        const auto v = CliValues::real(inv.value(QStringLiteral("rate")), 0.01, 1000, QStringLiteral("--rate"), error);
         if (!v)
             return false;
         m_rateHz = *v;
@@ -150,7 +151,7 @@ void MonitorCommand::onSample(double timeS, const QMap<QString, double> &values)
 
 void MonitorCommand::interrupt(int)
 {
-    end({});   // Ctrl-C is the normal end of an open-ended monitor
+    end({}); // Ctrl-C is the normal end of an open-ended monitor
 }
 
 void MonitorCommand::end(const Error &error)
@@ -168,15 +169,16 @@ void MonitorCommand::end(const Error &error)
         if (!e)
             e = ce;
     }
-    QJsonObject summary{{QStringLiteral("samples"), double(samples)},
-                        {QStringLiteral("skipped"), double(skipped)}};
+    QJsonObject summary{{QStringLiteral("samples"), double(samples)}, {QStringLiteral("skipped"), double(skipped)}};
     if (!m_csvPath.isEmpty())
         summary.insert(QStringLiteral("file"), m_csvPath);
     if (e)
         return fail(e, summary);
     if (skipped > 0)
         out()->note(tr("%1 ticks were skipped because the link was slower than %2 Hz; "
-                       "lower --rate or sample fewer channels.").arg(skipped).arg(m_rateHz));
+                       "lower --rate or sample fewer channels.")
+                        .arg(skipped)
+                        .arg(m_rateHz));
     if (m_csvPath.isEmpty()) {
         // The samples were the output; in JSON mode end with a summary line.
         if (out()->isJson()) {

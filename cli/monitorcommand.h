@@ -27,10 +27,10 @@ private:
 
     QStringList m_channelIds;
 
-    QList<int> m_columnWidths;   // text output: from the header
+    QList<int> m_columnWidths; // text output: from the header
     QList<ChannelInfo> m_channels;
     double m_rateHz = 10.0;
-    double m_durationS = 0.0;   // 0: until Ctrl-C
+    double m_durationS = 0.0; // 0: until Ctrl-C
     QString m_csvPath;
     CsvWriter m_csv;
     ChannelSampler *m_sampler = nullptr;

@@ -11,8 +11,7 @@ namespace dd {
 namespace {
 
 // Stops the axis after an interrupted move or homing; reports how it went.
-void stopAfterInterrupt(CliCommand *command, Drive *drive, CliOutput *out,
-                        std::function<void(const Error &)> done)
+void stopAfterInterrupt(CliCommand *command, Drive *drive, CliOutput *out, std::function<void(const Error &)> done)
 {
     out->note(QCoreApplication::translate("dd::Cli", "Interrupted: stopping the axis."));
     DriveReply *r = drive->stop(false);
@@ -68,8 +67,9 @@ void JogCommand::start()
     });
     connect(d, &Drive::alarmChanged, this, [this](int code) {
         if (code != 0)
-            stopNow(Reason::Error, {ErrorCode::DriveException,
-                                    tr("The drive raised alarm %1 while jogging; stopped.").arg(code), code});
+            stopNow(
+                Reason::Error,
+                {ErrorCode::DriveException, tr("The drive raised alarm %1 while jogging; stopped.").arg(code), code});
     });
     // Emitted before connectionLost and before a stop's reply: says what stops the axis.
     connect(d, &Drive::jogEnded, this, [this](const JogEnd &end) { m_end = end; });
@@ -123,7 +123,8 @@ void JogCommand::onStopped(DriveReply *reply)
 {
     const double ran = double(m_clock.elapsed()) / 1000.0;
     const QString why = m_reason == Reason::Duration ? QStringLiteral("duration")
-        : m_reason == Reason::Signal ? QStringLiteral("signal") : QStringLiteral("error");
+        : m_reason == Reason::Signal                 ? QStringLiteral("signal")
+                                                     : QStringLiteral("error");
     // What stops the axis: our stop command, the drive's own watchdog, or nothing.
     const QString axis = reply->info().value(QStringLiteral("stoppedBy")).toString();
     QJsonObject json{{QStringLiteral("speed"), m_speed},
@@ -136,22 +137,26 @@ void JogCommand::onStopped(DriveReply *reply)
         Error e = reply->error();
         e.message = axis == QLatin1String("drive-watchdog")
             ? tr("STOP FAILED: %1 The drive's own watchdog stops the axis when it hears "
-                 "nothing from us; check that it has stopped.").arg(e.message)
+                 "nothing from us; check that it has stopped.")
+                  .arg(e.message)
             : tr("STOP FAILED: %1 The axis may still be moving: use the machine's "
-                 "emergency stop.").arg(e.message);
+                 "emergency stop.")
+                  .arg(e.message);
         return fail(e, json, CliExit::DriveFailed);
     }
     if (m_reason == Reason::Error)
         return fail(m_error, json);
-    succeed(json, tr("Jogged at %1 for %2 s; stopped (%3).")
-                      .arg(m_speed).arg(ran, 0, 'f', 2)
-                      .arg(m_reason == Reason::Duration ? tr("duration ended") : tr("interrupted")));
+    succeed(json,
+            tr("Jogged at %1 for %2 s; stopped (%3).")
+                .arg(m_speed)
+                .arg(ran, 0, 'f', 2)
+                .arg(m_reason == Reason::Duration ? tr("duration ended") : tr("interrupted")));
 }
 
 void JogCommand::interrupt(int signalNumber)
 {
     if (!m_clock.isValid())
-        return CliCommand::interrupt(signalNumber);   // not moving yet
+        return CliCommand::interrupt(signalNumber); // not moving yet
     stopNow(Reason::Signal);
 }
 
@@ -163,7 +168,8 @@ void JogCommand::linkLost(const Error &why)
     Error e = why;
     if (e.code == ErrorCode::None)
         e.code = ErrorCode::LinkClosed;
-    QJsonObject json{{QStringLiteral("speed"), m_speed}, {QStringLiteral("stoppedBy"), QStringLiteral("error")},
+    QJsonObject json{{QStringLiteral("speed"), m_speed},
+                     {QStringLiteral("stoppedBy"), QStringLiteral("error")},
                      {QStringLiteral("stopped"), false}};
     if (m_end) {
         // The drive said what stops the axis now (its watchdog, or nothing).
@@ -171,7 +177,8 @@ void JogCommand::linkLost(const Error &why)
         e.message = tr("The link was lost while jogging (%1). %2").arg(why.message, m_end->message);
     } else {
         e.message = tr("The link was lost while jogging (%1). The drive's own watchdog stops the "
-                       "axis where the family has one; check it has stopped.").arg(why.message);
+                       "axis where the family has one; check it has stopped.")
+                        .arg(why.message);
     }
     fail(e, json);
 }
@@ -211,7 +218,7 @@ void PositioningCommand::follow(DriveReply *reply, const QJsonObject &json, cons
 
 void PositioningCommand::poll()
 {
-    m_poll.stop();   // one status read at a time
+    m_poll.stop(); // one status read at a time
     onFinished(drive()->readStatus(), [this](DriveReply *r) {
         if (m_stopping || isDone())
             return;
@@ -219,8 +226,8 @@ void PositioningCommand::poll()
             return fail(r->error(), m_json);
         const DriveStatus s = r->status();
         if (s.alarmCode != 0)
-            return fail({ErrorCode::DriveException,
-                         tr("The drive raised alarm %1 during the motion.").arg(s.alarmCode), s.alarmCode},
+            return fail({ErrorCode::DriveException, tr("The drive raised alarm %1 during the motion.").arg(s.alarmCode),
+                         s.alarmCode},
                         m_json);
         if (s.running) {
             m_sawRunning = true;
@@ -269,14 +276,14 @@ bool MoveCommand::prepare(const CliInvocation &inv, QString *error)
     m_relative = by;
     const QString opt = by ? QStringLiteral("--by") : QStringLiteral("--to");
     const auto v = CliValues::integer(inv.value(by ? QStringLiteral("by") : QStringLiteral("to")),
-                                      std::numeric_limits<qint32>::min(), std::numeric_limits<qint32>::max(),
-                                      opt, error);
+                                      std::numeric_limits<qint32>::min(), std::numeric_limits<qint32>::max(), opt,
+                                      error);
     if (!v)
         return false;
     m_target = *v;
     if (inv.has(QStringLiteral("speed"))) {
-        const auto s = CliValues::integer(inv.value(QStringLiteral("speed")), 1,
-                                          std::numeric_limits<qint32>::max(), QStringLiteral("--speed"), error);
+        const auto s = CliValues::integer(inv.value(QStringLiteral("speed")), 1, std::numeric_limits<qint32>::max(),
+                                          QStringLiteral("--speed"), error);
         if (!s)
             return false;
         m_speed = qint32(*s);
@@ -288,8 +295,9 @@ void MoveCommand::start()
 {
     Drive *d = drive();
     DriveReply *r = m_relative ? d->moveRelative(m_target, m_speed) : d->moveAbsolute(m_target, m_speed);
-    follow(r, {{m_relative ? QStringLiteral("by") : QStringLiteral("to"), double(m_target)},
-               {QStringLiteral("speed"), m_speed}},
+    follow(r,
+           {{m_relative ? QStringLiteral("by") : QStringLiteral("to"), double(m_target)},
+            {QStringLiteral("speed"), m_speed}},
            m_relative ? tr("Moving by %1.").arg(m_target) : tr("Moving to %1.").arg(m_target));
 }
 

@@ -30,7 +30,7 @@ private:
     void onStopped(DriveReply *reply);
 
     qint32 m_speed = 0;
-    double m_durationS = 0;      // 0: until a signal
+    double m_durationS = 0; // 0: until a signal
     QTimer m_renew;
     QTimer m_duration;
     QElapsedTimer m_clock;
@@ -38,7 +38,7 @@ private:
     bool m_emergencySent = false;
     Reason m_reason = Reason::Duration;
     Error m_error;
-    std::optional<JogEnd> m_end;   // what stops the axis, once the drive has said
+    std::optional<JogEnd> m_end; // what stops the axis, once the drive has said
 };
 
 // A motion that runs to its end: move and home. After the command is accepted it waits
@@ -74,7 +74,10 @@ class MoveCommand : public PositioningCommand
 {
     Q_OBJECT
 public:
-    explicit MoveCommand(CliContext *c) : PositioningCommand(QStringLiteral("move"), c) {}
+    explicit MoveCommand(CliContext *c)
+        : PositioningCommand(QStringLiteral("move"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
 
@@ -89,7 +92,10 @@ class HomeCommand : public PositioningCommand
 {
     Q_OBJECT
 public:
-    explicit HomeCommand(CliContext *c) : PositioningCommand(QStringLiteral("home"), c) {}
+    explicit HomeCommand(CliContext *c)
+        : PositioningCommand(QStringLiteral("home"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
 

@@ -1,8 +1,8 @@
 #include "cli/paramcommands.h"
 
-#include "core/protocol/familytraits.h"
 #include "cli/clidescribe.h"
 #include "cli/clivalues.h"
+#include "core/protocol/familytraits.h"
 
 #include "core/drive/drive.h"
 #include "core/params/parameterdictionary.h"

@@ -10,7 +10,10 @@ class GetCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit GetCommand(CliContext *c) : CliCommand(QStringLiteral("get"), c) {}
+    explicit GetCommand(CliContext *c)
+        : CliCommand(QStringLiteral("get"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
 
@@ -22,11 +25,14 @@ class SetCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit SetCommand(CliContext *c) : CliCommand(QStringLiteral("set"), c) {}
+    explicit SetCommand(CliContext *c)
+        : CliCommand(QStringLiteral("set"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
     // Writes in flight finish (each is verified); nothing new is started.
-    void interrupt(int) override {}
+    void interrupt(int) override { }
 
 private:
     QList<ParameterWrite> m_writes;

@@ -99,8 +99,9 @@ void ScanCommand::onFinished(const Error &error)
                         "termination, the family (--family) and, on a serial bus, try more "
                         "baud rates with --bauds.")},
                     json);
-    succeed(json, m_interrupted ? tr("Scan interrupted; %n drive(s) found.", nullptr, int(m_found.size()))
-                                : tr("%n drive(s) found.", nullptr, int(m_found.size())));
+    succeed(json,
+            m_interrupted ? tr("Scan interrupted; %n drive(s) found.", nullptr, int(m_found.size()))
+                          : tr("%n drive(s) found.", nullptr, int(m_found.size())));
 }
 
 } // namespace dd

@@ -13,14 +13,16 @@ class ScanCommand : public CliCommand
 {
     Q_OBJECT
 public:
-    explicit ScanCommand(CliContext *c) : CliCommand(QStringLiteral("scan"), c) {}
+    explicit ScanCommand(CliContext *c)
+        : CliCommand(QStringLiteral("scan"), c)
+    {
+    }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
     void interrupt(int signalNumber) override;
     bool needsDrive() const override { return false; }
     // The scan prepare() planned: address range and baud sweep.
     const ScanOptions &options() const { return m_options; }
-
 
 private:
     void onFinished(const Error &error);

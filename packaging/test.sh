@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# The project's test entry point (README, .ci/run). Three stages, each a CMake preset
-# (CMakePresets.json), all with two jobs:
+# The project's test entry point (README, .ci/run). A formatting check, then three stages,
+# each a CMake preset (CMakePresets.json), all with two jobs:
 #
+#   format   packaging/check-format.sh: every C++ source formatted with .clang-format (counts
+#            as one test)
 #   default  build/       RelWithDebInfo build, the whole ctest suite
 #   asan     build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer (LeakSanitizer on),
 #                         the whole ctest suite again
@@ -9,7 +11,7 @@
 #                         time on a copy of its corpus (default 25 s; --fuzz-seconds N or
 #                         DRIVEDESK_FUZZ_SECONDS)
 #
-# Usage: packaging/test.sh [--stage default|asan|fuzz|all[,...]] [--fuzz-seconds N]
+# Usage: packaging/test.sh [--stage format|default|asan|fuzz|all[,...]] [--fuzz-seconds N]
 # Every stage runs even when an earlier one failed; a stage that does not configure or build
 # counts as one failure and says that its tests did not run. The exit status is non-zero when
 # anything failed. The last line is always "N passed, N failed" (ctest tests of every stage
@@ -31,11 +33,11 @@ while [ $# -gt 0 ]; do
     *) echo "test.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
-[ "$stages" = "all" ] && stages="default,asan,fuzz"
+[ "$stages" = "all" ] && stages="format,default,asan,fuzz"
 case "$fuzz_seconds" in ''|*[!0-9]*) echo "test.sh: --fuzz-seconds needs a whole number" >&2; exit 2 ;; esac
 IFS=',' read -r -a stage_list <<< "$stages"
 for s in "${stage_list[@]}"; do
-  case "$s" in default|asan|fuzz) ;; *) echo "test.sh: unknown stage '$s' (default, asan, fuzz, all)" >&2; exit 2 ;; esac
+  case "$s" in format|default|asan|fuzz) ;; *) echo "test.sh: unknown stage '$s' (format, default, asan, fuzz, all)" >&2; exit 2 ;; esac
 done
 
 passed=0
@@ -168,8 +170,18 @@ stage_fuzz() {
   note "fuzz: ${#names[@]} targets, ${fuzz_seconds} s each; stage took $(seconds_since "$start") s"
 }
 
+stage_format() {
+  banner "format: packaging/check-format.sh"
+  if ./packaging/check-format.sh; then
+    passed=$((passed + 1)); note "format: every source formatted"
+  else
+    failed=$((failed + 1)); note "format: FAILED (packaging/check-format.sh --fix)"
+  fi
+}
+
 for s in "${stage_list[@]}"; do
   case "$s" in
+    format) stage_format ;;
     default|asan) stage_ctest "$s" ;;
     fuzz) stage_fuzz ;;
   esac

@@ -12,6 +12,6 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
 
     dd::ensureCoreResources();
-    dd::Cli cli;   // it installs the translation (--lang, else the locale)
+    dd::Cli cli; // it installs the translation (--lang, else the locale)
     return cli.run(QCoreApplication::arguments().mid(1));
 }

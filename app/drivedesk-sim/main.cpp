@@ -26,8 +26,7 @@ QString tr(const char *text)
 
 int usageError(const QString &message)
 {
-    QTextStream(stderr) << "drivedesk-sim: " << message << '\n'
-                        << tr("Try 'drivedesk-sim --help'.") << '\n';
+    QTextStream(stderr) << "drivedesk-sim: " << message << '\n' << tr("Try 'drivedesk-sim --help'.") << '\n';
     return 2;
 }
 
@@ -85,44 +84,64 @@ QString familyFramings()
     QStringList framings;
     for (const FamilyTraits *t : allFamilyTraits())
         if (t->framings.size() > 1)
-            framings << QStringLiteral("%1: %2").arg(t->id(), (t->framingIds(LinkKind::Serial) + t->framingIds(LinkKind::Can)).join(QLatin1String(", ")));
+            framings << QStringLiteral("%1: %2").arg(
+                t->id(), (t->framingIds(LinkKind::Serial) + t->framingIds(LinkKind::Can)).join(QLatin1String(", ")));
     return framings.join(QStringLiteral("; "));
 }
 
 QString description()
 {
-    return tr(
-        "Simulated servo and stepper drives on a pty or a CAN bus.\n"
-        "The first line printed is where to connect: 'pty: /dev/pts/N' or 'can: PLUGIN:INTERFACE'.\n"
-        "Runs until SIGINT/SIGTERM (or 'quit' on standard input), then saves --state and exits.\n"
-        "Standard input accepts: silent on|off (power loss), alarm ADDRESS CODE (0 clears), where, quit.\n"
-        "Timing: a reply leaves after the request's and the reply's byte time at --baud (10 bits a\n"
-        "character) or the frame's bit time at --bitrate, plus the drive latency.\n"
-        "Examples:\n"
-        "  drivedesk-sim --family servo-modbus --address 1 --address 2 --pty --link /tmp/rs485\n"
-        "  drivedesk-sim --family servo-can --address 1 --can virtualcan:can0\n"
-        "virtualcan: the simulator hosts a low-delay server on the plugin's default port so that\n"
-        "clients naming plain can0 join it; --can virtualcan:auto uses a private server on a free\n"
-        "port and prints its address (can: virtualcan:tcp://127.0.0.1:PORT/can0).");
+    return tr("Simulated servo and stepper drives on a pty or a CAN bus.\n"
+              "The first line printed is where to connect: 'pty: /dev/pts/N' or 'can: PLUGIN:INTERFACE'.\n"
+              "Runs until SIGINT/SIGTERM (or 'quit' on standard input), then saves --state and exits.\n"
+              "Standard input accepts: silent on|off (power loss), alarm ADDRESS CODE (0 clears), where, quit.\n"
+              "Timing: a reply leaves after the request's and the reply's byte time at --baud (10 bits a\n"
+              "character) or the frame's bit time at --bitrate, plus the drive latency.\n"
+              "Examples:\n"
+              "  drivedesk-sim --family servo-modbus --address 1 --address 2 --pty --link /tmp/rs485\n"
+              "  drivedesk-sim --family servo-can --address 1 --can virtualcan:can0\n"
+              "virtualcan: the simulator hosts a low-delay server on the plugin's default port so that\n"
+              "clients naming plain can0 join it; --can virtualcan:auto uses a private server on a free\n"
+              "port and prints its address (can: virtualcan:tcp://127.0.0.1:PORT/can0).");
 }
 
 // The command line's options, and how they become the bench's options.
 struct CommandLine
 {
-    QCommandLineOption family{QStringLiteral("family"), tr("Drive family: %1.").arg(familyIds().join(QStringLiteral(", "))), QStringLiteral("FAMILY")};
-    QCommandLineOption address{QStringLiteral("address"), tr("A drive at this address (repeat, or a comma list). Default: 1."), QStringLiteral("N")};
+    QCommandLineOption family{QStringLiteral("family"),
+                              tr("Drive family: %1.").arg(familyIds().join(QStringLiteral(", "))),
+                              QStringLiteral("FAMILY")};
+    QCommandLineOption address{QStringLiteral("address"),
+                               tr("A drive at this address (repeat, or a comma list). Default: 1."),
+                               QStringLiteral("N")};
     QCommandLineOption pty{QStringLiteral("pty"), tr("Serve on a new pseudo-terminal (serial families).")};
-    QCommandLineOption link{QStringLiteral("link"), tr("With --pty: also make a symbolic link to the pty at PATH."), QStringLiteral("PATH")};
-    QCommandLineOption can{QStringLiteral("can"), tr("Serve on a CAN bus, e.g. virtualcan:can0 or socketcan:can0."), QStringLiteral("PLUGIN:INTERFACE")};
-    QCommandLineOption baud{QStringLiteral("baud"), tr("Serial baud rate of the drives (%1).").arg(familyDefaults(&FamilyTraits::defaultBaud)), QStringLiteral("N")};
-    QCommandLineOption bitrate{QStringLiteral("bitrate"), tr("CAN bitrate for the timing model (%1).").arg(familyDefaults(&FamilyTraits::defaultBitrate)), QStringLiteral("N")};
-    QCommandLineOption framing{QStringLiteral("framing"), tr("Framing (%1).").arg(familyFramings()), QStringLiteral("F")};
-    QCommandLineOption latency{QStringLiteral("latency-ms"), tr("Drive reply latency in milliseconds (default 1 serial, 0.2 CAN)."), QStringLiteral("N")};
-    QCommandLineOption drop{QStringLiteral("drop"), tr("Probability of dropping a reply (0..1 or N%)."), QStringLiteral("P")};
-    QCommandLineOption corrupt{QStringLiteral("corrupt"), tr("Probability of corrupting a reply (0..1 or N%)."), QStringLiteral("P")};
-    QCommandLineOption seed{QStringLiteral("seed"), tr("Seed of the fault injection (deterministic)."), QStringLiteral("N")};
-    QCommandLineOption state{QStringLiteral("state"), tr("Load parameters from FILE at start (if it exists), save them at exit."), QStringLiteral("FILE")};
-    QCommandLineOption demo{QStringLiteral("demo-motion"), tr("Let the drives move on their own (a slow demo profile).")};
+    QCommandLineOption link{QStringLiteral("link"), tr("With --pty: also make a symbolic link to the pty at PATH."),
+                            QStringLiteral("PATH")};
+    QCommandLineOption can{QStringLiteral("can"), tr("Serve on a CAN bus, e.g. virtualcan:can0 or socketcan:can0."),
+                           QStringLiteral("PLUGIN:INTERFACE")};
+    QCommandLineOption baud{QStringLiteral("baud"),
+                            tr("Serial baud rate of the drives (%1).").arg(familyDefaults(&FamilyTraits::defaultBaud)),
+                            QStringLiteral("N")};
+    QCommandLineOption bitrate{
+        QStringLiteral("bitrate"),
+        tr("CAN bitrate for the timing model (%1).").arg(familyDefaults(&FamilyTraits::defaultBitrate)),
+        QStringLiteral("N")};
+    QCommandLineOption framing{QStringLiteral("framing"), tr("Framing (%1).").arg(familyFramings()),
+                               QStringLiteral("F")};
+    QCommandLineOption latency{QStringLiteral("latency-ms"),
+                               tr("Drive reply latency in milliseconds (default 1 serial, 0.2 CAN)."),
+                               QStringLiteral("N")};
+    QCommandLineOption drop{QStringLiteral("drop"), tr("Probability of dropping a reply (0..1 or N%)."),
+                            QStringLiteral("P")};
+    QCommandLineOption corrupt{QStringLiteral("corrupt"), tr("Probability of corrupting a reply (0..1 or N%)."),
+                               QStringLiteral("P")};
+    QCommandLineOption seed{QStringLiteral("seed"), tr("Seed of the fault injection (deterministic)."),
+                            QStringLiteral("N")};
+    QCommandLineOption state{QStringLiteral("state"),
+                             tr("Load parameters from FILE at start (if it exists), save them at exit."),
+                             QStringLiteral("FILE")};
+    QCommandLineOption demo{QStringLiteral("demo-motion"),
+                            tr("Let the drives move on their own (a slow demo profile).")};
 
     QList<QCommandLineOption> all() const
     {
@@ -143,10 +162,7 @@ struct CommandLine
     }
 
 private:
-    LinkKind linkKind(const QCommandLineParser &p) const
-    {
-        return p.isSet(can) ? LinkKind::Can : LinkKind::Serial;
-    }
+    LinkKind linkKind(const QCommandLineParser &p) const { return p.isSet(can) ? LinkKind::Can : LinkKind::Serial; }
 
     QString readFamilyAndLink(const QCommandLineParser &p, SimBenchOptions *o) const
     {
@@ -161,8 +177,9 @@ private:
         if (p.isSet(pty) == p.isSet(can))
             return tr("Give exactly one of --pty and --can.");
         if (!traits.talks(linkKind(p)))
-            return linkKind(p) == LinkKind::Can ? tr("%1 drives live on RS485: use --pty.").arg(traits.id())
-                                                : tr("%1 drives live on a CAN bus: use --can PLUGIN:INTERFACE.").arg(traits.id());
+            return linkKind(p) == LinkKind::Can
+                ? tr("%1 drives live on RS485: use --pty.").arg(traits.id())
+                : tr("%1 drives live on a CAN bus: use --can PLUGIN:INTERFACE.").arg(traits.id());
         if (p.isSet(link) && !p.isSet(pty))
             return tr("--link needs --pty.");
         o->can = p.value(can);
@@ -208,7 +225,8 @@ private:
         if (!ft || traits.framings.size() < 2)
             return tr("--framing does not apply to the %1 family.").arg(traits.id());
         if (ft->link != linkKind(p))
-            return tr("Framing '%1' needs %2.").arg(o->framing, ft->link == LinkKind::Can ? QStringLiteral("--can") : QStringLiteral("--pty"));
+            return tr("Framing '%1' needs %2.")
+                .arg(o->framing, ft->link == LinkKind::Can ? QStringLiteral("--can") : QStringLiteral("--pty"));
         return {};
     }
 
@@ -223,7 +241,11 @@ private:
                 bool ok = false;
                 const int a = part.trimmed().toInt(&ok);
                 if (!ok || !range.contains(a))
-                    return tr("Bad address '%1': use %2..%3 for %4.").arg(part).arg(range.first).arg(range.last).arg(traits.id());
+                    return tr("Bad address '%1': use %2..%3 for %4.")
+                        .arg(part)
+                        .arg(range.first)
+                        .arg(range.last)
+                        .arg(traits.id());
                 if (o->addresses.contains(a))
                     return tr("Address %1 is given twice.").arg(a);
                 o->addresses << a;

@@ -2,8 +2,8 @@
 #include "core/common/coreresources.h"
 #include "ui/bus/connectrequest.h"
 #include "ui/shell/languagemanager.h"
-#include "ui/workspace/driveworkspace.h"
 #include "ui/shell/mainwindow.h"
+#include "ui/workspace/driveworkspace.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -25,14 +25,14 @@ struct Options
 {
     bool demo = false;
     QString lang;
-    QString connect;          // a serial port, "plugin:interface", or "last"
-    QString family;           // a family id or "detect"
+    QString connect; // a serial port, "plugin:interface", or "last"
+    QString family;  // a family id or "detect"
     int baud = 0;
     int bitrate = 0;
     QString framing;
-    QString panel;            // the drive tab to show first
-    QString drive;            // select the first drive of this family
-    QString screenshot;       // grab the window into this PNG and quit
+    QString panel;      // the drive tab to show first
+    QString drive;      // select the first drive of this family
+    QString screenshot; // grab the window into this PNG and quit
     int screenshotDelayMs = 3000;
 };
 
@@ -40,47 +40,53 @@ struct Options
 Options parseOptions(const QApplication &app)
 {
     QCommandLineParser p;
-    p.setApplicationDescription(dd::DriveDeskMain::tr(
-        "DriveDesk: commissioning workbench for servo and stepper drives."));
+    p.setApplicationDescription(
+        dd::DriveDeskMain::tr("DriveDesk: commissioning workbench for servo and stepper drives."));
     p.addHelpOption();
     p.addVersionOption();
-    const QCommandLineOption demo(QStringLiteral("demo"),
+    const QCommandLineOption demo(
+        QStringLiteral("demo"),
         dd::DriveDeskMain::tr("Start the simulated bench (one drive of each family) and connect to it."));
     const QCommandLineOption lang(QStringLiteral("lang"),
-        dd::DriveDeskMain::tr("User-interface language for this session: en, zh_CN or system "
-                                         "(default: the Language menu's choice)."),
-        QStringLiteral("language"));
-    const QCommandLineOption connect(QStringLiteral("connect"),
+                                  dd::DriveDeskMain::tr("User-interface language for this session: en, zh_CN or system "
+                                                        "(default: the Language menu's choice)."),
+                                  QStringLiteral("language"));
+    const QCommandLineOption connect(
+        QStringLiteral("connect"),
         dd::DriveDeskMain::tr("Connect at start-up and scan: a serial port (/dev/ttyUSB0, COM3), "
-                                         "a CAN interface as plugin:interface (socketcan:can0), or 'last' for "
-                                         "the connection used last."),
+                              "a CAN interface as plugin:interface (socketcan:can0), or 'last' for "
+                              "the connection used last."),
         QStringLiteral("link"));
-    const QCommandLineOption family(QStringLiteral("family"),
+    const QCommandLineOption family(
+        QStringLiteral("family"),
         dd::DriveDeskMain::tr("With --connect: %1 or detect (default).").arg(dd::familyIds().join(QStringLiteral(", "))),
         QStringLiteral("family"));
-    const QCommandLineOption baud(QStringLiteral("baud"),
+    const QCommandLineOption baud(
+        QStringLiteral("baud"),
         dd::DriveDeskMain::tr("With --connect on a serial port: the baud rate (default: the family's)."),
         QStringLiteral("rate"));
-    const QCommandLineOption bitrate(QStringLiteral("bitrate"),
+    const QCommandLineOption bitrate(
+        QStringLiteral("bitrate"),
         dd::DriveDeskMain::tr("With --connect on CAN: the bitrate in bit/s (default: the family's)."),
         QStringLiteral("rate"));
     const QCommandLineOption framing(QStringLiteral("framing"),
-        dd::DriveDeskMain::tr("With --family shuoke: rtu, ascii, plc or can."),
-        QStringLiteral("framing"));
-    const QCommandLineOption panel(QStringLiteral("panel"),
-        dd::DriveDeskMain::tr("The tab to show for the selected drive: overview, trend, ..."),
+                                     dd::DriveDeskMain::tr("With --family shuoke: rtu, ascii, plc or can."),
+                                     QStringLiteral("framing"));
+    const QCommandLineOption panel(
+        QStringLiteral("panel"), dd::DriveDeskMain::tr("The tab to show for the selected drive: overview, trend, ..."),
         QStringLiteral("id"));
     const QCommandLineOption drive(QStringLiteral("drive"),
-        dd::DriveDeskMain::tr("Select the first drive of this family that is found: %1.")
-            .arg(dd::familyIds().join(QStringLiteral(", "))),
-        QStringLiteral("family"));
-    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+                                   dd::DriveDeskMain::tr("Select the first drive of this family that is found: %1.")
+                                       .arg(dd::familyIds().join(QStringLiteral(", "))),
+                                   QStringLiteral("family"));
+    const QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
         dd::DriveDeskMain::tr("Save a picture of the main window to this PNG file after the delay, "
-                                         "then quit (documentation)."),
+                              "then quit (documentation)."),
         QStringLiteral("file"));
     const QCommandLineOption delay(QStringLiteral("screenshot-delay"),
-        dd::DriveDeskMain::tr("Seconds to wait before --screenshot (default 3)."),
-        QStringLiteral("seconds"), QStringLiteral("3"));
+                                   dd::DriveDeskMain::tr("Seconds to wait before --screenshot (default 3)."),
+                                   QStringLiteral("seconds"), QStringLiteral("3"));
     p.addOptions({demo, lang, connect, family, baud, bitrate, framing, panel, drive, screenshot, delay});
     p.process(app);
 
@@ -122,8 +128,8 @@ bool connectRequest(const Options &options, std::optional<dd::ConnectRequest> *r
     } else if (!options.connect.isEmpty()) {
         dd::ConnectRequest r;
         QString error;
-        if (!dd::ConnectRequest::fromCommandLine(options.connect, options.family, options.baud,
-                                                 options.bitrate, options.framing, &r, &error)) {
+        if (!dd::ConnectRequest::fromCommandLine(options.connect, options.family, options.baud, options.bitrate,
+                                                 options.framing, &r, &error)) {
             qCritical("%s", qPrintable(error));
             return false;
         }
@@ -139,8 +145,9 @@ bool preferredFamily(const Options &options, std::optional<dd::Family> *family)
         return true;
     *family = dd::familyFromId(options.drive);
     if (!*family) {
-        qCritical("%s", qPrintable(dd::DriveDeskMain::tr("Unknown family '%1' for --drive: use %2.")
-                                       .arg(options.drive, dd::familyIds().join(QStringLiteral(", ")))));
+        qCritical("%s",
+                  qPrintable(dd::DriveDeskMain::tr("Unknown family '%1' for --drive: use %2.")
+                                 .arg(options.drive, dd::familyIds().join(QStringLiteral(", ")))));
         return false;
     }
     return true;
@@ -185,7 +192,7 @@ int main(int argc, char *argv[])
     if (!connectRequest(options, &request) || !preferredFamily(options, &family))
         return 2;
 
-    dd::MainWindow window(&language);   // --lang holds for this session only: not saved
+    dd::MainWindow window(&language); // --lang holds for this session only: not saved
     if (family)
         window.setPreferredFamily(*family);
     window.restoreLayout();

@@ -11,7 +11,7 @@ namespace dd {
 enum class Family { ServoCan, ServoModbus, Shuoke };
 
 QString familyId(Family family);                       // "servo-can", "servo-modbus", "shuoke"
-std::optional<Family> familyFromId(const QString &id);  // case-insensitive
+std::optional<Family> familyFromId(const QString &id); // case-insensitive
 QStringList familyIds();
 QList<Family> allFamilies();
 

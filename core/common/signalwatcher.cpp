@@ -76,7 +76,10 @@ void SignalWatcher::drain()
 
 namespace {
 std::atomic<int> g_signal{0};
-extern "C" void onSignal(int sig) { g_signal.store(sig); }
+extern "C" void onSignal(int sig)
+{
+    g_signal.store(sig);
+}
 } // namespace
 
 SignalWatcher::SignalWatcher(QObject *parent)

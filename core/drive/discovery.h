@@ -12,9 +12,9 @@ struct ScanOptions
 {
     int from = 1;
     int to = 247;
-    QList<int> bauds;      // serial sweep; empty: the link's current baud only
-    int timeoutMs = -1;    // per probe; -1: adaptive (short, from the wire time)
-    int listenMs = 300;    // CAN: how long to listen for heartbeats / replies
+    QList<int> bauds;   // serial sweep; empty: the link's current baud only
+    int timeoutMs = -1; // per probe; -1: adaptive (short, from the wire time)
+    int listenMs = 300; // CAN: how long to listen for heartbeats / replies
 };
 
 // Finds drives of one family on an open link. start() returns at once; found() is emitted
@@ -35,7 +35,11 @@ signals:
     void finished(const dd::Error &error);
 
 protected:
-    void report(const DiscoveredDrive &d) { m_results.append(d); emit found(d); }
+    void report(const DiscoveredDrive &d)
+    {
+        m_results.append(d);
+        emit found(d);
+    }
 
 private:
     QList<DiscoveredDrive> m_results;

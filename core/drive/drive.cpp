@@ -91,19 +91,58 @@ DriveReply *Drive::readStatus()
     return r;
 }
 
-DriveReply *Drive::readParameters(const QList<int> &) { return notSupported(Capability::ReadParameters); }
-DriveReply *Drive::writeParameters(const QList<ParameterWrite> &) { return notSupported(Capability::WriteParameters); }
-DriveReply *Drive::readChannels(const QStringList &) { return notSupported(Capability::Monitor); }
-DriveReply *Drive::readAlarm() { return notSupported(Capability::ReadAlarm); }
-DriveReply *Drive::clearAlarm() { return notSupported(Capability::ClearAlarm); }
-DriveReply *Drive::setEnabled(bool) { return notSupported(Capability::Enable); }
-DriveReply *Drive::moveRelative(qint64, qint32) { return notSupported(Capability::MoveRelative); }
-DriveReply *Drive::moveAbsolute(qint64, qint32) { return notSupported(Capability::MoveAbsolute); }
-DriveReply *Drive::home(bool) { return notSupported(Capability::Home); }
-DriveReply *Drive::setPosition(qint64) { return notSupported(Capability::SetPosition); }
-DriveReply *Drive::eeOperation(EeOperation) { return notSupported(Capability::EeOperations); }
-DriveReply *Drive::doJog(qint32) { return notSupported(Capability::Jog); }
-DriveReply *Drive::doStop(bool) { return notSupported(Capability::Stop); }
+DriveReply *Drive::readParameters(const QList<int> &)
+{
+    return notSupported(Capability::ReadParameters);
+}
+DriveReply *Drive::writeParameters(const QList<ParameterWrite> &)
+{
+    return notSupported(Capability::WriteParameters);
+}
+DriveReply *Drive::readChannels(const QStringList &)
+{
+    return notSupported(Capability::Monitor);
+}
+DriveReply *Drive::readAlarm()
+{
+    return notSupported(Capability::ReadAlarm);
+}
+DriveReply *Drive::clearAlarm()
+{
+    return notSupported(Capability::ClearAlarm);
+}
+DriveReply *Drive::setEnabled(bool)
+{
+    return notSupported(Capability::Enable);
+}
+DriveReply *Drive::moveRelative(qint64, qint32)
+{
+    return notSupported(Capability::MoveRelative);
+}
+DriveReply *Drive::moveAbsolute(qint64, qint32)
+{
+    return notSupported(Capability::MoveAbsolute);
+}
+DriveReply *Drive::home(bool)
+{
+    return notSupported(Capability::Home);
+}
+DriveReply *Drive::setPosition(qint64)
+{
+    return notSupported(Capability::SetPosition);
+}
+DriveReply *Drive::eeOperation(EeOperation)
+{
+    return notSupported(Capability::EeOperations);
+}
+DriveReply *Drive::doJog(qint32)
+{
+    return notSupported(Capability::Jog);
+}
+DriveReply *Drive::doStop(bool)
+{
+    return notSupported(Capability::Stop);
+}
 
 DriveReply *Drive::jog(qint32 speed)
 {
@@ -210,9 +249,8 @@ void Drive::updateStatus(const DriveStatus &s)
     m_status.updatedMs = QDateTime::currentMSecsSinceEpoch();
     if (old.alarmCode != s.alarmCode)
         emit alarmChanged(s.alarmCode);
-    if (old.online != s.online || old.running != s.running || old.enabled != s.enabled
-        || old.position != s.position || old.positionValid != s.positionValid
-        || old.alarmCode != s.alarmCode)
+    if (old.online != s.online || old.running != s.running || old.enabled != s.enabled || old.position != s.position
+        || old.positionValid != s.positionValid || old.alarmCode != s.alarmCode)
         emit statusChanged(m_status);
 }
 

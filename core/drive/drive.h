@@ -90,10 +90,10 @@ public:
 
 signals:
     void statusChanged(const dd::DriveStatus &status);
-    void alarmChanged(int code);                 // 0 = cleared
-    void jogLeaseExpired();                      // the axis was stopped by the lease
-    void jogEnded(const dd::JogEnd &end);        // after the stop of a jog, or a lost link
-    void connectionLost(const dd::Error &why);   // the link went away
+    void alarmChanged(int code);               // 0 = cleared
+    void jogLeaseExpired();                    // the axis was stopped by the lease
+    void jogEnded(const dd::JogEnd &end);      // after the stop of a jog, or a lost link
+    void connectionLost(const dd::Error &why); // the link went away
 
 protected:
     virtual DriveReply *doJog(qint32 speed);
@@ -121,7 +121,7 @@ private:
     std::shared_ptr<const ParameterDictionary> m_dictionary;
     QTimer m_jogLease;
     bool m_jogging = false;
-    bool m_leaseStopping = false;  // stop() called by the lease timer
+    bool m_leaseStopping = false; // stop() called by the lease timer
     int m_jogLeaseMs = 300;
 };
 

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "core/common/error.h"
-#include "core/link/connectionsettings.h"
 #include "core/drive/discovery.h"
+#include "core/link/connectionsettings.h"
 
 #include <QObject>
 
@@ -30,7 +30,7 @@ public:
     TrafficTap *tap() const { return m_tap; }
     FamilyBackend *backend() const { return m_backend; }
 
-    Drive *drive(int address);                       // nullptr when closed
+    Drive *drive(int address); // nullptr when closed
     Discovery *createDiscovery(const ScanOptions &options);
     void stopAll();
 

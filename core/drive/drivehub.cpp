@@ -1,8 +1,8 @@
 #include "core/drive/drivehub.h"
 
 #include "core/drive/drive.h"
-#include "core/drive/drivereply.h"
 #include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
 #include "core/link/traffictap.h"
 
 #include <QPointer>
@@ -61,8 +61,7 @@ DriveConnection *DriveHub::connectionOnIo(int id) const
     return m_connections.value(id, nullptr);
 }
 
-void DriveHub::openConnection(const ConnectionSettings &settings,
-                              std::function<void(int, const Error &)> done)
+void DriveHub::openConnection(const ConnectionSettings &settings, std::function<void(int, const Error &)> done)
 {
     const int id = m_nextId++;
     post(m_ioContext, [this, id, settings, done] {
@@ -70,7 +69,10 @@ void DriveHub::openConnection(const ConnectionSettings &settings,
         Error e;
         if (!c->open(settings, &e)) {
             delete c;
-            post(this, [done, e] { if (done) done(0, e); });
+            post(this, [done, e] {
+                if (done)
+                    done(0, e);
+            });
             return;
         }
         m_connections.insert(id, c);
@@ -135,8 +137,7 @@ void DriveHub::watchDrive(int id, int address, Drive *drive)
             [this, id, address](const DriveStatus &s) { emit statusChanged(id, address, s); });
     connect(drive, &Drive::alarmChanged, drive,
             [this, id, address](int code) { emit alarmChanged(id, address, code); });
-    connect(drive, &Drive::jogLeaseExpired, drive,
-            [this, id, address] { emit jogLeaseExpired(id, address); });
+    connect(drive, &Drive::jogLeaseExpired, drive, [this, id, address] { emit jogLeaseExpired(id, address); });
     connect(drive, &Drive::jogEnded, drive,
             [this, id, address](const JogEnd &end) { emit jogEnded(id, address, end); });
 }
@@ -147,7 +148,10 @@ void DriveHub::run(int id, int address, Operation op, Done done, Progress progre
         auto fail = [this, done](const Error &e) {
             DriveResult r;
             r.error = e;
-            post(this, [done, r] { if (done) done(r); });
+            post(this, [done, r] {
+                if (done)
+                    done(r);
+            });
         };
         DriveConnection *c = connectionOnIo(id);
         if (!c || !c->isOpen()) {
@@ -166,44 +170,56 @@ void DriveHub::run(int id, int address, Operation op, Done done, Progress progre
             return;
         }
         if (progress)
-            connect(reply, &DriveReply::progress, reply, [this, progress](int n, int total) {
-                post(this, [progress, n, total] { progress(n, total); });
-            });
+            connect(reply, &DriveReply::progress, reply,
+                    [this, progress](int n, int total) { post(this, [progress, n, total] { progress(n, total); }); });
         connect(reply, &DriveReply::finished, reply, [this, reply, done] {
             const DriveResult r = DriveResult::from(*reply);
             reply->deleteLater();
-            post(this, [done, r] { if (done) done(r); });
+            post(this, [done, r] {
+                if (done)
+                    done(r);
+            });
         });
     });
 }
 
-void DriveHub::scan(int id, const ScanOptions &options,
-                    std::function<void(const DiscoveredDrive &)> found,
-                    std::function<void(int, int)> progress,
-                    std::function<void(const Error &)> finished)
+void DriveHub::scan(int id, const ScanOptions &options, std::function<void(const DiscoveredDrive &)> found,
+                    std::function<void(int, int)> progress, std::function<void(const Error &)> finished)
 {
     post(m_ioContext, [this, id, options, found, progress, finished] {
         DriveConnection *c = connectionOnIo(id);
         Discovery *s = c ? c->createDiscovery(options) : nullptr;
         if (!s) {
             const Error e{ErrorCode::LinkClosed, tr("The connection is closed.")};
-            post(this, [finished, e] { if (finished) finished(e); });
+            post(this, [finished, e] {
+                if (finished)
+                    finished(e);
+            });
             return;
         }
         if (Discovery *old = m_scans.take(id))
             old->cancel();
         m_scans.insert(id, s);
         connect(s, &Discovery::found, s, [this, found](const DiscoveredDrive &d) {
-            post(this, [found, d] { if (found) found(d); });
+            post(this, [found, d] {
+                if (found)
+                    found(d);
+            });
         });
         connect(s, &Discovery::progress, s, [this, progress](int done, int total) {
-            post(this, [progress, done, total] { if (progress) progress(done, total); });
+            post(this, [progress, done, total] {
+                if (progress)
+                    progress(done, total);
+            });
         });
         connect(s, &Discovery::finished, s, [this, id, s, finished](const Error &e) {
             if (m_scans.value(id) == s)
                 m_scans.remove(id);
             s->deleteLater();
-            post(this, [finished, e] { if (finished) finished(e); });
+            post(this, [finished, e] {
+                if (finished)
+                    finished(e);
+            });
         });
         s->start();
     });

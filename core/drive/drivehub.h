@@ -1,14 +1,14 @@
 #pragma once
 
 #include "core/common/error.h"
-#include "core/link/connectionsettings.h"
 #include "core/drive/discovery.h"
 #include "core/drive/driveresult.h"
+#include "core/link/connectionsettings.h"
 #include "core/link/trafficrecord.h"
 
 #include <QHash>
-#include <QSet>
 #include <QObject>
+#include <QSet>
 #include <functional>
 
 class QThread;
@@ -32,11 +32,10 @@ public:
     using Progress = std::function<void(int done, int total)>;
 
     explicit DriveHub(QObject *parent = nullptr);
-    ~DriveHub() override;   // closes every connection and stops the thread
+    ~DriveHub() override; // closes every connection and stops the thread
 
     // Opens a connection on the I/O thread; `done` gets the id (> 0) or an error.
-    void openConnection(const ConnectionSettings &settings,
-                        std::function<void(int id, const Error &error)> done);
+    void openConnection(const ConnectionSettings &settings, std::function<void(int id, const Error &error)> done);
     // A drive still jogging on it (its button goes away with the tab) is stopped first; the
     // link then stays open for StopGraceMs so that the stop reaches the wire.
     void closeConnection(int id);
@@ -49,10 +48,8 @@ public:
     // gets the reply's progress() (long reads and writes, backups) on this thread.
     void run(int id, int address, Operation op, Done done = {}, Progress progress = {});
     // Runs a scan; found/progress/finished arrive on this thread.
-    void scan(int id, const ScanOptions &options,
-              std::function<void(const DiscoveredDrive &)> found,
-              std::function<void(int, int)> progress,
-              std::function<void(const Error &)> finished);
+    void scan(int id, const ScanOptions &options, std::function<void(const DiscoveredDrive &)> found,
+              std::function<void(int, int)> progress, std::function<void(const Error &)> finished);
     void cancelScan(int id);
 
     // STOP: every drive on every connection, emergency stop where the family has it.
@@ -72,16 +69,16 @@ signals:
     void linkLost(int id, const dd::Error &why);
 
 private:
-    DriveConnection *connectionOnIo(int id) const;   // only on the I/O thread
+    DriveConnection *connectionOnIo(int id) const;      // only on the I/O thread
     void watchDrive(int id, int address, Drive *drive); // on the I/O thread
 
     QThread *m_thread = nullptr;
-    QObject *m_ioContext = nullptr;                  // lives on the I/O thread
-    QHash<int, DriveConnection *> m_connections;     // objects live on the I/O thread
-    QSet<DriveConnection *> m_closing;               // I/O thread: closed, stopping a jog
-    QHash<int, ConnectionSettings> m_settings;       // GUI-side copy
-    QHash<int, Discovery *> m_scans;                 // I/O thread objects
-    QHash<QPair<int, int>, bool> m_watched;          // I/O thread only
+    QObject *m_ioContext = nullptr;              // lives on the I/O thread
+    QHash<int, DriveConnection *> m_connections; // objects live on the I/O thread
+    QSet<DriveConnection *> m_closing;           // I/O thread: closed, stopping a jog
+    QHash<int, ConnectionSettings> m_settings;   // GUI-side copy
+    QHash<int, Discovery *> m_scans;             // I/O thread objects
+    QHash<QPair<int, int>, bool> m_watched;      // I/O thread only
     int m_nextId = 1;
 };
 

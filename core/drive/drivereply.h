@@ -23,12 +23,12 @@ public:
     bool ok() const { return m_finished && !m_error.isError(); }
 
     // Results, by operation.
-    const QMap<int, qint64> &parameters() const { return m_parameters; }       // readParameters
+    const QMap<int, qint64> &parameters() const { return m_parameters; }         // readParameters
     const QList<ParameterWriteResult> &writeResults() const { return m_writes; } // writeParameters
-    const QMap<QString, double> &samples() const { return m_samples; }          // readChannels
+    const QMap<QString, double> &samples() const { return m_samples; }           // readChannels
     qint64 sampleTimeUs() const { return m_sampleTimeUs; }
-    const DriveStatus &status() const { return m_status; }                      // readStatus/readAlarm
-    const QVariantMap &info() const { return m_info; }                          // anything else
+    const DriveStatus &status() const { return m_status; } // readStatus/readAlarm
+    const QVariantMap &info() const { return m_info; }     // anything else
 
     // For drive implementations.
     void setParameter(int index, qint64 value) { m_parameters.insert(index, value); }

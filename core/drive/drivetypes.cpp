@@ -74,12 +74,15 @@ std::optional<EeOperation> eeFromText(const QString &text)
     QString t = text.trimmed().toLower();
     if (t.startsWith(QLatin1String("ee-")))
         t = t.mid(3);
-    static const struct { const char *name; EeOperation op; } names[] = {
-        {"set", EeOperation::Save}, {"1", EeOperation::Save},
-        {"rd", EeOperation::Reload}, {"2", EeOperation::Reload},
-        {"ba", EeOperation::Backup}, {"3", EeOperation::Backup},
-        {"rs", EeOperation::RestoreBackup}, {"4", EeOperation::RestoreBackup},
-        {"def", EeOperation::FactoryDefaults}, {"5", EeOperation::FactoryDefaults},
+    static const struct
+    {
+        const char *name;
+        EeOperation op;
+    } names[] = {
+        {"set", EeOperation::Save},          {"1", EeOperation::Save},          {"rd", EeOperation::Reload},
+        {"2", EeOperation::Reload},          {"ba", EeOperation::Backup},       {"3", EeOperation::Backup},
+        {"rs", EeOperation::RestoreBackup},  {"4", EeOperation::RestoreBackup}, {"def", EeOperation::FactoryDefaults},
+        {"5", EeOperation::FactoryDefaults},
     };
     for (const auto &n : names)
         if (t == QLatin1String(n.name))

@@ -30,26 +30,26 @@ enum class Capability : quint32 {
 Q_DECLARE_FLAGS(Capabilities, Capability)
 Q_DECLARE_OPERATORS_FOR_FLAGS(Capabilities)
 
-QString capabilityId(Capability c);          // "jog", "ee-operations", ...
+QString capabilityId(Capability c); // "jog", "ee-operations", ...
 QStringList capabilityIds(Capabilities caps);
 
 // Who the drive is.
 struct DriveIdentity
 {
     Family family = Family::ServoModbus;
-    int address = 0;          // station / Modbus address / Shuoke address
-    QString firmware;         // as the drive reports it; empty when not readable
-    QString model;            // e.g. "M6505" when known
-    QString link;             // "/dev/ttyUSB0 @ 115200", "virtualcan:can0"
+    int address = 0;  // station / Modbus address / Shuoke address
+    QString firmware; // as the drive reports it; empty when not readable
+    QString model;    // e.g. "M6505" when known
+    QString link;     // "/dev/ttyUSB0 @ 115200", "virtualcan:can0"
 };
 
 // A live value the drive offers for trends and the CLI's monitor.
 struct ChannelInfo
 {
-    QString id;      // stable: "speed", "torque", "current", "bus-voltage", "position",
-                     // "position-error", "temperature", "inputs", "outputs", ...
-    QString name;    // translated display name
-    QString unit;    // "r/min", "%", "A", "V", "pulse", "°C", ""
+    QString id;   // stable: "speed", "torque", "current", "bus-voltage", "position",
+                  // "position-error", "temperature", "inputs", "outputs", ...
+    QString name; // translated display name
+    QString unit; // "r/min", "%", "A", "V", "pulse", "°C", ""
     int decimals = 0;
 };
 
@@ -61,8 +61,8 @@ struct DriveStatus
     bool enabled = false;
     bool positionValid = false;
     qint64 position = 0;
-    int alarmCode = 0;      // 0 = none
-    qint64 updatedMs = 0;   // QDateTime::currentMSecsSinceEpoch() of the last update
+    int alarmCode = 0;    // 0 = none
+    qint64 updatedMs = 0; // QDateTime::currentMSecsSinceEpoch() of the last update
 };
 
 // One parameter write and its outcome.
@@ -74,13 +74,13 @@ struct ParameterWrite
 
 // How one parameter write ended; WriteVerification decides it the same way for every family.
 enum class WriteOutcome {
-    Verified,        // read back equal to the value written
-    Mismatch,        // the drive took the write, but reads back another value
-    NotWritten,      // refused by the drive or never sent, or unanswered and the read-back
-                     // shows another value: the drive did not take it
-    Unknown,         // the write was not confirmed and could not be read back
-    ReadBackFailed,  // the drive took the write, but the read-back got no (valid) answer
-    WriteOnly        // written; a write-only setting, which nothing can read back
+    Verified,       // read back equal to the value written
+    Mismatch,       // the drive took the write, but reads back another value
+    NotWritten,     // refused by the drive or never sent, or unanswered and the read-back
+                    // shows another value: the drive did not take it
+    Unknown,        // the write was not confirmed and could not be read back
+    ReadBackFailed, // the drive took the write, but the read-back got no (valid) answer
+    WriteOnly       // written; a write-only setting, which nothing can read back
 };
 
 struct ParameterWriteResult
@@ -88,12 +88,12 @@ struct ParameterWriteResult
     int index = 0;
     qint64 requested = 0;
     qint64 readBack = 0;
-    bool written = false;      // the drive accepted the write
-    bool verified = false;     // read back and equal (write-only: never)
-    bool readable = true;      // false for write-only parameters
-    bool readBackFailed = false; // no answer to the read-back (nor to the write, if !written):
-                                 // what the drive holds is unknown
-    QString error;             // translated reason when !written or !verified
+    bool written = false;                            // the drive accepted the write
+    bool verified = false;                           // read back and equal (write-only: never)
+    bool readable = true;                            // false for write-only parameters
+    bool readBackFailed = false;                     // no answer to the read-back (nor to the write, if !written):
+                                                     // what the drive holds is unknown
+    QString error;                                   // translated reason when !written or !verified
     WriteOutcome outcome = WriteOutcome::NotWritten; // what the fields above add up to
 };
 
@@ -102,22 +102,22 @@ struct ParameterWriteResult
 struct JogEnd
 {
     enum class StoppedBy {
-        Command,        // a stop command reached the drive (it was heard from after the stop)
-        DriveWatchdog,  // no stop could be sent or confirmed: the drive's own watchdog stops it
-        Nothing         // no stop could be sent or confirmed and the drive has no watchdog
+        Command,       // a stop command reached the drive (it was heard from after the stop)
+        DriveWatchdog, // no stop could be sent or confirmed: the drive's own watchdog stops it
+        Nothing        // no stop could be sent or confirmed and the drive has no watchdog
     };
     StoppedBy stoppedBy = StoppedBy::Command;
-    bool leaseExpired = false;   // the holder stopped renewing the jog lease
-    bool linkLost = false;       // the link went away while jogging
-    QString message;             // translated: what happened, what to do
+    bool leaseExpired = false; // the holder stopped renewing the jog lease
+    bool linkLost = false;     // the link went away while jogging
+    QString message;           // translated: what happened, what to do
 };
-QString stoppedById(JogEnd::StoppedBy by);   // "command", "drive-watchdog", "nothing"
+QString stoppedById(JogEnd::StoppedBy by); // "command", "drive-watchdog", "nothing"
 
 // servo-modbus EEPROM operations (op codes of the seed).
 enum class EeOperation { Save = 1, Reload = 2, Backup = 3, RestoreBackup = 4, FactoryDefaults = 5 };
-QString eeMnemonic(EeOperation op);       // "EE-Set", "EE-rd", "EE-bA", "EE-rS", "EE-dEF"
-QString eeMeaning(EeOperation op);        // translated meaning
-bool eeIsDestructive(EeOperation op);     // asks for confirmation (rd, rS, dEF)
+QString eeMnemonic(EeOperation op);                         // "EE-Set", "EE-rd", "EE-bA", "EE-rS", "EE-dEF"
+QString eeMeaning(EeOperation op);                          // translated meaning
+bool eeIsDestructive(EeOperation op);                       // asks for confirmation (rd, rS, dEF)
 std::optional<EeOperation> eeFromText(const QString &text); // "set", "EE-Set", "1", ...
 
 // A drive found by discovery.
@@ -125,11 +125,11 @@ struct DiscoveredDrive
 {
     Family family = Family::ServoModbus;
     int address = 0;
-    int baud = 0;          // serial
-    int bitrate = 0;       // CAN
-    QString framing;       // shuoke: rtu / ascii / can / plc
+    int baud = 0;    // serial
+    int bitrate = 0; // CAN
+    QString framing; // shuoke: rtu / ascii / can / plc
     QString firmware;
-    QString state;         // translated: "idle", "running", "alarm 12", ...
+    QString state; // translated: "idle", "running", "alarm 12", ...
     QString link;
 };
 

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "core/common/error.h"
-#include "core/link/connectionsettings.h"
 #include "core/drive/discovery.h"
+#include "core/link/connectionsettings.h"
 
 #include <QObject>
 

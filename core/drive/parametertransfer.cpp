@@ -69,8 +69,12 @@ void ParameterTransfer::begin(Job job)
     m_report.dryRun = job == Job::Restore && m_options.dryRun;
     if (!m_drive) {
         // Report from the event loop, as a reply would.
-        QMetaObject::invokeMethod(this, [this] { end({ErrorCode::LinkClosed, tr("The drive is gone.")}); },
-                                  Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                end({ErrorCode::LinkClosed, tr("The drive is gone.")});
+            },
+            Qt::QueuedConnection);
         return;
     }
     // Keep the dictionary fixed for the whole job.

@@ -73,9 +73,9 @@ private:
     std::shared_ptr<const ParameterDictionary> m_dictionary;
     Job m_job = Job::Backup;
     bool m_running = false;
-    BackupFile m_file;          // compare / restore: the file
+    BackupFile m_file; // compare / restore: the file
     RestoreOptions m_options;
-    BackupFile m_backup;        // backup: the result
+    BackupFile m_backup; // backup: the result
     ParameterSet m_driveValues;
     RestoreReport m_report;
 };

@@ -11,9 +11,9 @@ namespace dd {
 // How a restore is to be done (ParameterTransfer::restore).
 struct RestoreOptions
 {
-    QList<int> only;       // restrict to these parameters (empty: every difference)
-    bool force = false;    // restore onto a drive with another (or unknown) firmware
-    bool dryRun = false;   // compare and select, write nothing
+    QList<int> only;     // restrict to these parameters (empty: every difference)
+    bool force = false;  // restore onto a drive with another (or unknown) firmware
+    bool dryRun = false; // compare and select, write nothing
 };
 
 // What a restore did, parameter by parameter: the diff it started from, what it selected,
@@ -22,12 +22,12 @@ struct RestoreOptions
 struct RestoreReport
 {
     enum class Outcome {
-        Verified,        // written and read back equal
-        WrittenOnly,     // written; write-only, so it cannot be read back
-        Mismatch,        // written, but the read-back differs
-        Failed,          // the drive did not accept the write
-        NotAttempted,    // the restore stopped before this parameter
-        Unconfirmed      // no answer to the read-back: the value the drive holds is unknown
+        Verified,     // written and read back equal
+        WrittenOnly,  // written; write-only, so it cannot be read back
+        Mismatch,     // written, but the read-back differs
+        Failed,       // the drive did not accept the write
+        NotAttempted, // the restore stopped before this parameter
+        Unconfirmed   // no answer to the read-back: the value the drive holds is unknown
     };
 
     ParameterDiff diff;
@@ -37,7 +37,7 @@ struct RestoreReport
 
     const ParameterWriteResult *result(int index) const;
     Outcome outcome(int index) const;
-    QList<int> indices(Outcome outcome) const;     // among `selected`, in order
+    QList<int> indices(Outcome outcome) const; // among `selected`, in order
     // Every selected parameter verified (or, write-only, written).
     bool isComplete() const;
     // "written" = Verified, WrittenOnly or Mismatch (the drive took a value); "not written"
@@ -45,7 +45,7 @@ struct RestoreReport
     QList<int> written() const;
     QList<int> notWritten() const;
 
-    static QString outcomeId(Outcome outcome);   // "verified", "written-only", ...
+    static QString outcomeId(Outcome outcome); // "verified", "written-only", ...
 };
 
 } // namespace dd

@@ -40,7 +40,7 @@ ParameterWriteResult WriteVerification::classify(const Check &check, Error *caus
         } else if (!accepted) {
             r.outcome = WriteOutcome::NotWritten;
             r.error = check.writeError.message + QLatin1Char(' ')
-                    + tr("The drive did not take the value: it reads back %1.").arg(r.readBack);
+                + tr("The drive did not take the value: it reads back %1.").arg(r.readBack);
             why = check.writeError;
         } else {
             r.outcome = WriteOutcome::Mismatch;

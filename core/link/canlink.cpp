@@ -165,9 +165,9 @@ void CanLink::pump()
             continue;
         ++p.attempts;
         if (!writeNow(p.request.frame, p.request.note)) {
-            p.reply->finishWithError({ErrorCode::LinkClosed,
-                                      tr("Cannot write to CAN interface %1: %2")
-                                          .arg(m_settings.toString(), m_device->errorString())});
+            p.reply->finishWithError(
+                {ErrorCode::LinkClosed,
+                 tr("Cannot write to CAN interface %1: %2").arg(m_settings.toString(), m_device->errorString())});
             continue;
         }
         if (!p.request.matcher) {
@@ -215,7 +215,8 @@ void CanLink::onTick()
         if (p.attempts <= retries) {
             ++m_retryCount;
             ++p.attempts;
-            writeNow(p.request.frame, QStringLiteral("%1 (retry %2)").arg(p.request.note).arg(p.attempts - 1).trimmed());
+            writeNow(p.request.frame,
+                     QStringLiteral("%1 (retry %2)").arg(p.request.note).arg(p.attempts - 1).trimmed());
             p.sentUs = now;
             p.deadlineUs = now + qint64(timeout) * 1000;
             ++i;
@@ -293,8 +294,7 @@ void CanLink::onErrorOccurred(QCanBusDevice::CanBusError error)
     if (!m_device)
         return;
     qCWarning(lcCanLink) << "CAN error" << error << m_device->errorString();
-    if (error == QCanBusDevice::ConnectionError && m_device->state() != QCanBusDevice::ConnectedState
-        && !m_closing) {
+    if (error == QCanBusDevice::ConnectionError && m_device->state() != QCanBusDevice::ConnectedState && !m_closing) {
         const Error e{ErrorCode::LinkClosed,
                       tr("CAN interface %1: %2").arg(m_settings.toString(), m_device->errorString())};
         failAll(e);

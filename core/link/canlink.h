@@ -24,11 +24,11 @@ using CanMatcher = std::function<bool(const CanFrameData &frame)>;
 struct CanRequest
 {
     CanFrameData frame;
-    CanMatcher matcher;   // empty: no reply expected
-    int timeoutMs = -1;   // -1: settings.responseTimeoutMs
-    int retries = -1;     // -1: settings.retries
+    CanMatcher matcher; // empty: no reply expected
+    int timeoutMs = -1; // -1: settings.responseTimeoutMs
+    int retries = -1;   // -1: settings.retries
     QString note;
-    bool urgent = false;  // stop / disable: ahead of every waiting ordinary request
+    bool urgent = false; // stop / disable: ahead of every waiting ordinary request
 };
 
 // Transport on QCanBusDevice (socketcan, virtualcan, ...). Frames sent before the device
@@ -92,8 +92,8 @@ private:
     CanSettings m_settings;
     QCanBusDevice *m_device = nullptr;
     TrafficTap *m_tap = nullptr;
-    QQueue<QPair<CanFrameData, QString>> m_unsent;   // written once connected
-    QQueue<Pending> m_waiting;                       // requests not yet sent (window full)
+    QQueue<QPair<CanFrameData, QString>> m_unsent; // written once connected
+    QQueue<Pending> m_waiting;                     // requests not yet sent (window full)
     QList<Pending> m_inFlight;
     QTimer m_timer;
     QElapsedTimer m_clock;

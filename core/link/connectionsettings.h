@@ -12,13 +12,13 @@ namespace dd {
 struct ConnectionSettings
 {
     Family family = Family::ServoModbus;
-    QString port;          // serial device; empty when `can` is set
-    QString can;           // "plugin:interface"; empty for serial
-    int baud = 0;          // 0: the family default (FamilyTraits::defaultBaud)
-    int bitrate = 0;       // 0: the family default (FamilyTraits::defaultBitrate)
-    QString framing;       // shuoke: rtu | ascii | can | plc; empty: rtu (serial) / can (CAN)
-    int timeoutMs = -1;    // response allowance beyond wire time; -1: family default
-    int retries = -1;      // -1: family default
+    QString port;       // serial device; empty when `can` is set
+    QString can;        // "plugin:interface"; empty for serial
+    int baud = 0;       // 0: the family default (FamilyTraits::defaultBaud)
+    int bitrate = 0;    // 0: the family default (FamilyTraits::defaultBitrate)
+    QString framing;    // shuoke: rtu | ascii | can | plc; empty: rtu (serial) / can (CAN)
+    int timeoutMs = -1; // response allowance beyond wire time; -1: family default
+    int retries = -1;   // -1: family default
     // Family settings where the protocol documents are ambiguous
     // (docs/protocols/, "Decision:"), e.g. "shuoke.checksum" = "sum" | "twos-complement",
     // "shuoke.byteOrder" = "little" | "big", "shuoke.broadcast" = 0 | 255,

@@ -20,10 +20,10 @@ public:
 
     bool isFinished() const { return m_finished; }
     const Error &error() const { return m_error; }
-    QByteArray frame() const { return m_frame; }           // serial: the matched reply frame
-    CanFrameData canFrame() const { return m_canFrame; }   // CAN: the matched reply frame
+    QByteArray frame() const { return m_frame; }             // serial: the matched reply frame
+    CanFrameData canFrame() const { return m_canFrame; }     // CAN: the matched reply frame
     QList<quint16> registers() const { return m_registers; } // Modbus: register values
-    int attempts() const { return m_attempts; }            // 1 = first try answered
+    int attempts() const { return m_attempts; }              // 1 = first try answered
     qint64 roundTripUs() const { return m_roundTripUs; }
 
     // For links only.

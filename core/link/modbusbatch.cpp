@@ -12,8 +12,8 @@ ModbusBatch::ModbusBatch(QObject *context, Mode mode, Done done, Progress progre
 {
 }
 
-ModbusBatch *ModbusBatch::run(ModbusLink *link, const QList<ModbusRequest> &requests, QObject *context,
-                              Mode mode, Done done, Progress progress)
+ModbusBatch *ModbusBatch::run(ModbusLink *link, const QList<ModbusRequest> &requests, QObject *context, Mode mode,
+                              Done done, Progress progress)
 {
     auto *batch = new ModbusBatch(context, mode, std::move(done), std::move(progress));
     batch->m_results.resize(requests.size());

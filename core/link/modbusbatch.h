@@ -27,13 +27,13 @@ public:
     {
         Error error;
         QList<quint16> registers;
-        bool ran = false;   // false: withdrawn after an earlier failure
+        bool ran = false; // false: withdrawn after an earlier failure
     };
     using Done = std::function<void(const Error &firstError, const QList<Result> &results)>;
     using Progress = std::function<void(int done, int total)>;
 
-    static ModbusBatch *run(ModbusLink *link, const QList<ModbusRequest> &requests, QObject *context,
-                            Mode mode, Done done, Progress progress = {});
+    static ModbusBatch *run(ModbusLink *link, const QList<ModbusRequest> &requests, QObject *context, Mode mode,
+                            Done done, Progress progress = {});
 
 private:
     ModbusBatch(QObject *context, Mode mode, Done done, Progress progress);

@@ -19,8 +19,14 @@ ModbusLink::~ModbusLink()
     delete d;
 }
 
-void ModbusLink::setTap(TrafficTap *tap) { d->m_tap = tap; }
-TrafficTap *ModbusLink::tap() const { return d->m_tap; }
+void ModbusLink::setTap(TrafficTap *tap)
+{
+    d->m_tap = tap;
+}
+TrafficTap *ModbusLink::tap() const
+{
+    return d->m_tap;
+}
 
 bool ModbusLink::open(const SerialSettings &settings, Error *error)
 {
@@ -38,9 +44,18 @@ void ModbusLink::close()
     emit closed(Error::none());
 }
 
-bool ModbusLink::isOpen() const { return d->isOpen(); }
-const SerialSettings &ModbusLink::settings() const { return d->m_settings; }
-QString ModbusLink::name() const { return d->m_settings.portName; }
+bool ModbusLink::isOpen() const
+{
+    return d->isOpen();
+}
+const SerialSettings &ModbusLink::settings() const
+{
+    return d->m_settings;
+}
+QString ModbusLink::name() const
+{
+    return d->m_settings.portName;
+}
 
 bool ModbusLink::setBaudRate(qint32 baud)
 {
@@ -63,10 +78,22 @@ bool ModbusLink::setBaudRate(qint32 baud)
     return true;
 }
 
-void ModbusLink::setResponseTimeoutMs(int ms) { d->m_settings.responseTimeoutMs = std::max(0, ms); }
-void ModbusLink::setRetries(int retries) { d->m_settings.retries = std::max(0, retries); }
-void ModbusLink::setMinGapMs(int ms) { d->m_settings.minGapMs = std::max(0, ms); }
-void ModbusLink::setMinCommandSpacingMs(int ms) { d->m_settings.minCommandSpacingMs = std::max(0, ms); }
+void ModbusLink::setResponseTimeoutMs(int ms)
+{
+    d->m_settings.responseTimeoutMs = std::max(0, ms);
+}
+void ModbusLink::setRetries(int retries)
+{
+    d->m_settings.retries = std::max(0, retries);
+}
+void ModbusLink::setMinGapMs(int ms)
+{
+    d->m_settings.minGapMs = std::max(0, ms);
+}
+void ModbusLink::setMinCommandSpacingMs(int ms)
+{
+    d->m_settings.minCommandSpacingMs = std::max(0, ms);
+}
 
 LinkReply *ModbusLink::readHoldingRegisters(int serverAddress, int start, int count, int timeoutMs)
 {
@@ -79,8 +106,7 @@ LinkReply *ModbusLink::readHoldingRegisters(int serverAddress, int start, int co
     return send(r);
 }
 
-LinkReply *ModbusLink::writeRegisters(int serverAddress, int start, const QList<quint16> &values,
-                                      int timeoutMs)
+LinkReply *ModbusLink::writeRegisters(int serverAddress, int start, const QList<quint16> &values, int timeoutMs)
 {
     ModbusRequest r;
     r.pdu.address = static_cast<quint8>(serverAddress);
@@ -109,17 +135,47 @@ LinkReply *ModbusLink::send(const ModbusRequest &request)
     return d->enqueue(request);
 }
 
-void ModbusLink::cancelAll(const Error &why) { d->failAll(why); }
+void ModbusLink::cancelAll(const Error &why)
+{
+    d->failAll(why);
+}
 
-bool ModbusLink::isIdle() const { return !d->m_current && d->m_queue.isEmpty(); }
-int ModbusLink::queuedCount() const { return int(d->m_queue.size()) + (d->m_current ? 1 : 0); }
-quint64 ModbusLink::timeoutCount() const { return d->m_timeouts; }
-quint64 ModbusLink::retryCount() const { return d->m_retries; }
-quint64 ModbusLink::checksumErrorCount() const { return d->m_checksumErrors; }
-quint64 ModbusLink::lateReplyCount() const { return d->m_lateReplies; }
-quint64 ModbusLink::reconnectCount() const { return d->m_reconnects; }
-bool ModbusLink::seesRawBytes() const { return d->m_sniffer.isActive(); }
-qint64 ModbusLink::wireTimeUs(qsizetype bytes) const { return d->wireTimeUs(bytes); }
+bool ModbusLink::isIdle() const
+{
+    return !d->m_current && d->m_queue.isEmpty();
+}
+int ModbusLink::queuedCount() const
+{
+    return int(d->m_queue.size()) + (d->m_current ? 1 : 0);
+}
+quint64 ModbusLink::timeoutCount() const
+{
+    return d->m_timeouts;
+}
+quint64 ModbusLink::retryCount() const
+{
+    return d->m_retries;
+}
+quint64 ModbusLink::checksumErrorCount() const
+{
+    return d->m_checksumErrors;
+}
+quint64 ModbusLink::lateReplyCount() const
+{
+    return d->m_lateReplies;
+}
+quint64 ModbusLink::reconnectCount() const
+{
+    return d->m_reconnects;
+}
+bool ModbusLink::seesRawBytes() const
+{
+    return d->m_sniffer.isActive();
+}
+qint64 ModbusLink::wireTimeUs(qsizetype bytes) const
+{
+    return d->wireTimeUs(bytes);
+}
 
 int ModbusLink::defaultTimeoutMs(const modbusrtu::Request &pdu) const
 {

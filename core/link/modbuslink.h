@@ -14,11 +14,11 @@ class TrafficTap;
 // One Modbus request for ModbusLink::send().
 struct ModbusRequest
 {
-    modbusrtu::Request pdu;   // address, function (0x03 / 0x06 / 0x10), start, count, values
-    int timeoutMs = -1;       // -1: wire time of request + reply + settings.responseTimeoutMs
-    int retries = -1;         // -1: settings.retries
-    QString note;             // shown in the trace
-    bool urgent = false;      // stop / disable: ahead of every waiting ordinary request
+    modbusrtu::Request pdu; // address, function (0x03 / 0x06 / 0x10), start, count, values
+    int timeoutMs = -1;     // -1: wire time of request + reply + settings.responseTimeoutMs
+    int retries = -1;       // -1: settings.retries
+    QString note;           // shown in the trace
+    bool urgent = false;    // stop / disable: ahead of every waiting ordinary request
 };
 
 // Modbus RTU client transport on QModbusRtuSerialClient (servo-modbus, shuoke PLC mode),
@@ -65,7 +65,7 @@ public:
     bool isOpen() const;
     const SerialSettings &settings() const;
     QString name() const;
-    bool setBaudRate(qint32 baud);   // between transactions only
+    bool setBaudRate(qint32 baud); // between transactions only
     void setResponseTimeoutMs(int ms);
     void setRetries(int retries);
     void setMinGapMs(int ms);
@@ -84,9 +84,9 @@ public:
     quint64 timeoutCount() const;
     quint64 retryCount() const;
     quint64 checksumErrorCount() const;
-    quint64 lateReplyCount() const;     // replies discarded as late answers
-    quint64 reconnectCount() const;     // client reconnects (short timeouts, aborts)
-    bool seesRawBytes() const;          // the SerialReadSniffer works on this platform
+    quint64 lateReplyCount() const; // replies discarded as late answers
+    quint64 reconnectCount() const; // client reconnects (short timeouts, aborts)
+    bool seesRawBytes() const;      // the SerialReadSniffer works on this platform
 
     // Wire time of `bytes` characters at the current settings, in microseconds.
     qint64 wireTimeUs(qsizetype bytes) const;

@@ -29,8 +29,8 @@ Q_LOGGING_CATEGORY(lcModbusLink, "drivedesk.link.modbus")
 namespace dd {
 
 namespace {
-constexpr int QtMinTimeoutMs = 10;        // QModbusClient::setTimeout ignores less
-constexpr int WatchdogMs = 250;           // Qt's timer is the primary one above 10 ms
+constexpr int QtMinTimeoutMs = 10; // QModbusClient::setTimeout ignores less
+constexpr int WatchdogMs = 250;    // Qt's timer is the primary one above 10 ms
 constexpr qsizetype MaxSniffedBytes = 1024;
 
 QString hexByte(int v)
@@ -69,8 +69,8 @@ bool ModbusLink::Private::open(const SerialSettings &settings, Error *error)
     client->setConnectionParameter(QModbusDevice::SerialDataBitsParameter, settings.dataBits);
     client->setConnectionParameter(QModbusDevice::SerialParityParameter, settings.parity);
     client->setConnectionParameter(QModbusDevice::SerialStopBitsParameter, settings.stopBits);
-    client->setNumberOfRetries(0);   // retries are ours: they must wait for a quiet line
-    client->setInterFrameDelay(-1);  // recompute for this baud (never shrinks otherwise)
+    client->setNumberOfRetries(0);  // retries are ours: they must wait for a quiet line
+    client->setInterFrameDelay(-1); // recompute for this baud (never shrinks otherwise)
     if (!client->connectDevice()) {
         const Error e{ErrorCode::OpenFailed,
                       ModbusLink::tr("Cannot open serial port %1: %2. Check the device name, that "
@@ -84,8 +84,7 @@ bool ModbusLink::Private::open(const SerialSettings &settings, Error *error)
     }
     m_client = client;
     tightenTimerSlack(); // Qt's 2 ms inter-frame delay is on every transaction's path
-    connect(m_client, &QModbusDevice::errorOccurred, this, &Private::onClientError,
-            Qt::QueuedConnection);
+    connect(m_client, &QModbusDevice::errorOccurred, this, &Private::onClientError, Qt::QueuedConnection);
     if (QIODevice *dev = m_client->device()) {
         connect(dev, &QIODevice::readyRead, this, &Private::onDeviceReadyRead);
         connect(dev, &QIODevice::bytesWritten, this, &Private::onBytesWritten);
@@ -95,9 +94,8 @@ bool ModbusLink::Private::open(const SerialSettings &settings, Error *error)
     m_quietUntilUs = 0;
     m_lastCommandEndUs = 0;
     m_state = State::Idle;
-    qCDebug(lcModbusLink) << "opened" << settings.portName << settings.baud
-                          << "inter-frame delay us" << m_client->interFrameDelay()
-                          << "raw bytes visible" << m_sniffer.isActive();
+    qCDebug(lcModbusLink) << "opened" << settings.portName << settings.baud << "inter-frame delay us"
+                          << m_client->interFrameDelay() << "raw bytes visible" << m_sniffer.isActive();
     return true;
 }
 
@@ -133,7 +131,7 @@ bool ModbusLink::Private::reconnect(Error *error)
     }
     m_aborting = true;
     const qint64 t0 = nowUs();
-    m_client->disconnectDevice();    // ends Qt's wait (its queue holds only our request)
+    m_client->disconnectDevice(); // ends Qt's wait (its queue holds only our request)
     m_client->setInterFrameDelay(-1);
     const bool ok = m_client->connectDevice();
     m_aborting = false;
@@ -165,16 +163,15 @@ LinkReply *ModbusLink::Private::enqueue(const ModbusRequest &request)
     else if (fc == modbusrtu::WriteSingleRegister)
         r.pdu.count = 1;
     const bool valid = (fc == modbusrtu::ReadHoldingRegisters && r.pdu.address != 0)
-                    || (fc == modbusrtu::WriteSingleRegister && r.pdu.values.size() == 1)
-                    || fc == modbusrtu::WriteMultipleRegisters;
+        || (fc == modbusrtu::WriteSingleRegister && r.pdu.values.size() == 1)
+        || fc == modbusrtu::WriteMultipleRegisters;
     if (!valid || r.pdu.address > 247 || modbusrtu::encodeRequest(r.pdu).isEmpty()) {
         reply->finishWithError({ErrorCode::InvalidArgument,
                                 ModbusLink::tr("Invalid Modbus request (function %1, address %2, "
                                                "%3 registers): nothing was sent.")
                                     .arg(hexByte(fc))
                                     .arg(r.pdu.address)
-                                    .arg(fc == modbusrtu::ReadHoldingRegisters ? r.pdu.count
-                                                                               : r.pdu.values.size())});
+                                    .arg(fc == modbusrtu::ReadHoldingRegisters ? r.pdu.count : r.pdu.values.size())});
         return reply;
     }
     enqueueByUrgency(m_queue, Pending{r, reply, 0});
@@ -225,9 +222,8 @@ int ModbusLink::Private::effectiveTimeoutMs(const ModbusRequest &r) const
 {
     if (r.timeoutMs >= 0)
         return r.timeoutMs;
-    const qsizetype requestBytes = r.pdu.function == modbusrtu::WriteMultipleRegisters
-                                       ? 9 + 2 * r.pdu.values.size()
-                                       : 8;
+    const qsizetype requestBytes = r.pdu.function == modbusrtu::WriteMultipleRegisters ? 9 + 2 * r.pdu.values.size()
+                                                                                       : 8;
     const int replyBytes = std::max(modbusrtu::ExceptionReplySize, modbusrtu::expectedReplySize(r.pdu));
     const qint64 wire = wireTimeUs(requestBytes) + wireTimeUs(replyBytes);
     return int((wire + 999) / 1000) + m_settings.responseTimeoutMs;
@@ -276,8 +272,8 @@ void ModbusLink::Private::scheduleNext()
         }
     }
     const Pending &next = m_current ? *m_current : m_queue.head();
-    qint64 readyAt = std::max({m_lastFinishUs + qint64(m_settings.minGapMs) * 1000,
-                               m_quietUntilUs, cleanAtUs(next.request.pdu.address)});
+    qint64 readyAt = std::max(
+        {m_lastFinishUs + qint64(m_settings.minGapMs) * 1000, m_quietUntilUs, cleanAtUs(next.request.pdu.address)});
     if (m_settings.minCommandSpacingMs > 0 && m_lastCommandEndUs > 0 && m_client) {
         // The drive counts from the last byte of each command; Qt writes ours after its
         // inter-frame delay. 2 ms for timer and adapter jitter.
@@ -319,8 +315,7 @@ void ModbusLink::Private::transmit()
     QModbusReply *r = m_client->sendRawRequest(qreq, pdu.address);
     if (!r) {
         finishCurrent({ErrorCode::LinkClosed,
-                       ModbusLink::tr("The Modbus client refused the request: %1")
-                           .arg(m_client->errorString())});
+                       ModbusLink::tr("The Modbus client refused the request: %1").arg(m_client->errorString())});
         return;
     }
     m_qtReply = r;
@@ -330,16 +325,20 @@ void ModbusLink::Private::transmit()
         note = QStringLiteral("%1 (retry %2)").arg(note).arg(p.attempts - 1).trimmed();
     recordTx(adu, note);
     QPointer<QModbusReply> guard(r);
-    connect(r, &QModbusReply::finished, this, [this, guard] {
-        if (guard)
-            onQtFinished(guard);
-    }, Qt::QueuedConnection);
-    connect(r, &QModbusReply::intermediateErrorOccurred, this,
-            [this, guard](QModbusDevice::IntermediateError e) {
-                if (guard)
-                    onQtIntermediateError(guard, e);
-            },
-            Qt::QueuedConnection);
+    connect(
+        r, &QModbusReply::finished, this,
+        [this, guard] {
+            if (guard)
+                onQtFinished(guard);
+        },
+        Qt::QueuedConnection);
+    connect(
+        r, &QModbusReply::intermediateErrorOccurred, this,
+        [this, guard](QModbusDevice::IntermediateError e) {
+            if (guard)
+                onQtIntermediateError(guard, e);
+        },
+        Qt::QueuedConnection);
     // Qt's response timer starts when the bytes are written, after its inter-frame delay.
     const int ifdMs = (ifdUs + 999) / 1000;
     // Below Qt's 10 ms minimum our own timer ends the wait by reconnecting the client, when
@@ -365,9 +364,7 @@ void ModbusLink::Private::onClientError(QModbusDevice::Error error)
         emit q->closed(e);
         break;
     }
-    default:
-        qCDebug(lcModbusLink) << "Modbus client note:" << error << m_client->errorString();
-        break;
+    default: qCDebug(lcModbusLink) << "Modbus client note:" << error << m_client->errorString(); break;
     }
 }
 
@@ -404,8 +401,8 @@ void ModbusLink::Private::reportStray(const QByteArray &bytes)
 {
     // From the event loop: the sniffer calls us from inside the port's read handling, and a
     // receiver may send the next request.
-    QMetaObject::invokeMethod(q, [link = q, bytes] { emit link->strayBytes(bytes); },
-                              Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        q, [link = q, bytes] { emit link->strayBytes(bytes); }, Qt::QueuedConnection);
 }
 
 void ModbusLink::Private::onDeviceReadyRead()

@@ -33,9 +33,9 @@ public:
         int attempts = 0;
     };
     enum class State {
-        Idle,      // nothing in flight
-        Waiting,   // the next request waits for a quiet line / a clean address
-        Awaiting   // handed to the Qt client, waiting for its reply
+        Idle,    // nothing in flight
+        Waiting, // the next request waits for a quiet line / a clean address
+        Awaiting // handed to the Qt client, waiting for its reply
     };
 
     bool open(const SerialSettings &settings, Error *error);
@@ -71,7 +71,7 @@ public:
     QByteArray m_rxSinceSend;      // sniffed bytes since the current request went to Qt
     bool m_mismatchSeen = false;   // Qt dropped a CRC-valid frame from another address
     bool m_crcErrorSeen = false;
-    bool m_aborting = false;       // we are reconnecting: ignore what Qt reports meanwhile
+    bool m_aborting = false;             // we are reconnecting: ignore what Qt reports meanwhile
     QHash<int, qint64> m_taintedUntilUs; // address -> no request before this (late replies)
 
     quint64 m_timeouts = 0;

@@ -46,15 +46,13 @@ void ModbusLink::Private::onQtFinished(QModbusReply *reply)
         if (err == QModbusDevice::NoError)
             finishCurrent(Error::none());
         else
-            finishCurrent({ErrorCode::LinkClosed,
-                           ModbusLink::tr("The broadcast could not be sent on %1: %2")
-                               .arg(m_settings.portName, qtText)});
+            finishCurrent(
+                {ErrorCode::LinkClosed,
+                 ModbusLink::tr("The broadcast could not be sent on %1: %2").arg(m_settings.portName, qtText)});
         return;
     }
     switch (err) {
-    case QModbusDevice::NoError:
-        handleSuccess(response);
-        return;
+    case QModbusDevice::NoError: handleSuccess(response); return;
     case QModbusDevice::ProtocolError: {
         // Qt 6.4 keeps an exception reply's function code sign-extended (0xFFFFFF83) in an
         // enum that cannot hold it, so QModbusPdu's inline accessors (isException(),
@@ -80,11 +78,8 @@ void ModbusLink::Private::onQtFinished(QModbusReply *reply)
         }
         break;
     }
-    case QModbusDevice::TimeoutError:
-        handleTimeout(effectiveTimeoutMs(m_current->request));
-        return;
-    default:
-        break;
+    case QModbusDevice::TimeoutError: handleTimeout(effectiveTimeoutMs(m_current->request)); return;
+    default: break;
     }
     taint(pdu.address, nowUs() + qint64(silenceMs()) * 1000);
     retryOrFail({ErrorCode::Malformed,
@@ -128,9 +123,10 @@ void ModbusLink::Private::handleSuccess(const QModbusResponse &response)
         // A reply this early answers an earlier request; the answer to this one is still
         // on its way: let it pass, then ask again.
         ++m_lateReplies;
-        recordDiscarded(adu, stale ? QStringLiteral("received before the request: a stale answer")
-                                   : QStringLiteral("arrived sooner than a reply could: late answer to an "
-                                                    "earlier request"));
+        recordDiscarded(adu,
+                        stale ? QStringLiteral("received before the request: a stale answer")
+                              : QStringLiteral("arrived sooner than a reply could: late answer to an "
+                                               "earlier request"));
         const int quiet = quietAfterTimeoutMs(effectiveTimeoutMs(req));
         taint(req.pdu.address, now + qint64(quiet) * 1000);
         retryOrFail({ErrorCode::Timeout,
@@ -191,20 +187,20 @@ void ModbusLink::Private::handleTimeout(int timeoutMs)
         const QByteArray stray = strayFrameInSniffedBytes();
         if (m_mismatchSeen && !stray.isEmpty() && quint8(stray.at(0)) == address)
             e.message += QLatin1Char(' ')
-                       + ModbusLink::tr("A frame with function %1 came from that address instead, "
-                                        "which does not answer this request (function %2).")
-                             .arg(hexByte(quint8(stray.at(1))), hexByte(m_current->request.pdu.function));
+                + ModbusLink::tr("A frame with function %1 came from that address instead, "
+                                 "which does not answer this request (function %2).")
+                      .arg(hexByte(quint8(stray.at(1))), hexByte(m_current->request.pdu.function));
         else if (m_mismatchSeen && !stray.isEmpty())
             e.message += QLatin1Char(' ')
-                       + ModbusLink::tr("A frame from address %1 arrived instead: do two drives "
-                                        "share an address, or does another master talk on the "
-                                        "bus?")
-                             .arg(quint8(stray.at(0)));
+                + ModbusLink::tr("A frame from address %1 arrived instead: do two drives "
+                                 "share an address, or does another master talk on the "
+                                 "bus?")
+                      .arg(quint8(stray.at(0)));
         else if (m_mismatchSeen)
             e.message += QLatin1Char(' ')
-                       + ModbusLink::tr("A frame with another address arrived meanwhile; servo "
-                                        "drives send exception replies with address 1, so the "
-                                        "drive may have rejected the request.");
+                + ModbusLink::tr("A frame with another address arrived meanwhile; servo "
+                                 "drives send exception replies with address 1, so the "
+                                 "drive may have rejected the request.");
     }
     retryOrFail(e, quiet);
 }
@@ -254,8 +250,9 @@ void ModbusLink::Private::onQtIntermediateError(QModbusReply *reply, QModbusDevi
     if (!abortInFlight())
         return;
     const int code = quint8(adu.at(2));
-    recordRx(adu, QStringLiteral("exception %1 with address byte %2")
-                      .arg(modbusrtu::exceptionCodeName(quint8(code)), hexByte(quint8(adu.at(0)))));
+    recordRx(adu,
+             QStringLiteral("exception %1 with address byte %2")
+                 .arg(modbusrtu::exceptionCodeName(quint8(code)), hexByte(quint8(adu.at(0)))));
     finishCurrent({ErrorCode::DriveException,
                    ModbusLink::tr("The drive at address %1 rejected the request (Modbus exception "
                                   "%2: %3; the reply carried address byte %4).")
@@ -323,8 +320,7 @@ void ModbusLink::Private::retryOrFail(const Error &error, int quietMs)
         m_qtReply = nullptr;
     }
     Q_UNUSED(quietMs); // the address is tainted by the caller
-    const int retries = m_current->request.retries >= 0 ? m_current->request.retries
-                                                        : m_settings.retries;
+    const int retries = m_current->request.retries >= 0 ? m_current->request.retries : m_settings.retries;
     if (m_current->attempts <= retries && m_current->reply) {
         ++m_retries;
         m_state = State::Waiting;

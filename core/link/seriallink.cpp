@@ -261,19 +261,18 @@ void SerialLink::processBuffer()
         const FrameMatch m = m_current->request.matcher(m_rx);
         const qsizetype consumed = std::clamp<qsizetype>(m.consumed, 1, m_rx.size());
         switch (m.status) {
-        case FrameMatch::Status::Incomplete:
-            return;
+        case FrameMatch::Status::Incomplete: return;
         case FrameMatch::Status::Garbage:
             if (m_tap)
-                m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName,
-                                    m_rx.left(consumed), QStringLiteral("not the awaited reply"));
+                m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, m_rx.left(consumed),
+                                    QStringLiteral("not the awaited reply"));
             m_rx.remove(0, consumed);
             continue;
         case FrameMatch::Status::Corrupt: {
             ++m_checksumErrors;
             if (m_tap)
-                m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName,
-                                    m_rx.left(consumed), QStringLiteral("bad checksum"));
+                m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, m_rx.left(consumed),
+                                    QStringLiteral("bad checksum"));
             m_rx.remove(0, consumed);
             m_responseTimer.stop();
             const int quiet = static_cast<int>(std::max<qint64>(5, wireTimeUs(8) / 1000 + 2));
@@ -286,12 +285,10 @@ void SerialLink::processBuffer()
         }
         case FrameMatch::Status::Match: {
             const qint64 now = m_clock.nsecsElapsed() / 1000;
-            const qint64 earliest =
-                (wireTimeUs(m_current->request.bytes.size()) + wireTimeUs(consumed)) / 2;
+            const qint64 earliest = (wireTimeUs(m_current->request.bytes.size()) + wireTimeUs(consumed)) / 2;
             if (m_settings.rejectImpossiblyEarlyReplies && now - m_sentAtUs < earliest) {
                 if (m_tap)
-                    m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName,
-                                        m_rx.left(consumed),
+                    m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, m_rx.left(consumed),
                                         QStringLiteral("arrived sooner than a reply could: late "
                                                        "answer to an earlier request"));
                 m_rx.remove(0, consumed);
@@ -335,8 +332,7 @@ void SerialLink::onResponseTimeout()
 void SerialLink::retryOrFail(const Error &error, int quietMs)
 {
     enterRecovery(quietMs);
-    const int retries = m_current->request.retries >= 0 ? m_current->request.retries
-                                                        : m_settings.retries;
+    const int retries = m_current->request.retries >= 0 ? m_current->request.retries : m_settings.retries;
     if (m_current->attempts <= retries && m_current->reply) {
         ++m_retryCount;
         m_state = State::Gap;
@@ -346,9 +342,9 @@ void SerialLink::retryOrFail(const Error &error, int quietMs)
     if (error.code == ErrorCode::Timeout && m_lateForCurrent) {
         Error e = error;
         e.message += QLatin1Char(' ')
-                   + tr("Answers came after the timeout: the drive is slower than the response "
-                        "allowance (%1 ms): raise the timeout.")
-                         .arg(m_settings.responseTimeoutMs);
+            + tr("Answers came after the timeout: the drive is slower than the response "
+                 "allowance (%1 ms): raise the timeout.")
+                  .arg(m_settings.responseTimeoutMs);
         finishCurrent(e);
         return;
     }

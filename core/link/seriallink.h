@@ -22,12 +22,12 @@ class TrafficTap;
 struct SerialRequest
 {
     QByteArray bytes;
-    ReplyMatcher matcher;        // empty: no reply expected (broadcast, fire-and-forget)
-    int expectedReplyBytes = 0;  // for the timeout and the plausibility check
-    int timeoutMs = -1;          // -1: wire time of request + reply + settings.responseTimeoutMs
-    int retries = -1;            // -1: settings.retries
-    QString note;                // shown in the trace
-    bool urgent = false;         // stop / disable: ahead of every waiting ordinary request
+    ReplyMatcher matcher;       // empty: no reply expected (broadcast, fire-and-forget)
+    int expectedReplyBytes = 0; // for the timeout and the plausibility check
+    int timeoutMs = -1;         // -1: wire time of request + reply + settings.responseTimeoutMs
+    int retries = -1;           // -1: settings.retries
+    QString note;               // shown in the trace
+    bool urgent = false;        // stop / disable: ahead of every waiting ordinary request
 };
 
 // Half-duplex request/reply transport on QSerialPort (RS485 / RS232).
@@ -86,8 +86,8 @@ public:
 
 signals:
     void opened();
-    void closed(const dd::Error &reason);   // by close() (no error) or because the port failed
-    void idle();                            // queue drained
+    void closed(const dd::Error &reason); // by close() (no error) or because the port failed
+    void idle();                          // queue drained
 
 private:
     struct Pending
@@ -124,11 +124,11 @@ private:
     QTimer m_gapTimer;
     QElapsedTimer m_clock;
     qint64 m_sentAtUs = 0;
-    qint64 m_quietUntilUs = 0;   // no transmission before this (gap / recovery)
-    qint64 m_lastCommandEndUs = -1;  // when the last command's last byte left (estimated)
+    qint64 m_quietUntilUs = 0;      // no transmission before this (gap / recovery)
+    qint64 m_lastCommandEndUs = -1; // when the last command's last byte left (estimated)
     qint64 m_lastRxUs = 0;
     int m_recoveryQuietMs = 0;
-    bool m_lateForCurrent = false;   // bytes came between attempts of the current request
+    bool m_lateForCurrent = false; // bytes came between attempts of the current request
     quint64 m_timeouts = 0;
     quint64 m_retryCount = 0;
     quint64 m_checksumErrors = 0;

@@ -22,7 +22,7 @@ QByteArray TrafficLog::csvLine(const Entry &entry)
 {
     const TrafficRecord &r = entry.record;
     QDateTime when = QDateTime::fromMSecsSinceEpoch(r.wallclockMs);
-    when = when.toOffsetFromUtc(when.offsetFromUtc());   // ISO text with the offset
+    when = when.toOffsetFromUtc(when.offsetFromUtc()); // ISO text with the offset
     QByteArray line;
     line += when.toString(Qt::ISODateWithMs).toLatin1();
     line += ',';
@@ -49,7 +49,7 @@ QByteArray TrafficLog::textLine(const Entry &entry)
     const TrafficRecord &r = entry.record;
     QString line = QDateTime::fromMSecsSinceEpoch(r.wallclockMs).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"));
     line += QLatin1String("  ") + r.link + QLatin1String("  ") + r.directionText().leftJustified(4)
-            + QLatin1String("  ") + r.hexText();
+        + QLatin1String("  ") + r.hexText();
     if (!entry.meaning.isEmpty())
         line += QLatin1String("  ") + entry.meaning;
     if (!r.note.isEmpty())
@@ -74,13 +74,15 @@ Error TrafficLog::save(const QString &path, const QList<Entry> &entries)
     const QString shown = QDir::toNativeSeparators(path);
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return {ErrorCode::FileError, tr("Cannot write %1: %2. Is the folder writable and the disk not full?")
-                                          .arg(shown, file.errorString())};
+        return {
+            ErrorCode::FileError,
+            tr("Cannot write %1: %2. Is the folder writable and the disk not full?").arg(shown, file.errorString())};
     // Qt 6.4's QSaveFile::commit() ignores a failed flush: flush and check first.
     if (file.write(bytes) != bytes.size() || !file.flush()) {
         const QString why = file.errorString();
         file.cancelWriting();
-        return {ErrorCode::FileError, tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(shown, why)};
+        return {ErrorCode::FileError,
+                tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(shown, why)};
     }
     if (!file.commit())
         return {ErrorCode::FileError,

@@ -31,7 +31,7 @@ public:
         QString meaning;
     };
 
-    static Format formatForPath(const QString &path);   // ".csv" (any case) → Csv
+    static Format formatForPath(const QString &path); // ".csv" (any case) → Csv
     static QByteArray csvHeader();
     static QByteArray csvLine(const Entry &entry);
     static QByteArray textLine(const Entry &entry);

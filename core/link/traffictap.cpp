@@ -11,8 +11,8 @@ TrafficTap::TrafficTap(QObject *parent)
     m_clock.start();
 }
 
-void TrafficTap::recordSerial(TrafficRecord::Direction dir, const QString &link,
-                              const QByteArray &bytes, const QString &note)
+void TrafficTap::recordSerial(TrafficRecord::Direction dir, const QString &link, const QByteArray &bytes,
+                              const QString &note)
 {
     TrafficRecord r;
     r.direction = dir;
@@ -22,8 +22,8 @@ void TrafficTap::recordSerial(TrafficRecord::Direction dir, const QString &link,
     record(std::move(r));
 }
 
-void TrafficTap::recordCan(TrafficRecord::Direction dir, const QString &link,
-                           const CanFrameData &frame, const QString &note)
+void TrafficTap::recordCan(TrafficRecord::Direction dir, const QString &link, const CanFrameData &frame,
+                           const QString &note)
 {
     TrafficRecord r;
     r.direction = dir;

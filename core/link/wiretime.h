@@ -6,9 +6,9 @@ namespace dd {
 
 // How much bit stuffing a CAN frame time includes.
 enum class CanStuffing {
-    None,      // the frame's nominal bits only: the shortest the frame can ever take
-    WorstCase  // nominal bits + the most stuff bits the frame can need (one per 4 bits of the
-               // stuffed region after the first): the longest the frame can take
+    None,     // the frame's nominal bits only: the shortest the frame can ever take
+    WorstCase // nominal bits + the most stuff bits the frame can need (one per 4 bits of the
+              // stuffed region after the first): the longest the frame can take
 };
 
 // Wire-time arithmetic shared by the simulator (which paces replies with it), the host-side
@@ -59,8 +59,7 @@ public:
     // bus, including the 3-bit intermission (see the table above).
     static int canFrameBits(int dlc, bool extended, CanStuffing stuffing = CanStuffing::WorstCase);
     // Time of that frame at `bitrate` bit/s, in µs. 0 when bitrate <= 0.
-    static double canFrameUs(int dlc, bool extended, int bitrate,
-                             CanStuffing stuffing = CanStuffing::WorstCase);
+    static double canFrameUs(int dlc, bool extended, int bitrate, CanStuffing stuffing = CanStuffing::WorstCase);
 };
 
 } // namespace dd

@@ -4,8 +4,8 @@
 #include "core/params/jsonfieldreader.h"
 #include "core/params/paramslog.h"
 
-#include <QHash>
 #include <QFileInfo>
+#include <QHash>
 #include <QStandardPaths>
 #include <QVector>
 
@@ -26,7 +26,7 @@ QString AlarmDictionary::resourcePath(Family family)
 QString AlarmDictionary::userFilePath(Family family)
 {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)
-           + QStringLiteral("/alarms/%1.json").arg(familyId(family));
+        + QStringLiteral("/alarms/%1.json").arg(familyId(family));
 }
 
 const AlarmDictionary &AlarmDictionary::bundled(Family family)
@@ -73,8 +73,7 @@ Error AlarmDictionary::loadForFamily(Family family)
     return userError;
 }
 
-Error AlarmDictionary::loadFromJson(const QByteArray &json, const QString &source,
-                                    std::optional<Family> expectedFamily)
+Error AlarmDictionary::loadFromJson(const QByteArray &json, const QString &source, std::optional<Family> expectedFamily)
 {
     QJsonObject root;
     if (Error e = JsonFieldReader::parseObject(json, source, &root))
@@ -84,8 +83,9 @@ Error AlarmDictionary::loadFromJson(const QByteArray &json, const QString &sourc
                         QStringLiteral("description"), QStringLiteral("fallback"), QStringLiteral("alarms")});
     const auto format = r.string(QStringLiteral("format"), 64);
     if (format && *format != formatName()) {
-        return Error{ErrorCode::Malformed, tr("%1 is not a DriveDesk alarm table (format \"%2\", expected \"%3\")")
-                                               .arg(source, *format, formatName())};
+        return Error{
+            ErrorCode::Malformed,
+            tr("%1 is not a DriveDesk alarm table (format \"%2\", expected \"%3\")").arg(source, *format, formatName())};
     }
     const auto version = r.integer(QStringLiteral("formatVersion"));
     if (version && *version != FormatVersion) {
@@ -98,12 +98,14 @@ Error AlarmDictionary::loadFromJson(const QByteArray &json, const QString &sourc
     if (familyText) {
         family = familyFromId(*familyText);
         if (!family) {
-            return Error{ErrorCode::NotSupported, tr("%1: unknown drive family \"%2\" (known: %3)")
-                                                      .arg(source, *familyText, familyIds().join(QStringLiteral(", ")))};
+            return Error{ErrorCode::NotSupported,
+                         tr("%1: unknown drive family \"%2\" (known: %3)")
+                             .arg(source, *familyText, familyIds().join(QStringLiteral(", ")))};
         }
         if (expectedFamily && *family != *expectedFamily) {
-            return Error{ErrorCode::InvalidArgument, tr("%1 is an alarm table for %2 drives, not for %3")
-                                                         .arg(source, familyId(*family), familyId(*expectedFamily))};
+            return Error{ErrorCode::InvalidArgument,
+                         tr("%1 is an alarm table for %2 drives, not for %3")
+                             .arg(source, familyId(*family), familyId(*expectedFamily))};
         }
     }
     r.localized(QStringLiteral("description"), 4000, JsonFieldReader::Optional);
@@ -114,8 +116,9 @@ Error AlarmDictionary::loadFromJson(const QByteArray &json, const QString &sourc
     if (fallback) {
         for (const QString &language : fallback->languages()) {
             if (!fallback->text(language).contains(QLatin1String("%1"))) {
-                return Error{ErrorCode::Malformed, tr("%1: field \"fallback.%2\" must contain %3 where the code goes")
-                                                       .arg(source, language, QStringLiteral("%1"))};
+                return Error{ErrorCode::Malformed,
+                             tr("%1: field \"fallback.%2\" must contain %3 where the code goes")
+                                 .arg(source, language, QStringLiteral("%1"))};
             }
         }
     } else {
@@ -127,8 +130,8 @@ Error AlarmDictionary::loadFromJson(const QByteArray &json, const QString &sourc
         const QString where = QStringLiteral("%1: alarms[%2]").arg(source, QString::number(i));
         const QJsonValue v = entries->at(i);
         if (!v.isObject()) {
-            return Error{ErrorCode::Malformed, tr("%1 must be an object (found %2)")
-                                                   .arg(where, JsonFieldReader::jsonTypeName(v))};
+            return Error{ErrorCode::Malformed,
+                         tr("%1 must be an object (found %2)").arg(where, JsonFieldReader::jsonTypeName(v))};
         }
         JsonFieldReader e(v.toObject(), where);
         e.checkKnownFields({QStringLiteral("code"), QStringLiteral("text"), QStringLiteral("remedy")});
@@ -139,8 +142,7 @@ Error AlarmDictionary::loadFromJson(const QByteArray &json, const QString &sourc
         if (!e.ok())
             return e.error();
         if (alarms.contains(*code)) {
-            return Error{ErrorCode::Malformed,
-                         tr("%1: code %2 is listed twice").arg(where, QString::number(*code))};
+            return Error{ErrorCode::Malformed, tr("%1: code %2 is listed twice").arg(where, QString::number(*code))};
         }
         alarms.insert(*code, Alarm{*code, *text, remedy.value_or(LocalizedText())});
     }

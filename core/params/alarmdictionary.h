@@ -35,7 +35,7 @@ public:
     AlarmDictionary() = default;
 
     static QString resourcePath(Family family); // ":/drivedesk/alarms/<family>.json"
-    static QString userFilePath(Family family);  // <AppDataLocation>/alarms/<family>.json
+    static QString userFilePath(Family family); // <AppDataLocation>/alarms/<family>.json
     static const AlarmDictionary &bundled(Family family);
 
     Error loadBundled(Family family);

@@ -20,20 +20,18 @@ namespace dd {
 
 static const QStringList &rootFields()
 {
-    static const QStringList fields = {QStringLiteral("format"),   QStringLiteral("formatVersion"),
-                                       QStringLiteral("toolVersion"), QStringLiteral("created"),
-                                       QStringLiteral("family"),   QStringLiteral("address"),
-                                       QStringLiteral("firmware"), QStringLiteral("model"),
-                                       QStringLiteral("link"),     QStringLiteral("parameters"),
-                                       QStringLiteral("checksum")};
+    static const QStringList fields = {
+        QStringLiteral("format"),     QStringLiteral("formatVersion"), QStringLiteral("toolVersion"),
+        QStringLiteral("created"),    QStringLiteral("family"),        QStringLiteral("address"),
+        QStringLiteral("firmware"),   QStringLiteral("model"),         QStringLiteral("link"),
+        QStringLiteral("parameters"), QStringLiteral("checksum")};
     return fields;
 }
 
 static const QStringList &entryFields()
 {
-    static const QStringList fields = {QStringLiteral("index"), QStringLiteral("key"),
-                                       QStringLiteral("name"),  QStringLiteral("value"),
-                                       QStringLiteral("unit"),  QStringLiteral("access"),
+    static const QStringList fields = {QStringLiteral("index"),      QStringLiteral("key"),  QStringLiteral("name"),
+                                       QStringLiteral("value"),      QStringLiteral("unit"), QStringLiteral("access"),
                                        QStringLiteral("lastWritten")};
     return fields;
 }
@@ -82,8 +80,7 @@ Error BackupFile::toJson(const ParameterDictionary &dictionary, QByteArray *out)
                      tr("The dictionary does not belong to %1 drives").arg(familyId(*m_family))};
     }
     if (m_address < 0 || m_address > 255) {
-        return Error{ErrorCode::OutOfRange,
-                     tr("Drive address %1 is outside 0 to 255").arg(m_address)};
+        return Error{ErrorCode::OutOfRange, tr("Drive address %1 is outside 0 to 255").arg(m_address)};
     }
     QJsonArray parameters;
     for (auto it = m_values.entries().constBegin(); it != m_values.entries().constEnd(); ++it) {
@@ -91,8 +88,9 @@ Error BackupFile::toJson(const ParameterDictionary &dictionary, QByteArray *out)
             continue;
         const ParameterInfo *p = dictionary.byIndex(it.key());
         if (!p) {
-            return Error{ErrorCode::InvalidArgument, tr("Parameter %1 is not in the %2 dictionary")
-                                                         .arg(QString::number(it.key()), familyId(*m_family))};
+            return Error{
+                ErrorCode::InvalidArgument,
+                tr("Parameter %1 is not in the %2 dictionary").arg(QString::number(it.key()), familyId(*m_family))};
         }
         if (Error e = dictionary.validateValue(p->index, it->value))
             return e;
@@ -143,8 +141,9 @@ Error BackupFile::save(const QString &path, const ParameterDictionary &dictionar
     const QString shown = QDir::toNativeSeparators(path);
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
-        return Error{ErrorCode::FileError, tr("Cannot write %1: %2. Is the folder writable and the disk not full?")
-                                               .arg(shown, file.errorString())};
+        return Error{
+            ErrorCode::FileError,
+            tr("Cannot write %1: %2. Is the folder writable and the disk not full?").arg(shown, file.errorString())};
     }
     // Qt 6.4's QSaveFile::commit() ignores a failed flush inside close() and then commits a
     // truncated file (seen with a full disk / file-size limit): flush and check first.
@@ -155,8 +154,9 @@ Error BackupFile::save(const QString &path, const ParameterDictionary &dictionar
                      tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(shown, why)};
     }
     if (!file.commit()) {
-        return Error{ErrorCode::FileError,
-                     tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(shown, file.errorString())};
+        return Error{
+            ErrorCode::FileError,
+            tr("Cannot write %1: %2. The previous file, if any, is unchanged.").arg(shown, file.errorString())};
     }
     return Error::none();
 }
@@ -173,7 +173,8 @@ Error BackupFile::loadFromJson(const QByteArray &json, const QString &source, co
 {
     if (json.size() > MaxFileSize) {
         return Error{ErrorCode::FileError,
-                     tr("%1 is larger than %2 bytes; it is not a file DriveDesk wrote").arg(source, QString::number(MaxFileSize))};
+                     tr("%1 is larger than %2 bytes; it is not a file DriveDesk wrote")
+                         .arg(source, QString::number(MaxFileSize))};
     }
     QJsonObject root;
     if (Error e = JsonFieldReader::parseObject(json, source, &root))
@@ -203,8 +204,8 @@ static bool checkLink(const QJsonObject &link, const QString &source, QString *e
         bool ok = v.isBool() || (v.isString() && v.toString().size() <= 256);
         if (v.isDouble()) {
             QString problem;
-            ok = JsonFieldReader::exactInteger(v, &problem).has_value() || (std::isfinite(v.toDouble())
-                 && std::fabs(v.toDouble()) <= double(JsonFieldReader::MaxExactInteger));
+            ok = JsonFieldReader::exactInteger(v, &problem).has_value()
+                || (std::isfinite(v.toDouble()) && std::fabs(v.toDouble()) <= double(JsonFieldReader::MaxExactInteger));
         }
         if (!ok) {
             *error = BackupFile::tr("%1: field \"%2\" must be a string (up to 256 characters), a number "
@@ -222,8 +223,9 @@ Error BackupFile::parse(const QJsonObject &root, const QString &source, const Pa
     r.checkKnownFields(rootFields());
     const auto format = r.string(QStringLiteral("format"), 64);
     if (format && *format != formatName()) {
-        return Error{ErrorCode::Malformed, tr("%1 is not a DriveDesk backup file (format \"%2\", expected \"%3\")")
-                                               .arg(source, *format, formatName())};
+        return Error{
+            ErrorCode::Malformed,
+            tr("%1 is not a DriveDesk backup file (format \"%2\", expected \"%3\")").arg(source, *format, formatName())};
     }
     const auto version = r.integer(QStringLiteral("formatVersion"));
     if (version && *version != FormatVersion) {
@@ -237,14 +239,16 @@ Error BackupFile::parse(const QJsonObject &root, const QString &source, const Pa
         return r.error();
     const auto family = familyFromId(*familyText);
     if (!family || *familyText != familyId(*family)) {
-        return Error{ErrorCode::NotSupported, tr("%1: unknown drive family \"%2\" (known: %3)")
-                                                  .arg(source, *familyText, familyIds().join(QStringLiteral(", ")))};
+        return Error{ErrorCode::NotSupported,
+                     tr("%1: unknown drive family \"%2\" (known: %3)")
+                         .arg(source, *familyText, familyIds().join(QStringLiteral(", ")))};
     }
     const ParameterDictionary &dict = dictionary ? *dictionary : ParameterDictionary::bundled(*family);
     if (dict.isEmpty() || dict.family() != *family) {
-        return Error{ErrorCode::InvalidArgument, tr("%1 is a backup of a %2 drive, but the dictionary given "
-                                                    "is for %3 drives")
-                                                     .arg(source, familyId(*family), familyId(dict.family()))};
+        return Error{ErrorCode::InvalidArgument,
+                     tr("%1 is a backup of a %2 drive, but the dictionary given "
+                        "is for %3 drives")
+                         .arg(source, familyId(*family), familyId(dict.family()))};
     }
     const auto toolVersion = r.string(QStringLiteral("toolVersion"), 64, JsonFieldReader::Required, false);
     const auto createdText = r.string(QStringLiteral("created"), 64);
@@ -258,20 +262,30 @@ Error BackupFile::parse(const QJsonObject &root, const QString &source, const Pa
         return r.error();
     const QDateTime created = QDateTime::fromString(*createdText, Qt::ISODate);
     if (!created.isValid()) {
-        return Error{ErrorCode::Malformed, tr("%1: field \"created\" = \"%2\" is not an ISO 8601 date and time")
-                                               .arg(source, *createdText)};
+        return Error{ErrorCode::Malformed,
+                     tr("%1: field \"created\" = \"%2\" is not an ISO 8601 date and time").arg(source, *createdText)};
     }
     QString linkProblem;
     if (!checkLink(*link, source, &linkProblem))
         return Error{ErrorCode::Malformed, linkProblem};
     static const QRegularExpression checksumPattern(QStringLiteral("^sha256:[0-9a-f]{64}$"));
     if (!checksumPattern.match(*checksumText).hasMatch()) {
-        return Error{ErrorCode::Malformed, tr("%1: field \"checksum\" must be \"sha256:\" followed by 64 "
-                                              "lower-case hex digits").arg(source)};
+        return Error{ErrorCode::Malformed,
+                     tr("%1: field \"checksum\" must be \"sha256:\" followed by 64 "
+                        "lower-case hex digits")
+                         .arg(source)};
     }
 
     // Structure of every entry first, then the checksum, then the dictionary's rules.
-    struct Entry { int position; int index; QString key; qint64 value; QString access; std::optional<bool> lastWritten; };
+    struct Entry
+    {
+        int position;
+        int index;
+        QString key;
+        qint64 value;
+        QString access;
+        std::optional<bool> lastWritten;
+    };
     QVector<Entry> list;
     ParameterSet values;
     for (int i = 0; i < entries->size(); ++i) {
@@ -304,23 +318,28 @@ Error BackupFile::parse(const QJsonObject &root, const QString &source, const Pa
     if (checksum(values) != *checksumText) {
         return Error{ErrorCode::ChecksumError,
                      tr("%1: the checksum does not match the values: the file was changed or damaged "
-                        "after DriveDesk wrote it. Restore refuses it; use an intact copy.").arg(source)};
+                        "after DriveDesk wrote it. Restore refuses it; use an intact copy.")
+                         .arg(source)};
     }
 
     for (const Entry &entry : qAsConst(list)) {
-        const QString where = QStringLiteral("%1: parameters[%2] (%3)").arg(source, QString::number(entry.position), entry.key);
+        const QString where = QStringLiteral("%1: parameters[%2] (%3)")
+                                  .arg(source, QString::number(entry.position), entry.key);
         const ParameterInfo *p = dict.byIndex(entry.index);
         if (!p) {
-            return Error{ErrorCode::Malformed, tr("%1: there is no parameter %2 for %3 drives")
-                                                   .arg(where, QString::number(entry.index), familyId(*family))};
+            return Error{ErrorCode::Malformed,
+                         tr("%1: there is no parameter %2 for %3 drives")
+                             .arg(where, QString::number(entry.index), familyId(*family))};
         }
         if (p->key.compare(entry.key, Qt::CaseInsensitive) != 0) {
-            return Error{ErrorCode::Malformed, tr("%1: index %2 is %3 in the dictionary, not \"%4\"")
-                                                   .arg(where, QString::number(entry.index), p->key, entry.key)};
+            return Error{ErrorCode::Malformed,
+                         tr("%1: index %2 is %3 in the dictionary, not \"%4\"")
+                             .arg(where, QString::number(entry.index), p->key, entry.key)};
         }
         if (entry.access != accessId(p->access)) {
-            return Error{ErrorCode::Malformed, tr("%1: access \"%2\" differs from the dictionary's \"%3\"")
-                                                   .arg(where, entry.access, accessId(p->access))};
+            return Error{ErrorCode::Malformed,
+                         tr("%1: access \"%2\" differs from the dictionary's \"%3\"")
+                             .arg(where, entry.access, accessId(p->access))};
         }
         const bool writeOnly = p->access == Access::WriteOnly;
         if (writeOnly != entry.lastWritten.value_or(false)) {
@@ -329,9 +348,10 @@ Error BackupFile::parse(const QJsonObject &root, const QString &source, const Pa
                                    : tr("%1: \"lastWritten\" is only allowed on write-only values").arg(where)};
         }
         if (!p->inRange(entry.value)) {
-            return Error{ErrorCode::OutOfRange, tr("%1: value %2 is outside the allowed range %3 to %4")
-                                                    .arg(where, QString::number(entry.value),
-                                                         QString::number(p->min), QString::number(p->max))};
+            return Error{
+                ErrorCode::OutOfRange,
+                tr("%1: value %2 is outside the allowed range %3 to %4")
+                    .arg(where, QString::number(entry.value), QString::number(p->min), QString::number(p->max))};
         }
         values.set(entry.index, entry.value, writeOnly ? ValueSource::LastWritten : ValueSource::ReadFromDrive);
     }
@@ -352,8 +372,9 @@ Error BackupFile::checkCompatible(Family targetFamily, const QString &targetFirm
     if (!m_family)
         return Error{ErrorCode::InvalidArgument, tr("The backup has no drive family")};
     if (*m_family != targetFamily) {
-        return Error{ErrorCode::NotSupported, tr("This backup is of a %1 drive; it cannot be restored to a %2 drive")
-                                                  .arg(familyId(*m_family), familyId(targetFamily))};
+        return Error{ErrorCode::NotSupported,
+                     tr("This backup is of a %1 drive; it cannot be restored to a %2 drive")
+                         .arg(familyId(*m_family), familyId(targetFamily))};
     }
     const QString fileFirmware = m_firmware.trimmed();
     const QString driveFirmware = targetFirmware.trimmed();
@@ -363,10 +384,12 @@ Error BackupFile::checkCompatible(Family targetFamily, const QString &targetFirm
     if (driveFirmware.isEmpty()) {
         message = tr("The backup was taken from firmware %1, but the drive's firmware version is unknown. "
                      "Parameters may differ between firmware versions: compare them first, then force the "
-                     "restore if you are sure.").arg(fileFirmware);
+                     "restore if you are sure.")
+                      .arg(fileFirmware);
     } else if (fileFirmware.isEmpty()) {
         message = tr("The backup does not record a firmware version; the drive has firmware %1. Compare the "
-                     "parameters first, then force the restore if you are sure.").arg(driveFirmware);
+                     "parameters first, then force the restore if you are sure.")
+                      .arg(driveFirmware);
     } else {
         message = tr("The backup was taken from firmware %1; the drive has firmware %2. Parameters may differ "
                      "between firmware versions: compare them first, then force the restore if you are sure.")

@@ -37,11 +37,11 @@ public:
     void setCreated(const QDateTime &time);
     std::optional<Family> family() const { return m_family; }
     void setFamily(Family family) { m_family = family; }
-    int address() const { return m_address; }      // 0..255
+    int address() const { return m_address; } // 0..255
     void setAddress(int address) { m_address = address; }
     QString firmware() const { return m_firmware; } // "" when the family has none / unknown
     void setFirmware(const QString &firmware) { m_firmware = firmware; }
-    QString model() const { return m_model; }       // "" when unknown
+    QString model() const { return m_model; } // "" when unknown
     void setModel(const QString &model) { m_model = model; }
     // Free-form link settings, scalar values only: e.g. {"port": "COM3", "baud": 19200,
     // "framing": "8N1"} or {"can": "can0", "bitrate": 1000000}.

@@ -12,7 +12,8 @@
 namespace dd {
 
 JsonFieldReader::JsonFieldReader(const QJsonObject &object, const QString &where)
-    : m_object(object), m_where(where)
+    : m_object(object)
+    , m_where(where)
 {
 }
 
@@ -94,12 +95,12 @@ std::optional<qint64> JsonFieldReader::integer(const QString &field, Presence pr
     return i;
 }
 
-std::optional<qint64> JsonFieldReader::integerIn(const QString &field, qint64 min, qint64 max,
-                                                 Presence presence)
+std::optional<qint64> JsonFieldReader::integerIn(const QString &field, qint64 min, qint64 max, Presence presence)
 {
     const auto i = integer(field, presence);
     if (i && (*i < min || *i > max)) {
-        fail(tr("%1 = %2 is outside the allowed range %3 to %4").arg(prefix(field), QString::number(*i), QString::number(min), QString::number(max)));
+        fail(tr("%1 = %2 is outside the allowed range %3 to %4")
+                 .arg(prefix(field), QString::number(*i), QString::number(min), QString::number(max)));
         return std::nullopt;
     }
     return i;
@@ -123,8 +124,7 @@ std::optional<double> JsonFieldReader::number(const QString &field, Presence pre
     return d;
 }
 
-std::optional<QString> JsonFieldReader::string(const QString &field, int maxLength, Presence presence,
-                                               bool allowEmpty)
+std::optional<QString> JsonFieldReader::string(const QString &field, int maxLength, Presence presence, bool allowEmpty)
 {
     const auto v = fetch(field, presence);
     if (!v)
@@ -186,8 +186,7 @@ std::optional<QJsonArray> JsonFieldReader::array(const QString &field, int maxSi
     return a;
 }
 
-std::optional<LocalizedText> JsonFieldReader::localized(const QString &field, int maxLength,
-                                                        Presence presence)
+std::optional<LocalizedText> JsonFieldReader::localized(const QString &field, int maxLength, Presence presence)
 {
     const auto o = object(field, presence);
     if (!o)
@@ -202,8 +201,7 @@ std::optional<LocalizedText> JsonFieldReader::localized(const QString &field, in
             return std::nullopt;
         }
         if (!it.value().isString()) {
-            fail(prefix(sub) + QLatin1Char(' ')
-                 + tr("must be a string (found %1)").arg(jsonTypeName(it.value())));
+            fail(prefix(sub) + QLatin1Char(' ') + tr("must be a string (found %1)").arg(jsonTypeName(it.value())));
             return std::nullopt;
         }
         const QString s = it.value().toString();
@@ -250,8 +248,9 @@ Error JsonFieldReader::readFile(const QString &path, qint64 maxSize, QByteArray 
                      tr("Cannot read %1: %2").arg(QDir::toNativeSeparators(path), file.errorString())};
     }
     if (data.size() > maxSize) {
-        return Error{ErrorCode::FileError, tr("%1 is larger than %2 bytes; it is not a file DriveDesk wrote")
-                                               .arg(QDir::toNativeSeparators(path), QString::number(maxSize))};
+        return Error{ErrorCode::FileError,
+                     tr("%1 is larger than %2 bytes; it is not a file DriveDesk wrote")
+                         .arg(QDir::toNativeSeparators(path), QString::number(maxSize))};
     }
     *out = data;
     return Error::none();
@@ -263,11 +262,10 @@ Error JsonFieldReader::parseObject(const QByteArray &json, const QString &source
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         const bool atEnd = parseError.offset >= json.size() - 1;
-        const QString hint = (json.trimmed().isEmpty() || atEnd) ? tr(" (is the file empty or truncated?)")
-                                                                   : QString();
-        return Error{ErrorCode::Malformed, tr("%1 is not valid JSON: %2 at byte %3%4")
-                                               .arg(source, parseError.errorString(),
-                                                    QString::number(parseError.offset), hint)};
+        const QString hint = (json.trimmed().isEmpty() || atEnd) ? tr(" (is the file empty or truncated?)") : QString();
+        return Error{ErrorCode::Malformed,
+                     tr("%1 is not valid JSON: %2 at byte %3%4")
+                         .arg(source, parseError.errorString(), QString::number(parseError.offset), hint)};
     }
     if (!doc.isObject()) {
         return Error{ErrorCode::Malformed, tr("%1: the top level must be a JSON object").arg(source)};

@@ -33,8 +33,7 @@ public:
     bool has(const QString &field) const { return m_object.contains(field); }
     std::optional<qint64> integer(const QString &field, Presence presence = Required);
     // integer() plus a range check (message names the range).
-    std::optional<qint64> integerIn(const QString &field, qint64 min, qint64 max,
-                                    Presence presence = Required);
+    std::optional<qint64> integerIn(const QString &field, qint64 min, qint64 max, Presence presence = Required);
     std::optional<double> number(const QString &field, Presence presence = Required);
     std::optional<QString> string(const QString &field, int maxLength, Presence presence = Required,
                                   bool allowEmpty = true);
@@ -42,14 +41,13 @@ public:
     std::optional<QJsonObject> object(const QString &field, Presence presence = Required);
     std::optional<QJsonArray> array(const QString &field, int maxSize, Presence presence = Required);
     // {"en": "...", "zh": "...", other language codes...}; en and zh required, non-empty.
-    std::optional<LocalizedText> localized(const QString &field, int maxLength,
-                                           Presence presence = Required);
+    std::optional<LocalizedText> localized(const QString &field, int maxLength, Presence presence = Required);
     // Fails on a field not in `allowed`; names starting with '_' are comments and allowed.
     bool checkKnownFields(const QStringList &allowed);
 
     bool ok() const { return m_error.isEmpty(); }
     QString errorMessage() const { return m_error; }
-    Error error() const; // ErrorCode::Malformed with errorMessage(), or none
+    Error error() const;               // ErrorCode::Malformed with errorMessage(), or none
     void fail(const QString &message); // keeps only the first failure
     const QString &where() const { return m_where; }
 

@@ -5,10 +5,10 @@
 #include "core/params/jsonfieldreader.h"
 #include "core/params/paramslog.h"
 
-#include <QHash>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
 #include <QRegularExpression>
 #include <QSet>
 #include <QStandardPaths>
@@ -53,7 +53,7 @@ QString ParameterDictionary::resourcePath(Family family)
 QString ParameterDictionary::userFilePath(Family family)
 {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)
-           + QStringLiteral("/dictionaries/%1.json").arg(familyId(family));
+        + QStringLiteral("/dictionaries/%1.json").arg(familyId(family));
 }
 
 const ParameterDictionary &ParameterDictionary::bundled(Family family)
@@ -141,7 +141,8 @@ static std::optional<ParameterInfo> parseEntry(const QJsonValue &value, int posi
     if (key && index && r.ok()) {
         if (!keyPattern().match(*key).hasMatch()) {
             r.fail(ParameterDictionary::tr("%1: key \"%2\" must start with a letter and hold only letters, "
-                                           "digits, '_', '.' and '-'").arg(where, *key));
+                                           "digits, '_', '.' and '-'")
+                       .arg(where, *key));
         } else {
             const auto m = numberPattern().match(*key);
             if (m.hasMatch() && m.captured(1).toInt() != *index)
@@ -159,7 +160,8 @@ static std::optional<ParameterInfo> parseEntry(const QJsonValue &value, int posi
             type = *t;
         else
             r.fail(ParameterDictionary::tr("%1: field \"type\" = \"%2\" is not one of uint8, int16, uint16, "
-                                           "int32, uint32").arg(where, *typeId));
+                                           "int32, uint32")
+                       .arg(where, *typeId));
     }
     const auto min = r.integer(QStringLiteral("min"));
     const auto max = r.integer(QStringLiteral("max"));
@@ -206,8 +208,7 @@ static std::optional<ParameterInfo> parseEntry(const QJsonValue &value, int posi
     }
     if (p.defaultValue && !p.inRange(*p.defaultValue)) {
         *error = ParameterDictionary::tr("%1: default %2 is outside the range %3 to %4")
-                     .arg(where, QString::number(*p.defaultValue), QString::number(p.min),
-                          QString::number(p.max));
+                     .arg(where, QString::number(*p.defaultValue), QString::number(p.min), QString::number(p.max));
         return std::nullopt;
     }
     if (p.access == Access::WriteOnly && p.readCommand >= 0) {
@@ -227,8 +228,7 @@ static std::optional<ParameterInfo> parseEntry(const QJsonValue &value, int posi
         for (int i = 0; i < models->size(); ++i) {
             const QJsonValue m = models->at(i);
             if (!m.isString() || m.toString().trimmed().isEmpty() || m.toString().size() > 32) {
-                *error = ParameterDictionary::tr("%1: models[%2] must be a model name")
-                             .arg(where, QString::number(i));
+                *error = ParameterDictionary::tr("%1: models[%2] must be a model name").arg(where, QString::number(i));
                 return std::nullopt;
             }
             p.models.append(m.toString());
@@ -241,31 +241,34 @@ Error ParameterDictionary::parse(const QJsonObject &root, const QString &source,
 {
     JsonFieldReader r(root, source);
     r.checkKnownFields({QStringLiteral("format"), QStringLiteral("formatVersion"), QStringLiteral("family"),
-                        QStringLiteral("description"), QStringLiteral("valueType"),
-                        QStringLiteral("parameters")});
+                        QStringLiteral("description"), QStringLiteral("valueType"), QStringLiteral("parameters")});
     const auto format = r.string(QStringLiteral("format"), 64);
     if (format && *format != formatName()) {
-        return Error{ErrorCode::Malformed, tr("%1 is not a DriveDesk parameter dictionary (format \"%2\", "
-                                              "expected \"%3\")").arg(source, *format, formatName())};
+        return Error{ErrorCode::Malformed,
+                     tr("%1 is not a DriveDesk parameter dictionary (format \"%2\", "
+                        "expected \"%3\")")
+                         .arg(source, *format, formatName())};
     }
     const auto version = r.integer(QStringLiteral("formatVersion"));
     if (version && *version != FormatVersion) {
-        return Error{ErrorCode::NotSupported, tr("%1: dictionary format version %2 is not supported "
-                                                 "(this DriveDesk reads version %3)")
-                                                  .arg(source, QString::number(*version),
-                                                       QString::number(FormatVersion))};
+        return Error{ErrorCode::NotSupported,
+                     tr("%1: dictionary format version %2 is not supported "
+                        "(this DriveDesk reads version %3)")
+                         .arg(source, QString::number(*version), QString::number(FormatVersion))};
     }
     const auto familyText = r.string(QStringLiteral("family"), 64);
     std::optional<Family> family;
     if (familyText) {
         family = familyFromId(*familyText);
         if (!family) {
-            return Error{ErrorCode::NotSupported, tr("%1: unknown drive family \"%2\" (known: %3)")
-                                                      .arg(source, *familyText, familyIds().join(QStringLiteral(", ")))};
+            return Error{ErrorCode::NotSupported,
+                         tr("%1: unknown drive family \"%2\" (known: %3)")
+                             .arg(source, *familyText, familyIds().join(QStringLiteral(", ")))};
         }
         if (expected && *family != *expected) {
-            return Error{ErrorCode::InvalidArgument, tr("%1 is a dictionary for %2 drives, not for %3")
-                                                         .arg(source, familyId(*family), familyId(*expected))};
+            return Error{
+                ErrorCode::InvalidArgument,
+                tr("%1 is a dictionary for %2 drives, not for %3").arg(source, familyId(*family), familyId(*expected))};
         }
     }
     const auto description = r.localized(QStringLiteral("description"), 4000, JsonFieldReader::Optional);
@@ -295,18 +298,20 @@ Error ParameterDictionary::parse(const QJsonObject &root, const QString &source,
             return Error{ErrorCode::Malformed, message};
         const QString where = QStringLiteral("%1: parameters[%2] (%3)").arg(source, QString::number(i), p->key);
         if (keyOfIndex.contains(p->index)) {
-            return Error{ErrorCode::Malformed, tr("%1: index %2 is already used by %3")
-                                                   .arg(where, QString::number(p->index), keyOfIndex.value(p->index))};
+            return Error{ErrorCode::Malformed,
+                         tr("%1: index %2 is already used by %3")
+                             .arg(where, QString::number(p->index), keyOfIndex.value(p->index))};
         }
         const QString lowerKey = p->key.toLower();
         if (keyOfLowerKey.contains(lowerKey)) {
-            return Error{ErrorCode::Malformed, tr("%1: key \"%2\" is already used (keys are case-insensitive)")
-                                                   .arg(where, keyOfLowerKey.value(lowerKey))};
+            return Error{ErrorCode::Malformed,
+                         tr("%1: key \"%2\" is already used (keys are case-insensitive)")
+                             .arg(where, keyOfLowerKey.value(lowerKey))};
         }
         if (p->registerAddress >= 0 && keyOfRegister.contains(p->registerAddress)) {
-            return Error{ErrorCode::Malformed, tr("%1: register %2 is already used by %3")
-                                                   .arg(where, QString::number(p->registerAddress),
-                                                        keyOfRegister.value(p->registerAddress))};
+            return Error{ErrorCode::Malformed,
+                         tr("%1: register %2 is already used by %3")
+                             .arg(where, QString::number(p->registerAddress), keyOfRegister.value(p->registerAddress))};
         }
         keyOfIndex.insert(p->index, p->key);
         keyOfLowerKey.insert(lowerKey, p->key);
@@ -449,8 +454,7 @@ Error ParameterDictionary::validateValue(int index, qint64 value) const
         ? tr("%1: %2 is outside the allowed range %3 to %4")
               .arg(label(index), QString::number(value), QString::number(p->min), QString::number(p->max))
         : tr("%1: %2 %5 is outside the allowed range %3 to %4 %5")
-              .arg(label(index), QString::number(value), QString::number(p->min), QString::number(p->max),
-                   p->unit);
+              .arg(label(index), QString::number(value), QString::number(p->min), QString::number(p->max), p->unit);
     return Error{ErrorCode::OutOfRange, message};
 }
 

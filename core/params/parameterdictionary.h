@@ -54,7 +54,7 @@ public:
     QList<int> indices() const;
 
     const ParameterInfo *byIndex(int index) const;
-    const ParameterInfo *byKey(const QString &key) const;   // case-insensitive
+    const ParameterInfo *byKey(const QString &key) const; // case-insensitive
     // English, Chinese or any other language's name, case-insensitive; nullptr when unknown
     // or when two parameters share the name.
     const ParameterInfo *byName(const QString &name) const;
@@ -86,9 +86,9 @@ private:
     QString m_source;
     LocalizedText m_description;
     QVector<ParameterInfo> m_parameters;
-    QHash<int, int> m_byIndex;        // index -> position
-    QHash<QString, int> m_byKey;      // lower-case key -> position
-    QHash<QString, int> m_byName;     // case-folded name -> position, -1 when ambiguous
+    QHash<int, int> m_byIndex;    // index -> position
+    QHash<QString, int> m_byKey;  // lower-case key -> position
+    QHash<QString, int> m_byName; // case-folded name -> position, -1 when ambiguous
 };
 
 } // namespace dd

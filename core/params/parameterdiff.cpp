@@ -65,8 +65,8 @@ int ParameterDiff::count(DiffStatus status) const
 static bool wouldWrite(const DiffEntry &e)
 {
     return e.fileValue && e.access != Access::ReadOnly
-           && (e.status == DiffStatus::Different || e.status == DiffStatus::OnlyInFile
-               || e.status == DiffStatus::NotReadable);
+        && (e.status == DiffStatus::Different || e.status == DiffStatus::OnlyInFile
+            || e.status == DiffStatus::NotReadable);
 }
 
 bool ParameterDiff::hasDifferences() const

@@ -23,8 +23,8 @@ std::optional<Access> accessFromId(const QString &id)
     return std::nullopt;
 }
 
-static const ValueType allValueTypes[] = {ValueType::UInt8, ValueType::Int16, ValueType::UInt16,
-                                          ValueType::Int32, ValueType::UInt32};
+static const ValueType allValueTypes[] = {ValueType::UInt8, ValueType::Int16, ValueType::UInt16, ValueType::Int32,
+                                          ValueType::UInt32};
 
 QString valueTypeId(ValueType type)
 {

@@ -37,7 +37,7 @@ public:
 
     bool contains(int index) const { return m_values.contains(index); }
     bool isKnown(int index) const;
-    ParameterValue entry(int index) const; // source Unknown when absent
+    ParameterValue entry(int index) const;        // source Unknown when absent
     std::optional<qint64> value(int index) const; // nullopt when absent or unknown
     QList<int> indices() const { return m_values.keys(); }
     QList<int> knownIndices() const;

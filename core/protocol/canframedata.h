@@ -10,13 +10,10 @@ namespace dd {
 struct CanFrameData
 {
     quint32 id = 0;
-    QByteArray data;        // 0..8 bytes
-    bool extended = false;  // 29-bit identifier
+    QByteArray data;       // 0..8 bytes
+    bool extended = false; // 29-bit identifier
 
-    bool operator==(const CanFrameData &o) const
-    {
-        return id == o.id && data == o.data && extended == o.extended;
-    }
+    bool operator==(const CanFrameData &o) const { return id == o.id && data == o.data && extended == o.extended; }
     bool operator!=(const CanFrameData &o) const { return !(*this == o); }
 };
 

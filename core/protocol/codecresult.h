@@ -13,8 +13,18 @@ struct Decoded
     QString error; // English, technical (for traces and exceptions); empty when value is set
 
     bool ok() const { return value.has_value(); }
-    static Decoded success(T v) { Decoded d; d.value = std::move(v); return d; }
-    static Decoded failure(QString why) { Decoded d; d.error = std::move(why); return d; }
+    static Decoded success(T v)
+    {
+        Decoded d;
+        d.value = std::move(v);
+        return d;
+    }
+    static Decoded failure(QString why)
+    {
+        Decoded d;
+        d.error = std::move(why);
+        return d;
+    }
 };
 
 } // namespace dd

@@ -116,8 +116,7 @@ QStringList allFramingIds()
     return out;
 }
 
-std::unique_ptr<FrameDescriber> createFrameDescriber(Family family, const QString &framing,
-                                                     const QVariantMap &options)
+std::unique_ptr<FrameDescriber> createFrameDescriber(Family family, const QString &framing, const QVariantMap &options)
 {
     return familyTraits(family).describer(framing, options);
 }

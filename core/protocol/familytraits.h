@@ -30,11 +30,11 @@ struct AddressRange
 // One way a family's frames travel: a framing on a kind of link.
 struct FramingTraits
 {
-    QString id;                  // the --framing value: "rtu", "ascii", "plc", "can"
-    const char *name = "";       // untranslated: QT_TRANSLATE_NOOP("dd::FamilyTraits", ...)
+    QString id;            // the --framing value: "rtu", "ascii", "plc", "can"
+    const char *name = ""; // untranslated: QT_TRANSLATE_NOOP("dd::FamilyTraits", ...)
     LinkKind link = LinkKind::Serial;
-    AddressRange addresses;      // a drive's address here: --address, scan ranges
-    bool detect = true;          // tried by auto-detect, in the order of FamilyTraits::framings
+    AddressRange addresses; // a drive's address here: --address, scan ranges
+    bool detect = true;     // tried by auto-detect, in the order of FamilyTraits::framings
 
     QString displayName() const; // translated: "RTU (binary)"
 };
@@ -52,9 +52,9 @@ struct FamilyTraits
     const char *name = "";
     // The framings, in auto-detect order. The first of a link kind is that link's default.
     QList<FramingTraits> framings;
-    int defaultBaud = 0;         // serial links; 0 when the family has none
-    QList<int> scanBauds;        // the baud sweep of a scan, most common first
-    int defaultBitrate = 0;      // CAN links; 0 when the family has none
+    int defaultBaud = 0;    // serial links; 0 when the family has none
+    QList<int> scanBauds;   // the baud sweep of a scan, most common first
+    int defaultBitrate = 0; // CAN links; 0 when the family has none
     // Units of motion commands, untranslated (QT_TRANSLATE_NOOP("dd::FamilyTraits", ...)).
     const char *speedUnit = "";
     const char *positionUnit = "";
@@ -70,9 +70,9 @@ struct FamilyTraits
     std::unique_ptr<FrameDescriber> (*describer)(const QString &framing, const QVariantMap &options) = nullptr;
 
     QString id() const { return familyId(family); }
-    QString displayName() const;          // translated: "Servo (CAN)"
-    QString speedUnitText() const;        // translated: "r/min"
-    QString positionUnitText() const;     // translated: "counts"
+    QString displayName() const;      // translated: "Servo (CAN)"
+    QString speedUnitText() const;    // translated: "r/min"
+    QString positionUnitText() const; // translated: "counts"
 
     bool talks(LinkKind link) const;
     // nullptr when `id` is not one of this family's framings.

@@ -26,7 +26,7 @@ class FrameDescriber
     Q_DECLARE_TR_FUNCTIONS(dd::FrameDescriber)
 
 public:
-    enum class Origin { Host, Drive };   // TX is the host, RX the drive
+    enum class Origin { Host, Drive }; // TX is the host, RX the drive
 
     virtual ~FrameDescriber() = default;
 
@@ -35,11 +35,11 @@ public:
     virtual QString describeSerial(Origin origin, const QByteArray &bytes);
     virtual QString describeCan(Origin origin, const CanFrameData &frame);
     // Forgets the last request (e.g. after a gap in the traffic).
-    virtual void reset() {}
+    virtual void reset() { }
 
-    static QString unknown();                       // "?"
-    static QString failed(const QString &reason);   // "?" or "? (reason)"
-    static QString station(int address);            // "#1 "
+    static QString unknown();                     // "?"
+    static QString failed(const QString &reason); // "?" or "? (reason)"
+    static QString station(int address);          // "#1 "
 };
 
 } // namespace dd

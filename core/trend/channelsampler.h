@@ -74,10 +74,10 @@ private:
     QStringList m_channels;
     QTimer m_timer;
     QElapsedTimer m_clock;
-    QList<Read> m_reads;       // in the order they went out; arrived ones wait for earlier ones
+    QList<Read> m_reads; // in the order they went out; arrived ones wait for earlier ones
     bool m_running = false;
-    bool m_behind = false;     // a tick found the reads outstanding: read again on a reply
-    quint64 m_run = 0;         // start() / stop() count: a handler sees a restart
+    bool m_behind = false; // a tick found the reads outstanding: read again on a reply
+    quint64 m_run = 0;     // start() / stop() count: a handler sees a restart
     quint64 m_samples = 0;
     quint64 m_skipped = 0;
 };

@@ -30,8 +30,7 @@ QByteArray CsvWriter::headerLine(const QList<TrendChannel> &channels)
     QByteArray line = "time_s";
     for (const TrendChannel &c : channels) {
         line += ',';
-        line += csvField(c.unit.isEmpty() ? c.id : c.id + QStringLiteral(" [") + c.unit
-                                                      + QLatin1Char(']'));
+        line += csvField(c.unit.isEmpty() ? c.id : c.id + QStringLiteral(" [") + c.unit + QLatin1Char(']'));
     }
     line += '\n';
     return line;
@@ -61,8 +60,7 @@ QByteArray CsvWriter::formatValue(double value)
     return QByteArray::number(value, format, QLocale::FloatingPointShortest);
 }
 
-QByteArray CsvWriter::rowLine(qint64 timeUs, qint64 originUs,
-                              const QList<std::optional<double>> &values)
+QByteArray CsvWriter::rowLine(qint64 timeUs, qint64 originUs, const QList<std::optional<double>> &values)
 {
     QByteArray line = formatTime(timeUs, originUs);
     for (const auto &v : values) {
@@ -116,14 +114,12 @@ Error CsvWriter::save(const QString &path, const TrendSnapshot &snapshot)
     }
     const QByteArray text = toCsv(snapshot);
     if (file.write(text) != text.size() || !file.commit()) {
-        return fileError(tr("Writing the CSV file %1 failed: %2. Is the disk full?")
-                             .arg(path, file.errorString()));
+        return fileError(tr("Writing the CSV file %1 failed: %2. Is the disk full?").arg(path, file.errorString()));
     }
     return Error::none();
 }
 
-Error CsvWriter::open(const QString &path, const QList<TrendChannel> &channels,
-                      std::optional<qint64> originUs)
+Error CsvWriter::open(const QString &path, const QList<TrendChannel> &channels, std::optional<qint64> originUs)
 {
     close();
     m_file.setFileName(path);
@@ -176,8 +172,8 @@ Error CsvWriter::writeRowAtSeconds(double timeS, const QMap<QString, double> &va
 Error CsvWriter::writeBytes(const QByteArray &bytes)
 {
     if (m_file.write(bytes) != bytes.size() || !m_file.flush()) {
-        return fileError(tr("Writing the CSV file %1 failed: %2. Is the disk full?")
-                             .arg(m_file.fileName(), m_file.errorString()));
+        return fileError(
+            tr("Writing the CSV file %1 failed: %2. Is the disk full?").arg(m_file.fileName(), m_file.errorString()));
     }
     return Error::none();
 }
@@ -190,8 +186,7 @@ Error CsvWriter::close()
     const QString why = m_file.errorString();
     m_file.close();
     if (!ok) {
-        return fileError(tr("Writing the CSV file %1 failed: %2. Is the disk full?")
-                             .arg(m_file.fileName(), why));
+        return fileError(tr("Writing the CSV file %1 failed: %2. Is the disk full?").arg(m_file.fileName(), why));
     }
     return Error::none();
 }

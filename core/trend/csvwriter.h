@@ -51,8 +51,7 @@ public:
 
     // Pieces of the format (each line ends with '\n').
     static QByteArray headerLine(const QList<TrendChannel> &channels);
-    static QByteArray rowLine(qint64 timeUs, qint64 originUs,
-                              const QList<std::optional<double>> &values);
+    static QByteArray rowLine(qint64 timeUs, qint64 originUs, const QList<std::optional<double>> &values);
     static QByteArray formatTime(qint64 timeUs, qint64 originUs);
     static QByteArray formatValue(double value);
 
@@ -63,8 +62,7 @@ public:
 
     // Streaming. originUs: time zero of the time_s column; when not given, the time of the
     // first row written.
-    Error open(const QString &path, const QList<TrendChannel> &channels,
-               std::optional<qint64> originUs = std::nullopt);
+    Error open(const QString &path, const QList<TrendChannel> &channels, std::optional<qint64> originUs = std::nullopt);
     bool isOpen() const { return m_file.isOpen(); }
     QString path() const { return m_file.fileName(); }
     qint64 rowCount() const { return m_rows; }

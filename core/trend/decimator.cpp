@@ -24,7 +24,7 @@ struct Window
 };
 
 // Get: qsizetype -> TrendSample. Scans indices [begin, end), all inside the window.
-template<typename Get>
+template <typename Get>
 QList<TrendSample> decimate(const Window &w, qsizetype begin, qsizetype end, Get get)
 {
     QList<TrendSample> out;
@@ -83,8 +83,8 @@ bool makeWindow(qint64 fromUs, qint64 toUs, int buckets, Window *w)
 
 } // namespace
 
-QList<TrendSample> Decimator::minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs,
-                                     int buckets, Strategy strategy)
+QList<TrendSample> Decimator::minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, int buckets,
+                                     Strategy strategy)
 {
     Window w{};
     if (!makeWindow(fromUs, toUs, buckets, &w))
@@ -121,8 +121,7 @@ QList<TrendSample> Decimator::minMax(const SampleBuffer &buffer, qint64 fromUs, 
     return out;
 }
 
-QList<TrendSample> Decimator::minMax(const QList<TrendSample> &sorted, qint64 fromUs,
-                                     qint64 toUs, int buckets)
+QList<TrendSample> Decimator::minMax(const QList<TrendSample> &sorted, qint64 fromUs, qint64 toUs, int buckets)
 {
     Window w{};
     if (!makeWindow(fromUs, toUs, buckets, &w))
@@ -131,8 +130,7 @@ QList<TrendSample> Decimator::minMax(const QList<TrendSample> &sorted, qint64 fr
     const auto b = std::lower_bound(sorted.cbegin(), sorted.cend(), fromUs, byTime);
     const auto e = std::upper_bound(sorted.cbegin(), sorted.cend(), toUs,
                                     [](qint64 t, const TrendSample &s) { return t < s.timeUs; });
-    return decimate(w, b - sorted.cbegin(), e - sorted.cbegin(),
-                    [&sorted](qsizetype i) { return sorted.at(i); });
+    return decimate(w, b - sorted.cbegin(), e - sorted.cbegin(), [&sorted](qsizetype i) { return sorted.at(i); });
 }
 
 int Decimator::bucketOf(qint64 timeUs, qint64 fromUs, qint64 toUs, int buckets)

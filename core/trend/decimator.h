@@ -32,11 +32,10 @@ class Decimator
 public:
     enum class Strategy { Auto, Scan, Summaries };
 
-    static QList<TrendSample> minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs,
-                                     int buckets, Strategy strategy = Strategy::Auto);
+    static QList<TrendSample> minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, int buckets,
+                                     Strategy strategy = Strategy::Auto);
     // The same over samples sorted by time (non-decreasing).
-    static QList<TrendSample> minMax(const QList<TrendSample> &sorted, qint64 fromUs,
-                                     qint64 toUs, int buckets);
+    static QList<TrendSample> minMax(const QList<TrendSample> &sorted, qint64 fromUs, qint64 toUs, int buckets);
 
     // The bucket of timeUs, or -1 when it lies outside the window.
     static int bucketOf(qint64 timeUs, qint64 fromUs, qint64 toUs, int buckets);

@@ -45,8 +45,8 @@ void SampleBuffer::summarize(qint64 seq, double value)
     const size_t slot = static_cast<size_t>((seq / BlockSize) % blockSlots());
     if (slot >= m_blocks.size()) {
         if (slot >= m_blocks.capacity()) // grow like the samples, never past the slot count
-            m_blocks.reserve(std::min<size_t>(static_cast<size_t>(blockSlots()),
-                                              std::max<size_t>(16, 2 * m_blocks.capacity())));
+            m_blocks.reserve(
+                std::min<size_t>(static_cast<size_t>(blockSlots()), std::max<size_t>(16, 2 * m_blocks.capacity())));
         m_blocks.resize(slot + 1);
     }
     Block &b = m_blocks[slot];
@@ -163,8 +163,7 @@ void SampleBuffer::setCapacity(qsizetype capacity)
 
 qsizetype SampleBuffer::memoryBytes() const
 {
-    return static_cast<qsizetype>(m_times.capacity() * sizeof(qint64)
-                                  + m_values.capacity() * sizeof(double)
+    return static_cast<qsizetype>(m_times.capacity() * sizeof(qint64) + m_values.capacity() * sizeof(double)
                                   + m_blocks.capacity() * sizeof(Block));
 }
 

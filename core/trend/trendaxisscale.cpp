@@ -14,8 +14,7 @@ double TrendAxisScale::niceStep(double rough)
     return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
 }
 
-std::pair<double, double> TrendAxisScale::fitValueRange(double lo, double hi, double currentLo,
-                                                        double currentHi)
+std::pair<double, double> TrendAxisScale::fitValueRange(double lo, double hi, double currentLo, double currentHi)
 {
     if (hi - lo <= 1e-12 * std::max(1.0, std::fabs(hi))) {
         const double pad = std::max(1.0, std::fabs(hi) * 0.1);

@@ -16,8 +16,7 @@ public:
     // [currentLo, currentHi]: the data plus a 5 % margin each side (±max(1, 10 %) around a
     // flat line). With hysteresis: the current range is kept while the data fits in it
     // and fills at least half of it, so a noisy signal does not make the axis twitch.
-    static std::pair<double, double> fitValueRange(double lo, double hi, double currentLo,
-                                                   double currentHi);
+    static std::pair<double, double> fitValueRange(double lo, double hi, double currentLo, double currentHi);
 };
 
 } // namespace dd

@@ -8,9 +8,8 @@
 
 namespace dd {
 
-TrendPlotBuilder::Result TrendPlotBuilder::build(const SampleBuffer &buffer, qint64 fromUs,
-                                                 qint64 toUs, int widthPx, qint64 originUs,
-                                                 double scale, double offset)
+TrendPlotBuilder::Result TrendPlotBuilder::build(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, int widthPx,
+                                                 qint64 originUs, double scale, double offset)
 {
     Result r;
     if (toUs < fromUs || buffer.isEmpty())

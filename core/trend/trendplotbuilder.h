@@ -26,8 +26,8 @@ public:
         bool hasData() const { return yMin <= yMax; }
     };
 
-    static Result build(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, int widthPx,
-                        qint64 originUs, double scale = 1.0, double offset = 0.0);
+    static Result build(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, int widthPx, qint64 originUs,
+                        double scale = 1.0, double offset = 0.0);
 };
 
 } // namespace dd

@@ -26,8 +26,9 @@ void TrendRecorder::setChannels(const QList<TrendChannel> &channels)
     QList<TrendChannel> newChannels;
     std::vector<std::unique_ptr<SampleBuffer>> newBuffers;
     for (const TrendChannel &c : channels) {
-        if (c.id.isEmpty() || std::any_of(newChannels.cbegin(), newChannels.cend(),
-                                          [&c](const TrendChannel &n) { return n.id == c.id; }))
+        if (c.id.isEmpty() || std::any_of(newChannels.cbegin(), newChannels.cend(), [&c](const TrendChannel &n) {
+                return n.id == c.id;
+            }))
             continue; // ids are unique and non-empty
         const int old = indexOf(c.id);
         newChannels.append(c);
@@ -132,8 +133,7 @@ void TrendRecorder::setPaused(bool paused)
 
 bool TrendRecorder::isEmpty() const
 {
-    return std::all_of(m_buffers.cbegin(), m_buffers.cend(),
-                       [](const auto &b) { return b->isEmpty(); });
+    return std::all_of(m_buffers.cbegin(), m_buffers.cend(), [](const auto &b) { return b->isEmpty(); });
 }
 
 qint64 TrendRecorder::firstTimeUs() const
@@ -205,8 +205,7 @@ TrendSnapshot TrendRecorder::snapshot(qint64 fromUs, qint64 toUs, const QStringL
 
 TrendSnapshot TrendRecorder::snapshotAll(const QStringList &ids) const
 {
-    TrendSnapshot snap = snapshot(std::numeric_limits<qint64>::min(),
-                                  std::numeric_limits<qint64>::max(), ids);
+    TrendSnapshot snap = snapshot(std::numeric_limits<qint64>::min(), std::numeric_limits<qint64>::max(), ids);
     snap.fromUs = firstTimeUs();
     snap.toUs = lastTimeUs();
     return snap;

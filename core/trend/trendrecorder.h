@@ -38,7 +38,7 @@ public:
     QStringList channelIds() const;
     int channelCount() const { return static_cast<int>(m_channels.size()); }
     bool hasChannel(const QString &id) const { return indexOf(id) >= 0; }
-    TrendChannel channel(const QString &id) const; // empty channel if unknown
+    TrendChannel channel(const QString &id) const;       // empty channel if unknown
     const SampleBuffer *buffer(const QString &id) const; // nullptr if unknown
 
     // Records a sample. False if the channel is unknown or the time is older than the
@@ -56,8 +56,8 @@ public:
     bool isEmpty() const;
     bool hasOrigin() const { return m_hasOrigin; }
     qint64 originUs() const { return m_originUs; } // 0 until the first sample
-    qint64 firstTimeUs() const;                     // oldest sample kept, any channel
-    qint64 lastTimeUs() const;                      // newest sample, any channel
+    qint64 firstTimeUs() const;                    // oldest sample kept, any channel
+    qint64 lastTimeUs() const;                     // newest sample, any channel
     quint64 revision() const { return m_revision; }
     quint64 rejectedCount() const { return m_rejected; }
     quint64 droppedCount() const; // evicted by the per-channel bound, all channels

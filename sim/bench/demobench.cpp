@@ -53,7 +53,8 @@ void DemoBench::stop()
         return;
     // The simulators are deleted on their own thread (their sockets and timers live there).
     DemoBenchWorker *worker = m_worker;
-    QMetaObject::invokeMethod(worker, [worker] { delete worker; }, Qt::BlockingQueuedConnection);
+    QMetaObject::invokeMethod(
+        worker, [worker] { delete worker; }, Qt::BlockingQueuedConnection);
     m_worker = nullptr;
     m_thread->quit();
     m_thread->wait();

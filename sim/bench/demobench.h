@@ -29,11 +29,11 @@ class DemoBench : public QObject
     Q_OBJECT
 public:
     static constexpr int Address = 1;
-    static constexpr int ScanFrom = 1;   // the demo scans 1..4
+    static constexpr int ScanFrom = 1; // the demo scans 1..4
     static constexpr int ScanTo = 4;
 
     explicit DemoBench(QObject *parent = nullptr);
-    ~DemoBench() override;   // stops the bench (the links' clients see the adapters vanish)
+    ~DemoBench() override; // stops the bench (the links' clients see the adapters vanish)
 
     // Creates the simulators on the bench thread; fails at once if one cannot be created.
     Error start();
@@ -53,7 +53,7 @@ signals:
 
 private:
     QThread *m_thread = nullptr;
-    DemoBenchWorker *m_worker = nullptr;   // lives on m_thread
+    DemoBenchWorker *m_worker = nullptr; // lives on m_thread
     QList<ConnectionSettings> m_connections;
     QStringList m_descriptions;
     bool m_running = false;

@@ -1,9 +1,9 @@
 #include "sim/bench/demobenchworker.h"
-#include "sim/bench/simfamilies.h"
 #include "core/protocol/familytraits.h"
+#include "sim/bench/simfamilies.h"
 
-#include "sim/bus/ptyendpoint.h"
 #include "sim/bench/simbench.h"
+#include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simcanbus.h"
 
 namespace dd {
@@ -37,7 +37,7 @@ Error DemoBenchWorker::build(int address)
             if (t->framings.size() > 1)
                 o.framing = t->framings.first().id;
             if (link == LinkKind::Can)
-                o.can = QStringLiteral("virtualcan:auto");   // a private hub on a free port
+                o.can = QStringLiteral("virtualcan:auto"); // a private hub on a free port
             options << o;
         }
     }

@@ -1,16 +1,16 @@
 #include "sim/bench/simbench.h"
-#include "sim/bench/simfamilies.h"
 #include "core/protocol/familytraits.h"
+#include "sim/bench/simfamilies.h"
 
 #include "core/link/cansettings.h"
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simcanbus.h"
 #include "sim/bus/simserialbus.h"
+#include "sim/bus/virtualcanhub.h"
 #include "sim/servocan/simservocandrive.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
 #include "sim/shuoke/simshuokecandevice.h"
 #include "sim/shuoke/simshuokeserialdevice.h"
-#include "sim/bus/virtualcanhub.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -26,13 +26,12 @@ const char kStateFormat[] = "drivedesk-sim-state";
 // One simulated drive per address on `bus`, made by the family's simulator, with the
 // bench's latency and fault settings (each drive its own fault seed).
 template <class Bus, class Device>
-Error addDevices(Bus *bus, const SimBenchOptions &o,
-                 std::unique_ptr<Device> (*make)(const SimDeviceSpec &, Error *))
+Error addDevices(Bus *bus, const SimBenchOptions &o, std::unique_ptr<Device> (*make)(const SimDeviceSpec &, Error *))
 {
     for (int address : std::as_const(o.addresses)) {
         Error e;
-        const SimDeviceSpec spec{address, o.bauds.value(address, o.baud), o.bitrate, o.framing, o.demoMotion,
-                                 [bus] { return bus->nowUs(); }};
+        const SimDeviceSpec spec{address,      o.bauds.value(address, o.baud), o.bitrate, o.framing,
+                                 o.demoMotion, [bus] { return bus->nowUs(); }};
         std::unique_ptr<Device> device = make(spec, &e);
         if (!device)
             return e;
@@ -47,7 +46,10 @@ Error addDevices(Bus *bus, const SimBenchOptions &o,
 }
 } // namespace
 
-int SimBenchOptions::defaultAddress(Family) { return 1; }
+int SimBenchOptions::defaultAddress(Family)
+{
+    return 1;
+}
 
 int SimBenchOptions::defaultBaud(Family family)
 {
@@ -93,13 +95,15 @@ Error SimBench::start(const SimBenchOptions &options)
         QFile f(m_options.stateFile);
         if (!f.open(QIODevice::ReadOnly)) {
             stop();
-            return {ErrorCode::FileError, tr("Cannot read the state file %1: %2").arg(m_options.stateFile, f.errorString())};
+            return {ErrorCode::FileError,
+                    tr("Cannot read the state file %1: %2").arg(m_options.stateFile, f.errorString())};
         }
         QJsonParseError pe;
         const QJsonDocument doc = QJsonDocument::fromJson(f.read(4 * 1024 * 1024), &pe);
         if (pe.error != QJsonParseError::NoError || !doc.isObject()) {
             stop();
-            return {ErrorCode::Malformed, tr("The state file %1 is not valid JSON: %2").arg(m_options.stateFile, pe.errorString())};
+            return {ErrorCode::Malformed,
+                    tr("The state file %1 is not valid JSON: %2").arg(m_options.stateFile, pe.errorString())};
         }
         e = applyState(doc.object());
         if (e.isError()) {
@@ -142,8 +146,7 @@ Error SimBench::startCan()
         if (m_hub->start(privateHub ? 0 : kVirtualCanDefaultPort)) {
             const QString channel = privateHub ? QStringLiteral("can0") : iface;
             iface = QStringLiteral("tcp://127.0.0.1:%1/%2").arg(m_hub->port()).arg(channel);
-            m_clientCan = privateHub ? QStringLiteral("virtualcan:") + iface
-                                     : QStringLiteral("virtualcan:") + channel;
+            m_clientCan = privateHub ? QStringLiteral("virtualcan:") + iface : QStringLiteral("virtualcan:") + channel;
         } else {
             delete m_hub;
             m_hub = nullptr;
@@ -262,7 +265,8 @@ Error SimBench::applyState(const QJsonObject &root)
     if (root.value(QStringLiteral("format")).toString() != QLatin1String(kStateFormat))
         return {ErrorCode::Malformed, tr("%1 is not a DriveDesk simulator state file.").arg(file)};
     if (root.value(QStringLiteral("family")).toString() != familyId(m_options.family))
-        return {ErrorCode::InvalidArgument, tr("%1 holds the state of %2 drives, not %3.")
+        return {ErrorCode::InvalidArgument,
+                tr("%1 holds the state of %2 drives, not %3.")
                     .arg(file, root.value(QStringLiteral("family")).toString(), familyId(m_options.family))};
     const QJsonArray drives = root.value(QStringLiteral("drives")).toArray();
     for (const QJsonValue &v : drives) {

@@ -26,7 +26,7 @@ public:
     ~SimBench() override;
 
     Error start(const SimBenchOptions &options);
-    void stop();                         // saves the state file if one was given
+    void stop(); // saves the state file if one was given
     Error saveState() const;
     bool isRunning() const;
 
@@ -55,7 +55,7 @@ private:
     SimSerialBus *m_serial = nullptr;
     SimCanBus *m_can = nullptr;
     VirtualCanHub *m_hub = nullptr;
-    QString m_clientCan;      // the CAN interface a client should open
+    QString m_clientCan; // the CAN interface a client should open
     QString m_ptyPath;
 };
 

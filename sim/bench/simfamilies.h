@@ -17,11 +17,11 @@ class SimSerialDevice;
 struct SimDeviceSpec
 {
     int address = 1;
-    int baud = 0;                       // serial
-    int bitrate = 0;                    // CAN
-    QString framing;                    // the family's framing id; empty: the link's default
-    bool demoMotion = false;            // move on its own (a slow demo profile)
-    std::function<qint64()> clock;      // the bus's clock (µs)
+    int baud = 0;                  // serial
+    int bitrate = 0;               // CAN
+    QString framing;               // the family's framing id; empty: the link's default
+    bool demoMotion = false;       // move on its own (a slow demo profile)
+    std::function<qint64()> clock; // the bus's clock (µs)
 };
 
 // The simulator of one family: the drives it makes on a serial bus and on a CAN bus (null

@@ -7,7 +7,10 @@
 namespace dd {
 
 namespace {
-double clampRate(double r) { return std::clamp(r, 0.0, 1.0); }
+double clampRate(double r)
+{
+    return std::clamp(r, 0.0, 1.0);
+}
 
 std::optional<double> parseRate(QString text)
 {
@@ -70,7 +73,8 @@ std::optional<FaultSettings> FaultSettings::parse(const QString &spec, QString *
         if (key == QLatin1String("drop") || key == QLatin1String("corrupt")) {
             const auto rate = parseRate(value);
             if (!rate)
-                return fail(QStringLiteral("fault option '%1': expected a rate 0..1 or 0..100%, got '%2'").arg(key, value));
+                return fail(
+                    QStringLiteral("fault option '%1': expected a rate 0..1 or 0..100%, got '%2'").arg(key, value));
             (key == QLatin1String("drop") ? s.dropRate : s.corruptRate) = *rate;
         } else if (key == QLatin1String("latency") || key == QLatin1String("jitter")) {
             const auto ms = parseNonNegativeInt(value);
@@ -84,7 +88,9 @@ std::optional<FaultSettings> FaultSettings::parse(const QString &spec, QString *
                 return fail(QStringLiteral("fault option 'seed': expected an unsigned integer, got '%1'").arg(value));
             s.seed = seed;
         } else {
-            return fail(QStringLiteral("unknown fault option '%1' (known: drop, corrupt, latency, jitter, silent, seed)").arg(key));
+            return fail(
+                QStringLiteral("unknown fault option '%1' (known: drop, corrupt, latency, jitter, silent, seed)")
+                    .arg(key));
         }
     }
     return s;
@@ -93,23 +99,25 @@ std::optional<FaultSettings> FaultSettings::parse(const QString &spec, QString *
 QString FaultSettings::toString() const
 {
     return QStringLiteral("drop=%1,corrupt=%2,latency=%3,jitter=%4,silent=%5,seed=%6")
-            .arg(QString::number(dropRate, 'g', 17), QString::number(corruptRate, 'g', 17))
-            .arg(extraLatencyMs)
-            .arg(latencyJitterMs)
-            .arg(silent ? 1 : 0)
-            .arg(seed);
+        .arg(QString::number(dropRate, 'g', 17), QString::number(corruptRate, 'g', 17))
+        .arg(extraLatencyMs)
+        .arg(latencyJitterMs)
+        .arg(silent ? 1 : 0)
+        .arg(seed);
 }
 
 bool FaultSettings::operator==(const FaultSettings &o) const
 {
-    return dropRate == o.dropRate && corruptRate == o.corruptRate
-            && extraLatencyMs == o.extraLatencyMs && latencyJitterMs == o.latencyJitterMs
-            && silent == o.silent && seed == o.seed;
+    return dropRate == o.dropRate && corruptRate == o.corruptRate && extraLatencyMs == o.extraLatencyMs
+        && latencyJitterMs == o.latencyJitterMs && silent == o.silent && seed == o.seed;
 }
 
 // --- FaultInjector ------------------------------------------------------------------------
 
-FaultInjector::FaultInjector() : FaultInjector(FaultSettings{}) {}
+FaultInjector::FaultInjector()
+    : FaultInjector(FaultSettings{})
+{
+}
 
 FaultInjector::FaultInjector(const FaultSettings &settings)
 {
@@ -133,8 +141,14 @@ void FaultInjector::reseed(quint32 seed)
     m_rng.seed(seed);
 }
 
-void FaultInjector::setDropRate(double rate) { m_settings.dropRate = clampRate(rate); }
-void FaultInjector::setCorruptRate(double rate) { m_settings.corruptRate = clampRate(rate); }
+void FaultInjector::setDropRate(double rate)
+{
+    m_settings.dropRate = clampRate(rate);
+}
+void FaultInjector::setCorruptRate(double rate)
+{
+    m_settings.corruptRate = clampRate(rate);
+}
 
 void FaultInjector::setExtraLatency(int fixedMs, int jitterMs)
 {
@@ -167,7 +181,8 @@ QByteArray FaultInjector::corrupt(QByteArray bytes)
     m_lastCorrupted = false;
     if (bytes.isEmpty() || u >= m_settings.corruptRate)
         return bytes;
-    const auto index = static_cast<qsizetype>((static_cast<quint64>(byteDraw) * static_cast<quint64>(bytes.size())) >> 32);
+    const auto index = static_cast<qsizetype>((static_cast<quint64>(byteDraw) * static_cast<quint64>(bytes.size()))
+                                              >> 32);
     const int bit = static_cast<int>((static_cast<quint64>(bitDraw) * 8u) >> 32);
     bytes[index] = static_cast<char>(static_cast<quint8>(bytes[index]) ^ (1u << bit));
     m_lastCorrupted = true;

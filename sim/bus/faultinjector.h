@@ -70,8 +70,8 @@ public:
     int extraLatencyMs();
 
 private:
-    double uniform();            // [0, 1) from one 32-bit draw
-    quint32 below(quint32 n);    // 0..n-1 from one 32-bit draw (n > 0)
+    double uniform();         // [0, 1) from one 32-bit draw
+    quint32 below(quint32 n); // 0..n-1 from one 32-bit draw (n > 0)
 
     FaultSettings m_settings;
     std::mt19937 m_rng;

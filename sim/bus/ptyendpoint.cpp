@@ -22,7 +22,10 @@ namespace {
 constexpr qsizetype MaxPendingBytes = 1 << 20; // beyond this the host is not reading at all
 
 #ifdef Q_OS_UNIX
-QString errnoText(int err) { return QString::fromLocal8Bit(std::strerror(err)); }
+QString errnoText(int err)
+{
+    return QString::fromLocal8Bit(std::strerror(err));
+}
 
 int baudFromSpeed(speed_t speed)
 {
@@ -87,7 +90,10 @@ bool setNonBlocking(int fd)
 #endif
 } // namespace
 
-PtyEndpoint::PtyEndpoint(QObject *parent) : ByteEndpoint(parent) {}
+PtyEndpoint::PtyEndpoint(QObject *parent)
+    : ByteEndpoint(parent)
+{
+}
 
 PtyEndpoint::~PtyEndpoint()
 {
@@ -105,7 +111,10 @@ bool PtyEndpoint::isSupported()
 #endif
 }
 
-bool PtyEndpoint::isOpen() const { return m_master >= 0; }
+bool PtyEndpoint::isOpen() const
+{
+    return m_master >= 0;
+}
 
 #ifdef Q_OS_UNIX
 
@@ -116,8 +125,7 @@ Error PtyEndpoint::open(const QString &linkPath)
 
     const auto fail = [this](const QString &what, int err) {
         const Error e{ErrorCode::OpenFailed,
-                      tr("Could not create a pseudo-terminal for the simulator (%1: %2).")
-                              .arg(what, errnoText(err))};
+                      tr("Could not create a pseudo-terminal for the simulator (%1: %2).").arg(what, errnoText(err))};
         const QSignalBlocker block(this);
         close();
         return e;
@@ -184,24 +192,21 @@ Error PtyEndpoint::createLink(const QString &linkPath)
     struct stat st;
     if (::lstat(link.constData(), &st) == 0 && !S_ISLNK(st.st_mode)) {
         return {ErrorCode::OpenFailed,
-                tr("Cannot create the link %1: a file that is not a symbolic link is in the way.")
-                        .arg(linkPath)};
+                tr("Cannot create the link %1: a file that is not a symbolic link is in the way.").arg(linkPath)};
     }
     // symlink() to a unique temporary name, then rename() over the link: a client never
     // sees a half-made or missing link, and a stale link from an earlier run is replaced.
     const QByteArray tmp = link + ".tmp-" + QByteArray::number(::getpid()) + '-'
-            + QByteArray::number(reinterpret_cast<quintptr>(this), 16);
+        + QByteArray::number(reinterpret_cast<quintptr>(this), 16);
     ::unlink(tmp.constData());
     if (::symlink(QFile::encodeName(m_slavePath).constData(), tmp.constData()) != 0) {
         const int err = errno;
-        return {ErrorCode::OpenFailed,
-                tr("Cannot create the link %1 (%2).").arg(linkPath, errnoText(err))};
+        return {ErrorCode::OpenFailed, tr("Cannot create the link %1 (%2).").arg(linkPath, errnoText(err))};
     }
     if (::rename(tmp.constData(), link.constData()) != 0) {
         const int err = errno;
         ::unlink(tmp.constData());
-        return {ErrorCode::OpenFailed,
-                tr("Cannot create the link %1 (%2).").arg(linkPath, errnoText(err))};
+        return {ErrorCode::OpenFailed, tr("Cannot create the link %1 (%2).").arg(linkPath, errnoText(err))};
     }
     m_linkPath = linkPath;
     m_linkCreated = true;
@@ -248,8 +253,7 @@ qint64 PtyEndpoint::write(const QByteArray &bytes)
     if (!isOpen())
         return -1;
     if (m_pending.size() + bytes.size() > MaxPendingBytes) {
-        qCWarning(lcSim).noquote() << "pty" << m_slavePath << "is not being read; dropping"
-                                   << bytes.size() << "bytes";
+        qCWarning(lcSim).noquote() << "pty" << m_slavePath << "is not being read; dropping" << bytes.size() << "bytes";
         return -1;
     }
     m_pending.append(bytes);
@@ -333,14 +337,26 @@ Error PtyEndpoint::open(const QString &linkPath)
                "Use the built-in demo link on this system.")};
 }
 
-Error PtyEndpoint::createLink(const QString &) { return Error::none(); }
-void PtyEndpoint::removeLink() {}
-void PtyEndpoint::close() {}
-qint64 PtyEndpoint::write(const QByteArray &) { return -1; }
-bool PtyEndpoint::flushPending() { return false; }
-void PtyEndpoint::onWritable() {}
-void PtyEndpoint::onReadable() {}
-int PtyEndpoint::hostBaud() const { return 0; }
+Error PtyEndpoint::createLink(const QString &)
+{
+    return Error::none();
+}
+void PtyEndpoint::removeLink() { }
+void PtyEndpoint::close() { }
+qint64 PtyEndpoint::write(const QByteArray &)
+{
+    return -1;
+}
+bool PtyEndpoint::flushPending()
+{
+    return false;
+}
+void PtyEndpoint::onWritable() { }
+void PtyEndpoint::onReadable() { }
+int PtyEndpoint::hostBaud() const
+{
+    return 0;
+}
 
 #endif // Q_OS_UNIX
 

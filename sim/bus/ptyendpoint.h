@@ -1,7 +1,7 @@
 #pragma once
 
-#include "sim/bus/byteendpoint.h"
 #include "core/common/error.h"
+#include "sim/bus/byteendpoint.h"
 
 class QSocketNotifier;
 

@@ -23,7 +23,9 @@ QCanBusFrame toQt(const CanFrameData &f)
 }
 } // namespace
 
-SimCanBus::SimCanBus(QObject *parent) : QObject(parent), m_busTimer(this)
+SimCanBus::SimCanBus(QObject *parent)
+    : QObject(parent)
+    , m_busTimer(this)
 {
     m_clock.start();
     m_tickTimer.setInterval(TickIntervalMs);
@@ -43,8 +45,7 @@ SimCanBus::~SimCanBus()
     }
 }
 
-Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int bitrate,
-                      bool configureBitrate)
+Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int bitrate, bool configureBitrate)
 {
     if (m_device)
         return {ErrorCode::Busy, tr("The simulated CAN bus %1 is already open.").arg(description())};
@@ -57,8 +58,7 @@ Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int b
     if (!dev) {
         return {ErrorCode::OpenFailed,
                 tr("Cannot create the CAN interface %1:%2 (%3). Is the plugin installed?")
-                        .arg(plugin, interfaceName,
-                             errorString.isEmpty() ? tr("unknown plugin") : errorString)};
+                    .arg(plugin, interfaceName, errorString.isEmpty() ? tr("unknown plugin") : errorString)};
     }
     dev->setParent(this);
     m_device = dev;
@@ -66,8 +66,7 @@ Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int b
     if (plugin == QLatin1String("socketcan")) {
         // Qt would configure the bitrate itself (privileges, libsocketcan): use the
         // interface as the system configured it unless told otherwise.
-        dev->setConfigurationParameter(QCanBusDevice::BitRateKey,
-                                       configureBitrate ? QVariant(m_bitrate) : QVariant());
+        dev->setConfigurationParameter(QCanBusDevice::BitRateKey, configureBitrate ? QVariant(m_bitrate) : QVariant());
     } else if (plugin != QLatin1String("virtualcan") || configureBitrate) {
         dev->setConfigurationParameter(QCanBusDevice::BitRateKey, m_bitrate);
     }
@@ -91,8 +90,7 @@ Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int b
     // without an error: say so instead of waiting silently.
     QTimer::singleShot(ConnectTimeoutMs, dev, [this, dev] {
         if (m_device == dev && dev->state() != QCanBusDevice::ConnectedState) {
-            const QString message = tr("%1: not connected after %2 s.")
-                                            .arg(description()).arg(ConnectTimeoutMs / 1000);
+            const QString message = tr("%1: not connected after %2 s.").arg(description()).arg(ConnectTimeoutMs / 1000);
             qCWarning(lcSim).noquote() << message;
             emit errorOccurred(message);
         }
@@ -122,7 +120,10 @@ void SimCanBus::close()
     }
 }
 
-bool SimCanBus::isOpen() const { return !m_device.isNull(); }
+bool SimCanBus::isOpen() const
+{
+    return !m_device.isNull();
+}
 
 bool SimCanBus::isConnected() const
 {
@@ -154,7 +155,10 @@ SimCanDevice *SimCanBus::device(int index) const
     return m_devices[static_cast<size_t>(index)].get();
 }
 
-qint64 SimCanBus::nowUs() const { return m_clock.nsecsElapsed() / 1000; }
+qint64 SimCanBus::nowUs() const
+{
+    return m_clock.nsecsElapsed() / 1000;
+}
 
 int SimCanBus::pendingFrames() const
 {
@@ -163,8 +167,8 @@ int SimCanBus::pendingFrames() const
 
 qint64 SimCanBus::frameUs(const CanFrameData &frame) const
 {
-    const double us = WireTime::canFrameUs(static_cast<int>(frame.data.size()), frame.extended,
-                                           m_bitrate, CanStuffing::WorstCase);
+    const double us = WireTime::canFrameUs(static_cast<int>(frame.data.size()), frame.extended, m_bitrate,
+                                           CanStuffing::WorstCase);
     return static_cast<qint64>(std::ceil(us - 1e-9));
 }
 
@@ -206,8 +210,8 @@ void SimCanBus::onFramesReceived()
         return;
     const QList<QCanBusFrame> frames = m_device->readAllFrames();
     for (const QCanBusFrame &qf : frames) {
-        if (qf.frameType() != QCanBusFrame::DataFrame || qf.hasFlexibleDataRateFormat()
-            || qf.hasLocalEcho() || qf.payload().size() > 8) {
+        if (qf.frameType() != QCanBusFrame::DataFrame || qf.hasFlexibleDataRateFormat() || qf.hasLocalEcho()
+            || qf.payload().size() > 8) {
             ++m_stats.framesIgnored;
             continue;
         }
@@ -215,8 +219,7 @@ void SimCanBus::onFramesReceived()
         const qint64 now = nowUs();
         ++m_stats.framesIn;
         emit frameReceived(frame, now);
-        qCDebug(lcSimFrames).noquote() << "rx" << now << Qt::hex << frame.id << Qt::dec
-                                       << frame.data.toHex(' ');
+        qCDebug(lcSimFrames).noquote() << "rx" << now << Qt::hex << frame.id << Qt::dec << frame.data.toHex(' ');
 
         const qint64 rxEnd = std::max(now, m_busFreeUs) + frameUs(frame);
         m_busFreeUs = rxEnd;
@@ -336,8 +339,7 @@ void SimCanBus::transmit(const CanFrameData &frame, int device, qint64 atUs)
         return;
     }
     ++m_stats.framesOut;
-    qCDebug(lcSimFrames).noquote() << "tx" << atUs << Qt::hex << frame.id << Qt::dec
-                                   << frame.data.toHex(' ');
+    qCDebug(lcSimFrames).noquote() << "tx" << atUs << Qt::hex << frame.id << Qt::dec << frame.data.toHex(' ');
     emit frameSent(frame, atUs, device);
 }
 

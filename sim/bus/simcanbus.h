@@ -19,13 +19,13 @@ namespace dd {
 // Diagnostics of a SimCanBus.
 struct SimCanBusStats
 {
-    quint64 framesIn = 0;        // data frames from the host
-    quint64 framesIgnored = 0;   // remote, error, CAN FD and echoed frames
-    quint64 framesOut = 0;       // frames written to the bus
-    quint64 framesDropped = 0;   // by fault injection
+    quint64 framesIn = 0;      // data frames from the host
+    quint64 framesIgnored = 0; // remote, error, CAN FD and echoed frames
+    quint64 framesOut = 0;     // frames written to the bus
+    quint64 framesDropped = 0; // by fault injection
     quint64 framesCorrupted = 0;
     quint64 silentDeliveries = 0; // frames a silent (powered-off) device did not get
-    quint64 writeFailures = 0;   // writeFrame() refused, or queue overflow before connecting
+    quint64 writeFailures = 0;    // writeFrame() refused, or queue overflow before connecting
 };
 
 // A simulated CAN bus: one QCanBusDevice (any Qt CAN plugin: virtualcan for tests and the
@@ -63,11 +63,11 @@ public:
 
     // Creates the device and starts connecting; connected() follows. Fails at once when the
     // plugin or interface cannot be created or connectDevice() refuses.
-    Error open(const QString &plugin, const QString &interfaceName,
-               int bitrate = DefaultBitrate, bool configureBitrate = false);
+    Error open(const QString &plugin, const QString &interfaceName, int bitrate = DefaultBitrate,
+               bool configureBitrate = false);
     void close();
-    bool isOpen() const;      // a device exists (connecting or connected)
-    bool isConnected() const; // ConnectedState
+    bool isOpen() const;         // a device exists (connecting or connected)
+    bool isConnected() const;    // ConnectedState
     QString description() const; // "virtualcan:can1 @ 1000 kbit/s"
     QCanBusDevice *canDevice() const { return m_device; }
 

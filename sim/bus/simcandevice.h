@@ -1,7 +1,7 @@
 #pragma once
 
-#include "sim/bus/faultinjector.h"
 #include "core/protocol/canframedata.h"
+#include "sim/bus/faultinjector.h"
 
 #include <QList>
 #include <QString>

@@ -9,7 +9,10 @@
 namespace dd {
 
 namespace {
-qint64 ceilUs(double us) { return static_cast<qint64>(std::ceil(us - 1e-9)); }
+qint64 ceilUs(double us)
+{
+    return static_cast<qint64>(std::ceil(us - 1e-9));
+}
 
 struct Candidate
 {
@@ -36,7 +39,9 @@ QByteArray collide(const QList<Candidate> &frames)
 } // namespace
 
 SimSerialBus::SimSerialBus(ByteEndpoint *endpoint, QObject *parent)
-    : QObject(parent), m_endpoint(endpoint), m_timer(this)
+    : QObject(parent)
+    , m_endpoint(endpoint)
+    , m_timer(this)
 {
     m_clock.start();
     connect(&m_timer, &MicroTimer::timeout, this, &SimSerialBus::onTimer);
@@ -69,7 +74,10 @@ SimSerialDevice *SimSerialBus::device(int index) const
     return m_devices[static_cast<size_t>(index)].get();
 }
 
-qint64 SimSerialBus::nowUs() const { return m_clock.nsecsElapsed() / 1000; }
+qint64 SimSerialBus::nowUs() const
+{
+    return m_clock.nsecsElapsed() / 1000;
+}
 
 void SimSerialBus::onReceived(const QByteArray &bytes)
 {
@@ -83,9 +91,7 @@ void SimSerialBus::onReceived(const QByteArray &bytes)
 
     const int hostBaud = m_endpoint ? m_endpoint->hostBaud() : 0;
     const qint64 rxStart = std::max(now, m_lineFreeUs);
-    qint64 lineBusyUntil = hostBaud > 0
-            ? rxStart + ceilUs(WireTime::serialBytesUs(bytes.size(), hostBaud))
-            : rxStart;
+    qint64 lineBusyUntil = hostBaud > 0 ? rxStart + ceilUs(WireTime::serialBytesUs(bytes.size(), hostBaud)) : rxStart;
     QList<Candidate> candidates;
     int answeringDevices = 0;
 
@@ -108,8 +114,7 @@ void SimSerialBus::onReceived(const QByteArray &bytes)
             heard = UartResampler::resample(bytes, lineBaud, devBaud, bits);
             ++m_stats.garbledDeliveries;
         }
-        const QList<QByteArray> replies = heard.isEmpty() ? QList<QByteArray>()
-                                                          : dev->onBusBytes(heard, rxEnd);
+        const QList<QByteArray> replies = heard.isEmpty() ? QList<QByteArray>() : dev->onBusBytes(heard, rxEnd);
         bool answered = false;
         for (QByteArray reply : replies) {
             if (reply.isEmpty())

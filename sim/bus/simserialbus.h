@@ -15,15 +15,15 @@ namespace dd {
 // Diagnostics of a SimSerialBus (the drivedesk-sim status line, tests).
 struct SimSerialBusStats
 {
-    quint64 chunksIn = 0;       // chunks read from the endpoint
+    quint64 chunksIn = 0; // chunks read from the endpoint
     quint64 bytesIn = 0;
     quint64 garbledDeliveries = 0; // chunks a device received at the wrong baud
-    quint64 framesOut = 0;      // reply frames written to the host (a collision counts once)
+    quint64 framesOut = 0;         // reply frames written to the host (a collision counts once)
     quint64 bytesOut = 0;
-    quint64 framesDropped = 0;  // by fault injection
+    quint64 framesDropped = 0; // by fault injection
     quint64 framesCorrupted = 0;
     quint64 silentDeliveries = 0; // chunks a silent (powered-off) device did not get
-    quint64 collisions = 0;     // chunks answered by more than one device
+    quint64 collisions = 0;       // chunks answered by more than one device
 };
 
 // A simulated multi-drop serial line: one ByteEndpoint to the host, any number of
@@ -57,7 +57,7 @@ public:
     void setCollisionsModelled(bool on) { m_collisions = on; }
     bool collisionsModelled() const { return m_collisions; }
 
-    qint64 nowUs() const;                       // the bus clock (monotonic, µs)
+    qint64 nowUs() const; // the bus clock (monotonic, µs)
     qint64 lineFreeAtUs() const { return m_lineFreeUs; }
     int pendingReplies() const { return static_cast<int>(m_pending.size()); }
     const SimSerialBusStats &stats() const { return m_stats; }

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "sim/bus/faultinjector.h"
 #include "core/link/wiretime.h"
+#include "sim/bus/faultinjector.h"
 
 #include <QByteArray>
 #include <QList>

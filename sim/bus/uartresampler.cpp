@@ -25,10 +25,10 @@ struct Waveform
         const qint64 ch = bit / bitsPerChar;
         const int pos = static_cast<int>(bit % bitsPerChar);
         if (pos == 0)
-            return false;                                  // start bit
+            return false; // start bit
         if (pos <= 8)
             return (static_cast<quint8>(bytes[ch]) >> (pos - 1)) & 1u; // data, LSB first
-        return true;                                       // stop bit(s)
+        return true;                                                   // stop bit(s)
     }
 
     // First falling edge at or after tick `from` (edges sit on sent-bit boundaries), or -1.
@@ -46,8 +46,7 @@ struct Waveform
 };
 } // namespace
 
-QByteArray UartResampler::resample(const QByteArray &bytes, int sentBaud, int receiverBaud,
-                                   int bitsPerChar)
+QByteArray UartResampler::resample(const QByteArray &bytes, int sentBaud, int receiverBaud, int bitsPerChar)
 {
     if (bytes.isEmpty() || sentBaud <= 0 || receiverBaud <= 0 || sentBaud == receiverBaud)
         return bytes;

@@ -19,8 +19,7 @@ class UartResampler
 public:
     UartResampler() = delete;
 
-    static QByteArray resample(const QByteArray &bytes, int sentBaud, int receiverBaud,
-                               int bitsPerChar = 10);
+    static QByteArray resample(const QByteArray &bytes, int sentBaud, int receiverBaud, int bitsPerChar = 10);
 };
 
 } // namespace dd

@@ -24,7 +24,10 @@ MotorModel::Config sanitized(MotorModel::Config c)
     return c;
 }
 
-double sgn(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
+double sgn(double v)
+{
+    return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0);
+}
 
 quint64 splitMix64(quint64 x)
 {
@@ -35,9 +38,13 @@ quint64 splitMix64(quint64 x)
 }
 } // namespace
 
-MotorModel::MotorModel() : MotorModel(Config{}) {}
+MotorModel::MotorModel()
+    : MotorModel(Config{})
+{
+}
 
-MotorModel::MotorModel(const Config &config) : m_config(sanitized(config))
+MotorModel::MotorModel(const Config &config)
+    : m_config(sanitized(config))
 {
     m_temperature = m_config.ambientTemperature;
     updateOutputs();
@@ -83,25 +90,19 @@ void MotorModel::step()
         const double toCounts = m_config.countsPerRev / (2.0 * Pi);
         const double omega = std::abs(v0) / toCounts;
         const double brakeTorque = m_config.coulombFriction + std::abs(m_config.loadTorque)
-                + m_config.viscousFriction * omega;
+            + m_config.viscousFriction * omega;
         const double dv = brakeTorque / m_config.inertia * toCounts * Dt;
         v1 = std::abs(v0) <= dv ? 0.0 : v0 - sgn(v0) * dv;
     } else {
         switch (m_mode) {
-        case Mode::Idle:
-            v1 = 0.0;
-            break;
-        case Mode::Speed:
-            v1 = rampToward(v0, m_targetSpeed);
-            break;
+        case Mode::Idle: v1 = 0.0; break;
+        case Mode::Speed: v1 = rampToward(v0, m_targetSpeed); break;
         case Mode::Stopping:
             v1 = rampToward(v0, 0.0);
             if (v1 == 0.0)
                 m_mode = Mode::Idle;
             break;
-        case Mode::Position:
-            v1 = positionStep(v0, &finished);
-            break;
+        case Mode::Position: v1 = positionStep(v0, &finished); break;
         }
     }
 
@@ -124,8 +125,7 @@ double MotorModel::rampToward(double v, double target) const
 {
     if (v == target)
         return v;
-    const bool shrinking = v != 0.0
-            && (target == 0.0 || (v > 0.0) != (target > 0.0) || std::abs(target) < std::abs(v));
+    const bool shrinking = v != 0.0 && (target == 0.0 || (v > 0.0) != (target > 0.0) || std::abs(target) < std::abs(v));
     if (shrinking) {
         const double goal = (target != 0.0 && (v > 0.0) == (target > 0.0)) ? target : 0.0;
         const double dv = m_config.deceleration * Dt;
@@ -196,12 +196,12 @@ void MotorModel::updateOutputs()
     if (m_enabled) {
         const double omega = v1 * toRad;
         const double alpha = m_accel * toRad;
-        const double torque = m_config.inertia * alpha + m_config.loadTorque
-                + m_config.viscousFriction * omega + m_config.coulombFriction * sgn(v1);
+        const double torque = m_config.inertia * alpha + m_config.loadTorque + m_config.viscousFriction * omega
+            + m_config.coulombFriction * sgn(v1);
         m_cleanCurrent = m_config.torqueConstant > 0.0 ? torque / m_config.torqueConstant : 0.0;
         m_current = m_cleanCurrent + m_config.currentNoise * noiseAt(m_step, CurrentNoise);
         m_posError = m_config.errorPerSpeed * v1 + m_config.errorPerAccel * m_accel
-                + m_config.positionErrorNoise * noiseAt(m_step, ErrorNoise);
+            + m_config.positionErrorNoise * noiseAt(m_step, ErrorNoise);
     } else {
         m_cleanCurrent = 0.0;
         m_current = 0.0;
@@ -209,8 +209,8 @@ void MotorModel::updateOutputs()
     }
 
     m_busVoltage = m_config.busVoltageNominal - m_config.busSagPerAmp * std::abs(m_cleanCurrent)
-            + m_config.busRipple * std::sin(2.0 * Pi * m_config.busRippleHz * t)
-            + m_config.voltageNoise * noiseAt(m_step, VoltageNoise);
+        + m_config.busRipple * std::sin(2.0 * Pi * m_config.busRippleHz * t)
+        + m_config.voltageNoise * noiseAt(m_step, VoltageNoise);
 }
 
 // First-order thermal model: tau·dT/dt = ambient + P·Rth − T with P = I²·R (noise-free
@@ -224,13 +224,16 @@ void MotorModel::heat(double seconds)
 
 double MotorModel::noiseAt(qint64 step, int channel) const
 {
-    const quint64 h = splitMix64(m_config.seed ^ splitMix64(static_cast<quint64>(step) * 64u
-                                                             + static_cast<quint64>(channel)));
+    const quint64 h = splitMix64(m_config.seed
+                                 ^ splitMix64(static_cast<quint64>(step) * 64u + static_cast<quint64>(channel)));
     // 53 random bits → [0, 1) → [-1, 1)
     return static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0) * 2.0 - 1.0;
 }
 
-double MotorModel::noiseSample(int channel) const { return noiseAt(m_step, channel); }
+double MotorModel::noiseSample(int channel) const
+{
+    return noiseAt(m_step, channel);
+}
 
 // --- configuration ------------------------------------------------------------------------
 
@@ -247,9 +250,18 @@ void MotorModel::setMaxSpeed(double countsPerSecond)
         m_targetSpeed = std::clamp(m_targetSpeed, -m_config.maxSpeed, m_config.maxSpeed);
 }
 
-void MotorModel::setAcceleration(double v) { m_config.acceleration = std::max(std::abs(v), 1.0); }
-void MotorModel::setDeceleration(double v) { m_config.deceleration = std::max(std::abs(v), 1.0); }
-void MotorModel::setLoadTorque(double newtonMetres) { m_config.loadTorque = newtonMetres; }
+void MotorModel::setAcceleration(double v)
+{
+    m_config.acceleration = std::max(std::abs(v), 1.0);
+}
+void MotorModel::setDeceleration(double v)
+{
+    m_config.deceleration = std::max(std::abs(v), 1.0);
+}
+void MotorModel::setLoadTorque(double newtonMetres)
+{
+    m_config.loadTorque = newtonMetres;
+}
 
 // --- commands -----------------------------------------------------------------------------
 
@@ -298,7 +310,10 @@ bool MotorModel::moveRelative(qint64 delta, double speed)
     return moveAbsolute(position() + delta, speed);
 }
 
-void MotorModel::setMoveSpeed(double speed) { m_moveSpeed = std::abs(speed); }
+void MotorModel::setMoveSpeed(double speed)
+{
+    m_moveSpeed = std::abs(speed);
+}
 
 void MotorModel::stop()
 {
@@ -343,17 +358,38 @@ void MotorModel::injectAlarm(int code)
     disable();
 }
 
-void MotorModel::clearAlarm() { m_alarm = 0; }
+void MotorModel::clearAlarm()
+{
+    m_alarm = 0;
+}
 
 // --- state --------------------------------------------------------------------------------
 
-bool MotorModel::isMoving() const { return m_speed != 0.0 || m_mode != Mode::Idle; }
+bool MotorModel::isMoving() const
+{
+    return m_speed != 0.0 || m_mode != Mode::Idle;
+}
 
-qint64 MotorModel::position() const { return std::llround(m_pos); }
-qint64 MotorModel::targetPosition() const { return std::llround(m_targetPos); }
-qint64 MotorModel::positionError() const { return std::llround(m_posError); }
-qint64 MotorModel::commandPosition() const { return std::llround(m_pos + m_posError); }
-double MotorModel::speedRpm() const { return m_speed * 60.0 / m_config.countsPerRev; }
+qint64 MotorModel::position() const
+{
+    return std::llround(m_pos);
+}
+qint64 MotorModel::targetPosition() const
+{
+    return std::llround(m_targetPos);
+}
+qint64 MotorModel::positionError() const
+{
+    return std::llround(m_posError);
+}
+qint64 MotorModel::commandPosition() const
+{
+    return std::llround(m_pos + m_posError);
+}
+double MotorModel::speedRpm() const
+{
+    return m_speed * 60.0 / m_config.countsPerRev;
+}
 
 double MotorModel::targetSpeed() const
 {
@@ -366,7 +402,10 @@ double MotorModel::targetSpeed() const
     return 0.0;
 }
 
-double MotorModel::torque() const { return m_config.torqueConstant * m_current; }
+double MotorModel::torque() const
+{
+    return m_config.torqueConstant * m_current;
+}
 
 double MotorModel::torquePercent() const
 {

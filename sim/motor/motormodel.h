@@ -27,30 +27,30 @@ class MotorModel
 public:
     struct Config
     {
-        double countsPerRev = 10000.0;     // counts per motor revolution
-        double maxSpeed = 500000.0;        // counts/s (3000 r/min at 10000 counts/rev)
-        double acceleration = 1000000.0;   // counts/s², limit when |speed| grows
-        double deceleration = 1000000.0;   // counts/s², limit when |speed| shrinks
-        double inertia = 2.0e-4;           // kg·m², rotor + reflected load
-        double torqueConstant = 0.5;       // N·m/A
-        double ratedTorque = 1.27;         // N·m, 100 % for torquePercent()
-        double loadTorque = 0.1;           // N·m the motor supplies while enabled (signed)
-        double viscousFriction = 1.0e-4;   // N·m per rad/s
-        double coulombFriction = 0.05;     // N·m, opposes motion
-        double errorPerSpeed = 2.0e-4;     // following error, counts per count/s
-        double errorPerAccel = 5.0e-5;     // following error, counts per count/s²
-        double busVoltageNominal = 310.0;  // V
-        double busRipple = 1.5;            // V amplitude of the rectifier ripple
-        double busRippleHz = 100.0;        // Hz (twice a 50 Hz mains)
-        double busSagPerAmp = 0.8;         // V lost per A of motor current
-        double windingResistance = 2.0;    // Ω, copper loss I²R heats the motor
-        double thermalResistance = 3.0;    // K/W, steady-state rise per watt
+        double countsPerRev = 10000.0;      // counts per motor revolution
+        double maxSpeed = 500000.0;         // counts/s (3000 r/min at 10000 counts/rev)
+        double acceleration = 1000000.0;    // counts/s², limit when |speed| grows
+        double deceleration = 1000000.0;    // counts/s², limit when |speed| shrinks
+        double inertia = 2.0e-4;            // kg·m², rotor + reflected load
+        double torqueConstant = 0.5;        // N·m/A
+        double ratedTorque = 1.27;          // N·m, 100 % for torquePercent()
+        double loadTorque = 0.1;            // N·m the motor supplies while enabled (signed)
+        double viscousFriction = 1.0e-4;    // N·m per rad/s
+        double coulombFriction = 0.05;      // N·m, opposes motion
+        double errorPerSpeed = 2.0e-4;      // following error, counts per count/s
+        double errorPerAccel = 5.0e-5;      // following error, counts per count/s²
+        double busVoltageNominal = 310.0;   // V
+        double busRipple = 1.5;             // V amplitude of the rectifier ripple
+        double busRippleHz = 100.0;         // Hz (twice a 50 Hz mains)
+        double busSagPerAmp = 0.8;          // V lost per A of motor current
+        double windingResistance = 2.0;     // Ω, copper loss I²R heats the motor
+        double thermalResistance = 3.0;     // K/W, steady-state rise per watt
         double thermalTimeConstant = 120.0; // s
-        double ambientTemperature = 25.0;  // °C
-        double currentNoise = 0.02;        // A, uniform ± on the current (and torque) reading
-        double voltageNoise = 0.3;         // V, uniform ± on the bus voltage
-        double positionErrorNoise = 0.6;   // counts, uniform ± on the following error when enabled
-        quint64 seed = 1;                  // noise seed
+        double ambientTemperature = 25.0;   // °C
+        double currentNoise = 0.02;         // A, uniform ± on the current (and torque) reading
+        double voltageNoise = 0.3;          // V, uniform ± on the bus voltage
+        double positionErrorNoise = 0.6;    // counts, uniform ± on the following error when enabled
+        quint64 seed = 1;                   // noise seed
     };
 
     enum class Mode {
@@ -81,8 +81,8 @@ public:
     void setLoadTorque(double newtonMetres);
 
     // --- commands -----------------------------------------------------------------------
-    bool enable();       // false while alarmed; a coasting shaft is braked to rest
-    void disable();      // no torque: the shaft coasts to rest with friction
+    bool enable();  // false while alarmed; a coasting shaft is braked to rest
+    void disable(); // no torque: the shaft coasts to rest with friction
     // Speed loop toward `countsPerSecond` (clamped to ±maxSpeed) with the accel/decel limits.
     bool runSpeed(double countsPerSecond);
     // Trapezoidal moves at up to `speed` counts/s; they end exactly on the target (integer
@@ -108,25 +108,25 @@ public:
     Mode mode() const { return m_mode; }
     bool isEnabled() const { return m_enabled; }
     int alarmCode() const { return m_alarm; }
-    bool isMoving() const;                   // shaft turning or a motion command active
+    bool isMoving() const; // shaft turning or a motion command active
     bool isHoming() const { return m_homing; }
     bool isHomed() const { return m_homed; }
 
-    qint64 position() const;                 // counts (rounded)
+    qint64 position() const; // counts (rounded)
     double positionExact() const { return m_pos; }
-    qint64 targetPosition() const;           // target of the last move (counts)
-    qint64 positionError() const;            // following error, counts (grows with speed and acceleration)
-    qint64 commandPosition() const;          // position + following error
-    double speed() const { return m_speed; } // counts/s, signed
-    double speedRpm() const;                 // r/min, signed
-    double targetSpeed() const;              // where the speed loop is heading now (counts/s)
+    qint64 targetPosition() const;                  // target of the last move (counts)
+    qint64 positionError() const;                   // following error, counts (grows with speed and acceleration)
+    qint64 commandPosition() const;                 // position + following error
+    double speed() const { return m_speed; }        // counts/s, signed
+    double speedRpm() const;                        // r/min, signed
+    double targetSpeed() const;                     // where the speed loop is heading now (counts/s)
     double acceleration() const { return m_accel; } // counts/s² over the last substep
     double moveSpeed() const { return m_moveSpeed; }
 
-    double torque() const;                   // N·m, signed (torqueConstant × current)
-    double torquePercent() const;            // % of ratedTorque, signed
-    double current() const { return m_current; } // A, signed
-    double busVoltage() const { return m_busVoltage; } // V
+    double torque() const;                               // N·m, signed (torqueConstant × current)
+    double torquePercent() const;                        // % of ratedTorque, signed
+    double current() const { return m_current; }         // A, signed
+    double busVoltage() const { return m_busVoltage; }   // V
     double temperature() const { return m_temperature; } // °C
 
     // Deterministic noise in [-1, 1) at the current substep, for the drive's own readouts.
@@ -152,9 +152,9 @@ private:
     bool m_homed = false;
     qint64 m_homePosition = 0;
 
-    double m_pos = 0.0;        // counts
-    double m_speed = 0.0;      // counts/s
-    double m_accel = 0.0;      // counts/s²
+    double m_pos = 0.0;   // counts
+    double m_speed = 0.0; // counts/s
+    double m_accel = 0.0; // counts/s²
     double m_targetSpeed = 0.0;
     double m_targetPos = 0.0;
     double m_moveSpeed = 0.0;

@@ -138,23 +138,16 @@ QList<CanFrameData> SimServoCanDrive::onCanFrame(const CanFrameData &frame, qint
         return {}; // another drive's frame on our ID (a misconfigured bus): not for us
     ++m_stats.framesForUs;
     switch (m.command) {
-    case Command::Read:
-        return answerRead(m);
-    case Command::Write:
-        handleWrite(m);
-        return {};
+    case Command::Read: return answerRead(m);
+    case Command::Write: handleWrite(m); return {};
     case Command::KeepAlive:
         ++m_stats.keepAlives;
         m_lastKeepAliveUs = nowUs;
         m_watchdogDeadlineUs = nowUs + kWatchdogUs;
         m_hostOnline = true;
         return {};
-    case Command::ClearAlarm:
-        m_motor.clearAlarm();
-        return {};
-    default:
-        handleMotion(m, nowUs);
-        return {};
+    case Command::ClearAlarm: m_motor.clearAlarm(); return {};
+    default: handleMotion(m, nowUs); return {};
     }
 }
 
@@ -179,9 +172,7 @@ QList<CanFrameData> SimServoCanDrive::answerRead(const sc::Message &m)
     case ReadType::Torque: v = clampToInt32(mm.torquePercent()); break;
     case ReadType::OutputCurrent: v = clampToInt32(mm.current() * 100.0); break;
     case ReadType::SpeedCommand: v = countsToRpm(mm.targetSpeed()); break;
-    case ReadType::TorqueCommand:
-        v = clampToInt32(mm.torquePercent() - mm.noiseSample(16) * 0.5);
-        break;
+    case ReadType::TorqueCommand: v = clampToInt32(mm.torquePercent() - mm.noiseSample(16) * 0.5); break;
     case ReadType::RotorPosition: {
         const qint64 cpr = std::max<qint64>(1, qint64(std::llround(countsPerRev())));
         v = static_cast<qint32>(((mm.position() % cpr) + cpr) % cpr);
@@ -212,8 +203,7 @@ qint32 SimServoCanDrive::outputs() const
 void SimServoCanDrive::handleWrite(const sc::Message &m)
 {
     // The decoder guarantees sub-code 0x01 and index 0..219.
-    if (m_writeProtected[m.paramIndex]
-        || (m.paramIndex == sc::kParamStation && !sc::isValidStation(m.paramValue))) {
+    if (m_writeProtected[m.paramIndex] || (m.paramIndex == sc::kParamStation && !sc::isValidStation(m.paramValue))) {
         ++m_stats.writesRefused;
         return;
     }
@@ -262,9 +252,7 @@ void SimServoCanDrive::handleMotion(const sc::Message &m, qint64 nowUs)
         else
             m_motor.disable();
         break;
-    case Command::Stop:
-        m_motor.stop();
-        break;
+    case Command::Stop: m_motor.stop(); break;
     case Command::StopAndDisable:
         m_motor.stop();
         m_disableAtRest = true;
@@ -273,11 +261,8 @@ void SimServoCanDrive::handleMotion(const sc::Message &m, qint64 nowUs)
             m_disableAtRest = false;
         }
         break;
-    case Command::SetPosition:
-        m_motor.setPosition(m.value);
-        break;
-    default:
-        break;
+    case Command::SetPosition: m_motor.setPosition(m.value); break;
+    default: break;
     }
 }
 
@@ -355,9 +340,8 @@ bool SimServoCanDrive::loadState(const QJsonObject &state, QString *error)
                         .arg(state.value(QStringLiteral("family")).toString()));
     const QJsonArray arr = state.value(QStringLiteral("parameters")).toArray();
     if (arr.size() != sc::kParameterCount)
-        return fail(QStringLiteral("\"parameters\" must hold %1 values, found %2")
-                        .arg(sc::kParameterCount)
-                        .arg(arr.size()));
+        return fail(
+            QStringLiteral("\"parameters\" must hold %1 values, found %2").arg(sc::kParameterCount).arg(arr.size()));
     Parameters p{};
     for (int i = 0; i < arr.size(); ++i) {
         const QJsonValue v = arr.at(i);

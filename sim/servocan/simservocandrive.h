@@ -1,11 +1,11 @@
 #pragma once
 
-#include <QSet>
 #include "sim/bench/simfamilies.h"
+#include <QSet>
 
-#include "sim/motor/motormodel.h"
 #include "core/protocol/servocan/servocan.h"
 #include "sim/bus/simcandevice.h"
+#include "sim/motor/motormodel.h"
 
 #include <QJsonObject>
 
@@ -56,11 +56,11 @@ public:
         quint64 framesForUs = 0;
         quint64 readsAnswered = 0;
         quint64 parameterWrites = 0;
-        QSet<int> writtenIndexes;     // every parameter written (a repeated write counts once)
+        QSet<int> writtenIndexes; // every parameter written (a repeated write counts once)
         quint64 writesRefused = 0;
         quint64 keepAlives = 0;
         quint64 motionCommands = 0;
-        quint64 commandsIgnored = 0;  // motion while not in CAN mode (P74 / P4)
+        quint64 commandsIgnored = 0; // motion while not in CAN mode (P74 / P4)
         quint64 heartbeatsSent = 0;
         quint64 alarmFramesSent = 0;
         quint64 watchdogTrips = 0;
@@ -93,7 +93,7 @@ public:
     // Fault injection: the drive ignores writes to this parameter (as a drive may refuse a
     // value in its present state); a host sees it when it reads the value back.
     void setWriteProtected(int index, bool on);
-    void injectAlarm(int code);   // the drive disables; 0x05 goes out on the next tick
+    void injectAlarm(int code); // the drive disables; 0x05 goes out on the next tick
     int alarmCode() const { return m_motor.alarmCode(); }
     void setInputs(quint32 bits) { m_inputs = bits; }
     qint32 positioningSpeed() const { return m_positioningSpeed; }
@@ -123,8 +123,8 @@ private:
     Parameters m_params;
     MotorModel m_motor;
     qint64 m_nowUs = 0;
-    qint32 m_positioningSpeed = 0;  // r/min, from 0x23
-    bool m_disableAtRest = false;   // 0x28 in progress
+    qint32 m_positioningSpeed = 0; // r/min, from 0x23
+    bool m_disableAtRest = false;  // 0x28 in progress
     quint32 m_inputs = 0;
     std::array<bool, servocan::kParameterCount> m_writeProtected{};
 

@@ -10,7 +10,7 @@
 namespace dd {
 
 namespace {
-constexpr int PolePairs = 4;          // electrical angle for the phase currents and UVW
+constexpr int PolePairs = 4; // electrical angle for the phase currents and UVW
 constexpr double Pi = 3.14159265358979323846;
 constexpr double DemoRpm = 1000.0;
 
@@ -28,8 +28,7 @@ QJsonArray toJson(const SimServoModbusDrive::ParameterArray &a)
     return out;
 }
 
-bool fromJson(const QJsonValue &v, SimServoModbusDrive::ParameterArray *out, const char *name,
-              QString *error)
+bool fromJson(const QJsonValue &v, SimServoModbusDrive::ParameterArray *out, const char *name, QString *error)
 {
     const QJsonArray a = v.toArray();
     if (a.size() != SimServoModbusDrive::ParameterCount) {
@@ -76,9 +75,9 @@ SimServoModbusDrive::ParameterArray SimServoModbusDrive::factoryDefaults(const C
     ParameterArray a{};
     for (int n = 0; n < ParameterCount; ++n)
         a[size_t(n)] = static_cast<quint16>(100 + n);
-    a[0] = 315;                                    // PA0: the usual password of this class
+    a[0] = 315; // PA0: the usual password of this class
     a[servomodbus::FirmwareParameter] = config.firmware;
-    a[4] = 0;                                      // PA4: control mode
+    a[4] = 0; // PA4: control mode
     a[servomodbus::AddressParameter] = 1;
     return a;
 }
@@ -94,8 +93,7 @@ QString SimServoModbusDrive::describe() const
 
 bool SimServoModbusDrive::legacyFirmware() const
 {
-    return servomodbus::eeFormatForFirmware(m_params[servomodbus::FirmwareParameter])
-        == servomodbus::EeFormat::Legacy;
+    return servomodbus::eeFormatForFirmware(m_params[servomodbus::FirmwareParameter]) == servomodbus::EeFormat::Legacy;
 }
 
 void SimServoModbusDrive::advanceTo(qint64 nowUs)
@@ -160,12 +158,11 @@ QList<QByteArray> SimServoModbusDrive::handleFrame(const QByteArray &adu, qint64
     using namespace modbusrtu;
     if (r.function == WriteSingleRegister) {
         reply = (r.start == servomodbus::EeLegacyRegister && legacyFirmware())
-                    ? handleEe(r, servomodbus::EeFormat::Legacy, broadcast, nowUs)
-                    : exceptionReply(r);
+            ? handleEe(r, servomodbus::EeFormat::Legacy, broadcast, nowUs)
+            : exceptionReply(r);
     } else if (r.function == WriteMultipleRegisters && r.start == servomodbus::EeNewRegister) {
-        reply = (r.count == 1 && !legacyFirmware())
-                    ? handleEe(r, servomodbus::EeFormat::New, broadcast, nowUs)
-                    : exceptionReply(r);
+        reply = (r.count == 1 && !legacyFirmware()) ? handleEe(r, servomodbus::EeFormat::New, broadcast, nowUs)
+                                                    : exceptionReply(r);
     } else if (!servomodbus::validateRequest(r).isEmpty()) {
         reply = exceptionReply(r);
     } else if (r.function == ReadHoldingRegisters) {
@@ -325,8 +322,7 @@ quint16 SimServoModbusDrive::monitorRegister(int reg) const
     case 0x0D: return s16(m.torquePercent());
     case 0x0E: return static_cast<quint16>(std::min(rotor, 65535.0));
     case 0x0F: return m.isEnabled() ? 0x0001 : 0x0000;
-    case 0x10: return quint16((m.isEnabled() && m.alarmCode() == 0 ? 0x01 : 0x00)
-                              | (m.alarmCode() != 0 ? 0x02 : 0x00));
+    case 0x10: return quint16((m.isEnabled() && m.alarmCode() == 0 ? 0x01 : 0x00) | (m.alarmCode() != 0 ? 0x02 : 0x00));
     case 0x11: {
         static const quint16 uvw[6] = {1, 3, 2, 6, 4, 5};
         const int sector = int(std::fmod(electrical, 2.0 * Pi) / (Pi / 3.0)) % 6;

@@ -1,11 +1,11 @@
 #pragma once
 
-#include "sim/motor/motormodel.h"
-#include "sim/bench/simfamilies.h"
 #include "core/protocol/modbus/modbusrtu.h"
 #include "core/protocol/modbus/modbusrtuparser.h"
 #include "core/protocol/servomodbus/servomodbus.h"
+#include "sim/bench/simfamilies.h"
 #include "sim/bus/simserialdevice.h"
+#include "sim/motor/motormodel.h"
 
 #include <QJsonObject>
 #include <array>
@@ -43,13 +43,13 @@ class SimServoModbusDrive : public SimSerialDevice
 public:
     struct Config
     {
-        int address = 1;                 // PA51 at power-up
+        int address = 1; // PA51 at power-up
         int baud = 19200;
-        quint16 firmware = 7051;         // PA2; below 7050 selects the legacy EE format
-        qint64 eeBusyUs = 300000;        // how long a legacy EE operation runs
+        quint16 firmware = 7051;           // PA2; below 7050 selects the legacy EE format
+        qint64 eeBusyUs = 300000;          // how long a legacy EE operation runs
         bool exceptionAddressFixed = true; // seed: exception replies carry address 0x01
         servomodbus::PositionPairRule positionRule = servomodbus::PositionPairRule::BinaryWords;
-        bool demoMotion = false;         // run a slow back-and-forth speed profile
+        bool demoMotion = false; // run a slow back-and-forth speed profile
         MotorModel::Config motor;
     };
 
@@ -69,14 +69,14 @@ public:
 
     const Config &config() const { return m_config; }
     void setBaud(int baud) { m_baud = baud; }
-    int address() const { return m_address; }   // the address it answers to
+    int address() const { return m_address; } // the address it answers to
     void setFirmware(quint16 pa2) { m_params[servomodbus::FirmwareParameter] = pa2; }
     void setExceptionAddressFixed(bool fixed) { m_config.exceptionAddressFixed = fixed; }
     void setEeBusyUs(qint64 us) { m_config.eeBusyUs = us < 0 ? 0 : us; }
 
     // Registers as the host would read them (monitor values at the last advanceTo()).
     quint16 parameter(int n) const;
-    void setParameter(int n, quint16 value);   // as if written over the bus
+    void setParameter(int n, quint16 value); // as if written over the bus
     quint16 eepromParameter(int n) const;
     quint16 backupParameter(int n) const;
     const ParameterArray &parameters() const { return m_params; }
@@ -110,8 +110,7 @@ private:
     QByteArray exceptionReply(const modbusrtu::Request &request);
     QByteArray handleRead(const modbusrtu::Request &request);
     QByteArray handleWrite(const modbusrtu::Request &request, bool broadcast);
-    QByteArray handleEe(const modbusrtu::Request &request, servomodbus::EeFormat format,
-                        bool broadcast, qint64 nowUs);
+    QByteArray handleEe(const modbusrtu::Request &request, servomodbus::EeFormat format, bool broadcast, qint64 nowUs);
     void startEe(servomodbus::EeOp op, qint64 nowUs);
     void applyEe(servomodbus::EeOp op);
     void updateDemo(qint64 nowUs);

@@ -10,17 +10,20 @@ namespace {
 MotorModel::Config stepperConfig()
 {
     MotorModel::Config c;
-    c.countsPerRev = 4000.0;     // 200 full steps x 20 microsteps
-    c.maxSpeed = 100000.0;       // the protocol's speed limit
+    c.countsPerRev = 4000.0; // 200 full steps x 20 microsteps
+    c.maxSpeed = 100000.0;   // the protocol's speed limit
     c.acceleration = 50000.0;
     c.deceleration = 50000.0;
-    c.positionErrorNoise = 0.0;  // counters read exactly at rest
-    c.errorPerSpeed = 1.0e-3;    // 5 pulses of following error at 5000 pulses/s (closed loop)
+    c.positionErrorNoise = 0.0; // counters read exactly at rest
+    c.errorPerSpeed = 1.0e-3;   // 5 pulses of following error at 5000 pulses/s (closed loop)
     c.errorPerAccel = 0.0;
     return c;
 }
 
-double toSeconds(qint64 us) { return static_cast<double>(us) / 1e6; }
+double toSeconds(qint64 us)
+{
+    return static_cast<double>(us) / 1e6;
+}
 
 } // namespace
 

@@ -32,10 +32,10 @@ class SimShuokeAxis
 public:
     struct Switches
     {
-        qint64 leftLimit = -1000000;  // motor position at or below which the left limit is active
-        qint64 rightLimit = 1000000;  // at or above which the right limit is active
-        qint64 origin = 0;            // origin switch position
-        qint64 originWidth = 20;      // the origin input reads 1 within this distance
+        qint64 leftLimit = -1000000; // motor position at or below which the left limit is active
+        qint64 rightLimit = 1000000; // at or above which the right limit is active
+        qint64 origin = 0;           // origin switch position
+        qint64 originWidth = 20;     // the origin input reads 1 within this distance
     };
 
     explicit SimShuokeAxis(bool closedLoop = true);

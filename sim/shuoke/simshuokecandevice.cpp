@@ -64,12 +64,14 @@ std::unique_ptr<SimCanDevice> SimShuokeCanDevice::create(const SimDeviceSpec &sp
 {
     if (!spec.framing.isEmpty() && spec.framing != QLatin1String("can")) {
         *error = {ErrorCode::InvalidArgument,
-                  QCoreApplication::translate("dd::SimBench", "The shuoke %1 framing runs on RS232/RS485: use --pty.").arg(spec.framing)};
+                  QCoreApplication::translate("dd::SimBench", "The shuoke %1 framing runs on RS232/RS485: use --pty.")
+                      .arg(spec.framing)};
         return nullptr;
     }
     if (spec.address < 1 || spec.address > 250) {
-        *error = {ErrorCode::InvalidArgument,
-                  QCoreApplication::translate("dd::SimBench", "A shuoke CAN address is 1..250, not %1.").arg(spec.address)};
+        *error = {
+            ErrorCode::InvalidArgument,
+            QCoreApplication::translate("dd::SimBench", "A shuoke CAN address is 1..250, not %1.").arg(spec.address)};
         return nullptr;
     }
     SimShuokeDrive::Config c;

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "sim/bus/simcandevice.h"
 #include "sim/bench/simfamilies.h"
+#include "sim/bus/simcandevice.h"
 #include "sim/shuoke/simshuokedrive.h"
 
 #include <functional>

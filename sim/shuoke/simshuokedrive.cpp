@@ -204,37 +204,41 @@ std::optional<Frame> SimShuokeDrive::execute(const Frame &request, Medium medium
     Q_UNUSED(medium);
     const quint8 cmd = request.command;
     const QByteArray &data = request.data;
-    auto ok = [this, cmd](const QByteArray &replyData = {}) {
-        return Frame::make(m_config.address, cmd, replyData);
-    };
+    auto ok = [this, cmd](const QByteArray &replyData = {}) { return Frame::make(m_config.address, cmd, replyData); };
     const quint8 byte0 = data.isEmpty() ? 0 : static_cast<quint8>(data.at(0));
 
     switch (cmd) {
     case CmdHandshake:
-    case CmdQueryAddress:
-        return ok();
-    case CmdChangeAddress:
-        m_pendingAddress = byte0;
-        return ok(data);
-    case CmdGetBaudCode:
-        return ok(QByteArray(1, static_cast<char>(m_config.baudCode)));
+    case CmdQueryAddress: return ok();
+    case CmdChangeAddress: m_pendingAddress = byte0; return ok(data);
+    case CmdGetBaudCode: return ok(QByteArray(1, static_cast<char>(m_config.baudCode)));
     case CmdSetBaudCode:
         setSetting(CmdSetBaudCode, byte0); // the new rate applies to the next request
         return ok(data);
-    case CmdSetStartSpeed: case CmdSetMaxSpeed: case CmdSetStopSpeed: case CmdSetAcceleration:
-    case CmdSetDeceleration: case CmdSetHomingSpeed: case CmdSetGearNumerator: case CmdSetGearDenominator:
-    case CmdSetSpeedStep: case CmdEncoderAbTolerance: case CmdNoEncoderMaxPulses:
-        setSetting(cmd, dataUInt(data));
-        return ok();
-    case CmdGetStartSpeed: case CmdGetMaxSpeed: case CmdGetStopSpeed: case CmdGetAcceleration:
-    case CmdGetDeceleration: case CmdGetHomingSpeed: case CmdGetGearNumerator: case CmdGetGearDenominator:
-        return ok(u32(m_settings.value(static_cast<quint8>(cmd - 1))));
-    case CmdEncoderDirection: case CmdMotionDirection: case CmdErrorCorrection:
-        setSetting(cmd, byte0);
-        return ok();
-    case CmdSkipCrcCheck: case CmdFixedLengthReplies:
-        setSetting(cmd, byte0);
-        return ok(data);
+    case CmdSetStartSpeed:
+    case CmdSetMaxSpeed:
+    case CmdSetStopSpeed:
+    case CmdSetAcceleration:
+    case CmdSetDeceleration:
+    case CmdSetHomingSpeed:
+    case CmdSetGearNumerator:
+    case CmdSetGearDenominator:
+    case CmdSetSpeedStep:
+    case CmdEncoderAbTolerance:
+    case CmdNoEncoderMaxPulses: setSetting(cmd, dataUInt(data)); return ok();
+    case CmdGetStartSpeed:
+    case CmdGetMaxSpeed:
+    case CmdGetStopSpeed:
+    case CmdGetAcceleration:
+    case CmdGetDeceleration:
+    case CmdGetHomingSpeed:
+    case CmdGetGearNumerator:
+    case CmdGetGearDenominator: return ok(u32(m_settings.value(static_cast<quint8>(cmd - 1))));
+    case CmdEncoderDirection:
+    case CmdMotionDirection:
+    case CmdErrorCorrection: setSetting(cmd, byte0); return ok();
+    case CmdSkipCrcCheck:
+    case CmdFixedLengthReplies: setSetting(cmd, byte0); return ok(data);
     case CmdCanFrameFormat:
         setSetting(cmd, byte0);
         m_pendingCanExtended = byte0 != 0;
@@ -243,12 +247,8 @@ std::optional<Frame> SimShuokeDrive::execute(const Frame &request, Medium medium
         setSetting(cmd, byte0);
         m_pendingCanBitrate = byte0;
         return ok(data);
-    case CmdSetPlcBase:
-        setSetting(cmd, decodeUInt16(data, m_config.byteOrder).value_or(0));
-        return ok();
-    case CmdSetIoSubstitution:
-        m_ioSubstitution.insert(byte0, data);
-        return ok();
+    case CmdSetPlcBase: setSetting(cmd, decodeUInt16(data, m_config.byteOrder).value_or(0)); return ok();
+    case CmdSetIoSubstitution: m_ioSubstitution.insert(byte0, data); return ok();
     case CmdReadIoSubstitution: {
         const QByteArray entry = m_ioSubstitution.value(byte0);
         return ok(entry.isEmpty() ? QByteArray(1, static_cast<char>(byte0)) : entry);
@@ -263,24 +263,14 @@ std::optional<Frame> SimShuokeDrive::execute(const Frame &request, Medium medium
             out.append(static_cast<char>((bits >> i) & 1));
         return ok(out);
     }
-    case CmdFactoryReset:
-        m_pendingFactoryReset = true;
-        return ok();
+    case CmdFactoryReset: m_pendingFactoryReset = true; return ok();
     case CmdSerialToCanEcho:
-    case CmdCanToSerialEcho:
-        return ok(data);
-    case CmdClosedLoopGetAbsolute:
-        return ok(i32(m_axis.closedLoopAbsolute()));
-    case CmdClosedLoopGetRelative:
-        return ok(i32(m_axis.closedLoopRelative()));
-    case CmdClosedLoopSetAbsolute:
-        m_axis.setClosedLoopAbsolute(data.isEmpty() ? 0 : dataInt(data));
-        return ok();
-    case CmdClosedLoopSetRelative:
-        m_axis.setClosedLoopRelative(data.isEmpty() ? 0 : dataInt(data));
-        return ok();
-    default:
-        break;
+    case CmdCanToSerialEcho: return ok(data);
+    case CmdClosedLoopGetAbsolute: return ok(i32(m_axis.closedLoopAbsolute()));
+    case CmdClosedLoopGetRelative: return ok(i32(m_axis.closedLoopRelative()));
+    case CmdClosedLoopSetAbsolute: m_axis.setClosedLoopAbsolute(data.isEmpty() ? 0 : dataInt(data)); return ok();
+    case CmdClosedLoopSetRelative: m_axis.setClosedLoopRelative(data.isEmpty() ? 0 : dataInt(data)); return ok();
+    default: break;
     }
     return executeMotion(request);
 }
@@ -294,9 +284,7 @@ std::optional<Frame> SimShuokeDrive::executeMotion(const Frame &request)
     const double homing = static_cast<double>(m_settings.value(CmdSetHomingSpeed));
     switch (cmd) {
     case CmdMoveRelative:
-    case CmdClosedLoopMove:
-        m_axis.moveRelative(dataInt(data), maxSpeed);
-        return done;
+    case CmdClosedLoopMove: m_axis.moveRelative(dataInt(data), maxSpeed); return done;
     case CmdMoveRelativeDirection24:
         m_axis.moveRelative(decodeDirection24(data, m_config.byteOrder).value_or(0), maxSpeed);
         return done;
@@ -309,15 +297,9 @@ std::optional<Frame> SimShuokeDrive::executeMotion(const Frame &request)
     case CmdClosedLoopMoveAbsolute:
         m_axis.moveToMotorPosition(m_axis.motorPositionForClosedLoop(dataInt(data)), maxSpeed);
         return done;
-    case CmdRunSpeed:
-        m_axis.runSpeed(dataInt(data));
-        return done;
-    case CmdRunSpeedDirection24:
-        m_axis.runSpeed(decodeDirection24(data, m_config.byteOrder).value_or(0));
-        return done;
-    case CmdChangeSpeed:
-        m_axis.changeSpeed(dataUInt(data));
-        return done;
+    case CmdRunSpeed: m_axis.runSpeed(dataInt(data)); return done;
+    case CmdRunSpeedDirection24: m_axis.runSpeed(decodeDirection24(data, m_config.byteOrder).value_or(0)); return done;
+    case CmdChangeSpeed: m_axis.changeSpeed(dataUInt(data)); return done;
     case CmdSpeedStepUp:
     case CmdSpeedStepDown: {
         const double step = static_cast<double>(m_settings.value(CmdSetSpeedStep));
@@ -327,18 +309,11 @@ std::optional<Frame> SimShuokeDrive::executeMotion(const Frame &request)
         m_axis.runSpeed(dir * std::min(magnitude, static_cast<double>(kMaxSpeed)));
         return done;
     }
-    case CmdQuerySpeed:
-        return Frame::make(m_config.address, cmd, i32(std::llround(m_axis.speed())));
-    case CmdQueryAbsolutePosition:
-        return Frame::make(m_config.address, cmd, i32(m_axis.absolutePosition()));
-    case CmdClearAbsolutePosition:
-        m_axis.clearAbsolute();
-        return done;
-    case CmdQueryRelativePosition:
-        return Frame::make(m_config.address, cmd, i32(m_axis.relativePosition()));
-    case CmdClearRelativePosition:
-        m_axis.clearRelative();
-        return done;
+    case CmdQuerySpeed: return Frame::make(m_config.address, cmd, i32(std::llround(m_axis.speed())));
+    case CmdQueryAbsolutePosition: return Frame::make(m_config.address, cmd, i32(m_axis.absolutePosition()));
+    case CmdClearAbsolutePosition: m_axis.clearAbsolute(); return done;
+    case CmdQueryRelativePosition: return Frame::make(m_config.address, cmd, i32(m_axis.relativePosition()));
+    case CmdClearRelativePosition: m_axis.clearRelative(); return done;
     case CmdQueryStatus: {
         MotionStatus s;
         s.running = m_axis.isRunning();
@@ -348,15 +323,9 @@ std::optional<Frame> SimShuokeDrive::executeMotion(const Frame &request)
         s.enableInput = m_config.enableInput;
         return Frame::make(m_config.address, cmd, encodeMotionStatus(s));
     }
-    case CmdEmergencyStop:
-        m_axis.emergencyStop();
-        return done;
-    case CmdDecelerateStop:
-        m_axis.stop();
-        return done;
-    case CmdHome:
-        m_axis.startHoming(static_cast<quint8>(data.at(0)) == 1, homing);
-        return done;
+    case CmdEmergencyStop: m_axis.emergencyStop(); return done;
+    case CmdDecelerateStop: m_axis.stop(); return done;
+    case CmdHome: m_axis.startHoming(static_cast<quint8>(data.at(0)) == 1, homing); return done;
     case CmdHomeOrSCurveInt32:
     case CmdHomeOrSCurveDirection24:
         if (data.size() == 1) {
@@ -368,8 +337,7 @@ std::optional<Frame> SimShuokeDrive::executeMotion(const Frame &request)
             m_axis.moveRelative(distance, maxSpeed);
         }
         return done;
-    default:
-        break;
+    default: break;
     }
     return failure(cmd, FailureUnknownCommand);
 }

@@ -47,19 +47,19 @@ public:
     {
         shuoke::Model model = shuoke::Model::M6505;
         quint8 address = 1;
-        int baudCode = 6;               // 9600
+        int baudCode = 6; // 9600
         int canBitrateCode = shuoke::kDefaultCanBitrateCode;
         bool canExtended = false;
         shuoke::ByteOrder byteOrder = shuoke::ByteOrder::LittleEndian;
         QList<quint8> broadcasts{shuoke::kBroadcastZero, shuoke::kBroadcastAllOnes};
         quint16 plcBase = 0;
-        int powerUpWindowMs = 2000;     // 9600 baud after power-up
+        int powerUpWindowMs = 2000; // 9600 baud after power-up
         // Serial and PLC: a command that arrives sooner than this after the previous one is
         // not taken (the V1.5 note "leave at least 50 ms between commands"); 0: no limit.
         int minCommandGapMs = 50;
         bool enableInput = true;
-        quint8 inputs = 0;              // 0x42 bits IO1..IO5
-        quint8 controlInputs = 0x04;    // 0x43 bits pulse, dir, enable, F1, F2
+        quint8 inputs = 0;           // 0x42 bits IO1..IO5
+        quint8 controlInputs = 0x04; // 0x43 bits pulse, dir, enable, F1, F2
         SimShuokeAxis::Switches switches;
     };
 

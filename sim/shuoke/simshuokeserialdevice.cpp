@@ -24,8 +24,7 @@ bool isHexDigit(char c)
 }
 } // namespace
 
-SimShuokeSerialDevice::SimShuokeSerialDevice(const SimShuokeDrive::Config &config, Framing framing,
-                                             AsciiCheck check)
+SimShuokeSerialDevice::SimShuokeSerialDevice(const SimShuokeDrive::Config &config, Framing framing, AsciiCheck check)
     : m_drive(config)
     , m_framing(framing)
     , m_check(check)
@@ -261,14 +260,19 @@ std::unique_ptr<SimSerialDevice> SimShuokeSerialDevice::create(const SimDeviceSp
     } else if (!f.isEmpty() && f != QLatin1String("rtu")) {
         *error = {ErrorCode::InvalidArgument,
                   f == QLatin1String("can")
-                      ? QCoreApplication::translate("dd::SimBench", "The shuoke CAN framing needs a CAN bus: give --can PLUGIN:INTERFACE.")
-                      : QCoreApplication::translate("dd::SimBench", "Unknown shuoke framing \"%1\": use rtu, ascii, can or plc.").arg(f)};
+                      ? QCoreApplication::translate(
+                          "dd::SimBench", "The shuoke CAN framing needs a CAN bus: give --can PLUGIN:INTERFACE.")
+                      : QCoreApplication::translate("dd::SimBench",
+                                                    "Unknown shuoke framing \"%1\": use rtu, ascii, can or plc.")
+                            .arg(f)};
         return nullptr;
     }
     const int code = shuoke::baudCodeForRate(spec.baud);
     if (!shuoke::isUsableBaudCode(code)) {
         *error = {ErrorCode::InvalidArgument,
-                  QCoreApplication::translate("dd::SimBench", "A shuoke drive talks at 300, 600, 1200, 2400, 4800, 9600, 19200 or 38400 baud, not %1.")
+                  QCoreApplication::translate(
+                      "dd::SimBench",
+                      "A shuoke drive talks at 300, 600, 1200, 2400, 4800, 9600, 19200 or 38400 baud, not %1.")
                       .arg(spec.baud)};
         return nullptr;
     }

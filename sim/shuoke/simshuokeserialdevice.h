@@ -44,7 +44,11 @@ public:
     SimShuokeDrive &drive();
     const SimShuokeDrive &drive() const { return m_drive; }
     Framing framing() const { return m_framing; }
-    void setFraming(Framing framing) { m_framing = framing; m_rx.clear(); }
+    void setFraming(Framing framing)
+    {
+        m_framing = framing;
+        m_rx.clear();
+    }
     shuoke::AsciiCheck asciiCheck() const { return m_check; }
     void setAsciiCheck(shuoke::AsciiCheck check) { m_check = check; }
     // Restart the drive now (pending address etc. apply; 9600 for the power-up window).

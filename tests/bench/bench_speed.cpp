@@ -44,10 +44,10 @@
 #include "core/drive/driveconnection.h"
 #include "core/drive/drivereply.h"
 #include "core/link/wiretime.h"
+#include "core/trend/channelsampler.h"
 #include "sim/bench/simbench.h"
 #include "sim/bus/simcandevice.h"
 #include "sim/bus/simserialdevice.h"
-#include "core/trend/channelsampler.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -85,14 +85,14 @@ QString loadAverage()
 struct Row
 {
     QString name;
-    QString measured;   // median (min)
+    QString measured; // median (min)
     QString floor;
-    double ratio = 0;   // median / floor, time per operation
-    double limit = 0;   // target on the ratio, or (absolute targets) 0
+    double ratio = 0;      // median / floor, time per operation
+    double limit = 0;      // target on the ratio, or (absolute targets) 0
     double absoluteMs = 0; // absolute target on the median, ms (0: none)
     double medianMs = 0;
     QString note;
-    bool failed = false; // an operation failed: no figure
+    bool failed = false;  // an operation failed: no figure
     bool complete = true; // scans: every run found every drive
     bool skipped = false; // not available in this build
 };
@@ -129,11 +129,16 @@ void printTable()
                                           : QStringLiteral("<= %1x").arg(r.limit, 0, 'f', 2);
         out(QStringLiteral("%1 %2 %3 %4 %5 %6")
                 .arg(r.name, -44)
-                .arg(r.skipped ? QStringLiteral("skipped") : r.failed ? QStringLiteral("FAILED") : r.measured, -26)
+                .arg(r.skipped      ? QStringLiteral("skipped")
+                         : r.failed ? QStringLiteral("FAILED")
+                                    : r.measured,
+                     -26)
                 .arg(r.floor, -12)
                 .arg(r.failed || r.skipped ? QStringLiteral("-") : QString::number(r.ratio, 'f', 2), -7)
                 .arg(target, -16)
-                .arg(r.skipped ? QStringLiteral("-") : passed(r) ? QStringLiteral("PASS") : QStringLiteral("MISS")));
+                .arg(r.skipped       ? QStringLiteral("-")
+                         : passed(r) ? QStringLiteral("PASS")
+                                     : QStringLiteral("MISS")));
         if (!r.note.isEmpty())
             out(QStringLiteral("    ") + r.note);
     }
@@ -143,7 +148,7 @@ void printTable()
 
 // Runs the event loop until `sender` emits `signal` or `timeoutMs` pass (never a polling
 // loop: a spinning client thread would take the CPU from the simulator).
-template<typename Sender, typename Signal>
+template <typename Sender, typename Signal>
 void waitForSignal(Sender *sender, Signal signal, int timeoutMs)
 {
     QEventLoop loop;
@@ -342,8 +347,8 @@ void addFailure(const QString &name, const QString &floor, double limit, const E
     out(QStringLiteral("  %1: FAILED: %2").arg(name, e.message));
 }
 
-Row &addTimed(const QString &name, const QList<double> &runsMs, double floorMs, double limit,
-              double absoluteMs = 0, const QString &note = {})
+Row &addTimed(const QString &name, const QList<double> &runsMs, double floorMs, double limit, double absoluteMs = 0,
+              const QString &note = {})
 {
     const Stats s = statsOf(runsMs);
     Row r;
@@ -426,7 +431,7 @@ void benchModbusScan(int baud, double limitMs)
     const qint64 latency = SimSerialDevice::DefaultLatencyUs;
     const double floorMs = (247 * (WireTime::serialBytesUs(8, baud) + WireTime::modbusSilenceUs(baud))
                             + present.size() * (latency + WireTime::serialBytesUs(7, baud)))
-                         / 1000;
+        / 1000;
     auto s = standUp(o);
     if (s->error)
         return addFailure(name, ms(floorMs), 0, s->error);
@@ -473,8 +478,8 @@ void benchModbusScan(int baud, double limitMs)
 
 // Samples the channels as the CLI's monitor does, asked for more than the link allows, for
 // 2 s: the highest sample rate the client achieves.
-void benchMonitor(const QString &name, const SimBenchOptions &o, const QStringList &channels,
-                  double floorUs, const QString &note)
+void benchMonitor(const QString &name, const SimBenchOptions &o, const QStringList &channels, double floorUs,
+                  const QString &note)
 {
     if (!wanted(name))
         return;
@@ -493,8 +498,8 @@ void benchMonitor(const QString &name, const SimBenchOptions &o, const QStringLi
     if (s->error)
         return addFailure(name, QString(), 1 / 0.9, s->error);
     constexpr int Ms = 2000;
-    QList<double> runs;   // ms per sample
-    QList<double> each;   // every sample's interval, ms
+    QList<double> runs; // ms per sample
+    QList<double> each; // every sample's interval, ms
     for (int i = 0; i < g_runs; ++i) {
         // As the CLI's monitor at --rate 1000 (its most): more than any of these links
         // allows, so the sampler keeps two reads queued and the link never idles.
@@ -539,7 +544,9 @@ void benchMonitor(const QString &name, const SimBenchOptions &o, const QStringLi
     QStringList rates;
     for (double v : runs)
         rates << QString::number(1000 / v, 'f', 0);
-    out(QStringLiteral("  %1: runs [%2] Hz, floor %3 Hz").arg(name, rates.join(QStringLiteral(", "))).arg(1e6 / floorUs, 0, 'f', 0));
+    out(QStringLiteral("  %1: runs [%2] Hz, floor %3 Hz")
+            .arg(name, rates.join(QStringLiteral(", ")))
+            .arg(1e6 / floorUs, 0, 'f', 0));
 }
 
 void benchModbusMonitor(int baud)
@@ -560,10 +567,10 @@ void benchCanMonitor()
     o.family = Family::ServoCan;
     o.can = QStringLiteral("virtualcan:auto");
     const double floorUs = canMonitorSampleUs(4, 1000000, SimCanDevice::DefaultLatencyUs);
-    benchMonitor(QStringLiteral("monitor servo-can @ 1 Mbit/s"), o,
-                 {QStringLiteral("speed"), QStringLiteral("torque"), QStringLiteral("current"),
-                  QStringLiteral("bus-voltage")},
-                 floorUs, QStringLiteral("speed, torque, current, bus voltage: 4 pipelined reads"));
+    benchMonitor(
+        QStringLiteral("monitor servo-can @ 1 Mbit/s"), o,
+        {QStringLiteral("speed"), QStringLiteral("torque"), QStringLiteral("current"), QStringLiteral("bus-voltage")},
+        floorUs, QStringLiteral("speed, torque, current, bus voltage: 4 pipelined reads"));
 }
 
 // Shuoke steppers report speed but no torque, current or bus voltage.
@@ -579,7 +586,8 @@ void benchShuokeMonitor()
         o.family = Family::Shuoke;
         o.baud = 9600;
         o.framing = QStringLiteral("rtu");
-        const double floorUs = std::max(50000.0, WireTime::serialBytesUs(5 + 9, 9600) + SimSerialDevice::DefaultLatencyUs);
+        const double floorUs = std::max(50000.0,
+                                        WireTime::serialBytesUs(5 + 9, 9600) + SimSerialDevice::DefaultLatencyUs);
         benchMonitor(QStringLiteral("monitor shuoke RTU @ 9600"), o, speed, floorUs,
                      note + QStringLiteral("; commands >= 50 ms apart"));
     }
@@ -618,7 +626,8 @@ int main(int argc, char **argv)
     out(QStringLiteral("bench_speed: Qt %1, %2 CPUs, load average %3 (start), simulator %4, %5 runs (scans %6)")
             .arg(QLatin1String(qVersion()))
             .arg(QThread::idealThreadCount())
-            .arg(loadAverage(), g_ownThread ? QStringLiteral("in its own thread") : QStringLiteral("on the client's thread"))
+            .arg(loadAverage(),
+                 g_ownThread ? QStringLiteral("in its own thread") : QStringLiteral("on the client's thread"))
             .arg(g_runs)
             .arg(g_scanRuns));
     out(QStringLiteral("drive latency: serial %1 us, CAN %2 us (simulator defaults)")

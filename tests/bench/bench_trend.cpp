@@ -113,14 +113,14 @@ int main(int argc, char **argv)
     const QString screenshot = args.value(args.indexOf(QStringLiteral("--screenshot")) + 1);
 
     std::printf("Trend plot benchmark: %d series, view 1280x720 offscreen, window 10 min, "
-                "whole recording visible. Times are medians in ms, wall (thread CPU).\n\n", Series);
+                "whole recording visible. Times are medians in ms, wall (thread CPU).\n\n",
+                Series);
     std::printf("| samples/series | buffers MB | append ns/sample (CPU) | decimate 4 series ms "
                 "| points/series | update ms | render ms | update+render ms |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
 
     QList<QByteArray> scans;
-    const QList<qint64> sizes = quick ? QList<qint64>{10000, 100000}
-                                      : QList<qint64>{10000, 100000, 1000000};
+    const QList<qint64> sizes = quick ? QList<qint64>{10000, 100000} : QList<qint64>{10000, 100000, 1000000};
     for (qint64 n : sizes) {
         TrendRecorder rec;
         double appendNs = 0;
@@ -131,8 +131,7 @@ int main(int argc, char **argv)
         int points = 0;
         const Timing decimateMs = medianMs(runs, [&] {
             for (const char *id : Ids) {
-                const auto r = TrendPlotBuilder::build(*rec.buffer(QString::fromLatin1(id)), 0,
-                                                       WindowUs - 1, 1000, 0);
+                const auto r = TrendPlotBuilder::build(*rec.buffer(QString::fromLatin1(id)), 0, WindowUs - 1, 1000, 0);
                 points = int(r.points.size());
             }
         });
@@ -173,16 +172,16 @@ int main(int argc, char **argv)
             (void)view.chartView()->grab();
         });
         const int shown = int(view.series(first)->count());
-        std::printf("| %lld | %.1f | %.0f | %s | %d (view: %d) | %s | %s | %s |\n",
-                    static_cast<long long>(n), double(rec.memoryBytes()) / 1e6, appendNs,
-                    fmt(decimateMs).constData(), points, shown, fmt(updateMs).constData(),
-                    fmt(renderMs).constData(), fmt(bothMs).constData());
+        std::printf("| %lld | %.1f | %.0f | %s | %d (view: %d) | %s | %s | %s |\n", static_cast<long long>(n),
+                    double(rec.memoryBytes()) / 1e6, appendNs, fmt(decimateMs).constData(), points, shown,
+                    fmt(updateMs).constData(), fmt(renderMs).constData(), fmt(bothMs).constData());
         std::fflush(stdout);
         if (!screenshot.isEmpty() && n == sizes.first())
             view.grab().save(screenshot);
     }
 
-    std::printf("\nDecimation of 4 series to 1,000 px: the strategy the view uses (Auto: summaries from 256 samples per bucket) vs a plain scan:\n\n");
+    std::printf(
+        "\nDecimation of 4 series to 1,000 px: the strategy the view uses (Auto: summaries from 256 samples per bucket) vs a plain scan:\n\n");
     std::printf("| samples/series | Auto ms | plain scan ms |\n|---:|---:|---:|\n");
     for (const QByteArray &row : std::as_const(scans))
         std::printf("| %s |\n", row.constData());

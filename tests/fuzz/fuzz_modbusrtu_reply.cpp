@@ -87,8 +87,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         DD_FUZZ_CHECK(r.start == request.start && r.count == request.count && r.values.isEmpty());
         DD_FUZZ_CHECK(encodeWriteMultipleReply(r.address, r.start, r.count) == adu);
         break;
-    default:
-        DD_FUZZ_CHECK(false && "reply accepted for an unknown function");
+    default: DD_FUZZ_CHECK(false && "reply accepted for an unknown function");
     }
     return 0;
 }

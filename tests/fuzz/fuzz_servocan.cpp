@@ -41,9 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         DD_FUZZ_CHECK(isValidParameterIndex(m.paramIndex));
         QByteArray paramExpected = expected;
         paramExpected[4] = 0; // b4 is documented as 0 and not checked on receive
-        const CanFrameData p = m.command == Command::Write
-                                   ? writeParameter(m.station, m.paramIndex, m.paramValue)
-                                   : readReplyParameter(m.station, m.paramIndex, m.paramValue);
+        const CanFrameData p = m.command == Command::Write ? writeParameter(m.station, m.paramIndex, m.paramValue)
+                                                           : readReplyParameter(m.station, m.paramIndex, m.paramValue);
         DD_FUZZ_CHECK(p.data == paramExpected);
     }
     if (const std::optional<ReadType> t = m.readType()) {

@@ -41,7 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const QByteArray stream = (control & 4) ? fuzz::asciiSegments(in, options.check) : in.rest();
     const QByteArray upper = stream.toUpper();
 
-    AsciiStreamParser parser(options, capacitySelector == 0 ? AsciiStreamParser::kDefaultCapacity : 4 * capacitySelector);
+    AsciiStreamParser parser(options,
+                             capacitySelector == 0 ? AsciiStreamParser::kDefaultCapacity : 4 * capacitySelector);
     const qsizetype capacity = parser.capacity();
     for (qsizetype at = 0; at < stream.size(); at += chunk) {
         for (const Frame &f : parser.feed(stream.mid(at, chunk))) {
@@ -53,7 +54,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         DD_FUZZ_CHECK(parser.bufferedSize() <= capacity);
         DD_FUZZ_CHECK((parser.rejectedFrames() == 0) == parser.lastError().isEmpty());
     }
-    DD_FUZZ_CHECK(parser.discardedBytes() + static_cast<quint64>(parser.bufferedSize()) <= static_cast<quint64>(stream.size()));
+    DD_FUZZ_CHECK(parser.discardedBytes() + static_cast<quint64>(parser.bufferedSize())
+                  <= static_cast<quint64>(stream.size()));
     parser.clear();
     DD_FUZZ_CHECK(parser.bufferedSize() == 0 && !parser.takeFrame());
     return 0;

@@ -73,7 +73,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         } else {
             // Slices that fit the free space, as feed() does: nothing is dropped for lack of room.
             for (qsizetype i = 0; i < piece.size();) {
-                const qsizetype n = std::min(piece.size() - i, std::max<qsizetype>(1, capacity - parser.bufferedSize()));
+                const qsizetype n = std::min(piece.size() - i,
+                                             std::max<qsizetype>(1, capacity - parser.bufferedSize()));
                 parser.append(piece.mid(i, n));
                 i += n;
                 DD_FUZZ_CHECK(parser.bufferedSize() <= capacity);

@@ -20,12 +20,12 @@
 
 // An invariant the code under test must keep. Aborts (libFuzzer saves the input as a crash)
 // with the condition's text; unlike Q_ASSERT it is active in every build type.
-#define DD_FUZZ_CHECK(cond)                                                                    \
-    do {                                                                                       \
-        if (!(cond)) {                                                                         \
-            std::fprintf(stderr, "fuzz invariant failed: %s (%s:%d)\n", #cond, __FILE__, __LINE__); \
-            std::abort();                                                                      \
-        }                                                                                      \
+#define DD_FUZZ_CHECK(cond)                                                                                            \
+    do {                                                                                                               \
+        if (!(cond)) {                                                                                                 \
+            std::fprintf(stderr, "fuzz invariant failed: %s (%s:%d)\n", #cond, __FILE__, __LINE__);                    \
+            std::abort();                                                                                              \
+        }                                                                                                              \
     } while (0)
 
 namespace dd::fuzz {
@@ -34,7 +34,11 @@ namespace dd::fuzz {
 class FuzzInput
 {
 public:
-    FuzzInput(const uint8_t *data, size_t size) : m_p(data), m_n(size) {}
+    FuzzInput(const uint8_t *data, size_t size)
+        : m_p(data)
+        , m_n(size)
+    {
+    }
 
     quint8 byte()
     {
@@ -43,8 +47,16 @@ public:
         --m_n;
         return *m_p++;
     }
-    quint16 u16() { const quint16 lo = byte(); return static_cast<quint16>(lo | (byte() << 8)); }
-    quint32 u32() { const quint32 lo = u16(); return lo | (static_cast<quint32>(u16()) << 16); }
+    quint16 u16()
+    {
+        const quint16 lo = byte();
+        return static_cast<quint16>(lo | (byte() << 8));
+    }
+    quint32 u32()
+    {
+        const quint32 lo = u16();
+        return lo | (static_cast<quint32>(u16()) << 16);
+    }
     QByteArray take(size_t n)
     {
         n = n < m_n ? n : m_n;

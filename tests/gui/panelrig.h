@@ -5,10 +5,10 @@
 // address 1 in an active window — the panels are created and fed as in the application.
 
 #include "core/drive/drivehub.h"
+#include "tests/gui/simbenchthread.h"
 #include "ui/bus/drivedirectory.h"
 #include "ui/workspace/drivepanel.h"
 #include "ui/workspace/driveworkspace.h"
-#include "tests/gui/simbenchthread.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -22,7 +22,7 @@ class PanelRig
 public:
     using CanHook = std::function<void(const dd::CanFrameData &frame)>;
 
-    QElapsedTimer clock;   // started by start()
+    QElapsedTimer clock; // started by start()
     SimBenchThread sim;
     std::unique_ptr<dd::DriveHub> hub;
     std::unique_ptr<dd::DriveDirectory> directory;

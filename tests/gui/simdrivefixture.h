@@ -5,13 +5,13 @@
 // DriveContext for panels. Every frame the hub's links send is recorded in `traffic`.
 
 #include "core/drive/drivehub.h"
-#include "ui/workspace/drivecontext.h"
-#include "ui/bus/driveinfo.h"
 #include "core/link/trafficrecord.h"
 #include "sim/bench/simbench.h"
 #include "sim/bus/simserialbus.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
 #include "sim/shuoke/simshuokeserialdevice.h"
+#include "ui/bus/driveinfo.h"
+#include "ui/workspace/drivecontext.h"
 
 #include <QList>
 #include <QTest>

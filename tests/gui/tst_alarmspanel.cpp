@@ -1,8 +1,8 @@
 // The Alarms tab against simulated drives: an alarm injected in the simulator shows with its
 // code and its text from the alarm dictionary (the user's table, in the UI language), Clear
 // clears it in the drive, the history keeps both with times; servo-modbus cannot clear.
-#include "ui/panels/alarms/alarmspanel.h"
 #include "tests/gui/panelrig.h"
+#include "ui/panels/alarms/alarmspanel.h"
 
 #include <QCanBus>
 #include <QDir>
@@ -31,13 +31,15 @@ class TestAlarmsPanel : public QObject
         if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate))
             return false;
         auto text = [](const char *en, const char *zh) {
-            return QJsonObject{{QStringLiteral("en"), QString::fromUtf8(en)}, {QStringLiteral("zh"), QString::fromUtf8(zh)}};
+            return QJsonObject{{QStringLiteral("en"), QString::fromUtf8(en)},
+                               {QStringLiteral("zh"), QString::fromUtf8(zh)}};
         };
         const QJsonArray alarms{
             QJsonObject{{QStringLiteral("code"), 0}, {QStringLiteral("text"), text("No alarm", "无报警")}},
             QJsonObject{{QStringLiteral("code"), 12},
                         {QStringLiteral("text"), text("Overcurrent", "过流")},
-                        {QStringLiteral("remedy"), text("Check the motor cables for a short circuit.", "检查电机线是否短路。")}}};
+                        {QStringLiteral("remedy"),
+                         text("Check the motor cables for a short circuit.", "检查电机线是否短路。")}}};
         const QJsonObject table{{QStringLiteral("format"), QStringLiteral("drivedesk-alarms")},
                                 {QStringLiteral("formatVersion"), 1},
                                 {QStringLiteral("family"), familyId(family)},
@@ -91,7 +93,7 @@ private slots:
         QVERIFY(rig.sim.call([&] { return rig.sim.bench()->injectAlarm(1, 12); }));
         QVERIFY2(waitUntil([&] { return p->currentCode() == 12; }, 3000), "the alarm did not arrive");
         QCOMPARE(code->text(), QStringLiteral("Alarm 12"));
-        QCOMPARE(text->text(), QStringLiteral("Overcurrent"));   // the user's table
+        QCOMPARE(text->text(), QStringLiteral("Overcurrent")); // the user's table
         QVERIFY(remedy->isVisible());
         QVERIFY(remedy->text().contains(QLatin1String("short circuit")));
         QCOMPARE(table->rowCount(), 1);
@@ -113,7 +115,7 @@ private slots:
         QCOMPARE(code->text(), QStringLiteral("No alarm"));
         QVERIFY(!remedy->isVisible());
         QCOMPARE(table->rowCount(), 2);
-        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("0"));   // newest first
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("0")); // newest first
         QCOMPARE(table->item(0, 2)->text(), QStringLiteral("Alarm cleared"));
         QCOMPARE(table->item(1, 1)->text(), QStringLiteral("12"));
         QVERIFY(p->history().at(1).time >= p->history().at(0).time);

@@ -2,12 +2,12 @@
 // open the file, see the difference (ticked), restore it with read-back and a report, and
 // the drive is back to the file's values. Bad files are refused with the reason and nothing
 // is sent.
-#include "ui/panels/backup/backupdifftable.h"
-#include "ui/panels/backup/backuppanel.h"
 #include "core/params/backupfile.h"
 #include "core/params/parameterdictionary.h"
-#include "ui/panels/backup/restorereportdialog.h"
 #include "tests/gui/simdrivefixture.h"
+#include "ui/panels/backup/backupdifftable.h"
+#include "ui/panels/backup/backuppanel.h"
+#include "ui/panels/backup/restorereportdialog.h"
 
 #include <QApplication>
 #include <QFile>
@@ -86,7 +86,7 @@ private slots:
         QCOMPARE(table->item(table->rowOf(10), BackupDiffTable::FileValue)->text(), QStringLiteral("100"));
         QCOMPARE(table->item(table->rowOf(10), BackupDiffTable::DriveValue)->text(), QStringLiteral("200"));
         QCOMPARE(table->checkedIndices(), QList<int>({10, 20}));
-        QVERIFY(table->isRowHidden(table->rowOf(11)));   // identical: hidden
+        QVERIFY(table->isRowHidden(table->rowOf(11))); // identical: hidden
         QVERIFY(!table->isRowHidden(table->rowOf(10)));
         QVERIFY(panel.findChild<QPushButton *>(QStringLiteral("applyBackupButton"))->isEnabled());
 
@@ -98,7 +98,7 @@ private slots:
         QVERIFY(restored.wait(10000));
         QVERIFY(restored.first().at(0).toBool());
         QCOMPARE(fx.drive()->parameter(10), quint16(100));
-        QCOMPARE(fx.drive()->parameter(20), quint16(7));   // not ticked, not touched
+        QCOMPARE(fx.drive()->parameter(20), quint16(7)); // not ticked, not touched
         QCOMPARE(panel.lastReport().indices(RestoreReport::Outcome::Verified), QList<int>({10}));
         RestoreReportDialog *report = panel.reportDialog();
         QVERIFY(report);
@@ -148,7 +148,9 @@ private slots:
         QVERIFY(panel.openFile(tampered));
         QCOMPARE(failed.count(), 1);
         QVERIFY2(panel.message().contains(QLatin1String("nothing was sent")), qPrintable(panel.message()));
-        QVERIFY(panel.findChild<QLabel *>(QStringLiteral("backupFileInfo"))->text().contains(QLatin1String("cannot be used")));
+        QVERIFY(panel.findChild<QLabel *>(QStringLiteral("backupFileInfo"))
+                    ->text()
+                    .contains(QLatin1String("cannot be used")));
         QCOMPARE(panel.diffTable()->rowCount(), 0);
         QVERIFY(!panel.findChild<QPushButton *>(QStringLiteral("applyBackupButton"))->isEnabled());
         QCOMPARE(used.count(), 0);

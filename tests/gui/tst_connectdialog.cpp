@@ -1,8 +1,8 @@
 // The connect dialog: serial ports appear and vanish while it is open (a pty stands in for
 // a USB adapter), CAN plugins and interfaces are listed, settings round-trip and persist,
 // and "detect" tries the families in the documented order.
-#include "ui/bus/connectdialog.h"
 #include "sim/bus/ptyendpoint.h"
+#include "ui/bus/connectdialog.h"
 #include "ui/bus/serialportwatcher.h"
 
 #include <QApplication>
@@ -56,7 +56,8 @@ private slots:
 
         // "Plug in" an adapter while the dialog is open: a pty with a link in the temp dir.
         const QString link = QDir(QDir::tempPath())
-                                 .filePath(QStringLiteral("dd-tst-connectdialog-%1").arg(QCoreApplication::applicationPid()));
+                                 .filePath(
+                                     QStringLiteral("dd-tst-connectdialog-%1").arg(QCoreApplication::applicationPid()));
         QVERIFY(dialog.portCombo()->findData(link) < 0);
         PtyEndpoint pty;
         const Error e = pty.open(link);
@@ -93,7 +94,7 @@ private slots:
         QVERIFY(plugin);
         QCOMPARE(plugin->currentText(), QStringLiteral("virtualcan"));
         auto *iface = dialog.findChild<QComboBox *>(QStringLiteral("canInterfaceCombo"));
-        QVERIFY(iface->findData(QStringLiteral("can0")) >= 0);   // virtualcan offers can0 and can1
+        QVERIFY(iface->findData(QStringLiteral("can0")) >= 0); // virtualcan offers can0 and can1
         QCOMPARE(dialog.request().settings.can, QStringLiteral("virtualcan:can1"));
         QVERIFY(dialog.request().settings.isCan());
     }
@@ -182,8 +183,8 @@ private slots:
     {
         ConnectRequest r;
         QString error;
-        QVERIFY(ConnectRequest::fromCommandLine(QStringLiteral("/dev/ttyUSB0"), QString(), 19200, 0,
-                                                QString(), &r, &error));
+        QVERIFY(ConnectRequest::fromCommandLine(QStringLiteral("/dev/ttyUSB0"), QString(), 19200, 0, QString(), &r,
+                                                &error));
         QCOMPARE(r.settings.port, QStringLiteral("/dev/ttyUSB0"));
         QVERIFY(!r.settings.isCan());
         QVERIFY(r.detect);
@@ -205,8 +206,8 @@ private slots:
             QCOMPARE(r.settings.bitrate, 500000);
         }
         // A Windows-style or unknown "x:" prefix is a serial port, not a CAN plugin.
-        QVERIFY(ConnectRequest::fromCommandLine(QStringLiteral("nosuchplugin:can0"), QString(), 0, 0,
-                                                QString(), &r, &error));
+        QVERIFY(ConnectRequest::fromCommandLine(QStringLiteral("nosuchplugin:can0"), QString(), 0, 0, QString(), &r,
+                                                &error));
         QVERIFY(!r.settings.isCan());
 
         QVERIFY(!ConnectRequest::fromCommandLine(QStringLiteral("/dev/ttyS0"), QStringLiteral("stepper"), 0, 0,

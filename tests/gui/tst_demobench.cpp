@@ -1,17 +1,17 @@
 // The demo: File → Demo bench starts the simulated bench on its own thread, connects to
 // every link and finds one drive of each family; STOP (F12) really stops a moving drive.
-#include "ui/bus/bustreewidget.h"
-#include "ui/bus/connectioncontroller.h"
-#include "ui/shell/demolauncher.h"
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
-#include "ui/bus/drivedirectory.h"
-#include "ui/workspace/driveworkspace.h"
-#include "ui/shell/mainwindow.h"
-#include "sim/bench/demobench.h"
-#include "ui/shell/stopaction.h"
 #include "core/trend/trendrecorder.h"
+#include "sim/bench/demobench.h"
+#include "ui/bus/bustreewidget.h"
+#include "ui/bus/connectioncontroller.h"
+#include "ui/bus/drivedirectory.h"
 #include "ui/panels/trend/trendpanel.h"
+#include "ui/shell/demolauncher.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/shell/stopaction.h"
+#include "ui/workspace/driveworkspace.h"
 
 #include <QApplication>
 #include <QCanBus>
@@ -89,7 +89,7 @@ private slots:
         QList<Family> families;
         for (const ConnectionSettings &s : links)
             families << s.family;
-        QCOMPARE(families.size(), 3);   // one bus per family
+        QCOMPARE(families.size(), 3); // one bus per family
         QVERIFY(families.contains(Family::ServoModbus));
         QVERIFY(families.contains(Family::ServoCan));
         QVERIFY(families.contains(Family::Shuoke));
@@ -110,8 +110,9 @@ private slots:
         w.show();
         DriveDirectory *dir = w.directory();
         QVERIFY(w.startDemo());
-        QVERIFY(waitFor(w.connections(), SIGNAL(finished(QString,bool)),
-                        [&] { return driveCount(dir) == 3 && !w.connections()->isBusy(); }, 20000));
+        QVERIFY(waitFor(
+            w.connections(), SIGNAL(finished(QString, bool)),
+            [&] { return driveCount(dir) == 3 && !w.connections()->isBusy(); }, 20000));
         const DriveContext current = w.workspace()->currentDrive();
         QCOMPARE(current.connectionId, connectionOf(dir, Family::ServoCan));
         QCOMPARE(current.address, DemoBench::Address);
@@ -127,10 +128,11 @@ private slots:
 
         QVERIFY(w.startDemo());
         QVERIFY(w.demo()->isRunning());
-        const int expected = 3;   // one drive of each family
+        const int expected = 3; // one drive of each family
         QCOMPARE(int(w.demo()->connections().size()), expected);
-        QVERIFY(waitFor(w.connections(), SIGNAL(finished(QString,bool)),
-                        [&] { return driveCount(dir) == expected && !w.connections()->isBusy(); }, 20000));
+        QVERIFY(waitFor(
+            w.connections(), SIGNAL(finished(QString, bool)),
+            [&] { return driveCount(dir) == expected && !w.connections()->isBusy(); }, 20000));
         QCOMPARE(int(dir->connections().size()), expected);
         QVERIFY(connectionOf(dir, Family::Shuoke));
         for (int id : dir->connections()) {
@@ -143,8 +145,9 @@ private slots:
         // Identities arrive (firmware of the simulated servo-modbus drive: 7051).
         const int modbus = connectionOf(dir, Family::ServoModbus);
         QVERIFY(modbus);
-        QVERIFY(waitFor(dir, SIGNAL(driveChanged(int,int)),
-                        [&] { return dir->info(modbus, 1).identity.firmware == QLatin1String("7051"); }, 5000));
+        QVERIFY(waitFor(
+            dir, SIGNAL(driveChanged(int, int)),
+            [&] { return dir->info(modbus, 1).identity.firmware == QLatin1String("7051"); }, 5000));
 
         // The trend tab samples the drive's channels while it is shown.
         w.busTree()->selectDrive(modbus, 1);
@@ -155,10 +158,13 @@ private slots:
                 trend = t;
         QVERIFY(trend);
         QVERIFY(trend->isActive());
-        QVERIFY(waitFor(dir, SIGNAL(driveChanged(int,int)), [&] {
-            const SampleBuffer *b = trend->recorder()->buffer(QStringLiteral("speed"));
-            return b && b->size() >= 3;
-        }, 5000));
+        QVERIFY(waitFor(
+            dir, SIGNAL(driveChanged(int, int)),
+            [&] {
+                const SampleBuffer *b = trend->recorder()->buffer(QStringLiteral("speed"));
+                return b && b->size() >= 3;
+            },
+            5000));
         // Not shown: no sampling (the link is shared).
         w.workspace()->setPreferredPanel(QStringLiteral("overview"));
         QVERIFY(!trend->isActive());
@@ -167,16 +173,19 @@ private slots:
         const int can = connectionOf(dir, Family::ServoCan);
         QVERIFY(can);
         bool moved = false;
-        w.hub()->run(can, 1, [](Drive &d) { return d.moveRelative(100000000, 300); },
-                     [&moved](const DriveResult &r) { moved = r.ok(); });
-        QVERIFY(waitFor(dir, SIGNAL(statusChanged(int,int,dd::DriveStatus)),
-                        [&] { return moved && dir->info(can, 1).status.running; }, 5000));
+        w.hub()->run(
+            can, 1, [](Drive &d) { return d.moveRelative(100000000, 300); },
+            [&moved](const DriveResult &r) { moved = r.ok(); });
+        QVERIFY(waitFor(
+            dir, SIGNAL(statusChanged(int, int, dd::DriveStatus)),
+            [&] { return moved && dir->info(can, 1).status.running; }, 5000));
         QSignalSpy traffic(w.hub(), &DriveHub::trafficRecorded);
         QSignalSpy stop(w.stopAction(), &QAction::triggered);
         QTest::keyClick(w.busTree(), Qt::Key_F12);
         QCOMPARE(stop.count(), 1);
-        QVERIFY(waitFor(dir, SIGNAL(statusChanged(int,int,dd::DriveStatus)),
-                        [&] { return !dir->info(can, 1).status.running; }, 2000));
+        QVERIFY(waitFor(
+            dir, SIGNAL(statusChanged(int, int, dd::DriveStatus)), [&] { return !dir->info(can, 1).status.running; },
+            2000));
         bool stopFrameSent = false;
         for (const QList<QVariant> &args : std::as_const(traffic))
             if (args.at(0).toInt() == can

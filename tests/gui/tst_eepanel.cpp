@@ -2,10 +2,10 @@
 // drive reports completion (legacy format, polled), a destructive operation that asks
 // first (cancel: nothing sent; yes: done), a drive without EE operations, and which tabs a
 // drive gets.
+#include "tests/gui/simdrivefixture.h"
+#include "ui/panels/ee/eepanel.h"
 #include "ui/workspace/drivepanel.h"
 #include "ui/workspace/drivepanels.h"
-#include "ui/panels/ee/eepanel.h"
-#include "tests/gui/simdrivefixture.h"
 
 #include <QApplication>
 #include <QLabel>
@@ -52,7 +52,7 @@ private slots:
     {
         SimDriveFixture fx;
         QVERIFY(fx.start([](SimServoModbusDrive *d) {
-            d->setFirmware(7000);        // the legacy format: started, then polled until done
+            d->setFirmware(7000); // the legacy format: started, then polled until done
             d->setEeBusyUs(400000);
             d->setParameter(10, 321);
         }));
@@ -68,7 +68,7 @@ private slots:
 
         QSignalSpy finished(&panel, &EePanel::operationFinished);
         fx.traffic.clear();
-        QTest::mouseClick(panel.button(EeOperation::Save), Qt::LeftButton);   // no question for EE-Set
+        QTest::mouseClick(panel.button(EeOperation::Save), Qt::LeftButton); // no question for EE-Set
         QVERIFY(panel.isBusy());
         auto *progress = panel.findChild<QProgressBar *>(QStringLiteral("eeProgress"));
         QVERIFY(progress->isVisible());
@@ -89,7 +89,7 @@ private slots:
         QVERIFY(panel.button(EeOperation::Save)->isEnabled());
         QCOMPARE(fx.drive()->eeOperationsCompleted(), 1);
         QCOMPARE(fx.drive()->eepromParameter(10), quint16(321));
-        QVERIFY(fx.sentWithFunction(0x06) >= 2);   // started and polled
+        QVERIFY(fx.sentWithFunction(0x06) >= 2); // started and polled
     }
 
     void destructiveOperationAsksFirst()

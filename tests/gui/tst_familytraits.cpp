@@ -1,9 +1,9 @@
 // The family table is the one source of what a front end knows of a family: for every
 // family in it, the GUI's connect dialog, the CLI and the simulator offer exactly the
 // family's traits (link kinds, framings, address ranges, scan bauds, defaults).
-#include "cli/cliglobals.h"
 #include "cli/clicommand.h"
 #include "cli/clicommands.h"
+#include "cli/cliglobals.h"
 #include "cli/cliparser.h"
 #include "cli/scancommand.h"
 #include "core/protocol/familytraits.h"
@@ -171,13 +171,19 @@ private slots:
             // --address: exactly the framing's range.
             for (int address : {f.addresses.first, f.addresses.last}) {
                 CliSetup ok;
-                loadCli(&ok, t.id(), kind, framing + QStringList{QStringLiteral("--address"), QString::number(address), QStringLiteral("info")});
+                loadCli(
+                    &ok, t.id(), kind,
+                    framing
+                        + QStringList{QStringLiteral("--address"), QString::number(address), QStringLiteral("info")});
                 QVERIFY2(ok.ok, qPrintable(ok.error));
                 QCOMPARE(ok.context.globals.address, address);
             }
             for (int address : {f.addresses.first - 1, f.addresses.last + 1}) {
                 CliSetup bad;
-                loadCli(&bad, t.id(), kind, framing + QStringList{QStringLiteral("--address"), QString::number(address), QStringLiteral("info")});
+                loadCli(
+                    &bad, t.id(), kind,
+                    framing
+                        + QStringList{QStringLiteral("--address"), QString::number(address), QStringLiteral("info")});
                 QVERIFY2(!bad.ok, qPrintable(QStringLiteral("%1 accepted").arg(address)));
                 QVERIFY2(bad.error.contains(QLatin1String("--address")), qPrintable(bad.error));
             }

@@ -4,12 +4,12 @@
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
 #include "core/drive/drivereply.h"
+#include "core/protocol/servocan/servocan.h"
+#include "tests/gui/simbenchthread.h"
 #include "ui/framemonitor/framemonitordock.h"
 #include "ui/framemonitor/framemonitorfilter.h"
 #include "ui/framemonitor/framemonitormodel.h"
 #include "ui/shell/mainwindow.h"
-#include "core/protocol/servocan/servocan.h"
-#include "tests/gui/simbenchthread.h"
 
 #include <QAction>
 #include <QCanBus>
@@ -92,10 +92,10 @@ private slots:
         QSignalSpy reset(&model, &QAbstractItemModel::modelReset);
         for (int i = 0; i < 300; ++i)
             model.addRecord(1, heartbeat(i));
-        QCOMPARE(model.rowCount(), 0);   // nothing per frame
+        QCOMPARE(model.rowCount(), 0); // nothing per frame
         QVERIFY(waitForFlush(model));
         QCOMPARE(model.rowCount(), 300);
-        QCOMPARE(inserted.count(), 1);   // one batch
+        QCOMPARE(inserted.count(), 1); // one batch
         QCOMPARE(model.row(299).meaning, QStringLiteral("#1 heartbeat: idle, position 299"));
 
         // 5000 more than fit: the newest 1000 stay, in order; still a single update.
@@ -115,7 +115,7 @@ private slots:
         QVERIFY(waitForFlush(model));
         QCOMPARE(model.rowCount(), 1000);
         QCOMPARE(removed.count(), 1);
-        QCOMPARE(removed.at(0).at(2).toInt(), 9);   // rows 0..9
+        QCOMPARE(removed.at(0).at(2).toInt(), 9); // rows 0..9
         QCOMPARE(model.row(989).meaning, QStringLiteral("#1 heartbeat: idle, position 5299"));
         QCOMPARE(model.row(999).meaning, QStringLiteral("#1 keep-alive"));
         QCOMPARE(model.data(model.index(999, FrameMonitorModel::DirectionColumn)).toString(), QStringLiteral("TX"));
@@ -148,7 +148,7 @@ private slots:
 
     void unknownConnectionIsNotGuessed()
     {
-        FrameMonitorModel model;   // no hub, nothing said about connection 7
+        FrameMonitorModel model; // no hub, nothing said about connection 7
         model.addRecord(7, heartbeat(1));
         model.flush();
         QCOMPARE(model.row(0).meaning, QStringLiteral("?"));
@@ -176,11 +176,11 @@ private slots:
         FrameMonitorFilter filter;
         filter.setFrameModel(&model);
         QCOMPARE(filter.rowCount(), 11);
-        filter.setText(QStringLiteral("KEEP-alive"));   // meaning, any case
+        filter.setText(QStringLiteral("KEEP-alive")); // meaning, any case
         QCOMPARE(filter.rowCount(), 5);
-        filter.setText(QStringLiteral("01 10 88"));      // hex with spaces
+        filter.setText(QStringLiteral("01 10 88")); // hex with spaces
         QCOMPARE(filter.rowCount(), 6);
-        filter.setText(QStringLiteral("011088"));        // hex without
+        filter.setText(QStringLiteral("011088")); // hex without
         QCOMPARE(filter.rowCount(), 6);
         filter.setText(QStringLiteral("position 777"));
         QCOMPARE(filter.rowCount(), 1);
@@ -208,7 +208,7 @@ private slots:
     {
         SimBenchThread sim;
         SimBenchOptions o;
-        o.family = Family::Shuoke;   // RTU on a pty
+        o.family = Family::Shuoke; // RTU on a pty
         QVERIFY(!sim.start(o));
         DriveHub hub;
         FrameMonitorModel model;
@@ -217,14 +217,18 @@ private slots:
         hub.openConnection(sim.clientSettings(), [&](int newId, const Error &) { id = newId; });
         QVERIFY(waitUntil([&] { return id > 0; }, 5000));
         int finished = 0;
-        hub.run(id, 1, [](Drive &d) { return d.jog(-500); }, [&](const DriveResult &) { ++finished; });
-        hub.run(id, 1, [](Drive &d) { return d.stop(false); }, [&](const DriveResult &) { ++finished; });
+        hub.run(
+            id, 1, [](Drive &d) { return d.jog(-500); }, [&](const DriveResult &) { ++finished; });
+        hub.run(
+            id, 1, [](Drive &d) { return d.stop(false); }, [&](const DriveResult &) { ++finished; });
         QVERIFY(waitUntil([&] { return finished == 2 && model.rowCount() >= 4; }, 5000));
         QStringList meanings;
         for (int i = 0; i < model.rowCount(); ++i)
             meanings << model.row(i).record.directionText() + QLatin1Char(' ') + model.row(i).meaning;
-        QVERIFY2(meanings.contains(QStringLiteral("TX #1 Run at constant speed (signed) -500")), qPrintable(meanings.join('\n')));
-        QVERIFY2(meanings.contains(QStringLiteral("RX #1 Run at constant speed (signed): OK")), qPrintable(meanings.join('\n')));
+        QVERIFY2(meanings.contains(QStringLiteral("TX #1 Run at constant speed (signed) -500")),
+                 qPrintable(meanings.join('\n')));
+        QVERIFY2(meanings.contains(QStringLiteral("RX #1 Run at constant speed (signed): OK")),
+                 qPrintable(meanings.join('\n')));
         QVERIFY2(meanings.contains(QStringLiteral("TX #1 Decelerate to stop")), qPrintable(meanings.join('\n')));
         QVERIFY(!meanings.join('\n').contains(QLatin1String("?")));
     }
@@ -245,7 +249,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         auto *dock = w.findChild<FrameMonitorDock *>(QStringLiteral("frameMonitorDock"));
         QVERIFY(dock);
-        QVERIFY(!dock->isVisible());   // View → Frame monitor
+        QVERIFY(!dock->isVisible()); // View → Frame monitor
         QVERIFY(w.viewMenu()->actions().contains(dock->toggleViewAction()));
         QCOMPARE(dock->toggleViewAction()->text(), QStringLiteral("Frame monitor"));
         dock->toggleViewAction()->trigger();
@@ -263,12 +267,16 @@ private slots:
             return false;
         };
         // Heartbeats from the drive, keep-alives from DriveDesk.
-        QVERIFY(waitUntil([&] { return has(QStringLiteral("#1 heartbeat: idle, position 0"), "RX")
-                                       && has(QStringLiteral("#1 keep-alive"), "TX"); }, 5000));
+        QVERIFY(waitUntil(
+            [&] {
+                return has(QStringLiteral("#1 heartbeat: idle, position 0"), "RX")
+                    && has(QStringLiteral("#1 keep-alive"), "TX");
+            },
+            5000));
         // A read and its answer, described as a pair.
         bool done = false;
-        w.hub()->run(id, 1, [](Drive &d) { return d.readParameters({75}); },
-                     [&](const DriveResult &) { done = true; });
+        w.hub()->run(
+            id, 1, [](Drive &d) { return d.readParameters({75}); }, [&](const DriveResult &) { done = true; });
         QVERIFY(waitUntil([&] { return done && has(QStringLiteral("#1 P75 = 1"), "RX"); }, 5000));
         QVERIFY(has(QStringLiteral("#1 read P75"), "TX"));
 
@@ -278,15 +286,20 @@ private slots:
         QCOMPARE(dock->filter()->text(), QStringLiteral("P75"));
         QVERIFY(dock->filter()->rowCount() >= 2);
         for (int i = 0; i < dock->filter()->rowCount(); ++i)
-            QVERIFY(dock->filter()->index(i, FrameMonitorModel::MeaningColumn).data().toString().contains(QLatin1String("P75")));
+            QVERIFY(dock->filter()
+                        ->index(i, FrameMonitorModel::MeaningColumn)
+                        .data()
+                        .toString()
+                        .contains(QLatin1String("P75")));
         auto *direction = dock->findChild<QComboBox *>(QStringLiteral("frameFilterDirection"));
-        direction->setCurrentIndex(3);   // RX only
+        direction->setCurrentIndex(3); // RX only
         QCOMPARE(dock->filter()->directions(), FrameMonitorFilter::Directions(FrameMonitorFilter::Rx));
         QVERIFY(dock->filter()->rowCount() >= 1);
         for (int i = 0; i < dock->filter()->rowCount(); ++i)
-            QCOMPARE(dock->filter()->index(i, FrameMonitorModel::DirectionColumn).data().toString(), QStringLiteral("RX"));
+            QCOMPARE(dock->filter()->index(i, FrameMonitorModel::DirectionColumn).data().toString(),
+                     QStringLiteral("RX"));
         auto *link = dock->findChild<QComboBox *>(QStringLiteral("frameFilterLink"));
-        QCOMPARE(link->count(), 2);   // All links + this one
+        QCOMPARE(link->count(), 2); // All links + this one
         QCOMPARE(link->itemText(1), sim.clientSettings().can);
 
         // Save: what is shown.

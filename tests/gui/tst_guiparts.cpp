@@ -1,16 +1,16 @@
 // The pieces behind the main window, fed by hand (no drives needed): the bus tree follows
 // the DriveDirectory, the workspace makes one set of tabs per drive and keeps the tab, the
 // status bar counts frames, errors and retries, and the small helpers.
-#include "ui/bus/bustreewidget.h"
-#include "ui/common/displaytext.h"
 #include "core/drive/drivehub.h"
+#include "ui/bus/bustreewidget.h"
 #include "ui/bus/drivedirectory.h"
+#include "ui/bus/etaestimator.h"
+#include "ui/bus/scanprogresswidget.h"
+#include "ui/common/displaytext.h"
+#include "ui/panels/overview/overviewpanel.h"
+#include "ui/shell/statusbarwidget.h"
 #include "ui/workspace/drivepanel.h"
 #include "ui/workspace/driveworkspace.h"
-#include "ui/bus/etaestimator.h"
-#include "ui/panels/overview/overviewpanel.h"
-#include "ui/bus/scanprogresswidget.h"
-#include "ui/shell/statusbarwidget.h"
 
 #include <QLabel>
 #include <QPushButton>
@@ -62,7 +62,7 @@ private slots:
         dir.addDrive(7, discovered(Family::ServoModbus, 5, QStringLiteral("V2.1")));
         dir.addDrive(7, discovered(Family::ServoModbus, 2, QStringLiteral("V2.0")));
         QCOMPARE(c->childCount(), 2);
-        QCOMPARE(c->child(0)->data(0, BusTreeWidget::AddressRole).toInt(), 2);   // address order
+        QCOMPARE(c->child(0)->data(0, BusTreeWidget::AddressRole).toInt(), 2); // address order
         QTreeWidgetItem *d = tree.driveItem(7, 5);
         QVERIFY(d);
         QCOMPARE(d->text(BusTreeWidget::FirmwareColumn), QStringLiteral("V2.1"));
@@ -131,9 +131,9 @@ private slots:
         ws.showDrive(1, 2);
         QTabWidget *t2 = ws.tabsFor(1, 2);
         QVERIFY(t2 && t2 != t1);
-        QVERIFY(!overview->isActive());   // only the shown drive's panel polls
+        QVERIFY(!overview->isActive()); // only the shown drive's panel polls
         ws.showDrive(1, 1);
-        QCOMPARE(ws.tabsFor(1, 1), t1);   // the same panels: their state is kept
+        QCOMPARE(ws.tabsFor(1, 1), t1); // the same panels: their state is kept
         QVERIFY(overview->isActive());
 
         // Status reaches the panels of that drive.
@@ -169,7 +169,7 @@ private slots:
         QCOMPARE(bar.retryCount(), quint64(1));
         QCOMPARE(bar.errorCount(), quint64(1));
         bar.countError(Error{ErrorCode::Timeout, QStringLiteral("No reply")});
-        bar.countError(Error{ErrorCode::Cancelled, QStringLiteral("cancelled")});   // not an error
+        bar.countError(Error{ErrorCode::Cancelled, QStringLiteral("cancelled")}); // not an error
         QCOMPARE(bar.errorCount(), quint64(2));
         QCOMPARE(bar.currentMessage(), QStringLiteral("No reply"));
         auto *errors = bar.findChild<QLabel *>(QStringLiteral("errorCount"));
@@ -199,7 +199,7 @@ private slots:
         QCOMPARE(eta.remainingMs(), qint64(-1));
         eta.setElapsedForTest(2000);
         eta.update(10, 50);
-        QCOMPARE(eta.remainingMs(), qint64(8000));   // 200 ms a step, 40 steps left
+        QCOMPARE(eta.remainingMs(), qint64(8000)); // 200 ms a step, 40 steps left
         eta.update(50, 50);
         QCOMPARE(eta.remainingMs(), qint64(0));
         QCOMPARE(EtaEstimator::format(8000), QStringLiteral("about 8 s"));

@@ -1,20 +1,20 @@
 // The main window: construction, the STOP button and its shortcuts, live language switch,
 // recent files, saved layout. Offscreen, with settings in a temporary directory.
 #include "ui/bus/bustreewidget.h"
-#include "ui/workspace/driveworkspace.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/mainwindow.h"
 #include "ui/shell/recentfiles.h"
 #include "ui/shell/stopaction.h"
+#include "ui/workspace/driveworkspace.h"
 
 #include <QApplication>
 #include <QDockWidget>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
-#include <QStatusBar>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
@@ -62,7 +62,7 @@ private slots:
     void stopButtonIsAlwaysVisible()
     {
         MainWindow w;
-        w.resize(320, 400);   // narrow: other tool buttons may be cut, STOP may not
+        w.resize(320, 400); // narrow: other tool buttons may be cut, STOP may not
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         auto *button = w.findChild<QToolButton *>(QStringLiteral("stopButton"));
@@ -74,7 +74,7 @@ private slots:
         QVERIFY(bar);
         QCOMPARE(bar->actions().first(), static_cast<QAction *>(w.stopAction()));
         QVERIFY(!bar->isMovable());
-        QVERIFY(!bar->toggleViewAction()->isVisible());   // cannot be hidden from a menu
+        QVERIFY(!bar->toggleViewAction()->isVisible()); // cannot be hidden from a menu
         // The tooltip names the shortcuts.
         QVERIFY2(button->toolTip().contains(QLatin1String("Esc")), qPrintable(button->toolTip()));
         QVERIFY2(button->toolTip().contains(QLatin1String("F12")), qPrintable(button->toolTip()));
@@ -112,7 +112,7 @@ private slots:
 
         QVERIFY(w.languageManager()->apply(LanguageManager::Language::Chinese));
         QVERIFY(w.languageManager()->appTranslationLoaded());
-        QCoreApplication::sendPostedEvents();   // LanguageChange is posted to top-level widgets
+        QCoreApplication::sendPostedEvents(); // LanguageChange is posted to top-level widgets
         QCOMPARE(w.fileMenu()->title(), QStringLiteral("文件(&F)"));
         QCOMPARE(menuTitles(w).at(2), QStringLiteral("语言(&L)"));
         QCOMPARE(w.stopAction()->text(), QStringLiteral("停止"));
@@ -146,7 +146,7 @@ private slots:
             QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QStringLiteral("zh_CN"));
         }
         {
-            MainWindow w;   // a new window starts in the remembered language
+            MainWindow w; // a new window starts in the remembered language
             QCoreApplication::sendPostedEvents();
             QCOMPARE(w.fileMenu()->title(), QStringLiteral("文件(&F)"));
             w.languageManager()->apply(LanguageManager::Language::English);

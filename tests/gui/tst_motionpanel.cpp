@@ -3,15 +3,15 @@
 // window whose lease is not renewed, a disconnect → stop), capability-based enabling, and
 // the Chinese texts of the new panels.
 #include "core/drive/drivehub.h"
-#include "ui/bus/drivedirectory.h"
-#include "ui/workspace/driveworkspace.h"
-#include "ui/panels/motion/jogbutton.h"
-#include "ui/shell/languagemanager.h"
-#include "ui/panels/alarms/alarmspanel.h"
-#include "ui/framemonitor/framemonitordock.h"
-#include "ui/panels/motion/motionpanel.h"
 #include "core/protocol/servocan/servocan.h"
 #include "tests/gui/panelrig.h"
+#include "ui/bus/drivedirectory.h"
+#include "ui/framemonitor/framemonitordock.h"
+#include "ui/panels/alarms/alarmspanel.h"
+#include "ui/panels/motion/jogbutton.h"
+#include "ui/panels/motion/motionpanel.h"
+#include "ui/shell/languagemanager.h"
+#include "ui/workspace/driveworkspace.h"
 
 #include <QApplication>
 #include <QCanBus>
@@ -34,8 +34,8 @@ namespace {
 struct SimFrames
 {
     QElapsedTimer clock;
-    std::atomic<qint64> stopAtMs{-1};   // first stop (0x26 / 0x28)
-    std::atomic<int> jogs{0};           // speed-mode commands (0x20)
+    std::atomic<qint64> stopAtMs{-1}; // first stop (0x26 / 0x28)
+    std::atomic<int> jogs{0};         // speed-mode commands (0x20)
 };
 
 // A servo-can (or servo-modbus) bench with the drive's Motion tab shown.
@@ -81,7 +81,7 @@ struct Rig : PanelRig
             return d ? d->motor().targetSpeed() : 0.0;
         });
     }
-    bool turning() { return motorSpeed() > 1000.0; }   // counts/s; 100 r/min = 16667
+    bool turning() { return motorSpeed() > 1000.0; } // counts/s; 100 r/min = 16667
     bool atRest() { return motorTarget() == 0.0 && qAbs(motorSpeed()) < 1.0; }
 };
 
@@ -124,7 +124,7 @@ private slots:
         FrameMonitorDock frames(nullptr);
         LanguageManager language;
         QVERIFY(language.apply(LanguageManager::Language::Chinese));
-        QCoreApplication::sendPostedEvents();   // LanguageChange is posted to top-level widgets
+        QCoreApplication::sendPostedEvents(); // LanguageChange is posted to top-level widgets
         QCOMPARE(motion.title(), QStringLiteral("运动"));
         QCOMPARE(motion.jogPositive()->text(), QStringLiteral("正向点动 ▶"));
         QCOMPARE(motion.findChild<QSpinBox *>(QStringLiteral("jogSpeed"))->suffix(), QStringLiteral(" 脉冲/秒"));
@@ -142,9 +142,8 @@ private slots:
         QString why;
         QVERIFY2(rig.start(servoCanBench(), &why), qPrintable(why));
         MotionPanel *p = rig.panel;
-        for (const char *name : {"jogPlus", "jogMinus", "jogSpeed", "enableButton", "disableButton",
-                                 "moveButton", "moveRelative", "moveAbsolute", "setPositionButton",
-                                 "stopDriveButton"}) {
+        for (const char *name : {"jogPlus", "jogMinus", "jogSpeed", "enableButton", "disableButton", "moveButton",
+                                 "moveRelative", "moveAbsolute", "setPositionButton", "stopDriveButton"}) {
             auto *w = p->findChild<QWidget *>(QLatin1String(name));
             QVERIFY2(w, name);
             QVERIFY2(w->isEnabled(), name);
@@ -176,7 +175,7 @@ private slots:
         QVERIFY(jog->isHolding());
         QVERIFY(jog->isDown());
         QVERIFY2(waitUntil([&] { return rig.turning(); }, 2000), "the motor does not turn");
-        QVERIFY(rig.motorTarget() > 0);   // + button: positive
+        QVERIFY(rig.motorTarget() > 0); // + button: positive
         // Held for well over the 300 ms lease: the renewals keep it going.
         waitUntil([] { return false; }, 800);
         QVERIFY(jog->isHolding());
@@ -279,7 +278,7 @@ private slots:
         QSignalSpy errors(rig.panel, &DrivePanel::errorOccurred);
         QTest::mousePress(jog, Qt::LeftButton);
         QVERIFY(waitUntil([&] { return rig.turning(); }, 2000));
-        waitUntil([] { return false; }, 200);   // renewals running
+        waitUntil([] { return false; }, 200); // renewals running
         QCOMPARE(rig.stopAt(), qint64(-1));
 
         // The GUI thread hangs: no renewal reaches the I/O thread, which stops the axis by
@@ -336,7 +335,7 @@ private slots:
         QSignalSpy errors(rig.panel, &DrivePanel::errorOccurred);
         QTest::mousePress(jog, Qt::LeftButton);
         QVERIFY(waitUntil([&] { return rig.turning(); }, 2000));
-        waitUntil([] { return false; }, 200);   // the jog confirmed by a heartbeat, renewals running
+        waitUntil([] { return false; }, 200); // the jog confirmed by a heartbeat, renewals running
         QVERIFY(jog->isHolding());
         rig.sim.call([&rig] { rig.sim.bench()->setSilent(true); });
         QVERIFY2(waitUntil([&] { return !jog->isHolding(); }, 1500), "the hold must end");
@@ -354,12 +353,12 @@ private slots:
     {
         Rig rig;
         SimBenchOptions o;
-        o.family = Family::Shuoke;   // RTU on a pty, an M6505
+        o.family = Family::Shuoke; // RTU on a pty, an M6505
         QString why;
         QVERIFY2(rig.start(o, &why), qPrintable(why));
         MotionPanel *p = rig.panel;
-        for (const char *name : {"jogPlus", "jogMinus", "jogSpeed", "moveButton", "setPositionButton",
-                                 "stopDriveButton", "homeButton"}) {
+        for (const char *name :
+             {"jogPlus", "jogMinus", "jogSpeed", "moveButton", "setPositionButton", "stopDriveButton", "homeButton"}) {
             auto *w = p->findChild<QWidget *>(QLatin1String(name));
             QVERIFY2(w && w->isEnabled(), name);
         }
@@ -385,8 +384,8 @@ private slots:
         MotionPanel *p = rig.panel;
         const QString reason = p->driveInfo().reason(Capability::Jog);
         QVERIFY(!reason.isEmpty());
-        for (const char *name : {"jogPlus", "jogMinus", "jogSpeed", "enableButton", "disableButton",
-                                 "moveButton", "homeButton", "setPositionButton", "stopDriveButton"}) {
+        for (const char *name : {"jogPlus", "jogMinus", "jogSpeed", "enableButton", "disableButton", "moveButton",
+                                 "homeButton", "setPositionButton", "stopDriveButton"}) {
             auto *w = p->findChild<QWidget *>(QLatin1String(name));
             QVERIFY2(w, name);
             QVERIFY2(!w->isEnabled(), name);

@@ -2,13 +2,13 @@
 // (the simulated drive's value changes, the row is verified), refused values (nothing is
 // sent), undo/redo, search; the table model alone for write-only parameters (shuoke
 // dictionary) and names in the UI language.
-#include "ui/panels/backup/backuppanel.h"
-#include "ui/panels/ee/eepanel.h"
-#include "ui/shell/languagemanager.h"
-#include "ui/panels/parameters/parameterspanel.h"
-#include "ui/panels/parameters/parametertablemodel.h"
 #include "core/params/parameterdictionary.h"
 #include "tests/gui/simdrivefixture.h"
+#include "ui/panels/backup/backuppanel.h"
+#include "ui/panels/ee/eepanel.h"
+#include "ui/panels/parameters/parameterspanel.h"
+#include "ui/panels/parameters/parametertablemodel.h"
+#include "ui/shell/languagemanager.h"
 
 #include <QApplication>
 #include <QLabel>
@@ -175,7 +175,8 @@ private slots:
         QVERIFY(panel.message().contains(QLatin1String("Nothing was sent")));
         QVERIFY(editor->toolTip().contains(QLatin1String("0 to 255")));
         QTest::keyClick(editor, Qt::Key_Escape);
-        QVERIFY(QTest::qWaitFor([&] { return !panel.view()->findChild<QLineEdit *>(QStringLiteral("parameterValueEditor")); }, 2000));
+        QVERIFY(QTest::qWaitFor(
+            [&] { return !panel.view()->findChild<QLineEdit *>(QStringLiteral("parameterValueEditor")); }, 2000));
         QVERIFY(!panel.model()->editedValue(51));
         QCOMPARE(cell(panel, 51, ParameterTableModel::Value), QString::number(address));
 
@@ -253,7 +254,7 @@ private slots:
 
     void searchFilters()
     {
-        ParametersPanel panel(DriveContext{});   // no drive needed: the bundled dictionary
+        ParametersPanel panel(DriveContext{}); // no drive needed: the bundled dictionary
         auto *search = panel.findChild<QLineEdit *>(QStringLiteral("parameterSearch"));
         QVERIFY(search);
         const int all = panel.model()->rowCount();
@@ -265,11 +266,11 @@ private slots:
         QCOMPARE(panel.proxy()->index(0, 0).data(ParameterTableModel::ParameterIndexRole).toInt(), 51);
 
         search->clear();
-        QTest::keyClicks(search, QStringLiteral("address"));   // by name
+        QTest::keyClicks(search, QStringLiteral("address")); // by name
         QCOMPARE(panel.proxy()->rowCount(), 1);
         search->setText(ParameterDictionary::bundled(Family::ServoModbus).byIndex(51)->name.chinese());
-        QCOMPARE(panel.proxy()->rowCount(), 1);                 // by the Chinese name too
-        search->setText(QStringLiteral("59"));                   // by index
+        QCOMPARE(panel.proxy()->rowCount(), 1); // by the Chinese name too
+        search->setText(QStringLiteral("59"));  // by index
         QCOMPARE(panel.proxy()->rowCount(), 1);
         QCOMPARE(panel.proxy()->index(0, 0).data(ParameterTableModel::ParameterIndexRole).toInt(), 59);
         search->setText(QStringLiteral("no such parameter"));
@@ -313,7 +314,9 @@ private slots:
         QVERIFY(model.isChanged(skip->index));
 
         // A failed write keeps the edit and says why; one that was never reached says so.
-        const int start = shuoke->byKey(QStringLiteral("start-speed")) ? shuoke->byKey(QStringLiteral("start-speed"))->index : -1;
+        const int start = shuoke->byKey(QStringLiteral("start-speed"))
+            ? shuoke->byKey(QStringLiteral("start-speed"))->index
+            : -1;
         QVERIFY(start >= 0);
         const int startRow = model.rowOf(start);
         QVERIFY(model.setData(model.index(startRow, ParameterTableModel::Value),
@@ -324,7 +327,8 @@ private slots:
         model.applyWriteResults({failed}, {start, skip->index});
         QCOMPARE(model.writeState(start), ParameterTableModel::WriteState::Failed);
         QVERIFY(model.isChanged(start));
-        QCOMPARE(model.index(startRow, ParameterTableModel::State).data().toString(), QStringLiteral("failed: timeout"));
+        QCOMPARE(model.index(startRow, ParameterTableModel::State).data().toString(),
+                 QStringLiteral("failed: timeout"));
         QCOMPARE(model.writeState(skip->index), ParameterTableModel::WriteState::NotAttempted);
     }
 
@@ -333,7 +337,8 @@ private slots:
         SimDriveFixture fx;
         QVERIFY(fx.startShuoke());
         const QString model = fx.info.identity.model;
-        const ParameterInfo *encoder = ParameterDictionary::bundled(Family::Shuoke).byKey(QStringLiteral("encoder-direction"));
+        const ParameterInfo *encoder = ParameterDictionary::bundled(Family::Shuoke)
+                                           .byKey(QStringLiteral("encoder-direction"));
         QVERIFY(encoder);
         if (!encoder->models.contains(model))
             QSKIP("the simulated drive's model has no encoder-direction setting");
@@ -397,15 +402,17 @@ private slots:
 
         LanguageManager languages;
         QVERIFY(languages.apply(LanguageManager::Language::Chinese));
-        QCoreApplication::sendPostedEvents();   // LanguageChange is posted to top-level widgets
+        QCoreApplication::sendPostedEvents(); // LanguageChange is posted to top-level widgets
         QCOMPARE(read->text(), QStringLiteral("全部读取"));
         QCOMPARE(panel.title(), QStringLiteral("参数"));
-        QCOMPARE(panel.model()->headerData(ParameterTableModel::Name, Qt::Horizontal).toString(), QStringLiteral("名称"));
-        QCOMPARE(name.data().toString(),
-                 ParameterDictionary::bundled(Family::ServoModbus).byIndex(51)->name.chinese());
+        QCOMPARE(panel.model()->headerData(ParameterTableModel::Name, Qt::Horizontal).toString(),
+                 QStringLiteral("名称"));
+        QCOMPARE(name.data().toString(), ParameterDictionary::bundled(Family::ServoModbus).byIndex(51)->name.chinese());
         QCOMPARE(backup.title(), QStringLiteral("备份"));
-        QCOMPARE(backup.findChild<QPushButton *>(QStringLiteral("saveBackupButton"))->text(), QStringLiteral("保存备份…"));
-        QVERIFY(ee.findChild<QLabel *>(QStringLiteral("eeUnavailableReason"))->text().contains(QStringLiteral("驱动器")));
+        QCOMPARE(backup.findChild<QPushButton *>(QStringLiteral("saveBackupButton"))->text(),
+                 QStringLiteral("保存备份…"));
+        QVERIFY(
+            ee.findChild<QLabel *>(QStringLiteral("eeUnavailableReason"))->text().contains(QStringLiteral("驱动器")));
 
         QVERIFY(languages.apply(LanguageManager::Language::English));
         QCoreApplication::sendPostedEvents();

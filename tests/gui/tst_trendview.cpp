@@ -154,7 +154,7 @@ private slots:
         feed(*m_rec, 40000, 5000);
         m_view->refreshNow();
         QCOMPARE(m_rec->buffer(Speed)->size(), 45000); // still recording
-        QCOMPARE(axisX(*m_view)->max(), 39.999);         // view frozen
+        QCOMPARE(axisX(*m_view)->max(), 39.999);       // view frozen
         QVERIFY(m_view->series(Speed)->points().last().x() <= 40.0);
 
         m_view->controls()->pauseButton()->click();
@@ -169,8 +169,8 @@ private slots:
         QValueAxis *x = axisX(*m_view);
         const double span = x->max() - x->min();
         const QRectF plot = m_view->chart()->plotArea();
-        m_view->chart()->zoomIn(QRectF(plot.left() + plot.width() * 0.25, plot.top(),
-                                       plot.width() * 0.1, plot.height()));
+        m_view->chart()->zoomIn(
+            QRectF(plot.left() + plot.width() * 0.25, plot.top(), plot.width() * 0.1, plot.height()));
         QVERIFY(m_view->isZoomed());
         QVERIFY(m_rec->isPaused());
         m_view->refreshNow();
@@ -236,9 +236,9 @@ private slots:
         QTest::mouseMove(m_view->chartView()->viewport(), pos);
         const QString text = m_view->cursorReadout();
         QVERIFY2(text.contains(QStringLiteral("t = ")), qPrintable(text));
-        QVERIFY2(text.contains(QStringLiteral("Bus voltage: ") + QLocale().toString(311.5, 'f', 1)
-                               + QStringLiteral(" V")),
-                 qPrintable(text));
+        QVERIFY2(
+            text.contains(QStringLiteral("Bus voltage: ") + QLocale().toString(311.5, 'f', 1) + QStringLiteral(" V")),
+            qPrintable(text));
         QVERIFY(text.contains(QStringLiteral("Speed: ")));
         // t at the middle of the [0, 30] s window, to a pixel.
         const double t = QLocale().toDouble(text.section(QStringLiteral("t = "), 1).section(QLatin1Char(' '), 0, 0));
@@ -330,8 +330,8 @@ private slots:
     void followsChannelChanges()
     {
         makeView(1000);
-        m_rec->addChannel({QStringLiteral("position-error"), QStringLiteral("Position error"),
-                           QStringLiteral("pulse"), 0});
+        m_rec->addChannel(
+            {QStringLiteral("position-error"), QStringLiteral("Position error"), QStringLiteral("pulse"), 0});
         QVERIFY(m_view->series(QStringLiteral("position-error")));
         QCOMPARE(m_view->chart()->series().size(), 5);
         m_rec->setChannels(fourChannels().mid(0, 2));

@@ -69,7 +69,8 @@ inline BackupOutcome backupToFile(Drive *drive, const QString &path, int hangMs 
     QElapsedTimer t;
     t.start();
     ParameterTransfer transfer(drive);
-    out.finished = runTransfer(transfer, [&] { transfer.backup(); }, hangMs, &out.error);
+    out.finished = runTransfer(
+        transfer, [&] { transfer.backup(); }, hangMs, &out.error);
     out.elapsedMs = t.elapsed();
     if (!out.finished) {
         out.error = {ErrorCode::Timeout, QStringLiteral("the backup hangs")};
@@ -98,7 +99,8 @@ inline RestoreOutcome restoreFrom(Drive *drive, const BackupFile &file, int hang
     QElapsedTimer t;
     t.start();
     ParameterTransfer transfer(drive);
-    out.finished = runTransfer(transfer, [&] { transfer.restore(file, RestoreOptions()); }, hangMs, &out.error);
+    out.finished = runTransfer(
+        transfer, [&] { transfer.restore(file, RestoreOptions()); }, hangMs, &out.error);
     out.elapsedMs = t.elapsed();
     out.report = transfer.report();
     if (!out.finished)
@@ -127,18 +129,21 @@ inline bool isClearError(const Error &e)
 // readBackFailed: refused, or never sent) only when it still holds the old one;
 // "readBackFailed" (no answer: unknown) either; every unverified one says why. Returns an
 // empty string when the report is honest, else what is wrong.
-inline QString dishonesty(const QList<ParameterWriteResult> &results,
-                          const std::function<qint64(int index)> &actual,
+inline QString dishonesty(const QList<ParameterWriteResult> &results, const std::function<qint64(int index)> &actual,
                           const std::function<qint64(int index)> &old)
 {
     for (const ParameterWriteResult &r : results) {
         const qint64 now = actual(r.index);
         if (r.verified && now != r.requested)
             return QStringLiteral("P%1 reported verified but the drive holds %2, not %3")
-                .arg(r.index).arg(now).arg(r.requested);
+                .arg(r.index)
+                .arg(now)
+                .arg(r.requested);
         if (!r.written && !r.readBackFailed && now != old(r.index))
             return QStringLiteral("P%1 reported not written but the drive holds %2 (was %3)")
-                .arg(r.index).arg(now).arg(old(r.index));
+                .arg(r.index)
+                .arg(now)
+                .arg(old(r.index));
         if (!r.verified && r.error.isEmpty())
             return QStringLiteral("P%1 not verified without a reason").arg(r.index);
     }

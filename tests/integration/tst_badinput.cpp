@@ -12,14 +12,14 @@
 #include "core/drive/servocan/servocandrive.h"
 #include "core/drive/servocan/servocanstationtracker.h"
 #include "core/drive/servomodbus/servomodbusbackend.h"
-#include "tests/integration/faultcheck.h"
 #include "core/link/traffictap.h"
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simcanbus.h"
 #include "sim/bus/simserialbus.h"
+#include "sim/bus/virtualcanhub.h"
 #include "sim/servocan/simservocandrive.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
-#include "sim/bus/virtualcanhub.h"
+#include "tests/integration/faultcheck.h"
 
 #include <limits>
 #include <memory>
@@ -61,9 +61,8 @@ QString runCases(Drive &d, const QList<Case> &cases)
 
 int txCount(const QList<TrafficRecord> &records)
 {
-    return int(std::count_if(records.begin(), records.end(), [](const TrafficRecord &r) {
-        return r.direction == TrafficRecord::Direction::Tx;
-    }));
+    return int(std::count_if(records.begin(), records.end(),
+                             [](const TrafficRecord &r) { return r.direction == TrafficRecord::Direction::Tx; }));
 }
 
 } // namespace
@@ -112,8 +111,16 @@ void TestBadInput::servoModbus()
         {"read-only", write({{2, 7000}}), ErrorCode::NotSupported, "PA2"},
         {"twice", write({{5, 1}, {5, 2}}), ErrorCode::InvalidArgument, "PA5"},
         {"good then bad", write({{12, 1}, {13, 99999}}), ErrorCode::OutOfRange, "PA13"},
-        {"read 60", [](Drive &d) { return d.readParameters({1, 60}); }, ErrorCode::InvalidArgument, "PA60"},
-        {"channel", [](Drive &d) { return d.readChannels({"speed", "warp"}); }, ErrorCode::InvalidArgument, "warp"},
+        {"read 60",
+         [](Drive &d) {
+             return d.readParameters({1, 60});
+         },
+         ErrorCode::InvalidArgument, "PA60"},
+        {"channel",
+         [](Drive &d) {
+             return d.readChannels({"speed", "warp"});
+         },
+         ErrorCode::InvalidArgument, "warp"},
         {"ee 9", [](Drive &d) { return d.eeOperation(static_cast<EeOperation>(9)); }, ErrorCode::InvalidArgument, "EE"},
         {"jog", [](Drive &d) { return d.jog(100); }, ErrorCode::NotSupported, "servo-modbus"},
     };
@@ -159,11 +166,20 @@ void TestBadInput::servoCan()
         {"station range", write({{75, 150}}), ErrorCode::OutOfRange, "150"},
         {"twice", write({{10, 1}, {10, 2}}), ErrorCode::InvalidArgument, "P10"},
         {"good then bad", write({{12, 1}, {13, 99999}}), ErrorCode::OutOfRange, "P13"},
-        {"read 220", [](Drive &d) { return d.readParameters({1, 220}); }, ErrorCode::InvalidArgument, "220"},
-        {"channel", [](Drive &d) { return d.readChannels({"speed", "warp"}); }, ErrorCode::InvalidArgument, "warp"},
+        {"read 220",
+         [](Drive &d) {
+             return d.readParameters({1, 220});
+         },
+         ErrorCode::InvalidArgument, "220"},
+        {"channel",
+         [](Drive &d) {
+             return d.readChannels({"speed", "warp"});
+         },
+         ErrorCode::InvalidArgument, "warp"},
         {"move far", [far](Drive &d) { return d.moveRelative(far, 100); }, ErrorCode::OutOfRange, QString::number(far)},
         {"move speed 0", [](Drive &d) { return d.moveRelative(100, 0); }, ErrorCode::InvalidArgument, "speed"},
-        {"target far", [far](Drive &d) { return d.moveAbsolute(-far, 100); }, ErrorCode::OutOfRange, QString::number(-far)},
+        {"target far", [far](Drive &d) { return d.moveAbsolute(-far, 100); }, ErrorCode::OutOfRange,
+         QString::number(-far)},
         {"position far", [far](Drive &d) { return d.setPosition(far); }, ErrorCode::OutOfRange, QString::number(far)},
         {"home", [](Drive &d) { return d.home(true); }, ErrorCode::NotSupported, "homing"},
         {"ee", [](Drive &d) { return d.eeOperation(EeOperation::Save); }, ErrorCode::NotSupported, "EEPROM"},

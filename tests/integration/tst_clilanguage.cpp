@@ -65,8 +65,8 @@ void TestCliLanguage::helpWithLang()
         const CliRun r = runCli(a);
         QCOMPARE(r.exitCode, 0);
         const QString text = QString::fromUtf8(r.out);
-        for (const char *word : {"用法：drivedesk-cli", "连接与驱动器", "波特率", "点动", "急停",
-                                 "伺服使能", "退出码", "模拟器", "回零", "报警"})
+        for (const char *word : {"用法：drivedesk-cli", "连接与驱动器", "波特率", "点动", "急停", "伺服使能", "退出码",
+                                 "模拟器", "回零", "报警"})
             QVERIFY2(text.contains(QString::fromUtf8(word)), word);
         // Option names, command names and placeholders stay as they are.
         for (const char *word : {"--family servo-can|servo-modbus|shuoke", "jog SPEED [--duration S]",
@@ -89,8 +89,7 @@ void TestCliLanguage::helpFollowsLocale_data()
                                  {QStringLiteral("LANGUAGE"), QString()},
                                  {QStringLiteral("LANG"), QStringLiteral("zh_CN.UTF-8")}}
                           << QStringList() << true;
-    QTest::newRow("LANGUAGE") << Env{{QStringLiteral("LANGUAGE"), QStringLiteral("zh_CN")}}
-                              << QStringList() << true;
+    QTest::newRow("LANGUAGE") << Env{{QStringLiteral("LANGUAGE"), QStringLiteral("zh_CN")}} << QStringList() << true;
     QTest::newRow("C") << Env() << QStringList() << false;
     QTest::newRow("--lang en overrides") << ChineseLocale << args({"--lang", "en"}) << false;
     QTest::newRow("--lang system") << ChineseLocale << args({"--lang", "system"}) << true;
@@ -136,20 +135,22 @@ void TestCliLanguage::errorsInChinese_data()
 {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<int>("exitCode");
-    QTest::addColumn<QString>("english");   // a part of stderr in English
-    QTest::addColumn<QString>("chinese");   // the same part in Chinese
+    QTest::addColumn<QString>("english"); // a part of stderr in English
+    QTest::addColumn<QString>("chinese"); // the same part in Chinese
 
-    QTest::newRow("out of range") << args({"--sim", "set", "PA12=999999"}) << 2
-                                  << "is outside the allowed range" << "超出允许范围";
-    QTest::newRow("unknown command") << args({"--sim", "frobnicate"}) << 2
-                                     << "Unknown command \"frobnicate\"" << "未知命令“frobnicate”";
-    QTest::newRow("no link") << args({"get", "PA1"}) << 2 << "No link given" << "未指定连接";
-    QTest::newRow("bad number") << args({"--sim", "--address", "x", "info"}) << 2
-                                << "is not a whole number" << "不是整数";
+    QTest::newRow("out of range") << args({"--sim", "set", "PA12=999999"}) << 2 << "is outside the allowed range"
+                                  << "超出允许范围";
+    QTest::newRow("unknown command") << args({"--sim", "frobnicate"}) << 2 << "Unknown command \"frobnicate\""
+                                     << "未知命令“frobnicate”";
+    QTest::newRow("no link") << args({"get", "PA1"}) << 2 << "No link given"
+                             << "未指定连接";
+    QTest::newRow("bad number") << args({"--sim", "--address", "x", "info"}) << 2 << "is not a whole number"
+                                << "不是整数";
     QTest::newRow("ee on shuoke") << args({"--sim", "--family", "shuoke", "ee", "set"}) << 2
-                                     << "EEPROM operations exist only" << "只有 servo-modbus 驱动器支持 EEPROM 操作";
-    QTest::newRow("missing value") << args({"--sim", "info", "--timeout"}) << 2
-                                   << "Option --timeout needs a value" << "选项 --timeout 需要一个值";
+                                  << "EEPROM operations exist only"
+                                  << "只有 servo-modbus 驱动器支持 EEPROM 操作";
+    QTest::newRow("missing value") << args({"--sim", "info", "--timeout"}) << 2 << "Option --timeout needs a value"
+                                   << "选项 --timeout 需要一个值";
 }
 
 void TestCliLanguage::errorsInChinese()
@@ -197,7 +198,7 @@ void TestCliLanguage::jsonIsTheSameInEveryLanguage()
 
     for (const CliRun &r : {runCli(zh(args)), runCli(args, ChineseLocale)}) {
         QCOMPARE(r.exitCode, exitCode);
-        QCOMPARE(r.out, en.out);   // byte for byte: keys, values, names, units and messages
+        QCOMPARE(r.out, en.out); // byte for byte: keys, values, names, units and messages
     }
 }
 

@@ -6,8 +6,8 @@
 #include "core/common/coreresources.h"
 #include "core/params/backupfile.h"
 #include "sim/bus/simcanbus.h"
-#include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "sim/servocan/simservocandrive.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -58,7 +58,7 @@ private:
 
 QStringList TestCliServoCan::args(std::initializer_list<const char *> words, int station) const
 {
-    QStringList l{QStringLiteral("--family"), QStringLiteral("servo-can"), QStringLiteral("--can"), m_can,
+    QStringList l{QStringLiteral("--family"),  QStringLiteral("servo-can"), QStringLiteral("--can"), m_can,
                   QStringLiteral("--address"), QString::number(station)};
     for (const char *w : words)
         l << QString::fromUtf8(w);
@@ -265,7 +265,7 @@ void TestCliServoCan::corruptBackupSendsNothing()
     QByteArray bytes = f.readAll();
     const qsizetype at = bytes.indexOf("\"value\"");
     QVERIFY(at > 0);
-    bytes.insert(at + 9, '1');   // a digit more in one value: the checksum no longer fits
+    bytes.insert(at + 9, '1'); // a digit more in one value: the checksum no longer fits
     f.resize(0);
     f.write(bytes);
     f.close();
@@ -284,7 +284,8 @@ void TestCliServoCan::monitorCsvAndJson()
     m_sim1->motor().enable();
     m_sim1->motor().runSpeed(100000);
     const QString csv = m_dir.filePath(QStringLiteral("m.csv"));
-    CliRun r = runCli(args({"monitor", "speed,position,bus-voltage", "--rate", "20", "--duration", "0.5", "-o"}) << csv);
+    CliRun r = runCli(args({"monitor", "speed,position,bus-voltage", "--rate", "20", "--duration", "0.5", "-o"})
+                      << csv);
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QFile f(csv);
     QVERIFY(f.open(QIODevice::ReadOnly));
@@ -294,7 +295,7 @@ void TestCliServoCan::monitorCsvAndJson()
     const QList<QByteArray> row = lines.last().split(',');
     QCOMPARE(row.size(), 4);
     QVERIFY(row.at(0).toDouble() > 0.1 && row.at(0).toDouble() < 1.0);
-    QVERIFY(qAbs(row.at(1).toDouble() - 600) < 60);   // 100000 counts/s = 600 r/min
+    QVERIFY(qAbs(row.at(1).toDouble() - 600) < 60); // 100000 counts/s = 600 r/min
     QVERIFY(r.out.contains("samples written"));
 
     r = runCli(args({"--json", "monitor", "speed", "--rate", "50", "--duration", "0.3"}));
@@ -327,7 +328,7 @@ void TestCliServoCan::jogStopsWhenItsDurationEnds()
     QCOMPARE(doc.value("stoppedBy").toString(), QStringLiteral("duration"));
     QCOMPARE(doc.value("axisStoppedBy").toString(), QStringLiteral("command"));
     QVERIFY(doc.value("seconds").toDouble() >= 0.59);
-    QVERIFY(waitIdle(m_sim1, 1000));   // stopped by the CLI, not by the 2 s watchdog
+    QVERIFY(waitIdle(m_sim1, 1000)); // stopped by the CLI, not by the 2 s watchdog
     QCOMPARE(m_sim1->stats().watchdogTrips, trips);
 }
 
@@ -346,7 +347,7 @@ void TestCliServoCan::jogSaysTheWatchdogStopsASilentDrive()
     QCOMPARE(doc.value("axisStoppedBy").toString(), QStringLiteral("drive-watchdog"));
     QCOMPARE(doc.value("stopped").toBool(), false);
     QVERIFY2(doc.value("error").toObject().value("message").toString().contains("watchdog"), qPrintable(r.text()));
-    QVERIFY(waitIdle(m_sim1, 4000));   // the simulated drive's 2 s watchdog
+    QVERIFY(waitIdle(m_sim1, 4000)); // the simulated drive's 2 s watchdog
     // The watchdog's ramp leaves the model between two counts: put it back on a whole count
     // (a real encoder has no fractions), as the tests after this one expect.
     m_sim1->motor().setPosition(m_sim1->motor().position());
@@ -367,7 +368,7 @@ void TestCliServoCan::jogStopsOnSignal()
     QByteArray seen;
     QVERIFY2(waitForOutput(p, "Ctrl-C", 5000, &seen), seen.constData());
     QVERIFY(QTest::qWaitFor([&] { return m_sim1->motor().isMoving(); }, 3000));
-    QTest::qWait(300);   // several lease renewals: still running
+    QTest::qWait(300); // several lease renewals: still running
     QVERIFY(m_sim1->motor().isMoving());
     QVERIFY(m_sim1->motor().speed() < 0);
     ::kill(pid_t(p->processId()), signalNumber);
@@ -407,7 +408,7 @@ void TestCliServoCan::enableStopClearAlarm()
     r = runCli(args({"stop"}));
     QCOMPARE(r.exitCode, 0);
     QVERIFY(waitIdle(m_sim1, 1000));
-    QVERIFY(m_sim1->motor().isEnabled());   // 0x26 keeps the servo enabled
+    QVERIFY(m_sim1->motor().isEnabled()); // 0x26 keeps the servo enabled
 
     m_sim1->motor().runSpeed(50000);
     r = runCli(args({"stop", "--emergency"}));

@@ -40,15 +40,16 @@ private:
 
     QTemporaryDir m_dir;
     std::unique_ptr<SimSerialBus> m_bus;
-    SimServoModbusDrive *m_sim = nullptr;      // address 1, 19200 baud (the defaults)
-    SimServoModbusDrive *m_hidden = nullptr;   // address 23, 38400 baud
+    SimServoModbusDrive *m_sim = nullptr;    // address 1, 19200 baud (the defaults)
+    SimServoModbusDrive *m_hidden = nullptr; // address 23, 38400 baud
     QString m_port;
 };
 
 QStringList TestCliServoModbus::args(std::initializer_list<const char *> words) const
 {
-    QStringList l{QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--port"), m_port,
-                  QStringLiteral("--baud"), QStringLiteral("19200"), QStringLiteral("--address"), QStringLiteral("1")};
+    QStringList l{
+        QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--port"),    m_port,
+        QStringLiteral("--baud"),   QStringLiteral("19200"),        QStringLiteral("--address"), QStringLiteral("1")};
     for (const char *w : words)
         l << QString::fromUtf8(w);
     return l;
@@ -93,14 +94,14 @@ void TestCliServoModbus::getAndSet()
     QCOMPARE(list.size(), 3);
     QCOMPARE(list.at(0).toObject().value("value").toInt(), 321);
     QCOMPARE(list.at(0).toObject().value("key").toString(), QStringLiteral("PA12"));
-    QCOMPARE(list.at(2).toObject().value("value").toInt(), 1);   // PA51 = address
+    QCOMPARE(list.at(2).toObject().value("value").toInt(), 1); // PA51 = address
 
     r = runCli(args({"set", "PA12=400", "PA13=-12"}));
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QVERIFY(r.out.contains("verified"));
     QCOMPARE(m_sim->parameter(12), quint16(400));
     QCOMPARE(qint16(m_sim->parameter(13)), qint16(-12));
-    QVERIFY(r.err.contains("ee set"));   // the hint that the values are only in RAM
+    QVERIFY(r.err.contains("ee set")); // the hint that the values are only in RAM
 }
 
 void TestCliServoModbus::setOutOfRangeSendsNothing()
@@ -110,7 +111,7 @@ void TestCliServoModbus::setOutOfRangeSendsNothing()
     CliRun r = runCli(args({"--trace", "set", "PA12=5", "PA14=70000"}));
     QCOMPARE(r.exitCode, 2);
     QCOMPARE(r.txFrames(), 0);
-    r = runCli(args({"--trace", "set", "PA2=7000"}));   // read-only
+    r = runCli(args({"--trace", "set", "PA2=7000"})); // read-only
     QCOMPARE(r.exitCode, 2);
     QCOMPARE(r.txFrames(), 0);
     QTest::qWait(50);
@@ -171,7 +172,7 @@ void TestCliServoModbus::corruptBackupSendsNothing()
     QVERIFY(f.open(QIODevice::ReadWrite));
     const QByteArray bytes = f.readAll();
     f.resize(0);
-    f.write(bytes.left(bytes.size() - 40));   // truncated
+    f.write(bytes.left(bytes.size() - 40)); // truncated
     f.close();
     const quint64 in = m_bus->stats().bytesIn;
     const CliRun r = runCli(args({"--trace", "restore"}) << file);
@@ -192,7 +193,7 @@ void TestCliServoModbus::eeOperations()
     QCOMPARE(m_sim->eeOperationsCompleted(), done + 1);
 
     m_sim->setParameter(40, 2222);
-    r = runCli(args({"ee", "rd"}));   // reload from EEPROM: the unsaved change is gone
+    r = runCli(args({"ee", "rd"})); // reload from EEPROM: the unsaved change is gone
     QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
     QCOMPARE(m_sim->parameter(40), quint16(1111));
 
@@ -208,14 +209,15 @@ void TestCliServoModbus::eeOperations()
 void TestCliServoModbus::monitor()
 {
     const QString csv = m_dir.filePath(QStringLiteral("dp.csv"));
-    CliRun r = runCli(args({"monitor", "speed,torque,current,position-error", "--rate", "10", "--duration", "0.45", "-o"}) << csv);
+    CliRun r = runCli(
+        args({"monitor", "speed,torque,current,position-error", "--rate", "10", "--duration", "0.45", "-o"}) << csv);
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QFile f(csv);
     QVERIFY(f.open(QIODevice::ReadOnly));
     const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
     QVERIFY(lines.at(0).startsWith("time_s,speed [r/min],torque"));
     QVERIFY(lines.size() >= 4);
-    r = runCli(args({"monitor", "temperature"}));   // not a DP register
+    r = runCli(args({"monitor", "temperature"})); // not a DP register
     QCOMPARE(r.exitCode, 2);
 }
 
@@ -237,18 +239,19 @@ void TestCliServoModbus::motionIsNotSupported()
 
 void TestCliServoModbus::wrongBaudTimesOut()
 {
-    const CliRun r = runCli({"--family", "servo-modbus", "--port", m_port, "--baud", "9600", "--timeout", "50",
-                             "--retries", "0", "info"});
+    const CliRun r = runCli(
+        {"--family", "servo-modbus", "--port", m_port, "--baud", "9600", "--timeout", "50", "--retries", "0", "info"});
     QCOMPARE(r.exitCode, 1);
-    QVERIFY(r.err.contains("scan"));   // the hint
+    QVERIFY(r.err.contains("scan")); // the hint
 }
 
 void TestCliServoModbus::scanFindsUnknownAddressesAndBauds()
 {
     // Neither the address nor the baud rate of the second drive is given anywhere. (A
     // generous probe timeout: the test machine may be busy; the range keeps it short.)
-    const CliRun r = runCli({"--family", "servo-modbus", "--port", m_port, "--json", "--timeout", "60", "scan",
-                             "--to", "30", "--bauds", "9600,19200,38400,57600"}, 120000);
+    const CliRun r = runCli({"--family", "servo-modbus", "--port", m_port, "--json", "--timeout", "60", "scan", "--to",
+                             "30", "--bauds", "9600,19200,38400,57600"},
+                            120000);
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QMap<int, int> found;
     for (const QJsonValue &v : r.json().value("drives").toArray())
@@ -257,8 +260,8 @@ void TestCliServoModbus::scanFindsUnknownAddressesAndBauds()
     QCOMPARE(found.value(23), 38400);
     QCOMPARE(found.size(), 2);
 
-    const CliRun none = runCli({"--family", "servo-modbus", "--port", m_port, "scan", "--from", "2", "--to", "5",
-                                "--bauds", "19200"});
+    const CliRun none = runCli(
+        {"--family", "servo-modbus", "--port", m_port, "scan", "--from", "2", "--to", "5", "--bauds", "19200"});
     QCOMPARE(none.exitCode, 1);
     QVERIFY(none.err.contains("No drive answered"));
 }

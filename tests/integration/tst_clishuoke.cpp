@@ -7,9 +7,9 @@
 #include "core/common/coreresources.h"
 #include "core/params/backupfile.h"
 #include "core/protocol/shuoke/shuokecommands.h"
+#include "sim/bus/simserialbus.h"
 #include "tests/support/shuokecanbench.h"
 #include "tests/support/shuokeserialbench.h"
-#include "sim/bus/simserialbus.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -55,11 +55,11 @@ private:
     static void addBenchRows();
 
     QTemporaryDir m_dir;
-    ShuokeSerialBench m_rtu;     // drive 3
-    ShuokeSerialBench m_scan;    // drive 3 at 9600, drive 12 at 19200: only for the scan
-    ShuokeSerialBench m_ascii;   // drive 4
-    ShuokeSerialBench m_plc;     // drive 5
-    ShuokeCanBench m_can;        // drives 6 and 9
+    ShuokeSerialBench m_rtu;   // drive 3
+    ShuokeSerialBench m_scan;  // drive 3 at 9600, drive 12 at 19200: only for the scan
+    ShuokeSerialBench m_ascii; // drive 4
+    ShuokeSerialBench m_plc;   // drive 5
+    ShuokeCanBench m_can;      // drives 6 and 9
     SimShuokeSerialDevice *m_rtu3 = nullptr;
     SimShuokeSerialDevice *m_ascii4 = nullptr;
     SimShuokeSerialDevice *m_plc5 = nullptr;
@@ -75,7 +75,7 @@ SimShuokeDrive::Config driveConfig(int address, int baudCode = 6)
     SimShuokeDrive::Config c;
     c.address = quint8(address);
     c.baudCode = baudCode;
-    c.powerUpWindowMs = 0;   // at the configured rate from the start
+    c.powerUpWindowMs = 0; // at the configured rate from the start
     return c;
 }
 
@@ -85,10 +85,26 @@ QStringList TestCliShuoke::args(Bench bench, std::initializer_list<const char *>
 {
     QStringList l{QStringLiteral("--family"), QStringLiteral("shuoke")};
     switch (bench) {
-    case Rtu: l << "--port" << m_rtu.portPath() << "--address" << "3"; break;
-    case Ascii: l << "--port" << m_ascii.portPath() << "--framing" << "ascii" << "--address" << "4"; break;
-    case Plc: l << "--port" << m_plc.portPath() << "--framing" << "plc" << "--address" << "5"; break;
-    case Can: l << "--can" << QStringLiteral("virtualcan:") + m_can.interfaceName() << "--address" << "6"; break;
+    case Rtu:
+        l << "--port" << m_rtu.portPath() << "--address"
+          << "3";
+        break;
+    case Ascii:
+        l << "--port" << m_ascii.portPath() << "--framing"
+          << "ascii"
+          << "--address"
+          << "4";
+        break;
+    case Plc:
+        l << "--port" << m_plc.portPath() << "--framing"
+          << "plc"
+          << "--address"
+          << "5";
+        break;
+    case Can:
+        l << "--can" << QStringLiteral("virtualcan:") + m_can.interfaceName() << "--address"
+          << "6";
+        break;
     }
     for (const char *w : words)
         l << QString::fromUtf8(w);
@@ -343,7 +359,8 @@ void TestCliShuoke::scanSerialFindsUnknownAddressesAndBauds()
     // Drive 12 runs at 19200: neither its address nor its rate is given.
     // A generous probe timeout: the machine running the tests may be busy.
     const CliRun r = runCli({"--family", "shuoke", "--port", m_scan.portPath(), "--json", "--timeout", "120", "scan",
-                             "--to", "14", "--bauds", "9600,19200"}, 120000);
+                             "--to", "14", "--bauds", "9600,19200"},
+                            120000);
     QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
     QMap<int, int> found;
     for (const QJsonValue &v : r.json().value("drives").toArray())
@@ -355,8 +372,8 @@ void TestCliShuoke::scanSerialFindsUnknownAddressesAndBauds()
 
 void TestCliShuoke::scanCan()
 {
-    const CliRun r = runCli({"--family", "shuoke", "--can", QStringLiteral("virtualcan:") + m_can.interfaceName(),
-                             "--json", "scan"});
+    const CliRun r = runCli(
+        {"--family", "shuoke", "--can", QStringLiteral("virtualcan:") + m_can.interfaceName(), "--json", "scan"});
     QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
     QList<int> found;
     for (const QJsonValue &v : r.json().value("drives").toArray())
@@ -369,8 +386,8 @@ void TestCliShuoke::familyOptions()
 {
     // The ASCII drive checks the plain sum (the default); told to send the two's complement
     // the CLI's frames fail the drive's check, and an unknown value is refused up front.
-    CliRun r = runCli(args(Ascii, {"--option", "shuoke.checksum=twos-complement", "--timeout", "100", "--retries",
-                                   "0", "info"}));
+    CliRun r = runCli(
+        args(Ascii, {"--option", "shuoke.checksum=twos-complement", "--timeout", "100", "--retries", "0", "info"}));
     QCOMPARE(r.exitCode, 1);
     r = runCli(args(Ascii, {"--option", "shuoke.checksum=sum", "info"}));
     QVERIFY2(r.exitCode == 0, qPrintable(r.text()));

@@ -42,8 +42,8 @@ void TestCliSim::info()
 void TestCliSim::scanFindsSimulatedDrives()
 {
     // The simulator shares the CLI's thread: allow the probes more than the adaptive minimum.
-    const CliRun r = runCli({"--sim", "--sim-drives", "5@19200,9@38400", "--timeout", "100", "--json", "scan",
-                             "--to", "12", "--bauds", "19200,38400"});
+    const CliRun r = runCli({"--sim", "--sim-drives", "5@19200,9@38400", "--timeout", "100", "--json", "scan", "--to",
+                             "12", "--bauds", "19200,38400"});
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QList<int> found;
     for (const QJsonValue &v : r.json().value("drives").toArray())
@@ -57,7 +57,7 @@ void TestCliSim::jogRunsAndStops()
     const CliRun r = runCli({"--sim", "--family", "servo-can", "--json", "--trace", "jog", "100", "--duration", "0.3"});
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QCOMPARE(r.json().value("stoppedBy").toString(), QStringLiteral("duration"));
-    QVERIFY(r.err.contains("065#01 20 00 64 00 00 00 FF"));   // "speed mode +100" (the seed's example, station 1)
+    QVERIFY(r.err.contains("065#01 20 00 64 00 00 00 FF")); // "speed mode +100" (the seed's example, station 1)
     QVERIFY(r.err.contains("(stop)"));
 }
 

@@ -2,9 +2,9 @@
 // port (exit 3). Runs the real executable.
 #include "tests/support/clirun.h"
 
+#include "core/common/coreresources.h"
 #include "core/params/backupfile.h"
 #include "core/params/parameterdictionary.h"
-#include "core/common/coreresources.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -41,11 +41,27 @@ void TestCliUsage::help()
     QVERIFY(r.finished);
     QCOMPARE(r.exitCode, 0);
     const QString text = QString::fromUtf8(r.out);
-    for (const char *word : {"scan", "info", "get PARAM", "set PARAM=VALUE", "backup -o FILE", "diff FILE",
-                             "restore FILE", "ee set|rd|ba|rs|def", "monitor CHANNEL", "jog SPEED",
-                             "move (--by N | --to N)", "stop [--emergency]", "enable on|off",
-                             "clear-alarm", "home [--positive]", "channels", "--sim", "--trace",
-                             "--json", "Exit codes", "--family servo-can|servo-modbus|shuoke"})
+    for (const char *word : {"scan",
+                             "info",
+                             "get PARAM",
+                             "set PARAM=VALUE",
+                             "backup -o FILE",
+                             "diff FILE",
+                             "restore FILE",
+                             "ee set|rd|ba|rs|def",
+                             "monitor CHANNEL",
+                             "jog SPEED",
+                             "move (--by N | --to N)",
+                             "stop [--emergency]",
+                             "enable on|off",
+                             "clear-alarm",
+                             "home [--positive]",
+                             "channels",
+                             "--sim",
+                             "--trace",
+                             "--json",
+                             "Exit codes",
+                             "--family servo-can|servo-modbus|shuoke"})
         QVERIFY2(text.contains(QLatin1String(word)), word);
 }
 
@@ -67,7 +83,7 @@ void TestCliUsage::version()
 void TestCliUsage::usageErrors_data()
 {
     QTest::addColumn<QStringList>("args");
-    QTest::addColumn<QString>("message");   // a part of what stderr must say
+    QTest::addColumn<QString>("message"); // a part of what stderr must say
 
     const QStringList port{QStringLiteral("--port"), QStringLiteral("/dev/null")};
     auto a = [&](std::initializer_list<const char *> words, bool withPort = true) {
@@ -88,7 +104,10 @@ void TestCliUsage::usageErrors_data()
     QTest::newRow("octal-looking junk") << a({"--baud", "96OO", "info"}) << "not a whole number";
     QTest::newRow("bad family") << a({"--family", "stepper", "info"}) << "Unknown family";
     QTest::newRow("address too big") << a({"--address", "300", "info"}) << "out of range";
-    QTest::newRow("servo-can address") << QStringList{"--can", "virtualcan:can0", "--family", "servo-can", "--address", "100", "info"} << "out of range";
+    QTest::newRow("servo-can address") << QStringList{"--can",     "virtualcan:can0", "--family",
+                                                      "servo-can", "--address",       "100",
+                                                      "info"}
+                                       << "out of range";
     QTest::newRow("bad framing") << a({"--framing", "morse", "info"}) << "Unknown framing";
     QTest::newRow("negative timeout") << a({"--timeout", "-5", "info"}) << "out of range";
     QTest::newRow("too many retries") << a({"--retries", "99", "info"}) << "out of range";
@@ -96,8 +115,10 @@ void TestCliUsage::usageErrors_data()
     QTest::newRow("port and can") << a({"--can", "socketcan:can0", "info"}) << "not both";
     QTest::newRow("can without plugin") << a({"--can", "can0", "info"}, false) << "PLUGIN:INTERFACE";
     QTest::newRow("servo-can on a port") << a({"--family", "servo-can", "info"}) << "--can";
-    QTest::newRow("servo-modbus on can") << QStringList{"--family", "servo-modbus", "--can", "virtualcan:can0", "info"} << "--port";
-    QTest::newRow("shuoke can framing on a port") << a({"--family", "shuoke", "--framing", "can", "info"}) << "--framing can";
+    QTest::newRow("servo-modbus on can") << QStringList{"--family", "servo-modbus", "--can", "virtualcan:can0", "info"}
+                                         << "--port";
+    QTest::newRow("shuoke can framing on a port")
+        << a({"--family", "shuoke", "--framing", "can", "info"}) << "--framing can";
     QTest::newRow("info extra") << a({"info", "now"}) << "unexpected argument";
     QTest::newRow("get nothing") << a({"get"}) << "\"get\" needs";
     QTest::newRow("enable maybe") << a({"enable", "maybe"}) << "on or off";
@@ -116,24 +137,29 @@ void TestCliUsage::usageErrors_data()
     QTest::newRow("monitor empty channel") << a({"monitor", "speed,,torque"}) << "empty channel";
     QTest::newRow("monitor zero rate") << a({"monitor", "speed", "--rate", "0"}) << "out of range";
     QTest::newRow("monitor bad duration") << a({"monitor", "speed", "--duration", "soon"}) << "not a number";
-    QTest::newRow("monitor unwritable csv") << a({"monitor", "speed", "-o", "/nonexistent-dir/x.csv"}) << "Cannot write";
+    QTest::newRow("monitor unwritable csv")
+        << a({"monitor", "speed", "-o", "/nonexistent-dir/x.csv"}) << "Cannot write";
     QTest::newRow("scan inverted range") << a({"scan", "--from", "10", "--to", "5"}) << "above --to";
     QTest::newRow("scan empty baud") << a({"scan", "--bauds", "9600,,19200"}) << "empty item";
-    QTest::newRow("scan bauds on can") << QStringList{"--can", "virtualcan:can0", "scan", "--bauds", "9600"} << "--bauds is for serial";
+    QTest::newRow("scan bauds on can") << QStringList{"--can", "virtualcan:can0", "scan", "--bauds", "9600"}
+                                       << "--bauds is for serial";
     QTest::newRow("get unknown parameter") << a({"get", "PA99"}) << "Unknown parameter";
     QTest::newRow("set without =") << a({"set", "PA12"}) << "PARAM=VALUE";
     QTest::newRow("set not a number") << a({"set", "PA12=fast"}) << "not a whole number";
     QTest::newRow("set out of range") << a({"set", "PA12=99999999"}) << "outside the allowed range";
-    QTest::newRow("set one of two out of range") << a({"set", "PA12=5", "PA13=-99999999"}) << "outside the allowed range";
+    QTest::newRow("set one of two out of range")
+        << a({"set", "PA12=5", "PA13=-99999999"}) << "outside the allowed range";
     QTest::newRow("set read-only") << a({"set", "PA2=1"}) << "read-only";
     QTest::newRow("set twice") << a({"set", "PA12=1", "12=2"}) << "given twice";
-    QTest::newRow("servo-can out of range") << QStringList{"--can", "virtualcan:can0", "set", "P12=40000"} << "outside the allowed range";
+    QTest::newRow("servo-can out of range")
+        << QStringList{"--can", "virtualcan:can0", "set", "P12=40000"} << "outside the allowed range";
     QTest::newRow("backup without file") << a({"backup"}) << "backup -o FILE";
     QTest::newRow("backup into missing folder") << a({"backup", "-o", "/nonexistent-dir/b.json"}) << "does not exist";
     QTest::newRow("diff without file") << a({"diff"}) << "\"diff\" needs";
     QTest::newRow("diff missing file") << a({"diff", "/nonexistent-dir/b.json"}) << "/nonexistent-dir/b.json";
     QTest::newRow("restore missing file") << a({"restore", "/nonexistent-dir/b.json"}) << "/nonexistent-dir/b.json";
-    QTest::newRow("missing dictionary") << a({"--dictionary", "/nonexistent-dir/d.json", "get", "PA1"}) << "/nonexistent-dir/d.json";
+    QTest::newRow("missing dictionary") << a({"--dictionary", "/nonexistent-dir/d.json", "get", "PA1"})
+                                        << "/nonexistent-dir/d.json";
     QTest::newRow("option without =") << a({"--option", "shuoke.checksum", "info"}) << "FAMILY.KEY=VALUE";
     QTest::newRow("option without family") << a({"--option", "checksum=sum", "info"}) << "FAMILY.KEY=VALUE";
     QTest::newRow("sim drives malformed") << QStringList{"--sim-drives", "1@2@3", "info"} << "--sim-drives";
@@ -167,7 +193,7 @@ void TestCliUsage::usageErrorAsJson()
 void TestCliUsage::badBackupFiles_data()
 {
     QTest::addColumn<QByteArray>("content");
-    QTest::addColumn<QStringList>("args");   // after the file name
+    QTest::addColumn<QStringList>("args"); // after the file name
     QTest::addColumn<QString>("message");
 
     // A valid servo-modbus backup, then damaged in different ways.
@@ -213,9 +239,11 @@ void TestCliUsage::badBackupFiles()
     for (const char *command : {"diff", "restore"}) {
         if (!args.isEmpty() && qstrcmp(command, "diff") == 0)
             continue;
-        const QStringList all = QStringList{"--trace", "--port", "/dev/null", QString::fromLatin1(command), path} + args;
+        const QStringList all = QStringList{"--trace", "--port", "/dev/null", QString::fromLatin1(command), path}
+            + args;
         const CliRun r = runCli(all);
-        QVERIFY2(r.exitCode == 2, qPrintable(QStringLiteral("%1: exit %2: %3").arg(command).arg(r.exitCode).arg(r.text())));
+        QVERIFY2(r.exitCode == 2,
+                 qPrintable(QStringLiteral("%1: exit %2: %3").arg(command).arg(r.exitCode).arg(r.text())));
         QVERIFY2(r.err.contains(message.toUtf8()), r.err.constData());
         QCOMPARE(r.txFrames(), 0);
     }

@@ -68,8 +68,8 @@ private slots:
         QVERIFY(p.waitForFinished(5000));
         QCOMPARE(p.exitCode(), 0);
         const QString help = QString::fromUtf8(p.readAllStandardOutput());
-        for (const char *opt : {"--family", "--address", "--pty", "--link", "--can", "--baud", "--bitrate",
-                                "--framing", "--latency-ms", "--drop", "--corrupt", "--seed", "--state"})
+        for (const char *opt : {"--family", "--address", "--pty", "--link", "--can", "--baud", "--bitrate", "--framing",
+                                "--latency-ms", "--drop", "--corrupt", "--seed", "--state"})
             QVERIFY2(help.contains(QLatin1String(opt)), opt);
     }
 
@@ -77,12 +77,22 @@ private slots:
     {
         QTest::addColumn<QStringList>("args");
         QTest::newRow("no family") << QStringList{QStringLiteral("--pty")};
-        QTest::newRow("unknown family") << QStringList{QStringLiteral("--family"), QStringLiteral("vesc"), QStringLiteral("--pty")};
-        QTest::newRow("pty and can") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--pty"), QStringLiteral("--can"), QStringLiteral("virtualcan:can0")};
-        QTest::newRow("bad address") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--pty"), QStringLiteral("--address"), QStringLiteral("300")};
-        QTest::newRow("bad drop") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--pty"), QStringLiteral("--drop"), QStringLiteral("1.5")};
-        QTest::newRow("can family on pty") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-can"), QStringLiteral("--pty")};
-        QTest::newRow("framing on servo") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--pty"), QStringLiteral("--framing"), QStringLiteral("rtu")};
+        QTest::newRow("unknown family") << QStringList{QStringLiteral("--family"), QStringLiteral("vesc"),
+                                                       QStringLiteral("--pty")};
+        QTest::newRow("pty and can") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"),
+                                                    QStringLiteral("--pty"), QStringLiteral("--can"),
+                                                    QStringLiteral("virtualcan:can0")};
+        QTest::newRow("bad address") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"),
+                                                    QStringLiteral("--pty"), QStringLiteral("--address"),
+                                                    QStringLiteral("300")};
+        QTest::newRow("bad drop") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"),
+                                                 QStringLiteral("--pty"), QStringLiteral("--drop"),
+                                                 QStringLiteral("1.5")};
+        QTest::newRow("can family on pty")
+            << QStringList{QStringLiteral("--family"), QStringLiteral("servo-can"), QStringLiteral("--pty")};
+        QTest::newRow("framing on servo")
+            << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--pty"),
+                           QStringLiteral("--framing"), QStringLiteral("rtu")};
     }
     void badUsageExitsTwo()
     {
@@ -101,10 +111,17 @@ private slots:
         QVERIFY(dir.isValid());
         const QString link = dir.filePath(QStringLiteral("rs485"));
         const QString state = dir.filePath(QStringLiteral("state.json"));
-        const QStringList args{QStringLiteral("--family"), QStringLiteral("servo-modbus"),
-                               QStringLiteral("--address"), QStringLiteral("3"), QStringLiteral("--pty"),
-                               QStringLiteral("--link"), link, QStringLiteral("--baud"), QStringLiteral("115200"),
-                               QStringLiteral("--state"), state};
+        const QStringList args{QStringLiteral("--family"),
+                               QStringLiteral("servo-modbus"),
+                               QStringLiteral("--address"),
+                               QStringLiteral("3"),
+                               QStringLiteral("--pty"),
+                               QStringLiteral("--link"),
+                               link,
+                               QStringLiteral("--baud"),
+                               QStringLiteral("115200"),
+                               QStringLiteral("--state"),
+                               state};
         {
             QProcess sim;
             const QString where = start(sim, args);
@@ -150,10 +167,12 @@ private slots:
     void servoCanOnPrivateVirtualCan()
     {
         QProcess sim;
-        const QString where = start(sim, {QStringLiteral("--family"), QStringLiteral("servo-can"),
-                                          QStringLiteral("--address"), QStringLiteral("7"),
-                                          QStringLiteral("--can"), QStringLiteral("virtualcan:auto")});
-        QVERIFY2(where.startsWith(QLatin1String("can: virtualcan:tcp://127.0.0.1:")), qPrintable(where + sim.errorString()));
+        const QString where = start(sim,
+                                    {QStringLiteral("--family"), QStringLiteral("servo-can"),
+                                     QStringLiteral("--address"), QStringLiteral("7"), QStringLiteral("--can"),
+                                     QStringLiteral("virtualcan:auto")});
+        QVERIFY2(where.startsWith(QLatin1String("can: virtualcan:tcp://127.0.0.1:")),
+                 qPrintable(where + sim.errorString()));
         DriveConnection c;
         ConnectionSettings s;
         s.family = Family::ServoCan;

@@ -24,16 +24,16 @@ namespace {
 
 enum class Misbehaviour {
     None,
-    WrongAddress,     // a well-formed reply from another address
-    WrongFunction,    // a well-formed reply with function 0x04
-    Truncated,        // the last three bytes never come
-    ShortByteCount,   // well-formed, CRC right, but two registers fewer than asked for
-    LongByteCount,    // well-formed, CRC right, one register more than asked for
-    Garbage,          // noise of a reply's length
-    BadCrc,           // one bit of the CRC flipped
-    Exception,        // exception 0x02 (illegal data address) from the drive's own address
-    Duplicate,        // every reply is sent twice
-    WrongEcho,        // a 0x10 reply echoes another register count
+    WrongAddress,   // a well-formed reply from another address
+    WrongFunction,  // a well-formed reply with function 0x04
+    Truncated,      // the last three bytes never come
+    ShortByteCount, // well-formed, CRC right, but two registers fewer than asked for
+    LongByteCount,  // well-formed, CRC right, one register more than asked for
+    Garbage,        // noise of a reply's length
+    BadCrc,         // one bit of the CRC flipped
+    Exception,      // exception 0x02 (illegal data address) from the drive's own address
+    Duplicate,      // every reply is sent twice
+    WrongEcho,      // a 0x10 reply echoes another register count
 };
 
 QByteArray recrc(QByteArray adu)
@@ -76,17 +76,10 @@ private:
             return {a};
         ++rewritten;
         switch (mode) {
-        case Misbehaviour::None:
-            break;
-        case Misbehaviour::WrongAddress:
-            a[0] = char(quint8(a.at(0)) + 4);
-            return {recrc(a)};
-        case Misbehaviour::WrongFunction:
-            a[1] = char(0x04);
-            return {recrc(a)};
-        case Misbehaviour::Truncated:
-            a.chop(3);
-            return {a};
+        case Misbehaviour::None: break;
+        case Misbehaviour::WrongAddress: a[0] = char(quint8(a.at(0)) + 4); return {recrc(a)};
+        case Misbehaviour::WrongFunction: a[1] = char(0x04); return {recrc(a)};
+        case Misbehaviour::Truncated: a.chop(3); return {a};
         case Misbehaviour::ShortByteCount:
             a[2] = char(quint8(a.at(2)) - 4);
             a.remove(3, 4);
@@ -101,13 +94,9 @@ private:
                 g[i] = char(0xA5 ^ (i * 37));
             return {g};
         }
-        case Misbehaviour::BadCrc:
-            a[a.size() - 1] = char(a.at(a.size() - 1) ^ 0x10);
-            return {a};
-        case Misbehaviour::Exception:
-            return {withCrc16(QByteArray::fromHex("0183") + QByteArray(1, char(0x02)))};
-        case Misbehaviour::Duplicate:
-            return {a, a};
+        case Misbehaviour::BadCrc: a[a.size() - 1] = char(a.at(a.size() - 1) ^ 0x10); return {a};
+        case Misbehaviour::Exception: return {withCrc16(QByteArray::fromHex("0183") + QByteArray(1, char(0x02)))};
+        case Misbehaviour::Duplicate: return {a, a};
         case Misbehaviour::WrongEcho:
             a[5] = char(quint8(a.at(5)) + 1); // the count's low byte
             return {recrc(a)};

@@ -9,11 +9,11 @@
 #include "core/drive/servocan/servocanbackend.h"
 #include "core/drive/servocan/servocandrive.h"
 #include "core/drive/servocan/servocanstationtracker.h"
-#include "tests/integration/faultcheck.h"
 #include "core/protocol/servocan/servocan.h"
 #include "sim/bus/simcanbus.h"
-#include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "sim/servocan/simservocandrive.h"
+#include "tests/integration/faultcheck.h"
 #include "tests/support/simcanconnect.h"
 
 #include <memory>
@@ -57,29 +57,16 @@ private:
     void rewrite(CanFrameData &f) const
     {
         switch (mode) {
-        case Misbehaviour::None:
-            break;
+        case Misbehaviour::None: break;
         case Misbehaviour::OtherStation: // a second drive with the same ID, another station byte
             f.data[0] = char(quint8(f.data.at(0)) + 1);
             break;
-        case Misbehaviour::OtherType:
-            f.data[2] = char(0xFE);
-            break;
-        case Misbehaviour::OtherIndex:
-            f.data[3] = char(quint8(f.data.at(3)) ^ 0x80);
-            break;
-        case Misbehaviour::Short:
-            f.data.chop(1);
-            break;
-        case Misbehaviour::Extended:
-            f.extended = true;
-            break;
-        case Misbehaviour::Empty:
-            f.data.clear();
-            break;
-        case Misbehaviour::OtherCommand:
-            f.data[1] = char(0x15);
-            break;
+        case Misbehaviour::OtherType: f.data[2] = char(0xFE); break;
+        case Misbehaviour::OtherIndex: f.data[3] = char(quint8(f.data.at(3)) ^ 0x80); break;
+        case Misbehaviour::Short: f.data.chop(1); break;
+        case Misbehaviour::Extended: f.extended = true; break;
+        case Misbehaviour::Empty: f.data.clear(); break;
+        case Misbehaviour::OtherCommand: f.data[1] = char(0x15); break;
         }
     }
     SimServoCanDrive m_drive;

@@ -15,8 +15,8 @@
 #include "core/link/canlink.h"
 #include "core/protocol/servocan/servocan.h"
 #include "sim/bus/simcanbus.h"
-#include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "sim/servocan/simservocandrive.h"
 #include "tests/support/replywait.h"
 #include "tests/support/simcanconnect.h"
 
@@ -266,8 +266,8 @@ void TestFaultJog::busGoesAwayMidJog()
     QCOMPARE(r->info().value(QStringLiteral("stoppedBy")).toString(), QStringLiteral("drive-watchdog"));
     QVERIFY(waitUntil([this] { return !m_sim1->motor().isMoving(); }, 3000));
     QCOMPARE(m_sim1->stats().watchdogTrips, trips + 1);
-    qInfo("bus gone mid-jog: told after %lld ms, axis at rest after %lld ms",
-          static_cast<long long>(endedAfter), static_cast<long long>(t.elapsed()));
+    qInfo("bus gone mid-jog: told after %lld ms, axis at rest after %lld ms", static_cast<long long>(endedAfter),
+          static_cast<long long>(t.elapsed()));
 }
 
 QTEST_GUILESS_MAIN(TestFaultJog)

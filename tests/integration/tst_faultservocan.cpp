@@ -16,12 +16,12 @@
 #include "core/drive/servocan/servocanbackend.h"
 #include "core/drive/servocan/servocandrive.h"
 #include "core/drive/servocan/servocanstationtracker.h"
-#include "tests/integration/faultcheck.h"
 #include "core/link/canlink.h"
 #include "core/protocol/servocan/servocan.h"
 #include "sim/bus/simcanbus.h"
-#include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "sim/servocan/simservocandrive.h"
+#include "tests/integration/faultcheck.h"
 #include "tests/support/simcanconnect.h"
 
 #include <QTemporaryDir>
@@ -163,8 +163,8 @@ void TestFaultServoCan::backupUnderFaults()
           "%llu retries; slowest backup %lld ms",
           qPrintable(faults), confirmReads ? " (confirmed reads)" : "", ok, rounds,
           static_cast<unsigned long long>(s.framesDropped), static_cast<unsigned long long>(s.framesCorrupted),
-          static_cast<unsigned long long>(link->timeoutCount()),
-          static_cast<unsigned long long>(link->retryCount()), static_cast<long long>(slowest));
+          static_cast<unsigned long long>(link->timeoutCount()), static_cast<unsigned long long>(link->retryCount()),
+          static_cast<long long>(slowest));
     QVERIFY2(link->retryCount() > 0, "the faults were felt");
     // With 2 retries a read is lost with p^3 (10 % drops: 1 in 1000), a 220-read backup
     // then fails about one time in five: the guarantee above is what must always hold; that
@@ -238,7 +238,8 @@ void TestFaultServoCan::busGoneMidBackup()
     int reads = 0;
     connect(m_bus.get(), &SimCanBus::frameReceived, this, [&](const CanFrameData &f) {
         if (isCommand(f, sc::Command::Read) && ++reads == 60)
-            QMetaObject::invokeMethod(this, [this] { m_hub.reset(); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this, [this] { m_hub.reset(); }, Qt::QueuedConnection);
     });
     const QString path = m_dir.filePath(QStringLiteral("busgone.json"));
     const BackupOutcome o = backupToFile(drive(), path, 3000);
@@ -256,7 +257,8 @@ void TestFaultServoCan::simulatorLeavesTheBusMidBackup()
     int reads = 0;
     connect(m_bus.get(), &SimCanBus::frameReceived, this, [&](const CanFrameData &f) {
         if (isCommand(f, sc::Command::Read) && ++reads == 60)
-            QMetaObject::invokeMethod(this, [this] { m_bus->close(); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this, [this] { m_bus->close(); }, Qt::QueuedConnection);
     });
     const QString path = m_dir.filePath(QStringLiteral("simgone.json"));
     const BackupOutcome o = backupToFile(drive(), path, 3000);

@@ -11,11 +11,11 @@
 
 #include "core/drive/servomodbus/servomodbusbackend.h"
 #include "core/drive/servomodbus/servomodbusdrive.h"
-#include "tests/integration/faultcheck.h"
 #include "core/link/modbuslink.h"
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simserialbus.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
+#include "tests/integration/faultcheck.h"
 
 #include <QDir>
 #include <QTemporaryDir>
@@ -173,8 +173,7 @@ void TestFaultServoModbus::backupUnderFaults()
     qInfo("%s: %d of %d backups complete; %llu faulty replies, %llu timeouts, %llu retries, "
           "%llu CRC errors, %llu late replies discarded; slowest backup %lld ms",
           qPrintable(faults), ok, rounds, static_cast<unsigned long long>(injected),
-          static_cast<unsigned long long>(link->timeoutCount()),
-          static_cast<unsigned long long>(link->retryCount()),
+          static_cast<unsigned long long>(link->timeoutCount()), static_cast<unsigned long long>(link->retryCount()),
           static_cast<unsigned long long>(link->checksumErrorCount()),
           static_cast<unsigned long long>(link->lateReplyCount()), static_cast<long long>(slowest));
     QVERIFY2(link->retryCount() > 0, "the faults were felt");
@@ -196,7 +195,8 @@ void TestFaultServoModbus::silentMidBackup()
     const BackupOutcome o = backupToFile(b.drive(), path);
     QVERIFY(o.finished);
     QCOMPARE(o.error.code, ErrorCode::Timeout);
-    QVERIFY2(o.error.message.startsWith(QStringLiteral("PA20..PA39: No reply from address 1")), qPrintable(o.error.message));
+    QVERIFY2(o.error.message.startsWith(QStringLiteral("PA20..PA39: No reply from address 1")),
+             qPrintable(o.error.message));
     QVERIFY(!QFile::exists(path));
     qInfo("silent mid-backup: failed after %lld ms: %s", static_cast<long long>(o.elapsedMs),
           qPrintable(o.error.message));
@@ -250,7 +250,8 @@ void TestFaultServoModbus::adapterGoneMidBackup()
     int chunks = 0;
     connect(b.bus.get(), &SimSerialBus::bytesReceived, this, [&] {
         if (++chunks == 4) // the second parameter read is on its way: unplug
-            QMetaObject::invokeMethod(this, [&b] { b.pty->close(); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this, [&b] { b.pty->close(); }, Qt::QueuedConnection);
     });
     const BackupOutcome o = backupToFile(b.drive(), path, 3000);
     QVERIFY2(o.finished, "the backup must not hang when the adapter goes");
@@ -276,7 +277,8 @@ void TestFaultServoModbus::adapterGoneMidRestore()
     int writes = 0;
     connect(b.bus.get(), &SimSerialBus::bytesReceived, this, [&](const QByteArray &request) {
         if (request.size() > 1 && quint8(request.at(1)) == 0x10 && ++writes == 5) // unplug before it is answered
-            QMetaObject::invokeMethod(this, [&b] { b.pty->close(); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this, [&b] { b.pty->close(); }, Qt::QueuedConnection);
     });
     const RestoreOutcome o = restoreFrom(b.drive(), file, 3000);
     QVERIFY2(o.finished, "the restore must not hang when the adapter goes");

@@ -16,10 +16,10 @@
 #include "core/drive/shuoke/shuokebackend.h"
 #include "core/drive/shuoke/shuokedrive.h"
 #include "core/drive/shuoke/shuokeparameter.h"
-#include "tests/integration/faultcheck.h"
 #include "core/protocol/shuoke/shuokecommands.h"
-#include "tests/support/shuokeserialbench.h"
 #include "sim/bus/simserialbus.h"
+#include "tests/integration/faultcheck.h"
+#include "tests/support/shuokeserialbench.h"
 
 #include <QTemporaryDir>
 
@@ -33,7 +33,7 @@ using namespace dd::shuoke;
 namespace {
 
 // The readable settings that do not change the link (the baud code does).
-const QList<int> kSettings = {CmdSetStartSpeed, CmdSetMaxSpeed, CmdSetStopSpeed, CmdSetAcceleration,
+const QList<int> kSettings = {CmdSetStartSpeed,   CmdSetMaxSpeed,    CmdSetStopSpeed,     CmdSetAcceleration,
                               CmdSetDeceleration, CmdSetHomingSpeed, CmdSetGearNumerator, CmdSetGearDenominator};
 
 } // namespace
@@ -104,8 +104,9 @@ void TestFaultShuoke::backupUnderFaults()
     int ok = 0;
     for (int round = 0; round < rounds; ++round) {
         for (int p : kSettings)
-            sim().setSetting(quint8(p), p == CmdSetGearNumerator || p == CmdSetGearDenominator
-                                            ? 1 + qint64(rng() % 60000) : qint64(rng() % 100000));
+            sim().setSetting(quint8(p),
+                             p == CmdSetGearNumerator || p == CmdSetGearDenominator ? 1 + qint64(rng() % 60000)
+                                                                                    : qint64(rng() % 100000));
         const QString path = m_dir.filePath(QStringLiteral("s-%1-%2.json").arg(QTest::currentDataTag()).arg(round));
         const BackupOutcome o = backupToFile(m_drive, path);
         QVERIFY2(o.finished, "a backup must never hang");
@@ -152,7 +153,8 @@ void TestFaultShuoke::silentMidBackup()
             named = &p;
     QVERIFY2(named, qPrintable(o.error.message));
     QVERIFY(!QFile::exists(path));
-    qInfo("silent mid-backup: failed after %lld ms: %s", static_cast<long long>(o.elapsedMs), qPrintable(o.error.message));
+    qInfo("silent mid-backup: failed after %lld ms: %s", static_cast<long long>(o.elapsedMs),
+          qPrintable(o.error.message));
 }
 
 void TestFaultShuoke::silentMidRestore()
@@ -201,7 +203,8 @@ void TestFaultShuoke::adapterGoneMidBackup()
     int chunks = 0;
     connect(m_bench->bus(), &SimSerialBus::bytesReceived, this, [&] {
         if (++chunks == 3)
-            QMetaObject::invokeMethod(this, [this] { m_bench->bus()->endpoint()->close(); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this, [this] { m_bench->bus()->endpoint()->close(); }, Qt::QueuedConnection);
     });
     const QString path = m_dir.filePath(QStringLiteral("unplugged.json"));
     const BackupOutcome o = backupToFile(m_drive, path, 3000);

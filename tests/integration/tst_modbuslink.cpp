@@ -27,10 +27,7 @@ class ScriptedServer : public QObject
 public:
     using Handler = std::function<void(const modbusrtu::Request &, int index)>;
 
-    ScriptedServer()
-    {
-        connect(&pty, &ByteEndpoint::received, this, &ScriptedServer::onBytes);
-    }
+    ScriptedServer() { connect(&pty, &ByteEndpoint::received, this, &ScriptedServer::onBytes); }
 
     bool open() { return !pty.open().isError(); }
 
@@ -47,8 +44,7 @@ public:
         }
         case modbusrtu::WriteSingleRegister:
             return modbusrtu::encodeWriteSingleReply(r.address, r.start, r.values.value(0));
-        default:
-            return modbusrtu::encodeWriteMultipleReply(r.address, r.start, r.count);
+        default: return modbusrtu::encodeWriteMultipleReply(r.address, r.start, r.count);
         }
     }
 
@@ -251,7 +247,7 @@ private slots:
             server.send(server.normalReply(r, index == 0 ? 0 : 1), index == 0 ? timeout + 15 : 25);
         };
         LinkReply *first = link.readHoldingRegisters(1, 0x64, 1);
-        LinkReply *second = link.readHoldingRegisters(1, 0x64, 1);   // same address and function
+        LinkReply *second = link.readHoldingRegisters(1, 0x64, 1); // same address and function
         QVERIFY(waitFinished(first));
         QCOMPARE(first->error().code, ErrorCode::Timeout);
         QVERIFY(waitFinished(second));
@@ -278,7 +274,7 @@ private slots:
         QByteArray held;
         server.handler = [&](const modbusrtu::Request &r, int index) {
             if (index == 0) {
-                held = server.normalReply(r, 0);   // answered only when the next one comes
+                held = server.normalReply(r, 0); // answered only when the next one comes
                 return;
             }
             if (!held.isEmpty()) {
@@ -350,7 +346,7 @@ private slots:
         QVERIFY(link.open(settingsFor(server)));
         ModbusRequest q;
         q.pdu = {9, modbusrtu::ReadHoldingRegisters, 0x66, 1, {}};
-        q.timeoutMs = 4;     // Qt's own timeout cannot go below 10 ms
+        q.timeoutMs = 4; // Qt's own timeout cannot go below 10 ms
         q.retries = 0;
         QElapsedTimer t;
         t.start();

@@ -43,12 +43,15 @@ private slots:
         const QByteArray request = QByteArray::fromHex("0103000000 0ac5cd00ff0d0a11");
         QCOMPARE(client.write(request), request.size());
         QByteArray got;
-        QTRY_VERIFY_WITH_TIMEOUT((got = [&] {
-                                     QByteArray all;
-                                     for (const auto &args : std::as_const(received))
-                                         all += args.at(0).toByteArray();
-                                     return all;
-                                 }()) == request, 2000);
+        QTRY_VERIFY_WITH_TIMEOUT((got =
+                                      [&] {
+                                          QByteArray all;
+                                          for (const auto &args : std::as_const(received))
+                                              all += args.at(0).toByteArray();
+                                          return all;
+                                      }())
+                                     == request,
+                                 2000);
 
         const QByteArray reply = QByteArray::fromHex("01030200 01 79 84 0a 0d 00 ff");
         QCOMPARE(pty.write(reply), reply.size());

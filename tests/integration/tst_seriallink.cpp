@@ -4,7 +4,6 @@
 
 #include <QElapsedTimer>
 
-
 #include "core/link/linkreply.h"
 #include "core/link/seriallink.h"
 #include "sim/bus/ptyendpoint.h"
@@ -74,7 +73,7 @@ private slots:
         // A stale copy reaches the port while nothing is pending and the event loop has not
         // read it yet; the request leaves at once (the link is idle).
         QCOMPARE(pty.write(reply('Q', 0x11)), 4);
-        QTest::qSleep(20);   // no event loop: the pty delivers it to the client's side, unread
+        QTest::qSleep(20); // no event loop: the pty delivers it to the client's side, unread
         SerialRequest q;
         q.bytes = "Q1";
         q.matcher = replyOf('Q');

@@ -8,16 +8,16 @@
 // never share a bus and pipelined reads do not stall on Nagle's algorithm.
 #include <QtTest>
 
-#include "core/link/connectionsettings.h"
 #include "core/drive/servocan/servocanbackend.h"
 #include "core/drive/servocan/servocandrive.h"
 #include "core/drive/servocan/servocanstationtracker.h"
 #include "core/link/canlink.h"
+#include "core/link/connectionsettings.h"
 #include "core/link/traffictap.h"
 #include "core/protocol/servocan/servocan.h"
 #include "sim/bus/simcanbus.h"
-#include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "sim/servocan/simservocandrive.h"
 
 #include <QElapsedTimer>
 
@@ -381,7 +381,7 @@ void TestServoCanDrive::jogRunsAndStopStops()
     QVERIFY(!d->isJogging());
     QVERIFY(waitUntil([this] { return !m_sim1->motor().isMoving(); }, 2000));
     QVERIFY(waitUntil([d] { return !d->status().running; }, 1000));
-    QVERIFY(m_sim1->motor().isEnabled()); // 0x26 holds the shaft
+    QVERIFY(m_sim1->motor().isEnabled());              // 0x26 holds the shaft
     QCOMPARE(sentFrames(sc::Command::Stop).size(), 2); // at once and behind the queue
     d->setJogLeaseMs(300);
 }

@@ -3,11 +3,11 @@
 // models the wire time, the baud rate and faults.
 
 #include "core/drive/servomodbus/servomodbusbackend.h"
-#include "core/protocol/familytraits.h"
 #include "core/drive/servomodbus/servomodbusdrive.h"
 #include "core/drive/servomodbus/servomodbusscanner.h"
 #include "core/link/modbuslink.h"
 #include "core/link/traffictap.h"
+#include "core/protocol/familytraits.h"
 #include "core/protocol/modbus/crc16.h"
 #include "core/protocol/servomodbus/servomodbus.h"
 #include "sim/bus/ptyendpoint.h"
@@ -197,7 +197,9 @@ private slots:
         const QList<QByteArray> tx = b.txFrames();
         // Two 0x10 runs (PA10..PA12, PA40), then the read-back plan.
         QCOMPARE(tx[0], withCrc16(QByteArray::fromHex("0110006e00030604d2fffb0007")));
-        QCOMPARE(tx[1], withCrc16(QByteArray::fromHex("0110008c000102" "0063")));
+        QCOMPARE(tx[1],
+                 withCrc16(QByteArray::fromHex("0110008c000102"
+                                               "0063")));
         QCOMPARE(tx.size(), 2 + int(servomodbus::planReads({10, 11, 12, 40}).size()));
         QCOMPARE(progress.size(), tx.size());
         QCOMPARE(progress.last().at(0).toInt(), int(tx.size()));
@@ -209,12 +211,16 @@ private slots:
         Bench b({driveConfig(1, 115200)});
         QVERIFY(b.open(115200));
         ServoModbusDrive *d = b.drive(1);
-        struct Case { QList<ParameterWrite> writes; ErrorCode code; };
+        struct Case
+        {
+            QList<ParameterWrite> writes;
+            ErrorCode code;
+        };
         const QList<Case> cases = {
             {{{10, 70000}}, ErrorCode::OutOfRange},
-            {{{10, 1}, {11, 40000}}, ErrorCode::OutOfRange},     // the dictionary: int16
-            {{{51, 300}}, ErrorCode::OutOfRange},                // PA51: 0..255
-            {{{2, 7060}}, ErrorCode::NotSupported},              // firmware: read-only
+            {{{10, 1}, {11, 40000}}, ErrorCode::OutOfRange}, // the dictionary: int16
+            {{{51, 300}}, ErrorCode::OutOfRange},            // PA51: 0..255
+            {{{2, 7060}}, ErrorCode::NotSupported},          // firmware: read-only
             {{{60, 1}}, ErrorCode::InvalidArgument},
             {{{5, 1}, {5, 2}}, ErrorCode::InvalidArgument},
         };
@@ -355,7 +361,8 @@ private slots:
         QVERIFY(waitDone(r));
         QVERIFY2(r->ok(), qPrintable(r->error().message));
         QCOMPARE(b.txCount(), 1);
-        QVERIFY2(std::abs(r->samples().value("speed") - 1000.0) < 2.0, qPrintable(QString::number(r->samples().value("speed"))));
+        QVERIFY2(std::abs(r->samples().value("speed") - 1000.0) < 2.0,
+                 qPrintable(QString::number(r->samples().value("speed"))));
         QVERIFY(r->samples().value("current") > 0.0);
         // Every channel: 0x00..0x16 is 23 registers, two requests.
         r = d->readChannels({});

@@ -2,16 +2,16 @@
 // private port) against simulated Shuoke drives on a SimCanBus.
 #include <QtTest>
 
-#include "core/drive/drivereply.h"
 #include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
 #include "core/drive/shuoke/shuokebackend.h"
 #include "core/drive/shuoke/shuokecantransport.h"
 #include "core/drive/shuoke/shuokedrive.h"
+#include "sim/bus/simcanbus.h"
 #include "tests/support/driveprobe.h"
 #include "tests/support/shuokecanbench.h"
 #include "tests/support/shuokeserialbench.h"
 #include "tests/support/waitok.h"
-#include "sim/bus/simcanbus.h"
 
 #include <cmath>
 #include <memory>
@@ -92,8 +92,8 @@ private slots:
         QCOMPARE(b->parameters().size(), 7); // no gears on the M4505S
         QVERIFY(b->info().value(QStringLiteral("notReadable")).toList().contains(int(CmdSkipCrcCheck)));
 
-        DriveReply *w = other->writeParameters({{CmdSetHomingSpeed, 7000}, {CmdFixedLengthReplies, 1},
-                                                {CmdCanBitrate, 8}});
+        DriveReply *w = other->writeParameters(
+            {{CmdSetHomingSpeed, 7000}, {CmdFixedLengthReplies, 1}, {CmdCanBitrate, 8}});
         WAIT_OK(w);
         QVERIFY(w->writeResults().value(0).verified);
         QVERIFY(!w->writeResults().value(1).readable);
@@ -102,7 +102,7 @@ private slots:
         QCOMPARE(sim7->drive().setting(CmdSetHomingSpeed), 7000);
         QCOMPARE(sim7->drive().setting(CmdCanBitrate), 8);
         QCOMPARE(sim7->drive().config().canBitrateCode, kDefaultCanBitrateCode); // after restart only
-        QCOMPARE(m_sim->drive().setting(CmdSetHomingSpeed), 5000);                 // the other drive
+        QCOMPARE(m_sim->drive().setting(CmdSetHomingSpeed), 5000);               // the other drive
     }
 
     void refusedBeforeSending()
@@ -112,7 +112,7 @@ private slots:
         QList<DriveReply *> replies;
         replies << m_drive->writeParameters({{CmdSetAcceleration, 100001}});
         replies << m_drive->sendCommand(CmdSetIoSubstitution, QByteArray::fromHex("01020304050607")); // 7 bytes
-        replies << m_drive->sendCommand(CmdSerialToCanEcho, QByteArray(5, '\1'));                  // serial only
+        replies << m_drive->sendCommand(CmdSerialToCanEcho, QByteArray(5, '\1'));                     // serial only
         replies << m_drive->moveRelative(qint64(1) << 40, 0);
         for (DriveReply *r : replies) {
             QVERIFY(ShuokeSerialBench::wait(r));

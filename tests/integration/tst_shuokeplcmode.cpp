@@ -9,10 +9,10 @@
 #include "core/drive/shuoke/shuokedrive.h"
 #include "core/drive/shuoke/shuokeplctransport.h"
 #include "core/link/modbuslink.h"
+#include "sim/bus/simserialbus.h"
 #include "tests/support/driveprobe.h"
 #include "tests/support/shuokeserialbench.h"
 #include "tests/support/waitok.h"
-#include "sim/bus/simserialbus.h"
 
 #include <cmath>
 #include <memory>
@@ -76,8 +76,10 @@ private slots:
         QCOMPARE(r->parameters().size(), 9);
         QCOMPARE(r->parameters().value(CmdSetBaudCode), 7);
         QCOMPARE(r->parameters().value(CmdSetMaxSpeed), 10000);
-        DriveReply *w = m_drive->writeParameters({{CmdSetStopSpeed, 900}, {CmdSetGearDenominator, 4},
-                                                 {CmdEncoderDirection, 1}, {CmdNoEncoderMaxPulses, 6000}});
+        DriveReply *w = m_drive->writeParameters({{CmdSetStopSpeed, 900},
+                                                  {CmdSetGearDenominator, 4},
+                                                  {CmdEncoderDirection, 1},
+                                                  {CmdNoEncoderMaxPulses, 6000}});
         WAIT_OK(w);
         QVERIFY(w->writeResults().value(0).verified);
         QVERIFY(w->writeResults().value(1).verified);
@@ -91,7 +93,8 @@ private slots:
         bool sawRegister = false;
         for (const TrafficRecord &rec : m_bench->records())
             if (rec.direction == TrafficRecord::Direction::Tx && rec.bytes.size() >= 4 && rec.bytes.at(1) == 0x10)
-                sawRegister = sawRegister || (quint8(rec.bytes.at(2)) == 0x10 && quint8(rec.bytes.at(3)) == CmdSetStopSpeed);
+                sawRegister = sawRegister
+                    || (quint8(rec.bytes.at(2)) == 0x10 && quint8(rec.bytes.at(3)) == CmdSetStopSpeed);
         QVERIFY(sawRegister);
     }
 
@@ -99,7 +102,8 @@ private slots:
     {
         QVERIFY(setUp({config()}));
         const int tx = m_bench->txCount();
-        QList<DriveReply *> replies{m_drive->sendCommand(CmdHandshake), m_drive->readChannels({QStringLiteral("inputs")}),
+        QList<DriveReply *> replies{m_drive->sendCommand(CmdHandshake),
+                                    m_drive->readChannels({QStringLiteral("inputs")}),
                                     m_drive->sendCommand(CmdSetIoSubstitution, QByteArray::fromHex("0102")),
                                     m_drive->writeParameters({{CmdSetMaxSpeed, 100001}})};
         for (DriveReply *r : replies) {
@@ -170,7 +174,8 @@ private slots:
         const QList<TrafficRecord> &rec = m_bench->records();
         int gaps = 0;
         for (int i = 1; i < rec.size(); ++i) {
-            if (rec[i].direction == TrafficRecord::Direction::Tx && rec[i - 1].direction == TrafficRecord::Direction::Rx) {
+            if (rec[i].direction == TrafficRecord::Direction::Tx
+                && rec[i - 1].direction == TrafficRecord::Direction::Rx) {
                 smallest = std::min(smallest, rec[i].timestampUs - rec[i - 1].timestampUs);
                 ++gaps;
             }

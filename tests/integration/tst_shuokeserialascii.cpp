@@ -8,10 +8,10 @@
 #include "core/drive/shuoke/shuokeserialtransport.h"
 #include "core/link/seriallink.h"
 #include "core/protocol/shuoke/shuokeascii.h"
+#include "sim/bus/simserialbus.h"
 #include "tests/support/driveprobe.h"
 #include "tests/support/shuokeserialbench.h"
 #include "tests/support/waitok.h"
-#include "sim/bus/simserialbus.h"
 
 #include <cmath>
 #include <memory>

@@ -7,8 +7,8 @@
 #include "core/drive/shuoke/shuokebackend.h"
 #include "core/drive/shuoke/shuokediscovery.h"
 #include "core/drive/shuoke/shuoketransport.h"
-#include "tests/support/shuokeserialbench.h"
 #include "sim/bus/simserialbus.h"
+#include "tests/support/shuokeserialbench.h"
 
 #include <memory>
 
@@ -84,7 +84,7 @@ private slots:
         QCOMPARE(found.at(1).address, 9);
         QCOMPARE(found.at(1).baud, 38400);
         QCOMPARE(found.at(0).framing, framing);
-        QCOMPARE(skipped, 1); // nobody answered the broadcast at 9600
+        QCOMPARE(skipped, 1);                                    // nobody answered the broadcast at 9600
         QCOMPARE(m_bench->backend()->transport()->baud(), 9600); // left as it was
     }
 
@@ -104,7 +104,8 @@ private slots:
         // every address was asked with the handshake
         int handshakes = 0;
         for (const TrafficRecord &r : m_bench->records())
-            if (r.direction == TrafficRecord::Direction::Tx && r.bytes.size() == 5 && quint8(r.bytes.at(1)) == CmdHandshake)
+            if (r.direction == TrafficRecord::Direction::Tx && r.bytes.size() == 5
+                && quint8(r.bytes.at(1)) == CmdHandshake)
                 ++handshakes;
         QCOMPARE(handshakes, 12); // the garbled broadcast found nobody: every address is asked
     }

@@ -2,18 +2,18 @@
 // pty, against simulated drives on a SimSerialBus.
 #include <QtTest>
 
-#include "core/drive/drivereply.h"
 #include "core/drive/driveconnection.h"
+#include "core/drive/drivereply.h"
 #include "core/drive/shuoke/shuokebackend.h"
 #include "core/drive/shuoke/shuokedrive.h"
 #include "core/drive/shuoke/shuokeserialtransport.h"
 #include "core/link/linkreply.h"
 #include "core/link/seriallink.h"
 #include "core/protocol/shuoke/shuokertu.h"
+#include "sim/bus/simserialbus.h"
 #include "tests/support/driveprobe.h"
 #include "tests/support/shuokeserialbench.h"
 #include "tests/support/waitok.h"
-#include "sim/bus/simserialbus.h"
 
 #include <cmath>
 #include <memory>
@@ -116,8 +116,8 @@ private slots:
     void writeAndVerify()
     {
         QVERIFY(setUp(config()));
-        DriveReply *r = m_drive->writeParameters({{CmdSetStartSpeed, 1234}, {CmdSetMaxSpeed, 20000},
-                                                 {CmdSetGearNumerator, 3}});
+        DriveReply *r = m_drive->writeParameters(
+            {{CmdSetStartSpeed, 1234}, {CmdSetMaxSpeed, 20000}, {CmdSetGearNumerator, 3}});
         WAIT_OK(r);
         QCOMPARE(r->writeResults().size(), 3);
         for (const ParameterWriteResult &w : r->writeResults()) {
@@ -165,7 +165,7 @@ private slots:
         replies << m_drive->writeParameters({{CmdSetBaudCode, 9}});
         replies << m_drive->jog(100001);
         replies << m_drive->moveRelative(100, 200000);
-        replies << m_drive->home(true);            // M4505: no homing command
+        replies << m_drive->home(true); // M4505: no homing command
         replies << m_drive->sendCommand(CmdSetHomingSpeed, encodeUInt32(10));
         for (DriveReply *r : replies) {
             QVERIFY(ShuokeSerialBench::wait(r));
@@ -377,7 +377,8 @@ private slots:
         int gaps = 0;
         const QList<TrafficRecord> &rec = m_bench->records();
         for (int i = 1; i < rec.size(); ++i) {
-            if (rec[i].direction != TrafficRecord::Direction::Tx || rec[i - 1].direction != TrafficRecord::Direction::Rx)
+            if (rec[i].direction != TrafficRecord::Direction::Tx
+                || rec[i - 1].direction != TrafficRecord::Direction::Rx)
                 continue;
             smallest = std::min(smallest, rec[i].timestampUs - rec[i - 1].timestampUs);
             ++gaps;
@@ -451,7 +452,7 @@ private slots:
     {
         SimShuokeDrive::Config c = config();
         c.byteOrder = ByteOrder::BigEndian;
-        QVERIFY(setUp(c)); // host little-endian
+        QVERIFY(setUp(c));                                                    // host little-endian
         DriveReply *r = m_drive->writeParameters({{CmdSetMaxSpeed, 100000}}); // A0 86 01 00
         QVERIFY(ShuokeSerialBench::wait(r));
         QCOMPARE(r->error().code, ErrorCode::DriveException);
@@ -475,7 +476,7 @@ private slots:
         SimShuokeDrive::Config c = config();
         c.baudCode = 7;
         c.powerUpWindowMs = 1500;
-        QVERIFY(setUp(c)); // host at 9600
+        QVERIFY(setUp(c));                   // host at 9600
         WAIT_OK(m_drive->refreshIdentity()); // within the window
         QTRY_COMPARE_WITH_TIMEOUT(m_sim->baud(), 19200, 3000);
         DriveReply *late = m_drive->sendCommand(CmdHandshake);

@@ -7,8 +7,8 @@
 #include "core/drive/drivereply.h"
 #include "core/drive/shuoke/shuokedrive.h"
 #include "core/protocol/shuoke/shuokecommands.h"
-#include "tests/support/shuokeserialbench.h"
 #include "sim/bench/simbench.h"
+#include "tests/support/shuokeserialbench.h"
 
 using namespace dd;
 using namespace dd::shuoke;

@@ -30,7 +30,11 @@ QByteArray request(quint8 addr, const QByteArray &data4)
 class EchoDevice : public SimSerialDevice
 {
 public:
-    EchoDevice(quint8 addr, int baud) : m_addr(addr), m_baud(baud) {}
+    EchoDevice(quint8 addr, int baud)
+        : m_addr(addr)
+        , m_baud(baud)
+    {
+    }
 
     QList<QByteArray> onBusBytes(const QByteArray &bytes, qint64 nowUs) override
     {
@@ -162,8 +166,8 @@ private slots:
         QFETCH(int, baud);
         EchoDevice *dev = addEcho(1, baud);
         QVERIFY(openClient(baud));
-        const qint64 floorUs = static_cast<qint64>(WireTime::serialBytesUs(FrameSize, baud))
-                + dev->latencyUs() + static_cast<qint64>(WireTime::serialBytesUs(FrameSize, baud));
+        const qint64 floorUs = static_cast<qint64>(WireTime::serialBytesUs(FrameSize, baud)) + dev->latencyUs()
+            + static_cast<qint64>(WireTime::serialBytesUs(FrameSize, baud));
         for (int i = 0; i < 3; ++i) {
             const QByteArray req = request(1, QByteArray::number(i).rightJustified(4, '0'));
             send(req);
@@ -171,7 +175,8 @@ private slots:
             QCOMPARE(m_rx.toHex(' '), expectedReply(1, req).toHex(' '));
             const qint64 took = m_arrivalsUs.first();
             qInfo("%d baud: reply after %lld us (wire-time floor %lld us)", baud, took, floorUs);
-            QVERIFY2(took >= floorUs, qPrintable(QStringLiteral("reply after %1 us, floor %2 us").arg(took).arg(floorUs)));
+            QVERIFY2(took >= floorUs,
+                     qPrintable(QStringLiteral("reply after %1 us, floor %2 us").arg(took).arg(floorUs)));
             QVERIFY2(took < floorUs + 100000, "reply far later than its wire time");
         }
         QCOMPARE(dev->heard.size(), 3 * FrameSize);

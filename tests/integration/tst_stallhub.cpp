@@ -28,8 +28,7 @@ namespace {
 
 qint64 steadyNs()
 {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(
-               std::chrono::steady_clock::now().time_since_epoch())
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
         .count();
 }
 
@@ -51,7 +50,8 @@ public:
     ~SimThread()
     {
         if (m_bench)
-            QMetaObject::invokeMethod(m_bench, [this] { delete m_bench; }, Qt::BlockingQueuedConnection);
+            QMetaObject::invokeMethod(
+                m_bench, [this] { delete m_bench; }, Qt::BlockingQueuedConnection);
         m_thread.quit();
         m_thread.wait();
     }
@@ -228,8 +228,8 @@ void TestStallHub::keepAliveSurvivesABlockedGuiThread()
             maxGap = std::max(maxGap, ms(x - prev));
         prev = x;
     }
-    qInfo("GUI thread blocked %.0f ms: %d keep-alives meanwhile, max gap %.1f ms",
-          ms(blockEnd - blockStart), during, maxGap);
+    qInfo("GUI thread blocked %.0f ms: %d keep-alives meanwhile, max gap %.1f ms", ms(blockEnd - blockStart), during,
+          maxGap);
     QVERIFY2(during >= 9, "the keep-alive went on while the GUI thread was blocked");
     QVERIFY2(maxGap <= 150, qPrintable(QStringLiteral("keep-alive gap %1 ms").arg(maxGap)));
     QVERIFY(m_sim->onDrive([](SimServoCanDrive &d) { return d.isHostOnline(); }));
@@ -273,8 +273,8 @@ void TestStallHub::jogLeaseStopsTheAxisWhenTheGuiBlocks()
     QVERIFY2(delay >= 295 && delay <= 400, qPrintable(QStringLiteral("stop after %1 ms").arg(delay)));
     // Decelerating already, at rest soon.
     QVERIFY(m_sim->onDrive([](SimServoCanDrive &d) { return d.motor().speedRpm(); }) < 300);
-    QVERIFY(waitUntil([this] { return !m_sim->onDrive([](SimServoCanDrive &d) { return d.motor().isMoving(); }); },
-                      2000));
+    QVERIFY(
+        waitUntil([this] { return !m_sim->onDrive([](SimServoCanDrive &d) { return d.motor().isMoving(); }); }, 2000));
     // The GUI learns why once it runs again.
     QVERIFY(expired.size() == 1 || expired.wait(1000));
     QCOMPARE(expired.first().at(0).toInt(), id);

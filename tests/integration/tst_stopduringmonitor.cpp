@@ -11,8 +11,8 @@
 #include "core/link/traffictap.h"
 #include "core/protocol/servocan/servocan.h"
 #include "core/protocol/shuoke/shuokecommands.h"
-#include "sim/bench/simbench.h"
 #include "core/trend/channelsampler.h"
+#include "sim/bench/simbench.h"
 #include "tests/support/replywait.h"
 
 #include <QSignalSpy>
@@ -166,14 +166,16 @@ void TestStopDuringMonitor::shuokeStopAfterAQueuedJogEndsStopped()
     sampler.stop();
     // The axis comes to rest (the drive decelerates) and stays there.
     bool running = true;
-    QVERIFY(spinUntil([&] {
-        DriveReply *r = drive->readStatus();
-        if (!waitFinished(r))
-            return false;
-        running = r->status().running;
-        r->deleteLater();
-        return !running;
-    }, 5000));
+    QVERIFY(spinUntil(
+        [&] {
+            DriveReply *r = drive->readStatus();
+            if (!waitFinished(r))
+                return false;
+            running = r->status().running;
+            r->deleteLater();
+            return !running;
+        },
+        5000));
 }
 
 void TestStopDuringMonitor::shuokeStopCancelsTheRestOfAMove()
@@ -226,16 +228,18 @@ void TestStopDuringMonitor::servoCanStopAndDisableJumpTheSamplersReads()
     Drive *drive = c.drive(1);
     QVERIFY(drive);
     // The bus connects asynchronously: the first read waits for it.
-    QVERIFY(spinUntil([&] {
-        DriveReply *r = drive->readChannels({QStringLiteral("speed")});
-        const bool ok = waitFinished(r) && r->ok();
-        r->deleteLater();
-        return ok;
-    }, 5000));
+    QVERIFY(spinUntil(
+        [&] {
+            DriveReply *r = drive->readChannels({QStringLiteral("speed")});
+            const bool ok = waitFinished(r) && r->ok();
+            r->deleteLater();
+            return ok;
+        },
+        5000));
 
     ChannelSampler sampler(drive);
-    sampler.setChannels({QStringLiteral("speed"), QStringLiteral("torque"), QStringLiteral("current"),
-                         QStringLiteral("bus-voltage")});
+    sampler.setChannels(
+        {QStringLiteral("speed"), QStringLiteral("torque"), QStringLiteral("current"), QStringLiteral("bus-voltage")});
     sampler.setIntervalMs(1);
     QSignalSpy sampled(&sampler, &ChannelSampler::sampled);
     sampler.start();

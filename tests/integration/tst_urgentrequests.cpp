@@ -113,7 +113,7 @@ void TestUrgentRequests::serialLinkSendsUrgentRightAfterTheOneOnTheWire()
     QVERIFY2(link.open(s, &e), qPrintable(e.message));
 
     QList<LinkReply *> replies;
-    replies << link.send(echoRequest("A1", false));   // on the wire at once
+    replies << link.send(echoRequest("A1", false)); // on the wire at once
     replies << link.send(echoRequest("A2", false));
     replies << link.send(echoRequest("A3", false));
     replies << link.send(echoRequest("U1", true));
@@ -181,7 +181,7 @@ void TestUrgentRequests::modbusLinkSendsUrgentRightAfterTheOneInFlight()
     for (const modbusrtu::Request &r : std::as_const(heard))
         order << r.start;
     QCOMPARE(order, (QList<int>{0x10, 0x20, 0x21, 0x11, 0x12, 0x13}));
-    QCOMPARE(replies.at(1)->registers(), QList<quint16>{0x11});   // each got its own answer
+    QCOMPARE(replies.at(1)->registers(), QList<quint16>{0x11}); // each got its own answer
     QCOMPARE(replies.at(3)->registers(), (QList<quint16>{0x20, 0}));
 }
 
@@ -192,7 +192,7 @@ void TestUrgentRequests::canLinkUrgentGoesAheadOfTheWindowQueue()
     CanSettings cs;
     cs.plugin = QStringLiteral("virtualcan");
     cs.interface = hub.interfaceName(1);
-    cs.maxInFlight = 1;   // one request on the bus at a time: the rest wait in the queue
+    cs.maxInFlight = 1; // one request on the bus at a time: the rest wait in the queue
     cs.retries = 0;
     cs.responseTimeoutMs = 1000;
     // The peer answers request id 0x100 + n with id 0x200 + n, 20 ms later.
@@ -201,8 +201,9 @@ void TestUrgentRequests::canLinkUrgentGoesAheadOfTheWindowQueue()
     connect(&peer, &CanLink::frameReceived, this, [&](const CanFrameData &f) {
         heard << f.id;
         if (f.id >= 0x100 && f.id < 0x180)
-            QTimer::singleShot(20, Qt::PreciseTimer, &peer,
-                               [&peer, f] { peer.send(CanFrameData{f.id + 0x100, f.data, false}); });
+            QTimer::singleShot(20, Qt::PreciseTimer, &peer, [&peer, f] {
+                peer.send(CanFrameData{f.id + 0x100, f.data, false});
+            });
     });
     Error e;
     QVERIFY2(peer.open(cs, &e), qPrintable(e.message));
@@ -228,10 +229,10 @@ void TestUrgentRequests::canLinkUrgentGoesAheadOfTheWindowQueue()
         return link.request(r);
     };
     QList<LinkReply *> replies;
-    replies << request(1, false, true)    // in flight at once
+    replies << request(1, false, true) // in flight at once
             << request(2, false, true) << request(3, false, true)
-            << request(0x12, true, false)  // urgent, unanswered: takes no place, goes at once
-            << request(0x11, true, true)   // urgent, answered: the next one in the window
+            << request(0x12, true, false) // urgent, unanswered: takes no place, goes at once
+            << request(0x11, true, true)  // urgent, answered: the next one in the window
             << request(4, false, true);
     QVERIFY(waitAll(replies));
     for (LinkReply *r : replies)

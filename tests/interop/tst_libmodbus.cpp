@@ -10,9 +10,9 @@
 
 #include <QProcess>
 
+#include <QtTest>
 #include <csignal>
 #include <sys/prctl.h>
-#include <QtTest>
 
 using namespace dd;
 
@@ -27,7 +27,10 @@ bool waitDone(R *r, int ms = 5000)
     return test::waitInEventLoop(r, ms);
 }
 
-quint16 initial(int reg) { return quint16(1000 + reg); }
+quint16 initial(int reg)
+{
+    return quint16(1000 + reg);
+}
 
 } // namespace
 
@@ -76,7 +79,8 @@ private slots:
         QVERIFY(!m_serverEnd->open().isError());
         QVERIFY(!m_hostEnd->open().isError());
         connect(m_serverEnd, &ByteEndpoint::received, m_hostEnd, [this](const QByteArray &b) { m_hostEnd->write(b); });
-        connect(m_hostEnd, &ByteEndpoint::received, m_serverEnd, [this](const QByteArray &b) { m_serverEnd->write(b); });
+        connect(m_hostEnd, &ByteEndpoint::received, m_serverEnd,
+                [this](const QByteArray &b) { m_serverEnd->write(b); });
         m_server = new QProcess(this);
         m_server->setProcessChannelMode(QProcess::ForwardedErrorChannel);
         // Dies with the test: a test that aborts (a sanitizer report) must not leave the

@@ -33,11 +33,9 @@ class TestMbpoll : public QObject
     QString mbpoll(const QStringList &args, int *exitCode)
     {
         QProcess p;
-        QStringList all{QStringLiteral("-m"), QStringLiteral("rtu"),
-                        QStringLiteral("-a"), QString::number(Address),
-                        QStringLiteral("-b"), QString::number(Baud),
-                        QStringLiteral("-P"), QStringLiteral("none"),
-                        QStringLiteral("-1")};
+        QStringList all{QStringLiteral("-m"),     QStringLiteral("rtu"),  QStringLiteral("-a"),
+                        QString::number(Address), QStringLiteral("-b"),   QString::number(Baud),
+                        QStringLiteral("-P"),     QStringLiteral("none"), QStringLiteral("-1")};
         all += args;
         p.start(m_mbpoll, all);
         if (!p.waitForStarted(5000))
@@ -98,8 +96,8 @@ private slots:
         QCOMPARE(v.size(), 10);
         for (int n = 0; n < 10; ++n)
             QCOMPARE(v.value(101 + n), qint64(m_drive->parameter(n)));
-        QCOMPARE(v.value(101), qint64(315));   // PA0
-        QCOMPARE(v.value(103), qint64(7051));  // PA2: firmware
+        QCOMPARE(v.value(101), qint64(315));  // PA0
+        QCOMPARE(v.value(103), qint64(7051)); // PA2: firmware
     }
 
     void readsTheMonitorBlock()

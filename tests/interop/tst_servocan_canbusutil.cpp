@@ -15,13 +15,13 @@
 
 #include "core/protocol/servocan/servocan.h"
 #include "sim/bus/simcanbus.h"
-#include "sim/servocan/simservocandrive.h"
 #include "sim/bus/virtualcanhub.h"
+#include "sim/servocan/simservocandrive.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
-#include <QLibraryInfo>
 #include <QCanBusFrame>
+#include <QLibraryInfo>
 #include <QProcess>
 #include <QRegularExpression>
 
@@ -154,9 +154,11 @@ void TestServoCanCanbusutil::readRequestIsAnswered()
     QVERIFY(waitForOutput(l, framePattern(sc::readReplyParameter(kStation, 75, kStation)), 5000));
     // Bus voltage (0xAB): int32 in b3..b6, about 310 V.
     QVERIFY(send(sc::read(kStation, sc::ReadType::BusVoltage)));
-    QVERIFY(waitForOutput(l, QRegularExpression(QStringLiteral("\\b0*67\\b.*\\b03\\s+12\\s+AB\\s+3[0-9A-F]\\s+01\\s+00\\s+00\\s+FF"),
-                                                QRegularExpression::CaseInsensitiveOption),
-                          5000));
+    QVERIFY(waitForOutput(
+        l,
+        QRegularExpression(QStringLiteral("\\b0*67\\b.*\\b03\\s+12\\s+AB\\s+3[0-9A-F]\\s+01\\s+00\\s+00\\s+FF"),
+                           QRegularExpression::CaseInsensitiveOption),
+        5000));
 }
 
 void TestServoCanCanbusutil::writeThenReadBack()
@@ -185,8 +187,9 @@ void TestServoCanCanbusutil::jogStopsByWatchdogWithoutKeepAlive()
     QVERIFY2(t.elapsed() > 1000, "stopped long before the 2 s watchdog");
     QCOMPARE(m_sim->stats().watchdogTrips, trips + 1);
     QVERIFY(m_sim->motor().isEnabled());
-    QVERIFY(waitForOutput(l, QRegularExpression(QStringLiteral("\\b0*67\\b.*\\b03\\s+10\\s+00\\s"),
-                                                QRegularExpression::CaseInsensitiveOption),
+    QVERIFY(waitForOutput(l,
+                          QRegularExpression(QStringLiteral("\\b0*67\\b.*\\b03\\s+10\\s+00\\s"),
+                                             QRegularExpression::CaseInsensitiveOption),
                           1000));
     const qint32 pos = static_cast<qint32>(m_sim->motor().position());
     QVERIFY(pos > 0);

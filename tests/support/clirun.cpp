@@ -52,7 +52,7 @@ QProcess *startCli(const QStringList &arguments, const QHash<QString, QString> &
 {
     auto *p = new QProcess;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C"));   // untranslated messages
+    env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C")); // untranslated messages
     env.insert(QStringLiteral("LANGUAGE"), QStringLiteral("en"));
     for (auto it = environment.begin(); it != environment.end(); ++it) {
         if (it.value().isEmpty())

@@ -13,13 +13,13 @@ namespace dd::test {
 struct CliRun
 {
     int exitCode = -1;
-    bool finished = false;      // false: it had to be killed after the timeout
+    bool finished = false; // false: it had to be killed after the timeout
     QByteArray out;
     QByteArray err;
 
-    QJsonObject json() const;              // stdout as one JSON document
-    QList<QJsonObject> jsonLines() const;  // stdout as JSON lines
-    int txFrames() const;                  // "TX" lines of --trace on stderr
+    QJsonObject json() const;             // stdout as one JSON document
+    QList<QJsonObject> jsonLines() const; // stdout as JSON lines
+    int txFrames() const;                 // "TX" lines of --trace on stderr
     QString text() const { return QString::fromUtf8(out + err); }
 };
 
@@ -30,8 +30,7 @@ QString cliPath();
 CliRun runCli(const QStringList &arguments, int timeoutMs = 30000);
 // The same with changes to the environment (by default LC_ALL=C and LANGUAGE=en, for
 // untranslated messages): each entry sets a variable, or removes it when its value is empty.
-CliRun runCli(const QStringList &arguments, const QHash<QString, QString> &environment,
-              int timeoutMs = 30000);
+CliRun runCli(const QStringList &arguments, const QHash<QString, QString> &environment, int timeoutMs = 30000);
 // Starts the CLI and returns the running process (the caller waits, signals, deletes).
 QProcess *startCli(const QStringList &arguments);
 QProcess *startCli(const QStringList &arguments, const QHash<QString, QString> &environment);

@@ -22,10 +22,10 @@ public:
 
     // A started bench with `drives` on its bus (in `framing`, with `check`) and the host
     // connected with `settings`; nullptr, with a warning saying why, when a step fails.
-    static std::unique_ptr<ShuokeSerialBench>
-    create(const QList<SimShuokeDrive::Config> &drives, const ConnectionSettings &settings,
-           SimShuokeSerialDevice::Framing framing = SimShuokeSerialDevice::Framing::Rtu,
-           shuoke::AsciiCheck check = shuoke::AsciiCheck::PlainSum);
+    static std::unique_ptr<ShuokeSerialBench> create(
+        const QList<SimShuokeDrive::Config> &drives, const ConnectionSettings &settings,
+        SimShuokeSerialDevice::Framing framing = SimShuokeSerialDevice::Framing::Rtu,
+        shuoke::AsciiCheck check = shuoke::AsciiCheck::PlainSum);
 
     // Creates the pty and the bus; false (and `error`) when ptys are unavailable.
     bool start(QString *error = nullptr);

@@ -5,7 +5,7 @@
 namespace dd {
 class SimCanBus;
 class VirtualCanHub;
-}
+} // namespace dd
 
 namespace dd::test {
 

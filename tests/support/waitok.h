@@ -7,9 +7,9 @@
 
 // Waits for the DriveReply `reply` (up to 8 s) and fails the test unless it finished
 // without an error (the error's message is shown).
-#define WAIT_OK(reply)                                                                              \
-    do {                                                                                            \
-        dd::DriveReply *r_ = (reply);                                                               \
-        QVERIFY2(dd::test::waitForReply(r_, 8000), "no answer in time");                            \
-        QVERIFY2(r_->ok(), qPrintable(r_->error().message));                                        \
+#define WAIT_OK(reply)                                                                                                 \
+    do {                                                                                                               \
+        dd::DriveReply *r_ = (reply);                                                                                  \
+        QVERIFY2(dd::test::waitForReply(r_, 8000), "no answer in time");                                               \
+        QVERIFY2(r_->ok(), qPrintable(r_->error().message));                                                           \
     } while (false)

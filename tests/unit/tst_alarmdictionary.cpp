@@ -17,7 +17,7 @@ const QLocale en(QLocale::English, QLocale::UnitedStates);
 QByteArray table(const QByteArray &alarms, const QByteArray &extra = QByteArray())
 {
     return "{\"format\": \"drivedesk-alarms\", \"formatVersion\": 1, \"family\": \"servo-modbus\", " + extra
-           + "\"alarms\": [" + alarms + "]}";
+        + "\"alarms\": [" + alarms + "]}";
 }
 
 } // namespace
@@ -80,7 +80,8 @@ private slots:
     void customFallback()
     {
         AlarmDictionary d;
-        const Error e = d.loadFromJson(table("", "\"fallback\": {\"en\": \"Err-%1\", \"zh\": \"故障 Err-%1\"}, "), "t.json");
+        const Error e = d.loadFromJson(table("", "\"fallback\": {\"en\": \"Err-%1\", \"zh\": \"故障 Err-%1\"}, "),
+                                       "t.json");
         QVERIFY2(!e, qPrintable(e.message));
         QCOMPARE(d.text(7, en), QStringLiteral("Err-7"));
         QCOMPARE(d.text(7, zh), QStringLiteral("故障 Err-7"));
@@ -96,27 +97,42 @@ private slots:
         QTest::addColumn<QString>("code");
         QTest::addColumn<QString>("fragment");
         const QByteArray one = "{\"code\": 1, \"text\": {\"en\": \"One\", \"zh\": \"一\"}}";
-        QTest::newRow("truncated") << table(one).left(40) << "malformed" << "not valid JSON";
-        QTest::newRow("format") << QByteArray("{\"format\": \"x\", \"formatVersion\": 1, \"family\": \"shuoke\", \"alarms\": []}")
-                                << "malformed" << "not a DriveDesk alarm table";
+        QTest::newRow("truncated") << table(one).left(40) << "malformed"
+                                   << "not valid JSON";
+        QTest::newRow("format") << QByteArray(
+            "{\"format\": \"x\", \"formatVersion\": 1, \"family\": \"shuoke\", \"alarms\": []}")
+                                << "malformed"
+                                << "not a DriveDesk alarm table";
         QTest::newRow("version") << QByteArray(table("").replace("\"formatVersion\": 1", "\"formatVersion\": 3"))
-                                 << "not-supported" << "version 3";
-        QTest::newRow("family") << QByteArray(table("").replace("servo-modbus", "servo-zz")) << "not-supported" << "servo-zz";
-        QTest::newRow("duplicate") << table(one + "," + one) << "malformed" << "code 1 is listed twice";
-        QTest::newRow("code string") << table("{\"code\": \"1\", \"text\": {\"en\": \"a\", \"zh\": \"b\"}}") << "malformed"
+                                 << "not-supported"
+                                 << "version 3";
+        QTest::newRow("family") << QByteArray(table("").replace("servo-modbus", "servo-zz")) << "not-supported"
+                                << "servo-zz";
+        QTest::newRow("duplicate") << table(one + "," + one) << "malformed"
+                                   << "code 1 is listed twice";
+        QTest::newRow("code string") << table("{\"code\": \"1\", \"text\": {\"en\": \"a\", \"zh\": \"b\"}}")
+                                     << "malformed"
                                      << "\"code\"";
         QTest::newRow("code huge") << table("{\"code\": 99999999999, \"text\": {\"en\": \"a\", \"zh\": \"b\"}}")
-                                   << "malformed" << "outside the allowed range";
-        QTest::newRow("code beyond 2^53") << table("{\"code\": 18014398509481985, \"text\": {\"en\": \"a\", \"zh\": \"b\"}}")
-                                          << "malformed" << "too large";
-        QTest::newRow("no zh") << table("{\"code\": 1, \"text\": {\"en\": \"a\"}}") << "malformed" << "\"zh\"";
+                                   << "malformed"
+                                   << "outside the allowed range";
+        QTest::newRow("code beyond 2^53")
+            << table("{\"code\": 18014398509481985, \"text\": {\"en\": \"a\", \"zh\": \"b\"}}") << "malformed"
+            << "too large";
+        QTest::newRow("no zh") << table("{\"code\": 1, \"text\": {\"en\": \"a\"}}") << "malformed"
+                               << "\"zh\"";
         QTest::newRow("unknown field") << table("{\"code\": 1, \"level\": 2, \"text\": {\"en\": \"a\", \"zh\": \"b\"}}")
-                                       << "malformed" << "unknown field \"level\"";
-        QTest::newRow("entry not object") << table("1") << "malformed" << "alarms[0]";
-        QTest::newRow("fallback placeholder") << table("", "\"fallback\": {\"en\": \"Alarm\", \"zh\": \"报警 %1\"}, ")
-                                              << "malformed" << "fallback.en";
-        QTest::newRow("alarms missing") << QByteArray("{\"format\": \"drivedesk-alarms\", \"formatVersion\": 1, \"family\": \"shuoke\"}")
-                                        << "malformed" << "\"alarms\" is missing";
+                                       << "malformed"
+                                       << "unknown field \"level\"";
+        QTest::newRow("entry not object") << table("1") << "malformed"
+                                          << "alarms[0]";
+        QTest::newRow("fallback placeholder")
+            << table("", "\"fallback\": {\"en\": \"Alarm\", \"zh\": \"报警 %1\"}, ") << "malformed"
+            << "fallback.en";
+        QTest::newRow("alarms missing") << QByteArray(
+            "{\"format\": \"drivedesk-alarms\", \"formatVersion\": 1, \"family\": \"shuoke\"}")
+                                        << "malformed"
+                                        << "\"alarms\" is missing";
     }
     void badTables()
     {

@@ -211,7 +211,8 @@ private slots:
     {
         QByteArray out = "untouched";
         BackupFile noFamily;
-        QCOMPARE(noFamily.toJson(ParameterDictionary::bundled(Family::ServoCan), &out).code, ErrorCode::InvalidArgument);
+        QCOMPARE(noFamily.toJson(ParameterDictionary::bundled(Family::ServoCan), &out).code,
+                 ErrorCode::InvalidArgument);
 
         BackupFile b = modbusBackup();
         QCOMPARE(b.toJson(ParameterDictionary::bundled(Family::ServoCan), &out).code, ErrorCode::InvalidArgument);
@@ -258,59 +259,64 @@ private slots:
         QTest::newRow("half") << good.left(good.size() / 2) << M << QStringList{"not valid JSON"};
         QTest::newRow("empty") << QByteArray() << M << QStringList{"empty or truncated"};
         QTest::newRow("not object") << QByteArray("[1, 2]") << M << QStringList{"top level"};
-        QTest::newRow("tampered value")
-            << mutated(good, onParameter(5, [](QJsonObject &e) { e["value"] = e["value"].toInt() + 1; }))
-            << ErrorCode::ChecksumError << QStringList{"checksum does not match"};
-        QTest::newRow("tampered index")
-            << mutated(good, onParameter(5, [](QJsonObject &e) { e["index"] = 59; e["key"] = "PA59"; }))
-            << M << QStringList{"index 59 appears more than once"};
-        QTest::newRow("removed parameter")
-            << mutated(good, [](QJsonObject &o) { QJsonArray a = o["parameters"].toArray(); a.removeAt(3); o["parameters"] = a; })
-            << ErrorCode::ChecksumError << QStringList{"checksum"};
+        QTest::newRow("tampered value") << mutated(
+            good, onParameter(5, [](QJsonObject &e) { e["value"] = e["value"].toInt() + 1; }))
+                                        << ErrorCode::ChecksumError << QStringList{"checksum does not match"};
+        QTest::newRow("tampered index") << mutated(
+            good, onParameter(5, [](QJsonObject &e) {
+                e["index"] = 59;
+                e["key"] = "PA59";
+            })) << M << QStringList{"index 59 appears more than once"};
+        QTest::newRow("removed parameter") << mutated(good, [](QJsonObject &o) {
+            QJsonArray a = o["parameters"].toArray();
+            a.removeAt(3);
+            o["parameters"] = a;
+        }) << ErrorCode::ChecksumError << QStringList{"checksum"};
         QTest::newRow("checksum upper case")
-            << mutated(good, [](QJsonObject &o) { o["checksum"] = o["checksum"].toString().toUpper(); })
-            << M << QStringList{"\"checksum\"", "lower-case hex"};
-        QTest::newRow("format name") << mutated(good, [](QJsonObject &o) { o["format"] = "drivedesk-dictionary"; })
-                                     << M << QStringList{"not a DriveDesk backup file"};
+            << mutated(good, [](QJsonObject &o) { o["checksum"] = o["checksum"].toString().toUpper(); }) << M
+            << QStringList{"\"checksum\"", "lower-case hex"};
+        QTest::newRow("format name") << mutated(good, [](QJsonObject &o) { o["format"] = "drivedesk-dictionary"; }) << M
+                                     << QStringList{"not a DriveDesk backup file"};
         QTest::newRow("format version 2") << mutated(good, [](QJsonObject &o) { o["formatVersion"] = 2; })
                                           << ErrorCode::NotSupported << QStringList{"version 2", "reads version 1"};
         QTest::newRow("format version 0") << mutated(good, [](QJsonObject &o) { o["formatVersion"] = 0; })
                                           << ErrorCode::NotSupported << QStringList{"version 0"};
-        QTest::newRow("format version string") << mutated(good, [](QJsonObject &o) { o["formatVersion"] = "1"; })
-                                               << M << QStringList{"\"formatVersion\"", "integer"};
+        QTest::newRow("format version string") << mutated(good, [](QJsonObject &o) { o["formatVersion"] = "1"; }) << M
+                                               << QStringList{"\"formatVersion\"", "integer"};
         QTest::newRow("unknown family") << mutated(good, [](QJsonObject &o) { o["family"] = "servo-ethercat"; })
                                         << ErrorCode::NotSupported << QStringList{"servo-ethercat"};
         QTest::newRow("family case") << mutated(good, [](QJsonObject &o) { o["family"] = "Servo-Modbus"; })
                                      << ErrorCode::NotSupported << QStringList{"Servo-Modbus"};
-        QTest::newRow("address string") << mutated(good, [](QJsonObject &o) { o["address"] = "1"; })
-                                        << M << QStringList{"\"address\"", "integer", "string"};
-        QTest::newRow("address range") << mutated(good, [](QJsonObject &o) { o["address"] = 256; })
-                                       << M << QStringList{"\"address\"", "0 to 255"};
-        QTest::newRow("firmware number") << mutated(good, [](QJsonObject &o) { o["firmware"] = 7051; })
-                                         << M << QStringList{"\"firmware\"", "string"};
-        QTest::newRow("created") << mutated(good, [](QJsonObject &o) { o["created"] = "01/05/2024"; })
-                                 << M << QStringList{"\"created\"", "ISO 8601"};
-        QTest::newRow("tool version empty") << mutated(good, [](QJsonObject &o) { o["toolVersion"] = ""; })
-                                            << M << QStringList{"\"toolVersion\"", "empty"};
-        QTest::newRow("link array") << mutated(good, [](QJsonObject &o) { o["link"] = QJsonArray(); })
-                                    << M << QStringList{"\"link\"", "object"};
+        QTest::newRow("address string") << mutated(good, [](QJsonObject &o) { o["address"] = "1"; }) << M
+                                        << QStringList{"\"address\"", "integer", "string"};
+        QTest::newRow("address range") << mutated(good, [](QJsonObject &o) { o["address"] = 256; }) << M
+                                       << QStringList{"\"address\"", "0 to 255"};
+        QTest::newRow("firmware number") << mutated(good, [](QJsonObject &o) { o["firmware"] = 7051; }) << M
+                                         << QStringList{"\"firmware\"", "string"};
+        QTest::newRow("created") << mutated(good, [](QJsonObject &o) { o["created"] = "01/05/2024"; }) << M
+                                 << QStringList{"\"created\"", "ISO 8601"};
+        QTest::newRow("tool version empty") << mutated(good, [](QJsonObject &o) { o["toolVersion"] = ""; }) << M
+                                            << QStringList{"\"toolVersion\"", "empty"};
+        QTest::newRow("link array") << mutated(good, [](QJsonObject &o) { o["link"] = QJsonArray(); }) << M
+                                    << QStringList{"\"link\"", "object"};
         QTest::newRow("link nested") << mutated(good, [](QJsonObject &o) {
             QJsonObject l = o["link"].toObject();
             l["serial"] = QJsonObject{{"baud", 9600}};
             o["link"] = l;
         }) << M << QStringList{"link.serial", "object"};
-        QTest::newRow("link null") << mutated(good, [](QJsonObject &o) { o["link"] = QJsonObject{{"port", QJsonValue()}}; })
-                                   << M << QStringList{"link.port", "null"};
+        QTest::newRow("link null") << mutated(good, [](QJsonObject &o) {
+            o["link"] = QJsonObject{{"port", QJsonValue()}};
+        }) << M << QStringList{"link.port", "null"};
         QTest::newRow("parameters object") << mutated(good, [](QJsonObject &o) { o["parameters"] = QJsonObject(); })
                                            << M << QStringList{"\"parameters\"", "array"};
-        QTest::newRow("unknown field") << mutated(good, [](QJsonObject &o) { o["signature"] = "x"; })
-                                       << M << QStringList{"unknown field \"signature\""};
-        QTest::newRow("value string") << mutated(good, onParameter(0, [](QJsonObject &e) { e["value"] = "12"; }))
-                                      << M << QStringList{"parameters[0] (PA0)", "\"value\"", "integer"};
-        QTest::newRow("value fraction") << mutated(good, onParameter(0, [](QJsonObject &e) { e["value"] = 0.5; }))
-                                        << M << QStringList{"(PA0)", "whole number"};
-        QTest::newRow("value huge") << mutated(good, onParameter(0, [](QJsonObject &e) { e["value"] = 1e300; }))
-                                    << M << QStringList{"(PA0)", "too large"};
+        QTest::newRow("unknown field") << mutated(good, [](QJsonObject &o) { o["signature"] = "x"; }) << M
+                                       << QStringList{"unknown field \"signature\""};
+        QTest::newRow("value string") << mutated(good, onParameter(0, [](QJsonObject &e) { e["value"] = "12"; })) << M
+                                      << QStringList{"parameters[0] (PA0)", "\"value\"", "integer"};
+        QTest::newRow("value fraction") << mutated(good, onParameter(0, [](QJsonObject &e) { e["value"] = 0.5; })) << M
+                                        << QStringList{"(PA0)", "whole number"};
+        QTest::newRow("value huge") << mutated(good, onParameter(0, [](QJsonObject &e) { e["value"] = 1e300; })) << M
+                                    << QStringList{"(PA0)", "too large"};
         {
             QByteArray raw = mutated(good, onParameter(0, [](QJsonObject &e) { e["value"] = "RAW"; }));
             raw.replace("\"RAW\"", "-9007199254740993");
@@ -323,40 +329,43 @@ private slots:
         }) << M << QStringList{"parameters[2]", "object", "array"};
         QTest::newRow("entry missing key") << mutated(good, onParameter(1, [](QJsonObject &e) { e.remove("key"); }))
                                            << M << QStringList{"parameters[1]", "\"key\"", "missing"};
-        QTest::newRow("entry missing access") << mutated(good, onParameter(1, [](QJsonObject &e) { e.remove("access"); }))
-                                              << M << QStringList{"(PA1)", "\"access\"", "missing"};
+        QTest::newRow("entry missing access")
+            << mutated(good, onParameter(1, [](QJsonObject &e) { e.remove("access"); })) << M
+            << QStringList{"(PA1)", "\"access\"", "missing"};
         QTest::newRow("entry unknown field") << mutated(good, onParameter(1, [](QJsonObject &e) { e["scale"] = 1; }))
                                              << M << QStringList{"(PA1)", "unknown field \"scale\""};
-        QTest::newRow("not in dictionary")
-            << mutated(good, rehashed([](QJsonObject &o) {
-                   QJsonArray a = o["parameters"].toArray();
-                   a.append(QJsonObject{{"index", 60}, {"key", "PA60"}, {"name", "x"}, {"value", 0}, {"unit", ""}, {"access", "rw"}});
-                   o["parameters"] = a;
-               }))
-            << M << QStringList{"(PA60)", "no parameter 60"};
-        QTest::newRow("key mismatch") << mutated(good, rehashed(onParameter(4, [](QJsonObject &e) { e["key"] = "PA5"; })))
+        QTest::newRow("not in dictionary") << mutated(
+            good, rehashed([](QJsonObject &o) {
+                QJsonArray a = o["parameters"].toArray();
+                a.append(QJsonObject{
+                    {"index", 60}, {"key", "PA60"}, {"name", "x"}, {"value", 0}, {"unit", ""}, {"access", "rw"}});
+                o["parameters"] = a;
+            })) << M << QStringList{"(PA60)", "no parameter 60"};
+        QTest::newRow("key mismatch") << mutated(good,
+                                                 rehashed(onParameter(4, [](QJsonObject &e) { e["key"] = "PA5"; })))
                                       << M << QStringList{"(PA5)", "index 4 is PA4"};
-        QTest::newRow("access mismatch") << mutated(good, rehashed(onParameter(2, [](QJsonObject &e) { e["access"] = "rw"; })))
+        QTest::newRow("access mismatch") << mutated(
+            good, rehashed(onParameter(2, [](QJsonObject &e) { e["access"] = "rw"; })))
                                          << M << QStringList{"(PA2)", "access \"rw\"", "\"ro\""};
         QTest::newRow("lastWritten on readable")
-            << mutated(good, rehashed(onParameter(0, [](QJsonObject &e) { e["lastWritten"] = true; })))
-            << M << QStringList{"(PA0)", "only allowed on write-only"};
-        QTest::newRow("out of range")
-            << mutated(good, rehashed(onParameter(51, [](QJsonObject &e) { e["value"] = 256; })))
-            << ErrorCode::OutOfRange << QStringList{"(PA51)", "value 256", "0 to 255"};
-        QTest::newRow("out of int16")
-            << mutated(good, rehashed(onParameter(7, [](QJsonObject &e) { e["value"] = 40000; })))
-            << ErrorCode::OutOfRange << QStringList{"(PA7)", "-32768 to 32767"};
+            << mutated(good, rehashed(onParameter(0, [](QJsonObject &e) { e["lastWritten"] = true; }))) << M
+            << QStringList{"(PA0)", "only allowed on write-only"};
+        QTest::newRow("out of range") << mutated(good,
+                                                 rehashed(onParameter(51, [](QJsonObject &e) { e["value"] = 256; })))
+                                      << ErrorCode::OutOfRange << QStringList{"(PA51)", "value 256", "0 to 255"};
+        QTest::newRow("out of int16") << mutated(good,
+                                                 rehashed(onParameter(7, [](QJsonObject &e) { e["value"] = 40000; })))
+                                      << ErrorCode::OutOfRange << QStringList{"(PA7)", "-32768 to 32767"};
         const QByteArray shuoke = bytesOf(shuokeBackup());
         QTest::newRow("write-only unmarked")
-            << mutated(shuoke, rehashed(onParameter(2, [](QJsonObject &e) { e.remove("lastWritten"); })))
-            << M << QStringList{"(encoder-direction)", "lastWritten"};
+            << mutated(shuoke, rehashed(onParameter(2, [](QJsonObject &e) { e.remove("lastWritten"); }))) << M
+            << QStringList{"(encoder-direction)", "lastWritten"};
         QTest::newRow("write-only marked false")
-            << mutated(shuoke, rehashed(onParameter(2, [](QJsonObject &e) { e["lastWritten"] = false; })))
-            << M << QStringList{"(encoder-direction)", "lastWritten"};
+            << mutated(shuoke, rehashed(onParameter(2, [](QJsonObject &e) { e["lastWritten"] = false; }))) << M
+            << QStringList{"(encoder-direction)", "lastWritten"};
         QTest::newRow("lastWritten not bool")
-            << mutated(shuoke, rehashed(onParameter(2, [](QJsonObject &e) { e["lastWritten"] = 1; })))
-            << M << QStringList{"\"lastWritten\"", "true or false"};
+            << mutated(shuoke, rehashed(onParameter(2, [](QJsonObject &e) { e["lastWritten"] = 1; }))) << M
+            << QStringList{"\"lastWritten\"", "true or false"};
     }
     void badFiles()
     {
@@ -399,11 +408,13 @@ private slots:
     void missingEntryFields()
     {
         QFETCH(QString, field);
-        const QByteArray json = mutated(bytesOf(modbusBackup()), onParameter(9, [&](QJsonObject &e) { e.remove(field); }));
+        const QByteArray json = mutated(bytesOf(modbusBackup()),
+                                        onParameter(9, [&](QJsonObject &e) { e.remove(field); }));
         BackupFile b;
         const Error e = b.loadFromJson(json, "m.json");
         QCOMPARE(e.code, ErrorCode::Malformed);
-        QVERIFY2(e.message.contains("parameters[9]") && e.message.contains(QStringLiteral("\"%1\" is missing").arg(field)),
+        QVERIFY2(e.message.contains("parameters[9]")
+                     && e.message.contains(QStringLiteral("\"%1\" is missing").arg(field)),
                  qPrintable(e.message));
     }
 
@@ -517,7 +528,9 @@ private slots:
         QVERIFY(!modbusBackup().save(path));
         const QByteArray old = readAll(path);
         QVERIFY(QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner));
-        auto restore = qScopeGuard([&] { QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner); });
+        auto restore = qScopeGuard([&] {
+            QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        });
         {
             QFile probe(dir.filePath("probe"));
             if (probe.open(QIODevice::WriteOnly)) {
@@ -545,7 +558,7 @@ private slots:
         const QByteArray old = readAll(path);
         QVERIFY(old.size() > 600);
 
-        rlimit saved {};
+        rlimit saved{};
         QCOMPARE(getrlimit(RLIMIT_FSIZE, &saved), 0);
         const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
         rlimit tight = saved;

@@ -112,7 +112,7 @@ void TestChannelSampler::samplesAtTheRate()
     s.setIntervalMs(20);
     QSignalSpy spy(&s, &ChannelSampler::sampled);
     s.start();
-    QCOMPARE(drive.reads, 1);   // the first read goes out at once
+    QCOMPARE(drive.reads, 1); // the first read goes out at once
     QTRY_VERIFY_WITH_TIMEOUT(spy.count() >= 5, 2000);
     s.stop();
     QCOMPARE(drive.asked, QStringList{QStringLiteral("speed")});
@@ -127,7 +127,7 @@ void TestChannelSampler::samplesAtTheRate()
     QVERIFY(spy.at(4).at(0).toDouble() >= 0.06);
     const int n = drive.reads;
     QTest::qWait(60);
-    QCOMPARE(drive.reads, n);   // stopped means stopped
+    QCOMPARE(drive.reads, n); // stopped means stopped
 }
 
 void TestChannelSampler::slowLinkSkipsTicks()
@@ -141,7 +141,7 @@ void TestChannelSampler::slowLinkSkipsTicks()
     QTRY_VERIFY_WITH_TIMEOUT(spy.count() >= 3, 2000);
     s.stop();
     QVERIFY(s.skippedCount() >= 2);
-    QVERIFY(drive.reads <= spy.count() + 2);   // never more than two reads outstanding
+    QVERIFY(drive.reads <= spy.count() + 2); // never more than two reads outstanding
     QCOMPARE(drive.maxOutstanding, 2);
 }
 
@@ -162,7 +162,7 @@ void TestChannelSampler::behindTheRateReadsBackToBack()
     QTRY_VERIFY_WITH_TIMEOUT(readsWhenSampled >= 0, 2000);
     s.stop();
     QVERIFY(s.skippedCount() >= 1);
-    QCOMPARE(readsWhenSampled, 2);   // the second read was already out
+    QCOMPARE(readsWhenSampled, 2); // the second read was already out
 }
 
 void TestChannelSampler::slowLinkGetsTwoReadsPipelined()
@@ -231,8 +231,8 @@ void TestChannelSampler::stopIgnoresRepliesOnTheirWay()
     s.stop();
     QCOMPARE(s.pendingReads(), 0);
     spin(80);
-    QCOMPARE(drive.outstanding, 0);   // both were answered ...
-    QCOMPARE(spy.count(), 0);         // ... and ignored
+    QCOMPARE(drive.outstanding, 0); // both were answered ...
+    QCOMPARE(spy.count(), 0);       // ... and ignored
     QCOMPARE(drive.reads, 2);
 }
 

@@ -15,7 +15,8 @@ private slots:
         // Classic Modbus read-holding-registers example: 01 03 00 00 00 0A -> C5 CD
         QTest::newRow("read 10 regs") << QByteArray::fromHex("01030000000a") << QByteArray::fromHex("01030000000ac5cd");
         // CRC-16/MODBUS check value over "123456789" is 0x4B37 -> 37 4B on the wire
-        QTest::newRow("check string") << QByteArray("123456789") << (QByteArray("123456789") + QByteArray::fromHex("374b"));
+        QTest::newRow("check string") << QByteArray("123456789")
+                                      << (QByteArray("123456789") + QByteArray::fromHex("374b"));
     }
     void knownVectors()
     {

@@ -35,7 +35,8 @@ private slots:
         const QList<TrendChannel> odd{{QStringLiteral("a,b"), {}, QStringLiteral("\"x\""), 0},
                                       {QStringLiteral("temp"), {}, QStringLiteral("°C"), 0}};
         QCOMPARE(CsvWriter::headerLine(odd),
-                 QByteArray("time_s,\"a,b [\"\"x\"\"]\",temp [\xc2\xb0" "C]\n"));
+                 QByteArray("time_s,\"a,b [\"\"x\"\"]\",temp [\xc2\xb0"
+                            "C]\n"));
     }
 
     void time_data()
@@ -93,17 +94,16 @@ private slots:
         snap.channels = channels();
         snap.originUs = 1000;
         snap.series = {
-            {{1000, 1500}, {11000, 1502}, {21000, 1499}},    // speed: every 10 ms
-            {{1000, 12.5}, {21000, 13}},                      // torque: every 20 ms
-            {{6000, 5}, {21000, 7}, {21000, 6}},              // inputs: odd times, a duplicate
+            {{1000, 1500}, {11000, 1502}, {21000, 1499}}, // speed: every 10 ms
+            {{1000, 12.5}, {21000, 13}},                  // torque: every 20 ms
+            {{6000, 5}, {21000, 7}, {21000, 6}},          // inputs: odd times, a duplicate
         };
-        const QByteArray expected =
-            "time_s,speed [r/min],torque [%],inputs\n"
-            "0.000000,1500,12.5,\n"
-            "0.005000,,,5\n"
-            "0.010000,1502,,\n"
-            "0.020000,1499,13,7\n"
-            "0.020000,,,6\n";
+        const QByteArray expected = "time_s,speed [r/min],torque [%],inputs\n"
+                                    "0.000000,1500,12.5,\n"
+                                    "0.005000,,,5\n"
+                                    "0.010000,1502,,\n"
+                                    "0.020000,1499,13,7\n"
+                                    "0.020000,,,6\n";
         QCOMPARE(CsvWriter::toCsv(snap), expected);
     }
 
@@ -117,9 +117,10 @@ private slots:
         rec.appendSamples(2000000, {{QStringLiteral("speed"), 100}, {QStringLiteral("torque"), 1.5}});
         rec.appendSamples(2100000, {{QStringLiteral("speed"), 110}, {QStringLiteral("torque"), -1.5}});
         QVERIFY(!CsvWriter::save(path, rec.snapshotAll()));
-        QCOMPARE(readAll(path), QByteArray("time_s,speed [r/min],torque [%]\n"
-                                           "0.000000,100,1.5\n"
-                                           "0.100000,110,-1.5\n"));
+        QCOMPARE(readAll(path),
+                 QByteArray("time_s,speed [r/min],torque [%]\n"
+                            "0.000000,100,1.5\n"
+                            "0.100000,110,-1.5\n"));
         // Only the window, one channel.
         QVERIFY(!CsvWriter::save(path, rec.snapshot(2050000, 2200000, {QStringLiteral("torque")})));
         QCOMPARE(readAll(path), QByteArray("time_s,torque [%]\n0.100000,-1.5\n"));
@@ -146,19 +147,22 @@ private slots:
         QVERIFY(w.isOpen());
         QCOMPARE(readAll(path), QByteArray("time_s,speed [r/min],torque [%],inputs\n"));
         // Origin = first row's time when not given.
-        QVERIFY(!w.writeRow(5000000, QMap<QString, double>{{QStringLiteral("speed"), 1500},
-                                                          {QStringLiteral("inputs"), 3},
-                                                          {QStringLiteral("unknown"), 9}}));
+        QVERIFY(!w.writeRow(5000000,
+                            QMap<QString, double>{{QStringLiteral("speed"), 1500},
+                                                  {QStringLiteral("inputs"), 3},
+                                                  {QStringLiteral("unknown"), 9}}));
         // Visible on disk before close().
-        QCOMPARE(readAll(path), QByteArray("time_s,speed [r/min],torque [%],inputs\n"
-                                           "0.000000,1500,,3\n"));
+        QCOMPARE(readAll(path),
+                 QByteArray("time_s,speed [r/min],torque [%],inputs\n"
+                            "0.000000,1500,,3\n"));
         QVERIFY(!w.writeRow(5020000, QList<std::optional<double>>{1501, 2.25, std::nullopt, 99}));
         QCOMPARE(w.rowCount(), 2);
         QVERIFY(!w.close());
         QVERIFY(!w.isOpen());
-        QCOMPARE(readAll(path), QByteArray("time_s,speed [r/min],torque [%],inputs\n"
-                                           "0.000000,1500,,3\n"
-                                           "0.020000,1501,2.25,\n"));
+        QCOMPARE(readAll(path),
+                 QByteArray("time_s,speed [r/min],torque [%],inputs\n"
+                            "0.000000,1500,,3\n"
+                            "0.020000,1501,2.25,\n"));
         QCOMPARE(w.writeRow(0, QMap<QString, double>{}).code, ErrorCode::InvalidArgument);
     }
 
@@ -171,13 +175,13 @@ private slots:
         QVERIFY(!w.writeRowAtSeconds(0.0, {{QStringLiteral("speed"), 1}}));
         QVERIFY(!w.writeRowAtSeconds(0.1, {{QStringLiteral("torque"), 2}}));
         QVERIFY(!w.writeRowAtSeconds(12.3456789, {{QStringLiteral("speed"), 3}}));
-        QCOMPARE(w.writeRowAtSeconds(std::numeric_limits<double>::quiet_NaN(), {}).code,
-                 ErrorCode::InvalidArgument);
+        QCOMPARE(w.writeRowAtSeconds(std::numeric_limits<double>::quiet_NaN(), {}).code, ErrorCode::InvalidArgument);
         QVERIFY(!w.close());
-        QCOMPARE(readAll(path), QByteArray("time_s,speed [r/min],torque [%]\n"
-                                           "0.000000,1,\n"
-                                           "0.100000,,2\n"
-                                           "12.345679,3,\n"));
+        QCOMPARE(readAll(path),
+                 QByteArray("time_s,speed [r/min],torque [%]\n"
+                            "0.000000,1,\n"
+                            "0.100000,,2\n"
+                            "12.345679,3,\n"));
     }
 
     void streamingWithExplicitOrigin()
@@ -191,8 +195,7 @@ private slots:
         } // the destructor closes
         QCOMPARE(readAll(path), QByteArray("time_s,speed [r/min]\n2.500000,-7\n"));
         CsvWriter w;
-        QCOMPARE(w.open(dir.filePath(QStringLiteral("no/such/dir.csv")), channels()).code,
-                 ErrorCode::FileError);
+        QCOMPARE(w.open(dir.filePath(QStringLiteral("no/such/dir.csv")), channels()).code, ErrorCode::FileError);
         QVERIFY(!w.isOpen());
     }
 };

@@ -39,9 +39,9 @@ private:
 private slots:
     void exactSmallInput()
     {
-        const Samples in{{0, 5}, {2, 1}, {4, 9}, {6, 3},   // bucket 0: min 1 then max 9
-                         {10, 4},                         // bucket 1: one sample
-                         {20, 7}, {25, 7},                // bucket 2: flat -> earliest only
+        const Samples in{{0, 5},  {2, 1},  {4, 9},  {6, 3},   // bucket 0: min 1 then max 9
+                         {10, 4},                             // bucket 1: one sample
+                         {20, 7}, {25, 7},                    // bucket 2: flat -> earliest only
                          {40, 2}, {41, 8}, {42, 0}, {43, 8}}; // bucket 4: max first, then min
         const Samples expected{{2, 1}, {4, 9}, {10, 4}, {20, 7}, {41, 8}, {42, 0}};
         QCOMPARE(Decimator::minMax(in, 0, 99, 10), expected);
@@ -80,12 +80,12 @@ private slots:
     {
         const Samples in{{-5, 100}, {0, 1}, {5, 2}, {9, 3}, {10, -100}};
         QCOMPARE(Decimator::minMax(in, 0, 9, 1), (Samples{{0, 1}, {9, 3}}));
-        QCOMPARE(Decimator::minMax(in, 0, 9, 0), (Samples{{0, 1}, {9, 3}}));   // buckets < 1 -> 1
+        QCOMPARE(Decimator::minMax(in, 0, 9, 0), (Samples{{0, 1}, {9, 3}})); // buckets < 1 -> 1
         QCOMPARE(Decimator::minMax(in, 0, 9, -7), (Samples{{0, 1}, {9, 3}}));
-        QCOMPARE(Decimator::minMax(in, 9, 0, 4), Samples{});                  // reversed window
-        QCOMPARE(Decimator::minMax(in, 20, 30, 4), Samples{});                // nothing inside
+        QCOMPARE(Decimator::minMax(in, 9, 0, 4), Samples{});   // reversed window
+        QCOMPARE(Decimator::minMax(in, 20, 30, 4), Samples{}); // nothing inside
         QCOMPARE(Decimator::minMax(Samples{}, 0, 9, 4), Samples{});
-        QCOMPARE(Decimator::minMax(in, 5, 5, 3), (Samples{{5, 2}}));          // one-tick window
+        QCOMPARE(Decimator::minMax(in, 5, 5, 3), (Samples{{5, 2}})); // one-tick window
         const SampleBuffer empty;
         QCOMPARE(Decimator::minMax(empty, 0, 9, 4), Samples{});
     }
@@ -103,7 +103,7 @@ private slots:
         Samples in;
         for (int i = 0; i < 500; ++i)
             in.append({i * 5, std::sin(i * 0.1)});
-        QCOMPARE(Decimator::minMax(in, 0, 2499, 1000), in);   // 2.5 ticks per bucket
+        QCOMPARE(Decimator::minMax(in, 0, 2499, 1000), in); // 2.5 ticks per bucket
         QCOMPARE(Decimator::minMax(in, 0, 2499, 2500), in);
     }
 
@@ -210,7 +210,8 @@ private slots:
         const Samples kept = all.mid(all.size() - ring.size());
         QCOMPARE(ring.size(), std::min(capacity, samples));
         for (int round = 0; round < 40; ++round) {
-            const qint64 a = kept.first().timeUs - 5 + rng.bounded(qint64(kept.last().timeUs - kept.first().timeUs + 10));
+            const qint64 a = kept.first().timeUs - 5
+                + rng.bounded(qint64(kept.last().timeUs - kept.first().timeUs + 10));
             const qint64 b = a + rng.bounded(qint64(kept.last().timeUs - kept.first().timeUs + 10));
             const int buckets = 1 + rng.bounded(3000);
             const Samples fast = Decimator::minMax(ring, a, b, buckets, Decimator::Strategy::Summaries);
@@ -225,8 +226,7 @@ private slots:
         // After shrinking the bound the summaries are rebuilt.
         ring.setCapacity(std::max(1, capacity / 3));
         const Samples kept2 = all.mid(all.size() - ring.size());
-        QCOMPARE(Decimator::minMax(ring, kept2.first().timeUs, kept2.last().timeUs, 97,
-                                   Decimator::Strategy::Summaries),
+        QCOMPARE(Decimator::minMax(ring, kept2.first().timeUs, kept2.last().timeUs, 97, Decimator::Strategy::Summaries),
                  Decimator::minMax(kept2, kept2.first().timeUs, kept2.last().timeUs, 97));
     }
 

@@ -124,7 +124,8 @@ private slots:
     void parseSettings()
     {
         QString error;
-        const auto s = FaultSettings::parse(QStringLiteral("drop=0.1, corrupt=5%,latency=20,jitter=3,silent,seed=99"), &error);
+        const auto s = FaultSettings::parse(QStringLiteral("drop=0.1, corrupt=5%,latency=20,jitter=3,silent,seed=99"),
+                                            &error);
         QVERIFY2(s, qPrintable(error));
         QCOMPARE(s->dropRate, 0.1);
         QCOMPARE(s->corruptRate, 0.05);

@@ -33,8 +33,7 @@ private slots:
         QTest::addColumn<QByteArray>("data");
         QTest::addColumn<QString>("expected");
         // The seed's examples, station 0 (ID 0x064).
-        QTest::newRow("keep-alive") << hex("00 08 00 00 00 00 00 FF")
-                                    << QStringLiteral("#0 keep-alive");
+        QTest::newRow("keep-alive") << hex("00 08 00 00 00 00 00 FF") << QStringLiteral("#0 keep-alive");
         QTest::newRow("enable") << hex("00 25 01 00 00 00 00 FF") << QStringLiteral("#0 servo on");
         QTest::newRow("speed") << hex("00200064000000FF") << QStringLiteral("#0 run at 100 r/min");
         QTest::newRow("pos speed") << hex("002300C8000000FF") << QStringLiteral("#0 positioning speed 200 r/min");
@@ -85,7 +84,8 @@ private slots:
         FrameDescriber &d = *d_;
         const QString bad = d.describeCan(Origin::Drive, can(0x200, "01 10 88 00 00 00 00 FF"));
         QVERIFY2(bad.startsWith(QLatin1String("? (")), qPrintable(bad));
-        QVERIFY2(d.describeCan(Origin::Drive, can(0x65, "01 EE 00 00 00 00 00 FF")).startsWith(QLatin1String("? (")), "unknown command");
+        QVERIFY2(d.describeCan(Origin::Drive, can(0x65, "01 EE 00 00 00 00 00 FF")).startsWith(QLatin1String("? (")),
+                 "unknown command");
         // A serial frame on a CAN family, a CAN frame on a serial family: unknown.
         QCOMPARE(d.describeSerial(Origin::Host, hex("010300640014041A")), QStringLiteral("?"));
         const auto m_ = createFrameDescriber(Family::ServoModbus);
@@ -188,13 +188,14 @@ private slots:
         // The seed's worked example: change address 1 -> 2.
         const auto d_ = createFrameDescriber(Family::Shuoke, QStringLiteral("ascii"));
         FrameDescriber &d = *d_;
-        QCOMPARE(d.describeSerial(Origin::Host, QByteArray(":0122010226\r\n")),
-                 QStringLiteral("#1 Change address 2"));
-        const auto twos_ = createFrameDescriber(Family::Shuoke, QStringLiteral("ascii"),
-                            {{QStringLiteral("shuoke.checksum"), QStringLiteral("twos-complement")}});
+        QCOMPARE(d.describeSerial(Origin::Host, QByteArray(":0122010226\r\n")), QStringLiteral("#1 Change address 2"));
+        const auto twos_ = createFrameDescriber(
+            Family::Shuoke, QStringLiteral("ascii"),
+            {{QStringLiteral("shuoke.checksum"), QStringLiteral("twos-complement")}});
         FrameDescriber &twos = *twos_;
         QVERIFY(twos.describeSerial(Origin::Host, QByteArray(":0122010226\r\n")).startsWith(QLatin1String("? (")));
-        QCOMPARE(twos.describeSerial(Origin::Host, QByteArray(":01220102DA\r\n")), QStringLiteral("#1 Change address 2"));
+        QCOMPARE(twos.describeSerial(Origin::Host, QByteArray(":01220102DA\r\n")),
+                 QStringLiteral("#1 Change address 2"));
     }
 
     void shuokeCanAndPlc()
@@ -206,16 +207,17 @@ private slots:
                  QStringLiteral("all (broadcast): Emergency stop"));
         QCOMPARE(d.describeCan(Origin::Drive, can(0x03, "033C000000000000")), QStringLiteral("#3 Emergency stop: OK"));
 
-        const auto plc_ = createFrameDescriber(Family::Shuoke, QStringLiteral("plc"), {{QStringLiteral("shuoke.plcBase"), 0x100}});
+        const auto plc_ = createFrameDescriber(Family::Shuoke, QStringLiteral("plc"),
+                                               {{QStringLiteral("shuoke.plcBase"), 0x100}});
         FrameDescriber &plc = *plc_;
         const shuoke::Frame request = shuoke::Frame::make(1, 0x36);
         shuoke::PlcOptions options;
         options.base = 0x100;
         const QByteArray adu = *shuoke::encodePlcRequest(request, options).value;
-        QCOMPARE(adu.at(1), char(0x03));   // a Modbus read
+        QCOMPARE(adu.at(1), char(0x03)); // a Modbus read
         QCOMPARE(plc.describeSerial(Origin::Host, adu), QStringLiteral("#1 Query speed"));
-        const QByteArray reply = *shuoke::encodePlcReply(shuoke::Frame::make(1, 0x36, shuoke::encodeInt32(-5)),
-                                                         request, options).value;
+        const QByteArray reply =
+            *shuoke::encodePlcReply(shuoke::Frame::make(1, 0x36, shuoke::encodeInt32(-5)), request, options).value;
         QCOMPARE(plc.describeSerial(Origin::Drive, reply), QStringLiteral("#1 Query speed → -5"));
         QCOMPARE(plc.describeSerial(Origin::Drive, modbusrtu::encodeExceptionReply(1, 0x03, 2)),
                  QStringLiteral("#1 Query speed failed: illegal data address"));
@@ -223,7 +225,8 @@ private slots:
 
     void shuokeByteOrder()
     {
-        const auto big_ = createFrameDescriber(Family::Shuoke, {}, {{QStringLiteral("shuoke.byteOrder"), QStringLiteral("big")}});
+        const auto big_ = createFrameDescriber(Family::Shuoke, {},
+                                               {{QStringLiteral("shuoke.byteOrder"), QStringLiteral("big")}});
         FrameDescriber &big = *big_;
         const auto little_ = createFrameDescriber(Family::Shuoke);
         FrameDescriber &little = *little_;

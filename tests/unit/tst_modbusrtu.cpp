@@ -14,7 +14,10 @@ namespace {
 
 using dd::test::hex;
 // A frame with a correct CRC over arbitrary (possibly malformed) content.
-QByteArray crcd(const char *h) { return withCrc16(QByteArray::fromHex(h)); }
+QByteArray crcd(const char *h)
+{
+    return withCrc16(QByteArray::fromHex(h));
+}
 
 Request readReq(quint8 addr, quint16 start, quint16 count)
 {
@@ -146,11 +149,13 @@ private slots:
         QTest::newRow("0x03 too short") << crcd("01 03 00 00 00") << 0 << DecodeError::WrongLength;
         QTest::newRow("0x06 too long") << crcd("01 06 00 00 00 01 00") << 0 << DecodeError::WrongLength;
         QTest::newRow("0x10 too short") << crcd("01 10 00 64 00 01") << 0 << DecodeError::WrongLength;
-        QTest::newRow("0x10 bc vs length") << crcd("01 10 00 64 00 02 04 00 01 00") << 0 << DecodeError::ByteCountMismatch;
+        QTest::newRow("0x10 bc vs length")
+            << crcd("01 10 00 64 00 02 04 00 01 00") << 0 << DecodeError::ByteCountMismatch;
         QTest::newRow("0x10 bc vs count") << crcd("01 10 00 64 00 02 02 00 01") << 0 << DecodeError::ByteCountMismatch;
         QTest::newRow("0x03 count 0") << crcd("01 03 00 64 00 00") << 0 << DecodeError::CountOutOfRange;
         QTest::newRow("0x03 count 126") << crcd("01 03 00 00 00 7E") << 0 << DecodeError::CountOutOfRange;
-        QTest::newRow("0x03 count 21, drive limit 20") << crcd("01 03 00 64 00 15") << 20 << DecodeError::CountOutOfRange;
+        QTest::newRow("0x03 count 21, drive limit 20")
+            << crcd("01 03 00 64 00 15") << 20 << DecodeError::CountOutOfRange;
         QTest::newRow("0x10 count 0") << crcd("01 10 00 64 00 00 00") << 0 << DecodeError::CountOutOfRange;
         QByteArray w21 = QByteArray::fromHex("0110006400152A") + QByteArray(42, '\0');
         QTest::newRow("0x10 count 21, drive limit 20") << withCrc16(w21) << 20 << DecodeError::CountOutOfRange;
@@ -243,23 +248,28 @@ private slots:
         QTest::newRow("4 bytes") << hex("01 83 04 40") << read3 << DecodeError::TooShort;
         QTest::newRow("bad crc") << hex("11 03 06 AE 41 56 52 43 40 49 AE") << read3 << DecodeError::BadCrc;
         QTest::newRow("exception bad crc") << hex("01 83 04 40 F4") << read3 << DecodeError::BadCrc;
-        QTest::newRow("other address") << encodeReadHoldingReply(0x12, {1, 2, 3}) << read3 << DecodeError::AddressMismatch;
-        QTest::newRow("other function") << encodeWriteMultipleReply(0x11, 0x6B, 3) << read3 << DecodeError::FunctionMismatch;
+        QTest::newRow("other address") << encodeReadHoldingReply(0x12, {1, 2, 3}) << read3
+                                       << DecodeError::AddressMismatch;
+        QTest::newRow("other function") << encodeWriteMultipleReply(0x11, 0x6B, 3) << read3
+                                        << DecodeError::FunctionMismatch;
         QTest::newRow("exception of other function") << hex("01 90 04 4D C3") << read3 << DecodeError::FunctionMismatch;
         QTest::newRow("exception too long") << crcd("01 83 04 00") << read3 << DecodeError::WrongLength;
         QTest::newRow("0x03 bc vs length") << crcd("11 03 06 00 01 00 02") << read3 << DecodeError::ByteCountMismatch;
         QTest::newRow("0x03 odd bc") << crcd("11 03 05 00 01 00 02 00") << read3 << DecodeError::ByteCountMismatch;
-        QTest::newRow("0x03 fewer registers") << encodeReadHoldingReply(0x11, {1, 2}) << read3 << DecodeError::CountMismatch;
-        QTest::newRow("0x03 more registers") << encodeReadHoldingReply(0x11, {1, 2, 3, 4}) << read3 << DecodeError::CountMismatch;
+        QTest::newRow("0x03 fewer registers")
+            << encodeReadHoldingReply(0x11, {1, 2}) << read3 << DecodeError::CountMismatch;
+        QTest::newRow("0x03 more registers")
+            << encodeReadHoldingReply(0x11, {1, 2, 3, 4}) << read3 << DecodeError::CountMismatch;
         QTest::newRow("0x10 too long") << crcd("11 10 00 01 00 02 00") << write2 << DecodeError::WrongLength;
         QTest::newRow("0x10 start echo") << encodeWriteMultipleReply(0x11, 2, 2) << write2 << DecodeError::EchoMismatch;
         QTest::newRow("0x10 count echo") << encodeWriteMultipleReply(0x11, 1, 1) << write2 << DecodeError::EchoMismatch;
-        QTest::newRow("0x06 register echo") << encodeWriteSingleReply(0x11, 2, 3) << single << DecodeError::EchoMismatch;
+        QTest::newRow("0x06 register echo")
+            << encodeWriteSingleReply(0x11, 2, 3) << single << DecodeError::EchoMismatch;
         QTest::newRow("0x06 too short") << crcd("11 06 00 01 00") << single << DecodeError::WrongLength;
         QTest::newRow("to broadcast") << encodeWriteSingleReply(0x00, 1, 3) << writeSingleReq(0, 1, 3)
                                       << DecodeError::AddressMismatch;
-        QTest::newRow("exception to broadcast") << hex("01 86 04 43 A3") << writeSingleReq(0, 0, 1)
-                                                << DecodeError::AddressMismatch;
+        QTest::newRow("exception to broadcast")
+            << hex("01 86 04 43 A3") << writeSingleReq(0, 0, 1) << DecodeError::AddressMismatch;
     }
     void decodeReplyRejects()
     {

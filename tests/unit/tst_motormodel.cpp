@@ -11,7 +11,7 @@ constexpr double Dt = MotorModel::StepSeconds;
 
 // Steps the model millisecond by millisecond, checking the accel/decel limits on every step;
 // returns the number of steps taken until `done` (or -1 after maxSteps).
-template<class Done>
+template <class Done>
 int stepChecked(MotorModel &m, Done done, int maxSteps, double *maxAbsSpeed = nullptr)
 {
     const double a = m.config().acceleration;
@@ -24,8 +24,7 @@ int stepChecked(MotorModel &m, Done done, int maxSteps, double *maxAbsSpeed = nu
         const bool growing = std::abs(v1) > std::abs(v0) && (v0 == 0.0 || (v0 > 0) == (v1 > 0));
         const double limit = (growing ? a : d) * Dt;
         if (dv > limit * (1.0 + 1e-9) + 1e-9) {
-            qWarning("step %d: speed %g -> %g exceeds %s limit %g", i, v0, v1,
-                     growing ? "accel" : "decel", limit);
+            qWarning("step %d: speed %g -> %g exceeds %s limit %g", i, v0, v1, growing ? "accel" : "decel", limit);
             return -2;
         }
         if (maxAbsSpeed)
@@ -68,17 +67,21 @@ private slots:
         QVERIFY(m.enable());
         QVERIFY(m.runSpeed(100000));
         // 0 -> 100000 counts/s at 1e6 counts/s² takes 100 ms
-        const int up = stepChecked(m, [&] { return m.speed() == 100000.0; }, 1000);
+        const int up = stepChecked(
+            m, [&] { return m.speed() == 100000.0; }, 1000);
         QCOMPARE(up, 100);
         QCOMPARE(m.acceleration(), 1.0e6);
         // reverse: 100 ms... no: decelerate 200 ms at 5e5, then accelerate 100 ms at 1e6
         QVERIFY(m.runSpeed(-100000));
-        const int reverse = stepChecked(m, [&] { return m.speed() == -100000.0; }, 1000);
+        const int reverse = stepChecked(
+            m, [&] { return m.speed() == -100000.0; }, 1000);
         QCOMPARE(reverse, 300);
         // above the maximum speed: clamped
         QVERIFY(m.runSpeed(1e9));
         QCOMPARE(m.targetSpeed(), m.config().maxSpeed);
-        QVERIFY(stepChecked(m, [&] { return m.speed() == m.config().maxSpeed; }, 5000) > 0);
+        QVERIFY(stepChecked(
+                    m, [&] { return m.speed() == m.config().maxSpeed; }, 5000)
+                > 0);
         QCOMPARE(m.speedRpm(), m.config().maxSpeed * 60.0 / m.config().countsPerRev);
     }
 
@@ -109,12 +112,15 @@ private slots:
         double last = m.positionExact();
         bool monotonic = true;
         double peak = 0.0;
-        const int steps = stepChecked(m, [&] {
-            if ((m.positionExact() - last) * dir < -1e-9)
-                monotonic = false;
-            last = m.positionExact();
-            return !m.isMoving();
-        }, 200000, &peak);
+        const int steps = stepChecked(
+            m,
+            [&] {
+                if ((m.positionExact() - last) * dir < -1e-9)
+                    monotonic = false;
+                last = m.positionExact();
+                return !m.isMoving();
+            },
+            200000, &peak);
         QVERIFY2(steps > 0, "move did not finish within its limits");
         QCOMPARE(m.position(), target);
         QCOMPARE(m.positionExact(), static_cast<double>(target));
@@ -142,7 +148,9 @@ private slots:
         m.advanceTo(0.1);
         m.setMoveSpeed(20000); // slower mid-move: decelerates within its limit
         double peak = 0.0;
-        QVERIFY(stepChecked(m, [&] { return !m.isMoving(); }, 100000, &peak) > 0);
+        QVERIFY(stepChecked(
+                    m, [&] { return !m.isMoving(); }, 100000, &peak)
+                > 0);
         QCOMPARE(m.position(), -59000);
     }
 
@@ -155,7 +163,9 @@ private slots:
         QVERIFY(m.speed() > 0);
         const qint64 here = m.position();
         QVERIFY(m.moveAbsolute(here, 200000)); // must brake, overshoot and come back
-        QVERIFY(stepChecked(m, [&] { return !m.isMoving(); }, 100000) > 0);
+        QVERIFY(stepChecked(
+                    m, [&] { return !m.isMoving(); }, 100000)
+                > 0);
         QCOMPARE(m.position(), here);
     }
 
@@ -170,7 +180,9 @@ private slots:
         QCOMPARE(m.mode(), MotorModel::Mode::Stopping);
         QCOMPARE(m.targetSpeed(), 0.0);
         // 100000 / 5e5 = 200 ms
-        QCOMPARE(stepChecked(m, [&] { return m.speed() == 0.0; }, 1000), 200);
+        QCOMPARE(stepChecked(
+                     m, [&] { return m.speed() == 0.0; }, 1000),
+                 200);
         QCOMPARE(m.mode(), MotorModel::Mode::Idle);
         QVERIFY(m.isEnabled());
         const qint64 held = m.position();
@@ -268,13 +280,13 @@ private slots:
         const double cruiseCurrent = m.current();
         const qint64 cruiseError = m.positionError();
         QVERIFY(accelCurrent > cruiseCurrent);
-        QVERIFY(cruiseCurrent > holding); // friction
+        QVERIFY(cruiseCurrent > holding);  // friction
         QVERIFY(accelError > cruiseError); // although slower
         QVERIFY(cruiseError > 0);
         QCOMPARE(m.commandPosition(), m.position() + cruiseError);
         const double toRad = 2 * M_PI / c.countsPerRev;
-        const double expectedTorque = c.inertia * 1e6 * toRad + c.loadTorque
-                + c.viscousFriction * accelSpeed * toRad + c.coulombFriction;
+        const double expectedTorque = c.inertia * 1e6 * toRad + c.loadTorque + c.viscousFriction * accelSpeed * toRad
+            + c.coulombFriction;
         QVERIFY(qFuzzyCompare(accelCurrent, expectedTorque / c.torqueConstant));
         QVERIFY(qFuzzyCompare(m.torquePercent(), 100.0 * m.torque() / c.ratedTorque));
         m.stop();
@@ -327,7 +339,9 @@ private slots:
         QVERIFY(m.enable());
         QVERIFY(m.startHoming(-5000, 50000, 100));
         QVERIFY(m.isHoming());
-        QVERIFY(stepChecked(m, [&] { return !m.isMoving(); }, 100000) > 0);
+        QVERIFY(stepChecked(
+                    m, [&] { return !m.isMoving(); }, 100000)
+                > 0);
         QVERIFY(!m.isHoming());
         QVERIFY(m.isHomed());
         QCOMPARE(m.position(), 100);

@@ -21,15 +21,16 @@ using dd::test::dataDir;
 
 QJsonObject entry(int index, const QString &key, qint64 min = -100, qint64 max = 100)
 {
-    return QJsonObject{{"index", index},
-                       {"key", key},
-                       {"name", QJsonObject{{"en", QStringLiteral("Parameter %1").arg(index)},
-                                            {"zh", QStringLiteral("参数 %1").arg(index)}}},
-                       {"description", QJsonObject{{"en", "Test."}, {"zh", "测试。"}}},
-                       {"unit", ""},
-                       {"min", min},
-                       {"max", max},
-                       {"access", "rw"}};
+    return QJsonObject{
+        {"index", index},
+        {"key", key},
+        {"name",
+         QJsonObject{{"en", QStringLiteral("Parameter %1").arg(index)}, {"zh", QStringLiteral("参数 %1").arg(index)}}},
+        {"description", QJsonObject{{"en", "Test."}, {"zh", "测试。"}}},
+        {"unit", ""},
+        {"min", min},
+        {"max", max},
+        {"access", "rw"}};
 }
 
 QJsonObject smallDictionary()
@@ -64,7 +65,8 @@ class MarkingTranslator : public QTranslator
 public:
     QString translate(const char *context, const char *sourceText, const char *, int) const override
     {
-        if (QByteArray(context) == "dd::ParameterDictionary" && QByteArray(sourceText).contains("outside the allowed range"))
+        if (QByteArray(context) == "dd::ParameterDictionary"
+            && QByteArray(sourceText).contains("outside the allowed range"))
             return QStringLiteral("[zh] %1: %2 超出允许范围 %3 ~ %4");
         return {};
     }
@@ -151,7 +153,15 @@ private slots:
         const QList<int> expected = {0x24, 0x25, 0x27, 0x29, 0x2B, 0x2D, 0x2F, 0x48, 0x49,
                                      0x4A, 0x4B, 0x5C, 0x5D, 0x5E, 0x5F, 0x61, 0x65, 0x66};
         QCOMPARE(d.indices(), expected);
-        struct Readable { int set; int get; const char *key; qint64 min; qint64 max; const char *zh; };
+        struct Readable
+        {
+            int set;
+            int get;
+            const char *key;
+            qint64 min;
+            qint64 max;
+            const char *zh;
+        };
         const Readable readable[] = {
             {0x24, 0x23, "baud-code", 1, 8, "串口波特率代号"},
             {0x25, 0x26, "start-speed", 0, 100000, "起始速度"},
@@ -327,7 +337,8 @@ private slots:
         const ParameterDictionary &d = ParameterDictionary::bundled(Family::Shuoke);
         QCOMPARE(d.displayName(0x27, QLocale(QLocale::Chinese, QLocale::China)), QStringLiteral("最大速度"));
         QCOMPARE(d.displayName(0x27, QLocale(QLocale::Chinese, QLocale::Taiwan)), QStringLiteral("最大速度"));
-        QCOMPARE(d.displayName(0x27, QLocale(QLocale::English, QLocale::UnitedStates)), QStringLiteral("Maximum speed"));
+        QCOMPARE(d.displayName(0x27, QLocale(QLocale::English, QLocale::UnitedStates)),
+                 QStringLiteral("Maximum speed"));
         QCOMPARE(d.displayName(0x27, QLocale(QLocale::German, QLocale::Germany)), QStringLiteral("Maximum speed"));
         QCOMPARE(d.displayName(0x27, QLocale::c()), QStringLiteral("Maximum speed"));
         QCOMPARE(d.displayName(1), QStringLiteral("P1")); // not in the dictionary
@@ -378,8 +389,8 @@ private slots:
                                    << QStringList{"no parameters"};
         QTest::newRow("params not array") << mutated([](QJsonObject &o) { o["parameters"] = 3; }) << M
                                           << QStringList{"\"parameters\"", "array", "number"};
-        QTest::newRow("unknown root field") << mutated([](QJsonObject &o) { o["extra"] = 1; }) << M
-                                            << QStringList{"unknown field \"extra\""};
+        QTest::newRow("unknown root field")
+            << mutated([](QJsonObject &o) { o["extra"] = 1; }) << M << QStringList{"unknown field \"extra\""};
         QTest::newRow("value type") << mutated([](QJsonObject &o) { o["valueType"] = "float"; }) << M
                                     << QStringList{"valueType", "float"};
         QTest::newRow("entry not object") << mutated([](QJsonObject &o) {
@@ -404,8 +415,8 @@ private slots:
                                          << QStringList{"\"max\"", "too large"};
             QTest::newRow("beyond int64") << withRawNumber(o, "HUGE", "123456789012345678901234567890") << M
                                           << QStringList{"\"max\"", "too large"};
-            QTest::newRow("overflowing exponent") << withRawNumber(o, "HUGE", "1e400") << M
-                                                  << QStringList{"not valid JSON"};
+            QTest::newRow("overflowing exponent")
+                << withRawNumber(o, "HUGE", "1e400") << M << QStringList{"not valid JSON"};
         }
         QTest::newRow("name not object") << mutated(onEntry(0, [](QJsonObject &e) { e["name"] = "Gain"; })) << M
                                          << QStringList{"\"name\"", "object"};
@@ -418,8 +429,10 @@ private slots:
         QTest::newRow("bad language code") << mutated(onEntry(0, [](QJsonObject &e) {
             e["name"] = QJsonObject{{"en", "a"}, {"zh", "b"}, {"English", "c"}};
         })) << M << QStringList{"English", "language code"};
-        QTest::newRow("min > max") << mutated(onEntry(2, [](QJsonObject &e) { e["min"] = 10; e["max"] = 5; })) << M
-                                   << QStringList{"(P2)", "min 10 is greater than max 5"};
+        QTest::newRow("min > max") << mutated(onEntry(2, [](QJsonObject &e) {
+            e["min"] = 10;
+            e["max"] = 5;
+        })) << M << QStringList{"(P2)", "min 10 is greater than max 5"};
         QTest::newRow("default outside") << mutated(onEntry(1, [](QJsonObject &e) { e["default"] = 101; })) << M
                                          << QStringList{"(P1)", "default 101", "-100 to 100"};
         QTest::newRow("beyond type") << mutated(onEntry(1, [](QJsonObject &e) { e["max"] = 40000; })) << M
@@ -432,10 +445,14 @@ private slots:
                                              << QStringList{"(P1)", "unknown field \"scale\""};
         QTest::newRow("index negative") << mutated(onEntry(1, [](QJsonObject &e) { e["index"] = -1; })) << M
                                         << QStringList{"\"index\"", "outside the allowed range 0 to 65535"};
-        QTest::newRow("index too big") << mutated(onEntry(1, [](QJsonObject &e) { e["index"] = 70000; e["key"] = "X"; }))
-                                       << M << QStringList{"\"index\"", "0 to 65535"};
-        QTest::newRow("duplicate index") << mutated(onEntry(2, [](QJsonObject &e) { e["index"] = 1; e["key"] = "other"; }))
-                                         << M << QStringList{"(other)", "index 1 is already used by P1"};
+        QTest::newRow("index too big") << mutated(onEntry(1, [](QJsonObject &e) {
+            e["index"] = 70000;
+            e["key"] = "X";
+        })) << M << QStringList{"\"index\"", "0 to 65535"};
+        QTest::newRow("duplicate index") << mutated(onEntry(2, [](QJsonObject &e) {
+            e["index"] = 1;
+            e["key"] = "other";
+        })) << M << QStringList{"(other)", "index 1 is already used by P1"};
         QTest::newRow("duplicate key") << mutated([](QJsonObject &o) {
             QJsonArray a = o["parameters"].toArray();
             a.append(entry(3, "p1x"));
@@ -461,8 +478,8 @@ private slots:
             onEntry(1, [](QJsonObject &e) { e["min"] = 0; })(o);
             onEntry(2, [](QJsonObject &e) { e["min"] = 0; })(o);
         }) << M << QStringList{"(P0)", "readCommand"};
-        QTest::newRow("modbus needs register") << mutated([](QJsonObject &o) { o["family"] = "servo-modbus"; }) << M
-                                               << QStringList{"(P0)", "register"};
+        QTest::newRow("modbus needs register")
+            << mutated([](QJsonObject &o) { o["family"] = "servo-modbus"; }) << M << QStringList{"(P0)", "register"};
         QTest::newRow("duplicate register") << mutated([](QJsonObject &o) {
             onEntry(0, [](QJsonObject &e) { e["register"] = 100; })(o);
             onEntry(1, [](QJsonObject &e) { e["register"] = 100; })(o);

@@ -24,18 +24,22 @@ struct Sets
 Sets shuokeSets()
 {
     Sets s;
-    s.file.set(0x25, 500);   s.drive.set(0x25, 500);   // start-speed: Same
-    s.file.set(0x27, 20000); s.drive.set(0x27, 15000); // max-speed: Different
-    s.file.set(0x2B, 800);   s.drive.setUnknown(0x2B); // acceleration: OnlyInFile (drive read failed)
-    s.file.set(0x29, 100);                             // stop-speed: OnlyInFile (not read)
-    s.drive.set(0x2D, 900);                            // deceleration: OnlyOnDrive
-    s.file.set(0x5C, 1, ValueSource::LastWritten);     // encoder-direction: NotReadable
+    s.file.set(0x25, 500);
+    s.drive.set(0x25, 500); // start-speed: Same
+    s.file.set(0x27, 20000);
+    s.drive.set(0x27, 15000); // max-speed: Different
+    s.file.set(0x2B, 800);
+    s.drive.setUnknown(0x2B);                      // acceleration: OnlyInFile (drive read failed)
+    s.file.set(0x29, 100);                         // stop-speed: OnlyInFile (not read)
+    s.drive.set(0x2D, 900);                        // deceleration: OnlyOnDrive
+    s.file.set(0x5C, 1, ValueSource::LastWritten); // encoder-direction: NotReadable
     s.file.set(0x65, 200, ValueSource::LastWritten);
-    s.drive.set(0x65, 200, ValueSource::LastWritten);  // NotReadable even when equal
-    s.drive.set(0x5D, 0, ValueSource::LastWritten);    // motion-direction: OnlyOnDrive
-    s.file.set(0x24, 7);     s.drive.set(0x24, 6);     // baud-code: Different, communication
-    s.file.set(0x4B, 12, ValueSource::LastWritten);    // CAN bitrate: NotReadable, communication
-    s.file.set(300, 1);                                // not in the dictionary: ignored
+    s.drive.set(0x65, 200, ValueSource::LastWritten); // NotReadable even when equal
+    s.drive.set(0x5D, 0, ValueSource::LastWritten);   // motion-direction: OnlyOnDrive
+    s.file.set(0x24, 7);
+    s.drive.set(0x24, 6);                           // baud-code: Different, communication
+    s.file.set(0x4B, 12, ValueSource::LastWritten); // CAN bitrate: NotReadable, communication
+    s.file.set(300, 1);                             // not in the dictionary: ignored
     return s;
 }
 
@@ -91,8 +95,8 @@ private slots:
         const Sets s = shuokeSets();
         const ParameterDiff diff = ParameterDiff::compute(shuoke(), s.file, s.drive);
         QCOMPARE(indicesOf(diff.entries()), (QList<int>{0x24, 0x25, 0x27, 0x29, 0x2B, 0x2D, 0x4B, 0x5C, 0x5D, 0x65}));
-        QVERIFY(!diff.entry(300));    // not in the dictionary
-        QVERIFY(!diff.entry(0x2F));   // known on neither side
+        QVERIFY(!diff.entry(300));  // not in the dictionary
+        QVERIFY(!diff.entry(0x2F)); // known on neither side
         QCOMPARE(diff.count(DiffStatus::Same), 1);
         QCOMPARE(diff.count(DiffStatus::Different), 2);
         QCOMPARE(diff.count(DiffStatus::OnlyInFile), 2);
@@ -155,7 +159,7 @@ private slots:
         Error e = diff.selectForWrite({0x27, 0x2D}, &out); // deceleration: only on the drive
         QCOMPARE(e.code, ErrorCode::InvalidArgument);
         QVERIFY2(e.message.contains("deceleration"), qPrintable(e.message));
-        QCOMPARE(out.size(), 1); // untouched
+        QCOMPARE(out.size(), 1);               // untouched
         e = diff.selectForWrite({0x2F}, &out); // homing-speed: on neither side
         QCOMPARE(e.code, ErrorCode::InvalidArgument);
         QVERIFY(e.message.contains("47"));
@@ -168,7 +172,7 @@ private slots:
         file.set(2, 7051);
         drive.set(2, 7062); // firmware differs: shown, never written
         file.set(51, 5);
-        drive.set(51, 1);   // address: communication
+        drive.set(51, 1); // address: communication
         file.set(10, 3);
         drive.set(10, 4);
         const ParameterDiff diff = ParameterDiff::compute(modbus, file, drive);

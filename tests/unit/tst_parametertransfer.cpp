@@ -35,10 +35,7 @@ public:
     }
 
     Family family() const override { return m_family; }
-    Capabilities capabilities() const override
-    {
-        return Capability::ReadParameters | Capability::WriteParameters;
-    }
+    Capabilities capabilities() const override { return Capability::ReadParameters | Capability::WriteParameters; }
     QList<ChannelInfo> channels() const override { return {}; }
 
     DriveReply *refreshIdentity() override
@@ -97,7 +94,7 @@ public:
 
     Family m_family;
     QMap<int, qint64> values;
-    QVariantMap lastWritten;   // as a Shuoke drive reports its write-only settings
+    QVariantMap lastWritten; // as a Shuoke drive reports its write-only settings
     QString firmware = QStringLiteral("7051");
     QList<int> stuck;
     QList<int> refuse;
@@ -118,13 +115,16 @@ Error runJob(ParameterTransfer &t, const std::function<void()> &start)
 
 } // namespace
 
-
 class TestParameterTransfer : public QObject
 {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { ensureCoreResources(); qRegisterMetaType<dd::Error>(); }
+    void initTestCase()
+    {
+        ensureCoreResources();
+        qRegisterMetaType<dd::Error>();
+    }
     void backupReadsEveryReadableParameter();
     void compareShowsDifferences();
     void restoreWritesOnlyDifferencesAndVerifies();

@@ -41,7 +41,8 @@ private slots:
         QTest::newRow("keep-alive") << sc::keepAlive(0) << QByteArray::fromHex("00080000000000ff");
         QTest::newRow("enable on") << sc::enable(0, true) << QByteArray::fromHex("00250100000000ff");
         QTest::newRow("speed +100") << sc::runSpeed(0, 100) << QByteArray::fromHex("00200064000000ff");
-        QTest::newRow("positioning speed 200") << sc::positioningSpeed(0, 200) << QByteArray::fromHex("002300c8000000ff");
+        QTest::newRow("positioning speed 200")
+            << sc::positioningSpeed(0, 200) << QByteArray::fromHex("002300c8000000ff");
         QTest::newRow("relative +1000") << sc::moveRelative(0, 1000) << QByteArray::fromHex("002100e8030000ff");
         // The seed shows C8 03 (= 968) for target 1000: a typo, 1000 is E8 03.
         QTest::newRow("absolute 1000") << sc::moveAbsolute(0, 1000) << QByteArray::fromHex("002200e8030000ff");
@@ -145,10 +146,8 @@ private slots:
         QTest::addColumn<int>("paramIndex");
         QTest::addColumn<int>("paramValue");
         QTest::addColumn<qint32>("value");
-        auto row = [](const QByteArray &name, const CanFrameData &f, int st, sc::Command c, int b2,
-                      int idx, int pv, qint32 v) {
-            QTest::newRow(name.constData()) << f << st << int(c) << b2 << idx << pv << v;
-        };
+        auto row = [](const QByteArray &name, const CanFrameData &f, int st, sc::Command c, int b2, int idx, int pv,
+                      qint32 v) { QTest::newRow(name.constData()) << f << st << int(c) << b2 << idx << pv << v; };
         using C = sc::Command;
         row("keep-alive", sc::keepAlive(3), 3, C::KeepAlive, 0, 0, 0, 0);
         row("read parameter", sc::readParameter(3, 200), 3, C::Read, 0xFA, 200, 0, 200);
@@ -338,11 +337,13 @@ private slots:
         using T = sc::ReadType;
         QTest::newRow("parameter") << sc::readParameter(4, 75) << sc::readReplyParameter(4, 75, 4) << true;
         QTest::newRow("parameter other index") << sc::readParameter(4, 75) << sc::readReplyParameter(4, 74, 1) << false;
-        QTest::newRow("parameter other station") << sc::readParameter(4, 75) << sc::readReplyParameter(5, 75, 5) << false;
+        QTest::newRow("parameter other station")
+            << sc::readParameter(4, 75) << sc::readReplyParameter(5, 75, 5) << false;
         QTest::newRow("speed") << sc::read(4, T::Speed) << sc::readReply(4, T::Speed, 1500) << true;
         QTest::newRow("speed, b3 set") << sc::read(4, T::Speed) << sc::readReply(4, T::Speed, 75) << true;
         QTest::newRow("speed vs position") << sc::read(4, T::Speed) << sc::readReply(4, T::Position, 1500) << false;
-        QTest::newRow("current other station") << sc::read(4, T::OutputCurrent) << sc::readReply(9, T::OutputCurrent, 1) << false;
+        QTest::newRow("current other station")
+            << sc::read(4, T::OutputCurrent) << sc::readReply(9, T::OutputCurrent, 1) << false;
         QTest::newRow("speed vs parameter") << sc::read(4, T::Speed) << sc::readReplyParameter(4, 0, 0) << false;
         QTest::newRow("heartbeat is no reply") << sc::read(4, T::Position) << sc::heartbeat(4, 0xFD, 0) << false;
         QTest::newRow("alarm is no reply") << sc::read(4, T::AlarmCode) << sc::alarm(4, 0xAA) << false;

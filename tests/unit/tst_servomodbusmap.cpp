@@ -46,10 +46,10 @@ private slots:
     // ---- DP monitor table ----
     void monitorTable()
     {
-        const QStringList expected = {
-            "DP-SPd", "DP-PoS", "DP-PoS.", "DP-CPo", "DP-CPo.", "DP-EPo", "DP-EPo.", "DP-trq",
-            "DP-I", "DP-LSP", "DP-Cnt", "DP-Frq", "DP-CS", "DP-Ct", "DP-APo", "DP-In",
-            "DP-oUt", "DP-Cod", "DP-m", "DP-Err", "DP-tL", "DP-IA", "DP-IC", "DP-rES"};
+        const QStringList expected = {"DP-SPd",  "DP-PoS", "DP-PoS.", "DP-CPo", "DP-CPo.", "DP-EPo",
+                                      "DP-EPo.", "DP-trq", "DP-I",    "DP-LSP", "DP-Cnt",  "DP-Frq",
+                                      "DP-CS",   "DP-Ct",  "DP-APo",  "DP-In",  "DP-oUt",  "DP-Cod",
+                                      "DP-m",    "DP-Err", "DP-tL",   "DP-IA",  "DP-IC",   "DP-rES"};
         const auto &t = monitorRegisters();
         QCOMPARE(t.size(), int(MonitorRegisterCount));
         for (int i = 0; i < t.size(); ++i) {
@@ -92,7 +92,7 @@ private slots:
     {
         QVERIFY(isReadableRange(0x00, 20));
         QVERIFY(isReadableRange(0x14, 4));
-        QVERIFY(!isReadableRange(0x14, 5)); // past DP-rES
+        QVERIFY(!isReadableRange(0x14, 5));  // past DP-rES
         QVERIFY(!isReadableRange(0x00, 24)); // more than 20
         QVERIFY(!isReadableRange(0x00, 0));
         QVERIFY(isReadableRange(0x64, 20));
@@ -157,7 +157,8 @@ private slots:
     void seedEeLegacy()
     {
         QCOMPARE(encodeEeRequest(5, EeOp::Set, EeFormat::Legacy).toHex(' '), hex("05 06 00 00 00 01 49 8E").toHex(' '));
-        QCOMPARE(encodeEeRequest(1, EeOp::Defaults, EeFormat::Legacy).toHex(' '), hex("01 06 00 00 00 05 49 C9").toHex(' '));
+        QCOMPARE(encodeEeRequest(1, EeOp::Defaults, EeFormat::Legacy).toHex(' '),
+                 hex("01 06 00 00 00 05 49 C9").toHex(' '));
         const rtu::Request req = eeRequest(5, EeOp::Set, EeFormat::Legacy);
         QVERIFY(validateRequest(req).isEmpty());
         // Reply value 0: still running; == op: finished; else failed.
@@ -194,7 +195,8 @@ private slots:
         QVERIFY2(d.ok(), qPrintable(d.error));
         QVERIFY(d.value->isException);
         QCOMPARE(d.value->exceptionCode, quint8(0x04));
-        QCOMPARE(rtu::encodeExceptionReply(0x01, rtu::ReadHoldingRegisters, 0x04).toHex(' '), hex("01 83 04 40 F3").toHex(' '));
+        QCOMPARE(rtu::encodeExceptionReply(0x01, rtu::ReadHoldingRegisters, 0x04).toHex(' '),
+                 hex("01 83 04 40 F3").toHex(' '));
 
         d = rtu::decodeReply(hex("01 90 04 4D C3"), eeRequest(5, EeOp::Set, EeFormat::New));
         QVERIFY(d.ok());

@@ -3,8 +3,8 @@
 #include "core/protocol/shuoke/shuokeascii.h"
 #include "core/protocol/shuoke/shuokeasciistreamparser.h"
 #include "core/protocol/shuoke/shuokecommands.h"
-#include "tests/support/shuokeframestring.h"
 #include "tests/support/hex.h"
+#include "tests/support/shuokeframestring.h"
 
 using namespace dd::shuoke;
 using dd::Decoded;
@@ -69,7 +69,8 @@ private slots:
         QTest::addColumn<Frame>("frame");
         QTest::addColumn<bool>("twosComplement");
         QTest::addColumn<QByteArray>("wire");
-        QTest::newRow("seed: change address") << Frame::make(1, 0x22, hex("02")) << false << QByteArray(":0122010226\r\n");
+        QTest::newRow("seed: change address")
+            << Frame::make(1, 0x22, hex("02")) << false << QByteArray(":0122010226\r\n");
         QTest::newRow("seed: reply from new address")
             << Frame::make(2, 0x22, hex("02")) << false << QByteArray(":0222010227\r\n");
         QTest::newRow("two's complement") << Frame::make(1, 0x22, hex("02")) << true << QByteArray(":01220102DA\r\n");
@@ -77,10 +78,10 @@ private slots:
         QTest::newRow("query address, two's") << Frame::make(0, 0x21) << true << QByteArray(":002100DF\r\n");
         QTest::newRow("speed reply") << Frame::make(1, 0x36, hex("a0860100")) << false
                                      << QByteArray(":013604A086010062\r\n");
-        QTest::newRow("speed reply, two's") << Frame::make(1, 0x36, hex("a0860100")) << true
-                                            << QByteArray(":013604A08601009E\r\n");
-        QTest::newRow("set start speed 1000") << Frame::make(1, 0x25, hex("e8030000")) << false
-                                              << QByteArray(":012504E803000015\r\n");
+        QTest::newRow("speed reply, two's")
+            << Frame::make(1, 0x36, hex("a0860100")) << true << QByteArray(":013604A08601009E\r\n");
+        QTest::newRow("set start speed 1000")
+            << Frame::make(1, 0x25, hex("e8030000")) << false << QByteArray(":012504E803000015\r\n");
         QTest::newRow("status reply") << Frame::make(1, 0x3B, hex("0100010001")) << false
                                       << QByteArray(":013B05010001000144\r\n");
         for (quint8 code = 1; code <= 5; ++code) {
@@ -198,10 +199,9 @@ private slots:
     void streamNoiseBeforeAndBetween()
     {
         AsciiStreamParser parser;
-        const QByteArray stream = QByteArray("\x00\xff junk\r\n", 10) + ":0122010226\r\n" + "zz\n\n"
-            + ":0222010227\r\n" + "trailing";
-        QCOMPARE(parser.feed(stream),
-                 (QList<Frame>{Frame::make(1, 0x22, hex("02")), Frame::make(2, 0x22, hex("02"))}));
+        const QByteArray stream = QByteArray("\x00\xff junk\r\n", 10) + ":0122010226\r\n" + "zz\n\n" + ":0222010227\r\n"
+            + "trailing";
+        QCOMPARE(parser.feed(stream), (QList<Frame>{Frame::make(1, 0x22, hex("02")), Frame::make(2, 0x22, hex("02"))}));
         QCOMPARE(parser.rejectedFrames(), quint64(0));
         QCOMPARE(parser.discardedBytes(), quint64(10 + 4 + 8));
         QCOMPARE(parser.bufferedSize(), 0);
@@ -269,7 +269,8 @@ private slots:
         QVERIFY(parser.takeFrame() == std::nullopt);
         QVERIFY(parser.bufferedSize() <= 100);
         parser.clear();
-        QCOMPARE(parser.feed(QByteArray(5000, 'x') + ":0122010226\r\n"), (QList<Frame>{Frame::make(1, 0x22, hex("02"))}));
+        QCOMPARE(parser.feed(QByteArray(5000, 'x') + ":0122010226\r\n"),
+                 (QList<Frame>{Frame::make(1, 0x22, hex("02"))}));
         QVERIFY(AsciiStreamParser({}, 1).capacity() >= 2 * AsciiStreamParser::kMaxFrameChars);
     }
 

@@ -2,8 +2,8 @@
 
 #include "core/protocol/shuoke/shuokecan.h"
 #include "core/protocol/shuoke/shuokecommands.h"
-#include "tests/support/shuokeframestring.h"
 #include "tests/support/hex.h"
+#include "tests/support/shuokeframestring.h"
 
 using namespace dd::shuoke;
 using dd::CanFrameData;
@@ -66,7 +66,9 @@ private slots:
         row("set homing speed", Frame::make(1, 0x2F, hex("e8030000")), "012f04e803000000");
         row("get homing speed", Frame::make(1, 0x30), "0130000000000000");
         row("move 1 (signed)", Frame::make(1, 0x31, hex("18fcffff")), "01310418fcffff00");
-        row("move 2 (direction + pulses)", Frame::make(1, 0x32, hex("01400d03")), "013204" "01400d0300");
+        row("move 2 (direction + pulses)", Frame::make(1, 0x32, hex("01400d03")),
+            "013204"
+            "01400d0300");
         row("jog 1 (signed)", Frame::make(1, 0x33, hex("e8030000")), "013304e803000000");
         row("jog 2 (direction + speed)", Frame::make(1, 0x34, hex("00e80300")), "01340400e8030000");
         row("change speed", Frame::make(1, 0x35, hex("d0070000")), "013504d007000000");
@@ -164,7 +166,8 @@ private slots:
                         add(reply, n);
             }
             const int s = seed++;
-            frames.append(Frame::failureReply(static_cast<quint8>(1 + s % 250), c.code, static_cast<quint8>(1 + s % 5)));
+            frames.append(
+                Frame::failureReply(static_cast<quint8>(1 + s % 250), c.code, static_cast<quint8>(1 + s % 5)));
             for (const Frame &f : frames) {
                 for (const bool extended : {false, true}) {
                     CanOptions o;

@@ -2,10 +2,10 @@
 // transport gives SerialLink, and the parameter table against the bundled dictionary.
 #include <QtTest>
 
-#include "core/link/connectionsettings.h"
 #include "core/drive/shuoke/shuokeoptions.h"
 #include "core/drive/shuoke/shuokeparameter.h"
 #include "core/drive/shuoke/shuokeserialtransport.h"
+#include "core/link/connectionsettings.h"
 #include "core/params/parameterdictionary.h"
 #include "core/protocol/modbus/crc16.h"
 #include "core/protocol/shuoke/shuokeascii.h"
@@ -77,12 +77,12 @@ private slots:
         ShuokeOptions o;
         int gap = -1;
         int spacing = -1;
-        o.applyGap(9600, 10, &gap, &spacing);     // 3.5 characters = 3.65 ms
+        o.applyGap(9600, 10, &gap, &spacing); // 3.5 characters = 3.65 ms
         QCOMPARE(gap, 4);
         QCOMPARE(spacing, 50);
-        o.applyGap(38400, 10, &gap, &spacing);    // 0.91 ms
+        o.applyGap(38400, 10, &gap, &spacing); // 0.91 ms
         QCOMPARE(gap, 1);
-        o.applyGap(300, 10, &gap, &spacing);      // 116.7 ms
+        o.applyGap(300, 10, &gap, &spacing); // 116.7 ms
         QCOMPARE(gap, 117);
         o.gapFromReply = true;
         o.applyGap(9600, 10, &gap, &spacing);
@@ -159,14 +159,18 @@ private slots:
     {
         const ReplyMatcher any = ShuokeSerialTransport::rtuMatcher(Frame::make(0, CmdQueryAddress));
         QCOMPARE(any(rtu(Frame::make(42, CmdQueryAddress))).status, FrameMatch::Status::Match);
-        const ReplyMatcher change =
-            ShuokeSerialTransport::rtuMatcher(Frame::make(1, CmdChangeAddress, QByteArray(1, '\x09')));
-        QCOMPARE(change(rtu(Frame::make(1, CmdChangeAddress, QByteArray(1, '\x09')))).status, FrameMatch::Status::Match);
-        QCOMPARE(change(rtu(Frame::make(9, CmdChangeAddress, QByteArray(1, '\x09')))).status, FrameMatch::Status::Match);
-        QCOMPARE(change(rtu(Frame::make(5, CmdChangeAddress, QByteArray(1, '\x09')))).status, FrameMatch::Status::Garbage);
+        const ReplyMatcher change = ShuokeSerialTransport::rtuMatcher(
+            Frame::make(1, CmdChangeAddress, QByteArray(1, '\x09')));
+        QCOMPARE(change(rtu(Frame::make(1, CmdChangeAddress, QByteArray(1, '\x09')))).status,
+                 FrameMatch::Status::Match);
+        QCOMPARE(change(rtu(Frame::make(9, CmdChangeAddress, QByteArray(1, '\x09')))).status,
+                 FrameMatch::Status::Match);
+        QCOMPARE(change(rtu(Frame::make(5, CmdChangeAddress, QByteArray(1, '\x09')))).status,
+                 FrameMatch::Status::Garbage);
         // 0x42 may be answered with 0x41 (the seed's example)
         const ReplyMatcher inputs = ShuokeSerialTransport::rtuMatcher(Frame::make(1, CmdReadInputs));
-        QCOMPARE(inputs(rtu(Frame::make(1, CmdReadIoSubstitution, QByteArray(5, '\0')))).status, FrameMatch::Status::Match);
+        QCOMPARE(inputs(rtu(Frame::make(1, CmdReadIoSubstitution, QByteArray(5, '\0')))).status,
+                 FrameMatch::Status::Match);
     }
 
     void asciiMatcher_data()

@@ -3,8 +3,8 @@
 #include "core/protocol/modbus/crc16.h"
 #include "core/protocol/shuoke/shuokecommands.h"
 #include "core/protocol/shuoke/shuokeplc.h"
-#include "tests/support/shuokeframestring.h"
 #include "tests/support/hex.h"
+#include "tests/support/shuokeframestring.h"
 
 using namespace dd::shuoke;
 using dd::Decoded;
@@ -40,30 +40,36 @@ private slots:
         QTest::newRow("set baud 9600: 06 00 00 00")
             << Frame::make(1, 0x24, hex("06")) << hex("0110002400020406000000f0cc") << hex("01100024000201c3")
             << Frame::make(1, 0x24);
-        QTest::newRow("set start speed 1000")
-            << Frame::make(1, 0x25, hex("e8030000")) << hex("011000250002" "04e8030000f428") << hex("0110002500025003")
-            << Frame::make(1, 0x25);
-        QTest::newRow("home: dir 00 00 00")
-            << Frame::make(1, 0x3E, hex("01")) << hex("011000" "3e0002040100000070cb") << QByteArray() << Frame();
+        QTest::newRow("set start speed 1000") << Frame::make(1, 0x25, hex("e8030000"))
+                                              << hex("011000250002"
+                                                     "04e8030000f428")
+                                              << hex("0110002500025003") << Frame::make(1, 0x25);
+        QTest::newRow("home: dir 00 00 00") << Frame::make(1, 0x3E, hex("01"))
+                                            << hex("011000"
+                                                   "3e0002040100000070cb")
+                                            << QByteArray() << Frame();
         QTest::newRow("clear absolute position: zeros")
             << Frame::make(1, 0x38) << hex("0110003800020400000000f11d") << QByteArray() << Frame();
-        QTest::newRow("emergency stop, broadcast")
-            << Frame::make(0, 0x3C) << hex("001000" "3c0002040000000" "0f412") << QByteArray() << Frame();
+        QTest::newRow("emergency stop, broadcast") << Frame::make(0, 0x3C)
+                                                   << hex("001000"
+                                                          "3c0002040000000"
+                                                          "0f412")
+                                                   << QByteArray() << Frame();
         QTest::newRow("encoder direction: 1 register")
             << Frame::make(1, 0x5C, hex("01")) << hex("0110005c0001020100ab5c") << hex("0110005c0001c1db")
             << Frame::make(1, 0x5C);
-        QTest::newRow("read example (0x28)")
-            << Frame::make(1, 0x28) << hex("0103002800024403") << hex("010304a0860100384a")
-            << Frame::make(1, 0x28, hex("a0860100"));
+        QTest::newRow("read example (0x28)") << Frame::make(1, 0x28) << hex("0103002800024403")
+                                             << hex("010304a0860100384a") << Frame::make(1, 0x28, hex("a0860100"));
         QTest::newRow("handshake: 0 registers")
             << Frame::make(1, 0x20) << hex("0103002000004400") << hex("01030020f0") << Frame::make(1, 0x20);
         QTest::newRow("query address, broadcast: 0 registers")
             << Frame::make(0, 0x21) << hex("0003002100001411") << hex("01030020f0") << Frame::make(1, 0x21);
-        QTest::newRow("get baud: code 00 00 00")
-            << Frame::make(1, 0x23) << hex("01030023000235c1") << hex("01030406000000fabb") << Frame::make(1, 0x23, hex("06"));
-        QTest::newRow("status: 4 registers, first 5 bytes")
-            << Frame::make(1, 0x3B) << hex("0103003b000435c4") << hex("0103080100010001000000" "5436")
-            << Frame::make(1, 0x3B, hex("0100010001"));
+        QTest::newRow("get baud: code 00 00 00") << Frame::make(1, 0x23) << hex("01030023000235c1")
+                                                 << hex("01030406000000fabb") << Frame::make(1, 0x23, hex("06"));
+        QTest::newRow("status: 4 registers, first 5 bytes") << Frame::make(1, 0x3B) << hex("0103003b000435c4")
+                                                            << hex("0103080100010001000000"
+                                                                   "5436")
+                                                            << Frame::make(1, 0x3B, hex("0100010001"));
     }
     void seedRequests()
     {
@@ -102,15 +108,27 @@ private slots:
     void mappingBase()
     {
         QCOMPARE(request(Frame::make(1, 0x25, hex("e8030000")), 0x100).toHex(' '),
-                 hex("0110012500020" "4e8030000f9b8").toHex(' '));
-        QCOMPARE(request(Frame::make(1, 0x26), 0x100).toHex(' '), hex("01030126" "0002243c").toHex(' '));
-        const Decoded<Frame> reply =
-            decodePlcReply(dd::withCrc16(hex("010304e8030000")), Frame::make(1, 0x26), PlcOptions{0x100});
+                 hex("0110012500020"
+                     "4e8030000f9b8")
+                     .toHex(' '));
+        QCOMPARE(request(Frame::make(1, 0x26), 0x100).toHex(' '),
+                 hex("01030126"
+                     "0002243c")
+                     .toHex(' '));
+        const Decoded<Frame> reply = decodePlcReply(dd::withCrc16(hex("010304e8030000")), Frame::make(1, 0x26),
+                                                    PlcOptions{0x100});
         QVERIFY2(reply.ok(), qPrintable(reply.error));
         QCOMPARE(*reply.value, Frame::make(1, 0x26, hex("e8030000")));
         // The drive side finds the command behind the base.
-        QCOMPARE(*decodePlcRequest(hex("0103012600022" "43c"), PlcOptions{0x100}).value, Frame::make(1, 0x26));
-        QVERIFY(!decodePlcRequest(hex("01030126000224" "3c"), PlcOptions{0}).ok());
+        QCOMPARE(*decodePlcRequest(hex("0103012600022"
+                                       "43c"),
+                                   PlcOptions{0x100})
+                      .value,
+                 Frame::make(1, 0x26));
+        QVERIFY(!decodePlcRequest(hex("01030126000224"
+                                      "3c"),
+                                  PlcOptions{0})
+                     .ok());
         // base + command beyond 0xFFFF
         QVERIFY(!encodePlcRequest(Frame::make(1, 0x25, hex("e8030000")), PlcOptions{0xFFF0}).ok());
         QVERIFY(encodePlcRequest(Frame::make(1, 0x25, hex("e8030000")), PlcOptions{0xFFDA}).ok());
@@ -192,7 +210,9 @@ private slots:
 
     void registerWords()
     {
-        QCOMPARE(plcBytesToRegisters(hex("0200" "0000")), (QList<quint16>{0x0200, 0x0000}));
+        QCOMPARE(plcBytesToRegisters(hex("0200"
+                                         "0000")),
+                 (QList<quint16>{0x0200, 0x0000}));
         QCOMPARE(plcBytesToRegisters(hex("a0860100")), (QList<quint16>{0xa086, 0x0100}));
         QCOMPARE(plcBytesToRegisters(hex("a08601")), (QList<quint16>{0xa086}));
         QCOMPARE(plcRegistersToBytes({0x1234, 0xabcd}).toHex(), QByteArray("1234abcd"));

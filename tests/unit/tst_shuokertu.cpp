@@ -4,8 +4,8 @@
 #include "core/protocol/shuoke/shuokecommands.h"
 #include "core/protocol/shuoke/shuokertu.h"
 #include "core/protocol/shuoke/shuokertustreamparser.h"
-#include "tests/support/shuokeframestring.h"
 #include "tests/support/hex.h"
+#include "tests/support/shuokeframestring.h"
 
 using namespace dd::shuoke;
 using dd::Decoded;
@@ -71,10 +71,16 @@ private slots:
         QTest::newRow("handshake") << Frame::make(1, 0x20) << hex("01200039c0");
         QTest::newRow("query address, broadcast 0") << Frame::make(0, 0x21) << hex("0021006990");
         QTest::newRow("query address reply") << Frame::make(1, 0x21) << hex("0121003850");
-        QTest::newRow("change address 1 -> 2") << Frame::make(1, 0x22, hex("02")) << hex("0122010221" "83");
-        QTest::newRow("change address reply from new") << Frame::make(2, 0x22, hex("02")) << hex("02220102" "21c7");
+        QTest::newRow("change address 1 -> 2") << Frame::make(1, 0x22, hex("02"))
+                                               << hex("0122010221"
+                                                      "83");
+        QTest::newRow("change address reply from new") << Frame::make(2, 0x22, hex("02"))
+                                                       << hex("02220102"
+                                                              "21c7");
         QTest::newRow("get baud") << Frame::make(1, 0x23) << hex("0123003930");
-        QTest::newRow("get baud reply 9600") << Frame::make(1, 0x23, hex("06")) << hex("0123010671" "80");
+        QTest::newRow("get baud reply 9600") << Frame::make(1, 0x23, hex("06"))
+                                             << hex("0123010671"
+                                                    "80");
         QTest::newRow("set baud 9600") << Frame::make(1, 0x24, hex("06")) << hex("01240106c041");
         QTest::newRow("set start speed 1000") << Frame::make(1, 0x25, hex("e8030000")) << hex("012504e80300003895");
         QTest::newRow("set start speed reply") << Frame::make(1, 0x25) << hex("0125003a90");
@@ -89,8 +95,9 @@ private slots:
         QTest::newRow("homing reply as 0x3E") << Frame::make(1, 0x3E) << hex("013e003060");
         QTest::newRow("move dir24 +200000") << Frame::make(1, 0x32, hex("01400d03")) << hex("01320401400d03baab");
         QTest::newRow("jog dir24 -1000") << Frame::make(1, 0x34, hex("00e80300")) << hex("01340400e803007eb0");
-        QTest::newRow("IO substitution, 7 bytes")
-            << Frame::make(1, 0x40, hex("03112233445566")) << hex("014007031122334455666" "98a");
+        QTest::newRow("IO substitution, 7 bytes") << Frame::make(1, 0x40, hex("03112233445566"))
+                                                  << hex("014007031122334455666"
+                                                         "98a");
         for (quint8 code = 1; code <= 5; ++code) {
             static const char *wires[] = {"01a50101d1ab", "01a5010291aa", "01a50103506a", "01a5010411a8",
                                           "01a50105d068"};
@@ -188,7 +195,9 @@ private slots:
         QTest::addColumn<Frame>("frame");
         QTest::newRow("clear reply") << hex("01380000000000003804") << Frame::make(1, 0x38);
         QTest::newRow("speed reply") << hex("013604a0860100002ed1") << Frame::make(1, 0x36, hex("a0860100"));
-        QTest::newRow("failure") << hex("01a50104000000" "0084dc") << Frame::failureReply(1, 0x25, 4);
+        QTest::newRow("failure") << hex("01a50104000000"
+                                        "0084dc")
+                                 << Frame::failureReply(1, 0x25, 4);
     }
     void fixedLength()
     {
@@ -290,7 +299,9 @@ private slots:
     {
         RtuStreamParser parser;
         const QByteArray stream = hex("013606a0860100442f") + hex("01380000000000003804") + hex("0125003a90")
-            + hex("01a50104000000" "0084dc") + hex("012502bb51");
+            + hex("01a50104000000"
+                  "0084dc")
+            + hex("012502bb51");
         QList<Frame> got;
         QList<RtuLayout> layouts;
         for (const char c : stream) {
@@ -299,10 +310,12 @@ private slots:
                 layouts.append(parser.lastLayout());
             }
         }
-        QCOMPARE(got, (QList<Frame>{Frame::make(1, 0x36, hex("a0860100")), Frame::make(1, 0x38), Frame::make(1, 0x25),
-                                    Frame::failureReply(1, 0x25, 4), Frame::make(1, 0x25)}));
-        QCOMPARE(layouts, (QList<RtuLayout>{RtuLayout::LengthCountsCrc, RtuLayout::FixedLength, RtuLayout::Standard,
-                                            RtuLayout::FixedLength, RtuLayout::LengthCountsCrc}));
+        QCOMPARE(got,
+                 (QList<Frame>{Frame::make(1, 0x36, hex("a0860100")), Frame::make(1, 0x38), Frame::make(1, 0x25),
+                               Frame::failureReply(1, 0x25, 4), Frame::make(1, 0x25)}));
+        QCOMPARE(layouts,
+                 (QList<RtuLayout>{RtuLayout::LengthCountsCrc, RtuLayout::FixedLength, RtuLayout::Standard,
+                                   RtuLayout::FixedLength, RtuLayout::LengthCountsCrc}));
     }
 
     void streamNoiseBeforeAndBetween()

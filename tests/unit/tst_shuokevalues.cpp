@@ -54,7 +54,9 @@ private slots:
         QTest::newRow("+200000 LE") << 200000 << int(LE) << hex("01400d03");
         QTest::newRow("+200000 BE") << 200000 << int(BE) << hex("01030d40");
         QTest::newRow("-1000 LE") << -1000 << int(LE) << hex("00e80300");
-        QTest::newRow("-1000 BE") << -1000 << int(BE) << hex("0000" "03e8");
+        QTest::newRow("-1000 BE") << -1000 << int(BE)
+                                  << hex("0000"
+                                         "03e8");
         QTest::newRow("0 is positive") << 0 << int(LE) << hex("01000000");
         QTest::newRow("max") << 0xFFFFFF << int(LE) << hex("01ffffff");
         QTest::newRow("min") << -0xFFFFFF << int(BE) << hex("00ffffff");

@@ -22,9 +22,9 @@ class ScriptedTransport : public ShuokeTransport
 {
 public:
     enum class Act {
-        Answer,        // carried out and answered
-        Lose,          // carried out, the answer is lost (timeout)
-        Ignore,        // not carried out, no answer (timeout)
+        Answer, // carried out and answered
+        Lose,   // carried out, the answer is lost (timeout)
+        Ignore, // not carried out, no answer (timeout)
     };
 
     explicit ScriptedTransport(QObject *parent = nullptr)
@@ -33,14 +33,14 @@ public:
     }
 
     bool open(const ConnectionSettings &, TrafficTap *, Error *) override { return true; }
-    void close() override {}
+    void close() override { }
     bool isOpen() const override { return true; }
     QString description() const override { return QStringLiteral("scripted"); }
-    void cancelAll(const Error &) override {}
+    void cancelAll(const Error &) override { }
 
-    QHash<quint8, qint64> values;               // by SET command
-    QHash<quint8, qint64> limits;               // SET command -> the value the drive keeps instead
-    QHash<quint8, QList<Act>> script;           // by command (SET or GET); Answer when empty
+    QHash<quint8, qint64> values;     // by SET command
+    QHash<quint8, qint64> limits;     // SET command -> the value the drive keeps instead
+    QHash<quint8, QList<Act>> script; // by command (SET or GET); Answer when empty
 
 protected:
     LinkReply *start(const ShuokeRequest &request, Error *) override
@@ -122,8 +122,8 @@ private slots:
     void mismatchesAreCountedAndTheFirstNamed()
     {
         m_transport->limits = {{CmdSetMaxSpeed, 900}, {CmdSetDeceleration, 800}};
-        DriveReply *r = m_drive->writeParameters({{CmdSetMaxSpeed, 1000}, {CmdSetAcceleration, 1000},
-                                                  {CmdSetDeceleration, 1000}});
+        DriveReply *r = m_drive->writeParameters(
+            {{CmdSetMaxSpeed, 1000}, {CmdSetAcceleration, 1000}, {CmdSetDeceleration, 1000}});
         QVERIFY(finished(r));
         QCOMPARE(r->error().code, ErrorCode::VerifyMismatch);
         QCOMPARE(r->error().message,
@@ -149,8 +149,9 @@ private slots:
         DriveReply *r = m_drive->writeParameters({{CmdSetMaxSpeed, 1000}, {CmdSetAcceleration, 1000}});
         QVERIFY(finished(r));
         QCOMPARE(r->error().code, ErrorCode::Timeout);
-        QVERIFY2(r->error().message.startsWith(QStringLiteral("acceleration: Written, but it could not be read back: ")),
-                 qPrintable(r->error().message));
+        QVERIFY2(
+            r->error().message.startsWith(QStringLiteral("acceleration: Written, but it could not be read back: ")),
+            qPrintable(r->error().message));
         const ParameterWriteResult &w = r->writeResults().at(1);
         QCOMPARE(w.outcome, WriteOutcome::ReadBackFailed);
         QVERIFY(w.written);

@@ -126,10 +126,10 @@ void TestSimServoCanDrive::everyReadTypeIsAnswered()
 void TestSimServoCanDrive::framesForOthersAreIgnored()
 {
     SimServoCanDrive d(2);
-    QVERIFY(feed(d, sc::readParameter(3, 1), 0).isEmpty());                       // another station
-    QVERIFY(feed(d, {0x66, QByteArray::fromHex("0212FA01"), false}, 0).isEmpty()); // DLC 4
+    QVERIFY(feed(d, sc::readParameter(3, 1), 0).isEmpty());                               // another station
+    QVERIFY(feed(d, {0x66, QByteArray::fromHex("0212FA01"), false}, 0).isEmpty());        // DLC 4
     QVERIFY(feed(d, {0x66, QByteArray::fromHex("0212FA01000000FF"), true}, 0).isEmpty()); // extended
-    QVERIFY(feed(d, sc::heartbeat(2, 0x88, 0), 0).isEmpty());                     // drive -> host
+    QVERIFY(feed(d, sc::heartbeat(2, 0x88, 0), 0).isEmpty());                             // drive -> host
     QCOMPARE(d.stats().readsAnswered, 0u);
 }
 
@@ -175,8 +175,10 @@ void TestSimServoCanDrive::jogAndStop()
     QVERIFY(d.motor().isEnabled());
     QCOMPARE(qRound(d.motor().speedRpm()), 600);
     QCOMPARE(out.last().data.left(3), QByteArray::fromHex("011000")); // heartbeat: running
-    QVERIFY(sc::decode(out.last()).value->value > 0);                  // position advancing
-    auto value = [&d](sc::ReadType t, qint64 at) { return sc::decode(feed(d, sc::read(1, t), at).first()).value->value; };
+    QVERIFY(sc::decode(out.last()).value->value > 0);                 // position advancing
+    auto value = [&d](sc::ReadType t, qint64 at) {
+        return sc::decode(feed(d, sc::read(1, t), at).first()).value->value;
+    };
     QCOMPARE(value(sc::ReadType::Speed, 500 * kMs), 600);
     QCOMPARE(value(sc::ReadType::SpeedCommand, 500 * kMs), 600);
     QVERIFY(value(sc::ReadType::OutputCurrent, 500 * kMs) != 0);
@@ -193,7 +195,7 @@ void TestSimServoCanDrive::positioningNeedsSpeed()
     SimServoCanDrive d(1);
     feed(d, sc::moveRelative(1, 1000), 0);
     run(d, 5 * kMs, 300 * kMs);
-    QVERIFY(d.motor().isEnabled()); // enabled ...
+    QVERIFY(d.motor().isEnabled());    // enabled ...
     QCOMPARE(d.motor().position(), 0); // ... but positioning speed 0: no motion (seed)
     feed(d, sc::positioningSpeed(1, 200), 305 * kMs);
     feed(d, sc::moveRelative(1, 1000), 306 * kMs);

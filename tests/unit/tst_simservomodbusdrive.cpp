@@ -64,11 +64,11 @@ private slots:
     void exceptionsCarryAddressOneAndCodeFour()
     {
         SimServoModbusDrive d(config(7));
-        QCOMPARE(send(d, adu("070300640015")), QList<QByteArray>{adu("018304")});      // 21 registers
-        QCOMPARE(send(d, adu("070300180001")), QList<QByteArray>{adu("018304")});      // past DP-rES
-        QCOMPARE(send(d, adu("070300100010")), QList<QByteArray>{adu("018304")});      // DP into the gap
+        QCOMPARE(send(d, adu("070300640015")), QList<QByteArray>{adu("018304")});       // 21 registers
+        QCOMPARE(send(d, adu("070300180001")), QList<QByteArray>{adu("018304")});       // past DP-rES
+        QCOMPARE(send(d, adu("070300100010")), QList<QByteArray>{adu("018304")});       // DP into the gap
         QCOMPARE(send(d, adu("071000000001020005")), QList<QByteArray>{adu("019004")}); // write to DP
-        QCOMPARE(send(d, adu("070600640001")), QList<QByteArray>{adu("018604")});      // 0x06 to a PA
+        QCOMPARE(send(d, adu("070600640001")), QList<QByteArray>{adu("018604")});       // 0x06 to a PA
         d.setExceptionAddressFixed(false);
         QCOMPARE(send(d, adu("070300640015")), QList<QByteArray>{adu("078304")});
         QCOMPARE(d.exceptionsSent(), quint64(6));
@@ -148,8 +148,8 @@ private slots:
         SimServoModbusDrive d(config(1));
         const QByteArray req = adu("010300640001");
         QVERIFY(send(d, req.left(3)).isEmpty());
-        QCOMPARE(send(d, req.mid(3), 500).size(), 1);          // the rest, right after
-        QCOMPARE(send(d, req + req).size(), 2);               // two in one chunk
+        QCOMPARE(send(d, req.mid(3), 500).size(), 1); // the rest, right after
+        QCOMPARE(send(d, req + req).size(), 2);       // two in one chunk
         QVERIFY(send(d, req.left(5)).isEmpty());
         // A long silence: the half frame is dropped, the next whole one is answered.
         QCOMPARE(send(d, req, 100000).size(), 1);

@@ -48,8 +48,10 @@ private slots:
         QTest::newRow("unknown") << int(Model::M6505) << 0x63 << QByteArray() << 1 << 3;
         QTest::newRow("M4505 has no 0x3E") << int(Model::M4505) << int(CmdHome) << QByteArray(1, '\0') << 1 << 3;
         QTest::newRow("M6505 has no 0x44") << int(Model::M6505) << int(CmdSetSpeedStep) << encodeUInt32(5) << 1 << 3;
-        QTest::newRow("S-curve only on M4505S") << int(Model::M6505) << int(CmdHomeOrSCurveInt32) << encodeInt32(5) << 1 << 3;
-        QTest::newRow("S-curve on M4505S") << int(Model::M4505S) << int(CmdHomeOrSCurveInt32) << encodeInt32(5) << 1 << 0;
+        QTest::newRow("S-curve only on M4505S")
+            << int(Model::M6505) << int(CmdHomeOrSCurveInt32) << encodeInt32(5) << 1 << 3;
+        QTest::newRow("S-curve on M4505S")
+            << int(Model::M4505S) << int(CmdHomeOrSCurveInt32) << encodeInt32(5) << 1 << 0;
         QTest::newRow("range") << int(Model::M6505) << int(CmdSetMaxSpeed) << encodeUInt32(100001) << 1 << 4;
         QTest::newRow("baud code 9") << int(Model::M6505) << int(CmdSetBaudCode) << QByteArray(1, '\x09') << 1 << 4;
         QTest::newRow("gear 0") << int(Model::M6505) << int(CmdSetGearDenominator) << encodeUInt32(0) << 1 << 4;

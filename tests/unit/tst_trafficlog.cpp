@@ -77,8 +77,9 @@ private slots:
 
     void textLines()
     {
-        QCOMPARE(TrafficLog::textLine(serialEntry()),
-                 QByteArray("2024-05-01 12:34:56.789  /dev/ttyUSB0  TX    01 03 00 64 00 14 04 1A  #1 read PA0–PA19\n"));
+        QCOMPARE(
+            TrafficLog::textLine(serialEntry()),
+            QByteArray("2024-05-01 12:34:56.789  /dev/ttyUSB0  TX    01 03 00 64 00 14 04 1A  #1 read PA0–PA19\n"));
         QCOMPARE(TrafficLog::textLine(canEntry()),
                  QByteArray("2024-05-01 12:34:57.005  virtualcan:can0  RX    065#01 10 88 D2 04 00 00 FF  "
                             "#1 heartbeat: idle, position 1234  [late, \"retry\" 2]\n"));

@@ -15,8 +15,8 @@ struct TsMessage
 {
     QString context;
     QString source;
-    QString type;                 // the translation's type attribute: "", unfinished, vanished, obsolete
-    QStringList translations;     // the text, or each numerus form
+    QString type;             // the translation's type attribute: "", unfinished, vanished, obsolete
+    QStringList translations; // the text, or each numerus form
     bool numerus = false;
 };
 
@@ -39,7 +39,8 @@ QList<TsMessage> readTs(const QString &path, QString *error)
         if (name == QLatin1String("name")) {
             context = xml.readElementText();
         } else if (name == QLatin1String("message")) {
-            m = TsMessage{context, {}, {}, {}, xml.attributes().value(QLatin1String("numerus")) == QLatin1String("yes")};
+            m = TsMessage{
+                context, {}, {}, {}, xml.attributes().value(QLatin1String("numerus")) == QLatin1String("yes")};
         } else if (name == QLatin1String("source")) {
             m.source = xml.readElementText();
         } else if (name == QLatin1String("translation")) {
@@ -88,7 +89,8 @@ void TestTranslationFile::chineseIsComplete()
     QString error;
     const QList<TsMessage> messages = readTs(path, &error);
     QVERIFY2(error.isEmpty(), qPrintable(path + QStringLiteral(": ") + error));
-    QVERIFY2(messages.size() > 500, qPrintable(QStringLiteral("%1 has only %2 messages").arg(path).arg(messages.size())));
+    QVERIFY2(messages.size() > 500,
+             qPrintable(QStringLiteral("%1 has only %2 messages").arg(path).arg(messages.size())));
 
     QStringList problems;
     for (const TsMessage &m : messages) {

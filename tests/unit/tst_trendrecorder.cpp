@@ -29,10 +29,10 @@ private slots:
         QVERIFY(!rec.append(QStringLiteral("nope"), 200, 1.0));
         QVERIFY(!rec.append(QStringLiteral("speed"), 50, 1.0)); // older than the newest
         QCOMPARE(rec.rejectedCount(), 2u);
-        QCOMPARE(rec.appendSamples(300, {{QStringLiteral("speed"), 2.0},
-                                         {QStringLiteral("torque"), 3.0},
-                                         {QStringLiteral("other"), 4.0}}),
-                 2);
+        QCOMPARE(
+            rec.appendSamples(
+                300, {{QStringLiteral("speed"), 2.0}, {QStringLiteral("torque"), 3.0}, {QStringLiteral("other"), 4.0}}),
+            2);
         QVERIFY(rec.hasOrigin());
         QCOMPARE(rec.originUs(), 100);
         QCOMPARE(rec.firstTimeUs(), 100);
@@ -115,7 +115,7 @@ private slots:
         QCOMPARE(rec.buffer(QStringLiteral("a"))->size(), 100);
         QCOMPARE(rec.droppedCount(), 300u);
         QCOMPARE(rec.firstTimeUs(), 150);
-        QCOMPARE(rec.originUs(), 0); // the origin stays: times keep their meaning
+        QCOMPARE(rec.originUs(), 0);                                       // the origin stays: times keep their meaning
         QCOMPARE(rec.memoryBytes(), 2 * (100 * 16 + (100 / 64 + 2) * 32)); // samples + block summaries
     }
 

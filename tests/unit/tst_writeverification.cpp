@@ -161,8 +161,9 @@ void TestWriteVerification::unacknowledgedWriteWithoutReadBackIsUnknown()
     QCOMPARE(r.outcome, WriteOutcome::Unknown);
     QVERIFY(!r.written);
     QVERIFY(r.readBackFailed);
-    QCOMPARE(r.error, QStringLiteral("The write was not confirmed and could not be read back, so whether the "
-                                     "drive took the value is unknown: No reply within 100 ms. Read it again."));
+    QCOMPARE(r.error,
+             QStringLiteral("The write was not confirmed and could not be read back, so whether the "
+                            "drive took the value is unknown: No reply within 100 ms. Read it again."));
     QCOMPARE(cause.code, ErrorCode::Timeout);
 }
 

@@ -1,7 +1,7 @@
 #include "ui/bus/bustreewidget.h"
 
-#include "ui/common/displaytext.h"
 #include "ui/bus/drivedirectory.h"
+#include "ui/common/displaytext.h"
 
 #include <QEvent>
 #include <QHeaderView>
@@ -99,7 +99,7 @@ void BusTreeWidget::onConnectionAdded(int id)
     item->setData(0, ConnectionRole, id);
     item->setData(0, AddressRole, 0);
     item->setIcon(0, style()->standardIcon(QStyle::SP_DriveNetIcon));
-    item->setFirstColumnSpanned(true);   // the link name is long; drives use the columns
+    item->setFirstColumnSpanned(true); // the link name is long; drives use the columns
     item->setExpanded(true);
     updateConnection(id);
 }

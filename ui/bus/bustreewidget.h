@@ -22,7 +22,7 @@ public:
     QTreeWidgetItem *driveItem(int id, int address) const;
     // Selects the drive (or clears the selection with id 0).
     void selectDrive(int id, int address);
-    int selectedConnection() const;   // 0: none (a drive's connection counts)
+    int selectedConnection() const; // 0: none (a drive's connection counts)
 
 signals:
     // (0, 0): nothing or a connection is selected.

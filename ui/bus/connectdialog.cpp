@@ -1,7 +1,7 @@
 #include "ui/bus/connectdialog.h"
 
-#include "core/protocol/familytraits.h"
 #include "core/link/cansettings.h"
+#include "core/protocol/familytraits.h"
 #include "ui/bus/serialportwatcher.h"
 
 #include <QCanBus>
@@ -179,7 +179,7 @@ void ConnectDialog::buildScanBox()
     range->addStretch(1);
     scanForm->addRow(m_rangeLabel, range);
     m_timeout = labelledField<QSpinBox>(m_scanBox, QStringLiteral("probeTimeout"), &m_timeoutLabel);
-    m_timeout->setRange(0, 2000);   // 0 (shown as "Automatic"): the scanner's adaptive timeout
+    m_timeout->setRange(0, 2000); // 0 (shown as "Automatic"): the scanner's adaptive timeout
     m_timeout->setSingleStep(10);
     m_timeout->setValue(ConnectRequest::DefaultProbeTimeoutMs);
     scanForm->addRow(m_timeoutLabel, m_timeout);
@@ -194,14 +194,14 @@ bool ConnectDialog::isCan() const
 QString ConnectDialog::currentPort() const
 {
     const bool listed = m_port->currentIndex() >= 0
-                        && m_port->currentText() == m_port->itemText(m_port->currentIndex());
+        && m_port->currentText() == m_port->itemText(m_port->currentIndex());
     return listed ? m_port->currentData().toString() : m_port->currentText().trimmed();
 }
 
 QString ConnectDialog::currentInterface() const
 {
     const bool listed = m_interface->currentIndex() >= 0
-                        && m_interface->currentText() == m_interface->itemText(m_interface->currentIndex());
+        && m_interface->currentText() == m_interface->itemText(m_interface->currentIndex());
     return listed ? m_interface->currentData().toString() : m_interface->currentText().trimmed();
 }
 

@@ -98,7 +98,7 @@ private:
     QLabel *m_timeoutLabel = nullptr;
     QSpinBox *m_timeout = nullptr;
     QDialogButtonBox *m_buttons = nullptr;
-    QString m_wantedPort;       // a remembered port not (yet) in the list
+    QString m_wantedPort; // a remembered port not (yet) in the list
     QString m_wantedInterface;
 };
 

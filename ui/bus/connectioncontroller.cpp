@@ -1,9 +1,9 @@
 #include "ui/bus/connectioncontroller.h"
 
-#include "ui/common/displaytext.h"
 #include "core/drive/drivehub.h"
 #include "ui/bus/drivedirectory.h"
 #include "ui/bus/statuspoller.h"
+#include "ui/common/displaytext.h"
 
 #include <QPointer>
 
@@ -22,7 +22,7 @@ void ConnectionController::connectTo(const ConnectRequest &request)
     Job job;
     job.request = request;
     if (request.detect)
-        job.request.scan = true;   // detection is a scan
+        job.request.scan = true; // detection is a scan
     job.attempts = request.attempts();
     m_queue.append(job);
     if (!m_busy)
@@ -78,7 +78,7 @@ void ConnectionController::cancel()
         return;
     m_cancelled = true;
     if (m_currentId > 0)
-        m_hub->cancelScan(m_currentId);   // onScanFinished follows
+        m_hub->cancelScan(m_currentId); // onScanFinished follows
     // An open in progress finishes in onOpened, which sees m_cancelled.
 }
 
@@ -214,7 +214,7 @@ void ConnectionController::onScanFinished(int id, const Error &error)
 {
     m_poller->pauseConnection(id, false);
     if (id != m_currentId)
-        return;   // disconnected meanwhile
+        return; // disconnected meanwhile
     if (error.isError() && error.code != ErrorCode::Cancelled) {
         m_errors.append(error);
         emit errorOccurred(error);
@@ -240,7 +240,7 @@ void ConnectionController::attemptFailed(const Error &error)
 {
     // A port that cannot be opened will not open for another family either.
     const bool tryNext = m_job.request.detect && !m_cancelled && error.code == ErrorCode::NotSupported
-                         && m_job.attempt + 1 < m_job.attempts.size();
+        && m_job.attempt + 1 < m_job.attempts.size();
     if (tryNext) {
         ++m_job.attempt;
         runAttempt();

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "core/common/error.h"
-#include "ui/bus/connectrequest.h"
 #include "core/drive/drivetypes.h"
+#include "ui/bus/connectrequest.h"
 
 #include <QHash>
 #include <QList>
@@ -52,7 +52,7 @@ private:
         ConnectRequest request;
         QList<ConnectionSettings> attempts;
         int attempt = 0;
-        int rescanId = 0;   // > 0: scan this open connection only
+        int rescanId = 0; // > 0: scan this open connection only
     };
 
     void startNext();
@@ -79,7 +79,7 @@ private:
     int m_foundTotal = 0;
     int m_linksOpened = 0;
     QList<Error> m_errors;
-    QHash<int, ConnectRequest> m_requests;   // by connection id, for rescans
+    QHash<int, ConnectRequest> m_requests; // by connection id, for rescans
 };
 
 } // namespace dd

@@ -32,7 +32,8 @@ ScanOptions ConnectRequest::scanOptionsFor(const ConnectionSettings &attempt) co
 {
     ScanOptions o = scanOptions;
     const FamilyTraits &traits = familyTraits(attempt.family);
-    if (const FramingTraits *f = traits.framingFor(attempt.isCan() ? LinkKind::Can : LinkKind::Serial, attempt.framing)) {
+    if (const FramingTraits *f = traits.framingFor(attempt.isCan() ? LinkKind::Can : LinkKind::Serial,
+                                                   attempt.framing)) {
         o.from = qMax(o.from, f->addresses.first);
         o.to = qMin(o.to, f->addresses.last);
     }
@@ -49,7 +50,8 @@ bool ConnectRequest::fromCommandLine(const QString &link, const QString &family,
         const std::optional<Family> f = familyFromId(family);
         if (!f) {
             if (error)
-                *error = QCoreApplication::translate("dd::ConnectRequest", "Unknown family \"%1\"; use one of: %2, detect.")
+                *error = QCoreApplication::translate("dd::ConnectRequest",
+                                                     "Unknown family \"%1\"; use one of: %2, detect.")
                              .arg(family, familyIds().join(QStringLiteral(", ")));
             return false;
         }
@@ -107,7 +109,8 @@ ConnectRequest ConnectRequest::load(QSettings &s)
     r.scan = s.value(QStringLiteral("scan"), true).toBool();
     r.scanOptions.from = qBound(0, s.value(QStringLiteral("scanFrom"), DefaultFrom).toInt(), 255);
     r.scanOptions.to = qBound(r.scanOptions.from, s.value(QStringLiteral("scanTo"), DefaultTo).toInt(), 255);
-    r.scanOptions.timeoutMs = qBound(-1, s.value(QStringLiteral("probeTimeoutMs"), DefaultProbeTimeoutMs).toInt(), 5000);
+    r.scanOptions.timeoutMs = qBound(-1, s.value(QStringLiteral("probeTimeoutMs"), DefaultProbeTimeoutMs).toInt(),
+                                     5000);
     r.sweepBauds = s.value(QStringLiteral("sweepBauds"), false).toBool();
     s.endGroup();
     return r;

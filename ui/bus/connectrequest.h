@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/link/connectionsettings.h"
 #include "core/drive/discovery.h"
+#include "core/link/connectionsettings.h"
 #include "core/protocol/familytraits.h"
 
 #include <QList>
@@ -15,13 +15,18 @@ namespace dd {
 // scan to run once connected.
 struct ConnectRequest
 {
-    ConnectionSettings settings;  // `family` is ignored when `detect` is set
+    ConnectionSettings settings; // `family` is ignored when `detect` is set
     bool detect = false;
-    bool scan = true;             // scan for drives after connecting
-    ScanOptions scanOptions;      // address range and probe timeout (bauds: see sweepBauds)
-    bool sweepBauds = false;      // serial scan: try each of the family's scan bauds
+    bool scan = true;        // scan for drives after connecting
+    ScanOptions scanOptions; // address range and probe timeout (bauds: see sweepBauds)
+    bool sweepBauds = false; // serial scan: try each of the family's scan bauds
 
-    ConnectRequest() { scanOptions.from = DefaultFrom; scanOptions.to = DefaultTo; scanOptions.timeoutMs = DefaultProbeTimeoutMs; }
+    ConnectRequest()
+    {
+        scanOptions.from = DefaultFrom;
+        scanOptions.to = DefaultTo;
+        scanOptions.timeoutMs = DefaultProbeTimeoutMs;
+    }
 
     // Detect: the families tried in order, one connection each, stopping at the first that
     // finds a drive (a bus speaks one protocol): every framing of the link's kind that the

@@ -139,8 +139,8 @@ void DriveDirectory::updateStatus(int id, int address, const DriveStatus &status
         return;
     DriveStatus &current = c->drives[address].info.status;
     const bool same = current.online == status.online && current.running == status.running
-                      && current.enabled == status.enabled && current.positionValid == status.positionValid
-                      && current.position == status.position && current.alarmCode == status.alarmCode;
+        && current.enabled == status.enabled && current.positionValid == status.positionValid
+        && current.position == status.position && current.alarmCode == status.alarmCode;
     current = status;
     if (same)
         return;

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "core/common/error.h"
-#include "core/link/connectionsettings.h"
 #include "core/drive/drivetypes.h"
+#include "core/link/connectionsettings.h"
 #include "ui/bus/driveinfo.h"
 
 #include <QMap>
@@ -37,7 +37,7 @@ public:
 
     // Adds a drive found by a scan (again: updates what the scan said).
     void addDrive(int id, const DiscoveredDrive &drive);
-    QList<int> drives(int id) const;   // addresses, ascending
+    QList<int> drives(int id) const; // addresses, ascending
     bool hasDrive(int id, int address) const;
     DiscoveredDrive discovered(int id, int address) const;
     DriveInfo info(int id, int address) const;

@@ -12,10 +12,12 @@ namespace dd {
 
 QList<Capability> DriveInfo::allCapabilities()
 {
-    return {Capability::ReadParameters, Capability::WriteParameters, Capability::Monitor,
-            Capability::Jog,            Capability::MoveRelative,    Capability::MoveAbsolute,
-            Capability::Home,           Capability::SetPosition,     Capability::Enable,
-            Capability::Stop,           Capability::EmergencyStop,   Capability::ReadAlarm,
+    return {Capability::ReadParameters, Capability::WriteParameters,
+            Capability::Monitor,        Capability::Jog,
+            Capability::MoveRelative,   Capability::MoveAbsolute,
+            Capability::Home,           Capability::SetPosition,
+            Capability::Enable,         Capability::Stop,
+            Capability::EmergencyStop,  Capability::ReadAlarm,
             Capability::ClearAlarm,     Capability::EeOperations};
 }
 
@@ -46,12 +48,11 @@ void fetchDriveInfo(DriveHub *hub, int connectionId, int address,
     hub->run(
         connectionId, address,
         [capture](Drive &d) {
-            capture(d);   // even if the identity read fails, the static facts are known
+            capture(d); // even if the identity read fails, the static facts are known
             DriveReply *reply = d.refreshIdentity();
             if (reply) {
                 Drive *drive = &d;
-                QObject::connect(reply, &DriveReply::finished, reply,
-                                 [capture, drive] { capture(*drive); });
+                QObject::connect(reply, &DriveReply::finished, reply, [capture, drive] { capture(*drive); });
             }
             return reply;
         },

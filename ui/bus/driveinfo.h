@@ -2,8 +2,8 @@
 
 #include "core/drive/drivetypes.h"
 
-#include <QMap>
 #include <QList>
+#include <QMap>
 #include <QMetaType>
 #include <functional>
 
@@ -21,10 +21,10 @@ struct DriveInfo
     int address = 0;
     DriveIdentity identity;
     Capabilities capabilities;
-    QMap<Capability, QString> unsupportedReasons;   // translated, for missing capabilities
+    QMap<Capability, QString> unsupportedReasons; // translated, for missing capabilities
     QList<ChannelInfo> channels;
     DriveStatus status;
-    bool valid = false;    // false: the drive could not be reached (see the error)
+    bool valid = false; // false: the drive could not be reached (see the error)
 
     QString reason(Capability c) const { return unsupportedReasons.value(c); }
 

@@ -41,7 +41,7 @@ void ScanProgressWidget::begin(const QString &what)
 void ScanProgressWidget::setStage(const QString &what)
 {
     m_stage->setText(what);
-    m_bar->setRange(0, 0);   // busy until the first progress report
+    m_bar->setRange(0, 0); // busy until the first progress report
     m_estimator.start();
     updateEta();
 }

@@ -16,9 +16,8 @@ QString SerialPortEntry::label() const
     if (!what.isEmpty())
         text += QStringLiteral(" — ") + what;
     if (hasIds)
-        text += QStringLiteral(" [%1:%2]")
-                    .arg(vendorId, 4, 16, QLatin1Char('0'))
-                    .arg(productId, 4, 16, QLatin1Char('0'));
+        text +=
+            QStringLiteral(" [%1:%2]").arg(vendorId, 4, 16, QLatin1Char('0')).arg(productId, 4, 16, QLatin1Char('0'));
     return text;
 }
 
@@ -85,12 +84,12 @@ QList<SerialPortEntry> SerialPortWatcher::scan() const
     std::sort(out.begin(), out.end(),
               [](const SerialPortEntry &a, const SerialPortEntry &b) { return a.path < b.path; });
 
-    const QString ptyDescription =
-        QCoreApplication::translate("dd::SerialPortWatcher", "Virtual port (pseudo-terminal)");
+    const QString ptyDescription = QCoreApplication::translate("dd::SerialPortWatcher",
+                                                               "Virtual port (pseudo-terminal)");
     QStringList seen;
     for (const QString &dirPath : m_dirs) {
-        const QFileInfoList entries =
-            QDir(dirPath).entryInfoList(QDir::System | QDir::Files | QDir::NoDotAndDotDot, QDir::Name);
+        const QFileInfoList entries = QDir(dirPath).entryInfoList(QDir::System | QDir::Files | QDir::NoDotAndDotDot,
+                                                                  QDir::Name);
         for (const QFileInfo &fi : entries) {
             if (!fi.isSymLink())
                 continue;

@@ -36,10 +36,10 @@ public:
     QStringList virtualPortDirectories() const { return m_dirs; }
     void addExtraPort(const QString &path, const QString &description);
 
-    void start();            // refreshes now, then every PollIntervalMs
+    void start(); // refreshes now, then every PollIntervalMs
     void stop();
     bool isRunning() const { return m_timer.isActive(); }
-    void refresh();          // emits portsChanged() if the list changed
+    void refresh(); // emits portsChanged() if the list changed
 
     // The current list, without comparing or emitting.
     QList<SerialPortEntry> scan() const;

@@ -44,18 +44,19 @@ void StatusPoller::poll()
             if (m_inFlight.contains(key))
                 continue;
             m_inFlight.insert(key);
-            m_directory->hub()->run(id, address, [](Drive &d) { return d.readStatus(); },
-                                    [self, key, id, address](const DriveResult &r) {
-                                        if (!self)
-                                            return;
-                                        self->m_inFlight.remove(key);
-                                        if (r.ok() && (r.status.online || r.status.updatedMs))
-                                            self->m_directory->updateStatus(id, address, r.status);
-                                        if (!r.ok()) {
-                                            self->m_directory->markNoAnswer(id, address);
-                                            emit self->pollFailed(id, address, r.error);
-                                        }
-                                    });
+            m_directory->hub()->run(
+                id, address, [](Drive &d) { return d.readStatus(); },
+                [self, key, id, address](const DriveResult &r) {
+                    if (!self)
+                        return;
+                    self->m_inFlight.remove(key);
+                    if (r.ok() && (r.status.online || r.status.updatedMs))
+                        self->m_directory->updateStatus(id, address, r.status);
+                    if (!r.ok()) {
+                        self->m_directory->markNoAnswer(id, address);
+                        emit self->pollFailed(id, address, r.error);
+                    }
+                });
         }
     }
 }

@@ -38,7 +38,7 @@ private:
 
     DriveDirectory *m_directory = nullptr;
     QTimer m_timer;
-    QSet<quint64> m_inFlight;   // (id << 32) | address
+    QSet<quint64> m_inFlight; // (id << 32) | address
     QSet<int> m_paused;
 };
 

@@ -14,13 +14,13 @@ class DisplayText
 {
     Q_DECLARE_TR_FUNCTIONS(dd::DisplayText)
 public:
-    static QString familyName(Family family);          // "Servo (CAN)", ...
+    static QString familyName(Family family);             // "Servo (CAN)", ...
     static QString driveName(Family family, int address); // "Servo (Modbus) #3"
-    static QString motionState(const DriveStatus &s);  // "Running" / "Idle" / "Offline"
-    static QString enabledState(const DriveStatus &s); // "Enabled" / "Disabled"
-    static QString alarm(int code);                    // "Alarm 12" / "No alarm"
-    static QString position(const DriveStatus &s);     // "12345" / "—"
-    static QString capabilityName(Capability c);       // "Jog", "EEPROM operations"
+    static QString motionState(const DriveStatus &s);     // "Running" / "Idle" / "Offline"
+    static QString enabledState(const DriveStatus &s);    // "Enabled" / "Disabled"
+    static QString alarm(int code);                       // "Alarm 12" / "No alarm"
+    static QString position(const DriveStatus &s);        // "12345" / "—"
+    static QString capabilityName(Capability c);          // "Jog", "EEPROM operations"
     // One line: "Running, enabled, alarm 12".
     static QString summary(const DriveStatus &s);
 };

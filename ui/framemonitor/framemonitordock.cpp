@@ -1,8 +1,8 @@
 #include "ui/framemonitor/framemonitordock.h"
 
+#include "core/link/trafficlog.h"
 #include "ui/framemonitor/framemonitorfilter.h"
 #include "ui/framemonitor/framemonitormodel.h"
-#include "core/link/trafficlog.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -37,8 +37,7 @@ FrameMonitorDock::FrameMonitorDock(DriveHub *hub, QWidget *parent)
     : QDockWidget(parent)
 {
     setObjectName(QStringLiteral("frameMonitorDock"));
-    setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable
-                | QDockWidget::DockWidgetClosable);
+    setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable | QDockWidget::DockWidgetClosable);
 
     m_model = new FrameMonitorModel(this);
     m_model->setHub(hub);
@@ -88,7 +87,7 @@ void FrameMonitorDock::buildView(QWidget *body)
     m_view->setObjectName(QStringLiteral("frameView"));
     m_view->setModel(m_filter);
     m_view->setRootIsDecorated(false);
-    m_view->setUniformRowHeights(true);   // 50k rows stay cheap to lay out
+    m_view->setUniformRowHeights(true); // 50k rows stay cheap to lay out
     m_view->setAlternatingRowColors(true);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -188,14 +187,14 @@ void FrameMonitorDock::updateLinks()
 void FrameMonitorDock::updateCounts()
 {
     const QLocale locale;
-    QString text = tr("%1 frames, %2 shown").arg(locale.toString(m_model->rowCount()),
-                                                  locale.toString(m_filter->rowCount()));
+    QString text = tr("%1 frames, %2 shown")
+                       .arg(locale.toString(m_model->rowCount()), locale.toString(m_filter->rowCount()));
     if (m_model->isPaused())
         text += QStringLiteral(" — ") + tr("paused: %1 new frames wait").arg(locale.toString(m_model->heldCount()));
     if (m_model->droppedCount())
         text += QStringLiteral(" — ")
-                + tr("%1 oldest frames dropped (the monitor keeps the last %2)")
-                      .arg(locale.toString(qulonglong(m_model->droppedCount())), locale.toString(m_model->capacity()));
+            + tr("%1 oldest frames dropped (the monitor keeps the last %2)")
+                  .arg(locale.toString(qulonglong(m_model->droppedCount())), locale.toString(m_model->capacity()));
     m_counts->setText(text);
 }
 

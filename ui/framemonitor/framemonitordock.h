@@ -40,7 +40,7 @@ public:
     bool isPaused() const;
     // Saves the frames shown to `path` (format by its suffix).
     Error saveTo(const QString &path) const;
-    void save();   // asks for a file name
+    void save(); // asks for a file name
 
 signals:
     void errorOccurred(const dd::Error &error);

@@ -27,7 +27,7 @@ public:
     QString text() const { return m_text; }
     void setDirections(Directions directions);
     Directions directions() const { return m_directions; }
-    void setLink(const QString &link);   // empty: every link
+    void setLink(const QString &link); // empty: every link
     QString link() const { return m_link; }
 
     // Whether a row of the frame model passes the filter.
@@ -41,7 +41,7 @@ private:
 
     FrameMonitorModel *m_model = nullptr;
     QString m_text;
-    QString m_compactText;   // without spaces, for hex
+    QString m_compactText; // without spaces, for hex
     Directions m_directions = AllDirections;
     QString m_link;
 };

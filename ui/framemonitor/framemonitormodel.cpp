@@ -1,7 +1,7 @@
 #include "ui/framemonitor/framemonitormodel.h"
 
-#include "core/protocol/familytraits.h"
 #include "core/drive/drivehub.h"
+#include "core/protocol/familytraits.h"
 #include "core/protocol/framedescriber.h"
 
 #include <QBrush>
@@ -48,8 +48,9 @@ void FrameMonitorModel::setCapacity(int rows)
 
 void FrameMonitorModel::describeConnection(int connectionId, const ConnectionSettings &settings)
 {
-    m_describers.insert(connectionId,
-                        std::shared_ptr<FrameDescriber>(createFrameDescriber(settings.family, settings.framing, settings.options)));
+    m_describers.insert(
+        connectionId,
+        std::shared_ptr<FrameDescriber>(createFrameDescriber(settings.family, settings.framing, settings.options)));
 }
 
 FrameDescriber *FrameMonitorModel::describerFor(int connectionId)
@@ -106,7 +107,7 @@ void FrameMonitorModel::flush()
     m_flushTimer.stop();
     if (m_paused || m_pending.empty())
         return;
-    const int incoming = int(m_pending.size());   // <= capacity
+    const int incoming = int(m_pending.size()); // <= capacity
     const int excess = int(m_rows.size()) + incoming - m_capacity;
     if (excess >= int(m_rows.size()) && !m_rows.empty()) {
         // Everything shown goes: one reset instead of a removal and an insertion.
@@ -182,8 +183,7 @@ QVariant FrameMonitorModel::data(const QModelIndex &index, int role) const
         case DirectionColumn: return r.record.directionText();
         case DataColumn: return r.record.hexText();
         case MeaningColumn:
-            return r.record.note.isEmpty() ? r.meaning
-                                           : QStringLiteral("%1 [%2]").arg(r.meaning, r.record.note);
+            return r.record.note.isEmpty() ? r.meaning : QStringLiteral("%1 [%2]").arg(r.meaning, r.record.note);
         }
         break;
     case Qt::ToolTipRole:
@@ -205,12 +205,9 @@ QVariant FrameMonitorModel::data(const QModelIndex &index, int role) const
         if (index.column() == DataColumn)
             return QFontDatabase::systemFont(QFontDatabase::FixedFont);
         break;
-    case DirectionRole:
-        return int(r.record.direction);
-    case ConnectionRole:
-        return r.connectionId;
-    default:
-        break;
+    case DirectionRole: return int(r.record.direction);
+    case ConnectionRole: return r.connectionId;
+    default: break;
     }
     return {};
 }

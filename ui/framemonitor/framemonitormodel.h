@@ -69,7 +69,7 @@ public:
 
     const Row &row(int index) const { return m_rows.at(size_t(index)); }
     TrafficLog::Entry entry(int index) const;
-    QStringList links() const { return m_links; }   // link names seen, in order of appearance
+    QStringList links() const { return m_links; } // link names seen, in order of appearance
 
     // QAbstractItemModel
     int rowCount(const QModelIndex &parent = {}) const override;

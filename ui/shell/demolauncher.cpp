@@ -1,8 +1,8 @@
 #include "ui/shell/demolauncher.h"
 
+#include "sim/bench/demobench.h"
 #include "ui/bus/connectioncontroller.h"
 #include "ui/bus/connectrequest.h"
-#include "sim/bench/demobench.h"
 
 namespace dd {
 

@@ -20,7 +20,7 @@ public:
     explicit LanguageManager(QObject *parent = nullptr);
     ~LanguageManager() override;
 
-    static QString languageId(Language language);          // "system", "en", "zh_CN"
+    static QString languageId(Language language);                          // "system", "en", "zh_CN"
     static Language languageFromId(const QString &id, bool *ok = nullptr); // "zh", "zh_CN", "cn", "en", "system"
     // What "System" means here: Chinese when the first UI language of the locale is
     // Chinese, English otherwise.
@@ -29,7 +29,7 @@ public:
     // Installs the translators for `language`; false when a translation could not be
     // loaded (English needs none and always succeeds).
     bool apply(Language language);
-    Language language() const { return m_language; }        // as chosen (may be System)
+    Language language() const { return m_language; } // as chosen (may be System)
     Language effectiveLanguage() const { return m_effective; }
     bool qtTranslationLoaded() const { return m_qtLoaded; }
     bool appTranslationLoaded() const { return m_appLoaded; }

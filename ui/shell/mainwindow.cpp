@@ -1,19 +1,19 @@
 #include "ui/shell/mainwindow.h"
 
+#include "core/drive/drivehub.h"
 #include "ui/bus/bustreewidget.h"
 #include "ui/bus/connectdialog.h"
 #include "ui/bus/connectioncontroller.h"
-#include "ui/shell/demolauncher.h"
-#include "core/drive/drivehub.h"
 #include "ui/bus/drivedirectory.h"
-#include "ui/workspace/driveworkspace.h"
+#include "ui/bus/scanprogresswidget.h"
+#include "ui/bus/statuspoller.h"
 #include "ui/framemonitor/framemonitordock.h"
+#include "ui/shell/demolauncher.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/recentfiles.h"
-#include "ui/bus/scanprogresswidget.h"
 #include "ui/shell/statusbarwidget.h"
-#include "ui/bus/statuspoller.h"
 #include "ui/shell/stopaction.h"
+#include "ui/workspace/driveworkspace.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -50,7 +50,7 @@ MainWindow::MainWindow(LanguageManager *language, QWidget *parent)
     connect(frames, &FrameMonitorDock::errorOccurred, m_statusBar, &StatusBarWidget::countError);
     m_recent->load();
     retranslate();
-    emit m_language->languageChanged();   // check the current language in the menu
+    emit m_language->languageChanged(); // check the current language in the menu
     updateActions();
     m_poller->setEnabled(true);
     resize(1200, 760);
@@ -67,7 +67,7 @@ MainWindow::~MainWindow()
 
 void MainWindow::createParts()
 {
-    m_hub = new DriveHub;   // deleted explicitly, before the demo bench
+    m_hub = new DriveHub; // deleted explicitly, before the demo bench
     m_directory = new DriveDirectory(m_hub, this);
     m_poller = new StatusPoller(m_directory, this);
     m_connections = new ConnectionController(m_directory, m_poller, this);
@@ -101,9 +101,10 @@ void MainWindow::createParts()
 void MainWindow::createActions()
 {
     m_stop = new StopAction(this);
-    addAction(m_stop);   // the shortcuts work even if the tool bar is hidden
+    addAction(m_stop); // the shortcuts work even if the tool bar is hidden
     connect(m_stop, &QAction::triggered, m_hub, &DriveHub::stopAll);
-    connect(m_stop, &QAction::triggered, this, [this] { m_statusBar->showMessage(tr("STOP sent to all drives."), 5000); });
+    connect(m_stop, &QAction::triggered, this,
+            [this] { m_statusBar->showMessage(tr("STOP sent to all drives."), 5000); });
 
     m_connectAction = new QAction(style()->standardIcon(QStyle::SP_DriveNetIcon), QString(), this);
     m_connectAction->setObjectName(QStringLiteral("connectAction"));
@@ -219,7 +220,7 @@ void MainWindow::wireParts()
         if (m_preferredFamily) {
             if (m_directory->discovered(id, address).family != *m_preferredFamily)
                 return;
-            m_preferredFamily.reset();   // the first one only
+            m_preferredFamily.reset(); // the first one only
             m_busTree->selectDrive(id, address);
             return;
         }
@@ -313,15 +314,14 @@ void MainWindow::openRecentFile(const QString &path)
 
 void MainWindow::showAbout()
 {
-    QMessageBox::about(
-        this, tr("About DriveDesk"),
-        tr("<h3>DriveDesk %1</h3>"
-           "<p>Commissioning and tuning workbench for servo and stepper drives over RS485 / "
-           "RS232 and CAN.</p>"
-           "<p>Drive families: %3.</p>"
-           "<p>Built with Qt %2.</p>")
-            .arg(QStringLiteral(DRIVEDESK_VERSION), QString::fromLatin1(qVersion()),
-                 familyIds().join(QStringLiteral(", "))));
+    QMessageBox::about(this, tr("About DriveDesk"),
+                       tr("<h3>DriveDesk %1</h3>"
+                          "<p>Commissioning and tuning workbench for servo and stepper drives over RS485 / "
+                          "RS232 and CAN.</p>"
+                          "<p>Drive families: %3.</p>"
+                          "<p>Built with Qt %2.</p>")
+                           .arg(QStringLiteral(DRIVEDESK_VERSION), QString::fromLatin1(qVersion()),
+                                familyIds().join(QStringLiteral(", "))));
 }
 
 void MainWindow::restoreLayout()
@@ -329,7 +329,7 @@ void MainWindow::restoreLayout()
     QSettings s;
     restoreGeometry(s.value(QStringLiteral("mainWindow/geometry")).toByteArray());
     restoreState(s.value(QStringLiteral("mainWindow/state")).toByteArray());
-    m_toolBar->show();   // never restore a hidden STOP
+    m_toolBar->show(); // never restore a hidden STOP
 }
 
 void MainWindow::saveLayout() const

@@ -103,7 +103,7 @@ private:
     StatusBarWidget *m_statusBar = nullptr;
     QDockWidget *m_busDock = nullptr;
     QToolBar *m_toolBar = nullptr;
-    std::optional<Family> m_preferredFamily;   // see setPreferredFamily()
+    std::optional<Family> m_preferredFamily; // see setPreferredFamily()
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;

@@ -28,7 +28,7 @@ public:
 
     void load();
     void save() const;
-    void rebuildMenu();   // also after a language change
+    void rebuildMenu(); // also after a language change
 
 signals:
     void fileTriggered(const QString &path);

@@ -70,8 +70,7 @@ void StatusBarWidget::onTraffic(int, const TrafficRecord &record)
     if (record.direction == TrafficRecord::Direction::Discarded) {
         ++m_errors;
         updateCounters();
-    } else if (record.direction == TrafficRecord::Direction::Tx
-               && record.note.contains(QLatin1String("(retry "))) {
+    } else if (record.direction == TrafficRecord::Direction::Tx && record.note.contains(QLatin1String("(retry "))) {
         ++m_retries;
         updateCounters();
     }

@@ -28,11 +28,11 @@ void StopAction::addTo(QToolBar *toolBar)
         button->setObjectName(QStringLiteral("stopButton"));
         button->setToolButtonStyle(Qt::ToolButtonTextOnly);
         button->setMinimumWidth(96);
-        button->setStyleSheet(QStringLiteral(
-            "QToolButton { background: #d32f2f; color: white; font-weight: bold; font-size: 14pt;"
-            " border: 2px solid #8e0000; border-radius: 4px; padding: 4px 14px; }"
-            "QToolButton:hover { background: #e53935; }"
-            "QToolButton:pressed { background: #b71c1c; }"));
+        button->setStyleSheet(
+            QStringLiteral("QToolButton { background: #d32f2f; color: white; font-weight: bold; font-size: 14pt;"
+                           " border: 2px solid #8e0000; border-radius: 4px; padding: 4px 14px; }"
+                           "QToolButton:hover { background: #e53935; }"
+                           "QToolButton:pressed { background: #b71c1c; }"));
     }
 }
 

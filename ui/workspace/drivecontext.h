@@ -19,10 +19,7 @@ struct DriveContext
 
     bool isValid() const { return hub && connectionId > 0; }
     bool can(Capability c) const { return capabilities.testFlag(c); }
-    bool sameDrive(const DriveContext &o) const
-    {
-        return connectionId == o.connectionId && address == o.address;
-    }
+    bool sameDrive(const DriveContext &o) const { return connectionId == o.connectionId && address == o.address; }
 };
 
 } // namespace dd

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "core/common/error.h"
-#include "ui/workspace/drivecontext.h"
 #include "ui/bus/driveinfo.h"
+#include "ui/workspace/drivecontext.h"
 
 #include <QWidget>
 #include <functional>
@@ -47,7 +47,11 @@ public:
     bool isActive() const { return m_active; }
 
     // A file picked from File → Recent files: return true if this panel opened it.
-    virtual bool openFile(const QString &path) { Q_UNUSED(path); return false; }
+    virtual bool openFile(const QString &path)
+    {
+        Q_UNUSED(path);
+        return false;
+    }
 
     // Called by the workspace.
     void setActive(bool active);
@@ -65,7 +69,7 @@ protected:
     virtual void driveInfoChanged(const DriveInfo &info) { Q_UNUSED(info); }
     virtual void statusChanged(const DriveStatus &status) { Q_UNUSED(status); }
     virtual void alarmChanged(int code) { Q_UNUSED(code); }
-    virtual void retranslate() {}
+    virtual void retranslate() { }
 
     void changeEvent(QEvent *event) override;
     // Emits errorOccurred() when `result` failed; returns result.ok().

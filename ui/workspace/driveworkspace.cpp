@@ -23,11 +23,10 @@ DriveWorkspace::DriveWorkspace(DriveDirectory *directory, QWidget *parent)
 
     connect(directory, &DriveDirectory::connectionRemoved, this, &DriveWorkspace::removeConnection);
     connect(directory, &DriveDirectory::driveChanged, this, &DriveWorkspace::onDriveChanged);
-    connect(directory, &DriveDirectory::statusChanged, this,
-            [this](int id, int address, const DriveStatus &s) {
-                for (DrivePanel *p : panelsFor(id, address))
-                    p->setStatus(s);
-            });
+    connect(directory, &DriveDirectory::statusChanged, this, [this](int id, int address, const DriveStatus &s) {
+        for (DrivePanel *p : panelsFor(id, address))
+            p->setStatus(s);
+    });
     connect(directory, &DriveDirectory::alarmChanged, this, [this](int id, int address, int code) {
         for (DrivePanel *p : panelsFor(id, address))
             p->setAlarm(code);

@@ -57,7 +57,7 @@ private:
     QLabel *m_hint = nullptr;
     QMap<Key, QTabWidget *> m_tabs;
     Key m_current{0, 0};
-    QString m_currentPanelId;   // the tab to keep when switching drives
+    QString m_currentPanelId; // the tab to keep when switching drives
 };
 
 } // namespace dd

@@ -6,9 +6,8 @@
 #include "core/link/canlink.h"
 #include "core/protocol/servocan/servocan.h"
 
-#include <algorithm>
 #include <QSet>
-
+#include <algorithm>
 
 namespace dd {
 

@@ -10,8 +10,8 @@ namespace dd {
 
 namespace sc = servocan;
 
-ServoCanDiscovery::ServoCanDiscovery(ServoCanStationTracker *tracker, const ScanOptions &options,
-                                     int bitrate, QObject *parent)
+ServoCanDiscovery::ServoCanDiscovery(ServoCanStationTracker *tracker, const ScanOptions &options, int bitrate,
+                                     QObject *parent)
     : Discovery(parent)
     , m_tracker(tracker)
     , m_options(options)
@@ -38,9 +38,12 @@ void ServoCanDiscovery::start()
         return;
     if (!m_tracker || !m_tracker->link()) {
         m_running = true;
-        QMetaObject::invokeMethod(this, [this] {
-            finishScan({ErrorCode::LinkClosed, tr("The CAN link is not open.")});
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                finishScan({ErrorCode::LinkClosed, tr("The CAN link is not open.")});
+            },
+            Qt::QueuedConnection);
         return;
     }
     m_running = true;
@@ -50,12 +53,15 @@ void ServoCanDiscovery::start()
         finishScan(why.isError() ? why : Error{ErrorCode::LinkClosed, tr("The CAN link was closed.")});
     });
     // Stations already heard recently: report them from the event loop (never inside start()).
-    QMetaObject::invokeMethod(this, [this] {
-        if (!m_running || !m_tracker)
-            return;
-        for (int s : m_tracker->onlineStations())
-            reportStation(s);
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            if (!m_running || !m_tracker)
+                return;
+            for (int s : m_tracker->onlineStations())
+                reportStation(s);
+        },
+        Qt::QueuedConnection);
     m_tick.start();
     m_end.start(std::max(0, m_options.listenMs));
 }

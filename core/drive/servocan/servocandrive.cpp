@@ -54,10 +54,8 @@ ServoCanDrive::ServoCanDrive(CanLink *link, ServoCanStationTracker *tracker, int
     if (tracker) {
         connect(tracker, &ServoCanStationTracker::heartbeat, this, &ServoCanDrive::onHeartbeat);
         connect(tracker, &ServoCanStationTracker::alarmReported, this, &ServoCanDrive::onAlarm);
-        connect(tracker, &ServoCanStationTracker::stationOnline, this,
-                [this](int s) { onOnline(s, true); });
-        connect(tracker, &ServoCanStationTracker::stationOffline, this,
-                [this](int s) { onOnline(s, false); });
+        connect(tracker, &ServoCanStationTracker::stationOnline, this, [this](int s) { onOnline(s, true); });
+        connect(tracker, &ServoCanStationTracker::stationOffline, this, [this](int s) { onOnline(s, false); });
         const ServoCanStationTracker::Station &st = tracker->station(station);
         if (st.seen) {
             DriveStatus s = status();
@@ -75,10 +73,9 @@ ServoCanDrive::~ServoCanDrive() = default;
 
 Capabilities ServoCanDrive::capabilities() const
 {
-    return Capability::ReadParameters | Capability::WriteParameters | Capability::Monitor
-        | Capability::Jog | Capability::MoveRelative | Capability::MoveAbsolute | Capability::Enable
-        | Capability::Stop | Capability::EmergencyStop | Capability::ReadAlarm
-        | Capability::ClearAlarm | Capability::SetPosition;
+    return Capability::ReadParameters | Capability::WriteParameters | Capability::Monitor | Capability::Jog
+        | Capability::MoveRelative | Capability::MoveAbsolute | Capability::Enable | Capability::Stop
+        | Capability::EmergencyStop | Capability::ReadAlarm | Capability::ClearAlarm | Capability::SetPosition;
 }
 
 QList<ChannelInfo> ServoCanDrive::channels() const
@@ -92,10 +89,8 @@ QString ServoCanDrive::unsupportedReason(Capability c) const
     case Capability::Home:
         return tr("The servo-can protocol has no homing command. Move to the reference point "
                   "and use \"set position\" (0x50) instead.");
-    case Capability::EeOperations:
-        return tr("The servo-can protocol has no EEPROM command.");
-    default:
-        return Drive::unsupportedReason(c);
+    case Capability::EeOperations: return tr("The servo-can protocol has no EEPROM command.");
+    default: return Drive::unsupportedReason(c);
     }
 }
 
@@ -142,8 +137,7 @@ void ServoCanDrive::readRaw(ReadType type, quint8 index, const ReadDone &done)
         if (f.extended || f.id != id || f.data.size() != sc::kFrameLength)
             return false;
         const auto *b = reinterpret_cast<const quint8 *>(f.data.constData());
-        return b[0] == st && b[1] == quint8(sc::Command::Read) && b[2] == typeByte
-            && (!isParam || b[3] == index);
+        return b[0] == st && b[1] == quint8(sc::Command::Read) && b[2] == typeByte && (!isParam || b[3] == index);
     };
     req.note = isParam ? QStringLiteral("read P%1").arg(index)
                        : QStringLiteral("read %1").arg(QLatin1String(sc::readTypeInfo(type).key));
@@ -157,10 +151,10 @@ void ServoCanDrive::readRaw(ReadType type, quint8 index, const ReadDone &done)
             const qint64 quietMs = st && st->seen ? m_tracker->elapsedMs() - st->lastHeartbeatMs : 0;
             if (e.code == ErrorCode::Timeout && quietMs > 100)
                 e.message += QLatin1Char(' ')
-                           + tr("Station %1 has sent no heartbeat for %2 ms either: has it lost "
-                                "power or its CAN cable?")
-                                 .arg(m_station)
-                                 .arg(quietMs);
+                    + tr("Station %1 has sent no heartbeat for %2 ms either: has it lost "
+                         "power or its CAN cable?")
+                          .arg(m_station)
+                          .arg(quietMs);
             done(e, 0);
             return;
         }
@@ -225,8 +219,7 @@ void ServoCanDrive::confirmRead(quint8 index, const std::shared_ptr<ConfirmState
     });
 }
 
-void ServoCanDrive::sendCommand(const CanFrameData &frame, const QString &note, const Done &done,
-                                bool urgent)
+void ServoCanDrive::sendCommand(const CanFrameData &frame, const QString &note, const Done &done, bool urgent)
 {
     if (!m_link) {
         if (done)
@@ -245,8 +238,7 @@ void ServoCanDrive::sendCommand(const CanFrameData &frame, const QString &note, 
     });
 }
 
-void ServoCanDrive::awaitHeartbeat(const std::function<bool(quint8, qint32)> &pred, int timeoutMs,
-                                   const Done &done)
+void ServoCanDrive::awaitHeartbeat(const std::function<bool(quint8, qint32)> &pred, int timeoutMs, const Done &done)
 {
     if (!m_tracker || !m_link) {
         done(linkClosedError());
@@ -349,8 +341,7 @@ DriveReply *ServoCanDrive::readStatus()
         s.online = true;
         s.position = values->value(ReadType::Position);
         s.positionValid = true;
-        s.running = heartbeatFresh ? m_tracker->station(m_station).running()
-                                   : values->value(ReadType::Speed) != 0;
+        s.running = heartbeatFresh ? m_tracker->station(m_station).running() : values->value(ReadType::Speed) != 0;
         s.alarmCode = values->value(ReadType::AlarmCode);
         updateStatus(s);
         reply->setStatus(status());
@@ -383,14 +374,13 @@ DriveReply *ServoCanDrive::clearAlarm()
 {
     DriveReply *reply = newReply();
     const qint64 deadline = QDateTime::currentMSecsSinceEpoch() + m_alarmClearMs;
-    sendCommand(sc::clearAlarm(m_station), QStringLiteral("clear alarm"),
-                [this, reply, deadline](const Error &e) {
-                    if (e.isError()) {
-                        reply->finish(e);
-                        return;
-                    }
-                    pollAlarmCleared(reply, deadline);
-                });
+    sendCommand(sc::clearAlarm(m_station), QStringLiteral("clear alarm"), [this, reply, deadline](const Error &e) {
+        if (e.isError()) {
+            reply->finish(e);
+            return;
+        }
+        pollAlarmCleared(reply, deadline);
+    });
     return reply;
 }
 

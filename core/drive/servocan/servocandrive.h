@@ -105,13 +105,12 @@ private:
     void confirmRead(quint8 index, const std::shared_ptr<ConfirmState> &state);
     // Frames without a reply, queued in order with the reads.
     // A frame in order with the reads; `urgent`: ahead of the reads waiting for the window.
-    void sendCommand(const CanFrameData &frame, const QString &note, const Done &done = {},
-                     bool urgent = false);
+    void sendCommand(const CanFrameData &frame, const QString &note, const Done &done = {}, bool urgent = false);
     void writeOne(const ParameterWrite &w, int attempt, DriveReply *reply,
                   const std::function<void(const WriteVerification::Check &)> &done);
     // Waits for a heartbeat, arriving from now on, for which `pred` holds.
-    void awaitHeartbeat(const std::function<bool(quint8 state, qint32 position)> &pred,
-                        int timeoutMs, const Done &done);
+    void awaitHeartbeat(const std::function<bool(quint8 state, qint32 position)> &pred, int timeoutMs,
+                        const Done &done);
     DriveReply *startMotion(const QList<CanFrameData> &frames, const QString &what,
                             const std::function<bool(quint8, qint32)> &started);
     void pollAlarmCleared(DriveReply *reply, qint64 deadlineMs);
@@ -131,7 +130,7 @@ private:
     bool m_confirmReads = false;
     int m_motionStartMs = 300;
     int m_alarmClearMs = 300;
-    int m_stopConfirmMs = 150;   // five heartbeat periods
+    int m_stopConfirmMs = 150; // five heartbeat periods
 };
 
 } // namespace dd

@@ -134,8 +134,7 @@ DriveReply *ServoCanDrive::readChannels(const QStringList &channelIds)
     for (const QString &id : channelIds) {
         const std::optional<servocanchannels::Channel> c = servocanchannels::find(id);
         if (!c)
-            return finishedReply({ErrorCode::InvalidArgument,
-                                  tr("A servo-can drive has no channel \"%1\".").arg(id)});
+            return finishedReply({ErrorCode::InvalidArgument, tr("A servo-can drive has no channel \"%1\".").arg(id)});
         wanted.append(*c);
     }
     DriveReply *reply = newReply();
@@ -194,21 +193,22 @@ DriveReply *ServoCanDrive::doStop(bool emergency)
         setEnabledState(false);
     // Nothing acknowledges a stop; a heartbeat sent after it shows the drive heard it.
     DriveReply *reply = newReply();
-    awaitHeartbeat([](quint8, qint32) { return true; }, m_stopConfirmMs, [this, reply](const Error &e) {
-        if (e.code == ErrorCode::LinkClosed) {
-            reply->finish(e);
-            return;
-        }
-        if (e.isError()) {
-            reply->finish({ErrorCode::Timeout,
-                           tr("The stop command was sent, but station %1 has sent no heartbeat "
-                              "since (%2 ms): it may not have received it.")
-                               .arg(m_station)
-                               .arg(m_stopConfirmMs)});
-            return;
-        }
-        reply->finish();
-    });
+    awaitHeartbeat([](quint8, qint32) { return true; }, m_stopConfirmMs,
+                   [this, reply](const Error &e) {
+                       if (e.code == ErrorCode::LinkClosed) {
+                           reply->finish(e);
+                           return;
+                       }
+                       if (e.isError()) {
+                           reply->finish({ErrorCode::Timeout,
+                                          tr("The stop command was sent, but station %1 has sent no heartbeat "
+                                             "since (%2 ms): it may not have received it.")
+                                              .arg(m_station)
+                                              .arg(m_stopConfirmMs)});
+                           return;
+                       }
+                       reply->finish();
+                   });
     return reply;
 }
 
@@ -248,8 +248,7 @@ DriveReply *ServoCanDrive::moveRelative(qint64 distance, qint32 speed)
                                   .arg(distance)});
     if (speed <= 0)
         return finishedReply({ErrorCode::InvalidArgument,
-                              tr("A move needs a positive positioning speed (r/min); %1 was given.")
-                                  .arg(speed)});
+                              tr("A move needs a positive positioning speed (r/min); %1 was given.").arg(speed)});
     if (distance == 0)
         return finishedReply(Error::none());
     const ServoCanStationTracker::Station st = m_tracker ? m_tracker->station(m_station)
@@ -258,33 +257,32 @@ DriveReply *ServoCanDrive::moveRelative(qint64 distance, qint32 speed)
     auto started = [target](quint8 state, qint32 position) {
         return !sc::isHeartbeatIdle(state) || position == target;
     };
-    return startMotion({sc::positioningSpeed(m_station, speed),
-                        sc::moveRelative(m_station, static_cast<qint32>(distance))},
-                       QStringLiteral("move by %1").arg(distance), started);
+    return startMotion(
+        {sc::positioningSpeed(m_station, speed), sc::moveRelative(m_station, static_cast<qint32>(distance))},
+        QStringLiteral("move by %1").arg(distance), started);
 }
 
 DriveReply *ServoCanDrive::moveAbsolute(qint64 target, qint32 speed)
 {
     if (!fitsInt32(target))
-        return finishedReply({ErrorCode::OutOfRange,
-                              tr("Target %1 does not fit the drive's 32-bit position.").arg(target)});
+        return finishedReply(
+            {ErrorCode::OutOfRange, tr("Target %1 does not fit the drive's 32-bit position.").arg(target)});
     if (speed <= 0)
         return finishedReply({ErrorCode::InvalidArgument,
-                              tr("A move needs a positive positioning speed (r/min); %1 was given.")
-                                  .arg(speed)});
+                              tr("A move needs a positive positioning speed (r/min); %1 was given.").arg(speed)});
     auto started = [target](quint8 state, qint32 position) {
         return !sc::isHeartbeatIdle(state) || position == target;
     };
-    return startMotion({sc::positioningSpeed(m_station, speed),
-                        sc::moveAbsolute(m_station, static_cast<qint32>(target))},
-                       QStringLiteral("move to %1").arg(target), started);
+    return startMotion(
+        {sc::positioningSpeed(m_station, speed), sc::moveAbsolute(m_station, static_cast<qint32>(target))},
+        QStringLiteral("move to %1").arg(target), started);
 }
 
 DriveReply *ServoCanDrive::setPosition(qint64 position)
 {
     if (!fitsInt32(position))
-        return finishedReply({ErrorCode::OutOfRange,
-                              tr("Position %1 does not fit the drive's 32-bit position.").arg(position)});
+        return finishedReply(
+            {ErrorCode::OutOfRange, tr("Position %1 does not fit the drive's 32-bit position.").arg(position)});
     DriveReply *reply = newReply();
     sendCommand(sc::setPosition(m_station, static_cast<qint32>(position)),
                 QStringLiteral("set position %1").arg(position));
@@ -300,11 +298,9 @@ DriveReply *ServoCanDrive::setPosition(qint64 position)
         updateStatus(s);
         reply->setStatus(status());
         if (!running && v != position) {
-            reply->finish({ErrorCode::VerifyMismatch,
-                           tr("Station %1: position set to %2 but it reads back %3.")
-                               .arg(m_station)
-                               .arg(position)
-                               .arg(v)});
+            reply->finish(
+                {ErrorCode::VerifyMismatch,
+                 tr("Station %1: position set to %2 but it reads back %3.").arg(m_station).arg(position).arg(v)});
             return;
         }
         reply->finish();

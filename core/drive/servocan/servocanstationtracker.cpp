@@ -160,7 +160,8 @@ void ServoCanStationTracker::onOfflineCheck()
         Station &st = m_stations[static_cast<size_t>(s)];
         if (st.online && now - st.lastHeartbeatMs > m_offlineMs) {
             st.online = false;
-            qCDebug(lcServoCanTracker) << "station" << s << "offline: no heartbeat for" << now - st.lastHeartbeatMs << "ms";
+            qCDebug(lcServoCanTracker) << "station" << s << "offline: no heartbeat for" << now - st.lastHeartbeatMs
+                                       << "ms";
             emit stationOffline(s);
         }
     }

@@ -33,11 +33,11 @@ class ServoCanStationTracker : public QObject
 public:
     struct Station
     {
-        bool seen = false;        // a heartbeat arrived since the link was opened
-        bool online = false;      // and the last one is younger than offlineMs()
+        bool seen = false;   // a heartbeat arrived since the link was opened
+        bool online = false; // and the last one is younger than offlineMs()
         quint8 state = servocan::kHeartbeatIdle;
         qint32 position = 0;
-        int alarmCode = -1;       // from 0x05 frames (0 = none); -1 while none was reported
+        int alarmCode = -1;          // from 0x05 frames (0 = none); -1 while none was reported
         qint64 lastHeartbeatMs = -1; // tracker clock (elapsedMs())
         quint64 heartbeats = 0;
 
@@ -46,13 +46,13 @@ public:
 
     struct Stats
     {
-        quint64 keepAliveTicks = 0;   // ticks that sent at least one frame
+        quint64 keepAliveTicks = 0; // ticks that sent at least one frame
         quint64 keepAliveFrames = 0;
         double maxKeepAliveGapMs = 0; // longest gap between two consecutive ticks
         double lastKeepAliveGapMs = 0;
         quint64 heartbeats = 0;
         quint64 alarmFrames = 0;
-        quint64 undecodable = 0;      // frames with a servo-can ID that did not decode
+        quint64 undecodable = 0; // frames with a servo-can ID that did not decode
     };
 
     explicit ServoCanStationTracker(CanLink *link, QObject *parent = nullptr);
@@ -62,7 +62,7 @@ public:
 
     const Station &station(int station) const;
     bool isOnline(int station) const;
-    QList<int> seenStations() const;   // stations whose heartbeat was seen, ascending
+    QList<int> seenStations() const; // stations whose heartbeat was seen, ascending
     QList<int> onlineStations() const;
 
     int offlineMs() const { return m_offlineMs; }

@@ -8,7 +8,6 @@
 
 namespace dd {
 
-
 // The servo-modbus family on a ModbusLink (QModbusRtuSerialClient).
 //
 // Defaults where the seed is silent: 19200 baud (ConnectionSettings::baud = 0; the seed gives

@@ -18,7 +18,7 @@ namespace dd {
 class ServoModbusChannels
 {
 public:
-    static QList<ChannelInfo> channels();   // translated names
+    static QList<ChannelInfo> channels(); // translated names
     static QStringList ids();
     // The registers a channel needs (1, or 2 for a combined pair); empty when unknown.
     static QList<quint16> registers(const QString &channelId);

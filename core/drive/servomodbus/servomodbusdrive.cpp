@@ -35,8 +35,7 @@ ModbusRequest request(int address, quint8 function, quint16 start, quint16 count
     return q;
 }
 
-QList<ModbusRequest> readRequests(int address, const QList<servomodbus::RegisterRange> &ranges,
-                                  const QString &note)
+QList<ModbusRequest> readRequests(int address, const QList<servomodbus::RegisterRange> &ranges, const QString &note)
 {
     QList<ModbusRequest> out;
     for (const auto &r : ranges)
@@ -101,8 +100,7 @@ ServoModbusOptions ServoModbusOptions::fromMap(const QVariantMap &options, Error
     auto bad = [error](const QString &key, const QString &value, const QString &allowed) {
         if (error && !error->isError())
             *error = {ErrorCode::InvalidArgument,
-                      QCoreApplication::translate("dd::ServoModbusDrive",
-                                                  "Invalid value \"%1\" for %2 (allowed: %3).")
+                      QCoreApplication::translate("dd::ServoModbusDrive", "Invalid value \"%1\" for %2 (allowed: %3).")
                           .arg(value, key, allowed)};
     };
     const QString rule = options.value(QStringLiteral("servo-modbus.positionRule")).toString().trimmed().toLower();
@@ -142,8 +140,7 @@ ServoModbusOptions ServoModbusOptions::fromMap(const QVariantMap &options, Error
     return o;
 }
 
-ServoModbusDrive::ServoModbusDrive(ModbusLink *link, int address, const ServoModbusOptions &options,
-                                   QObject *parent)
+ServoModbusDrive::ServoModbusDrive(ModbusLink *link, int address, const ServoModbusOptions &options, QObject *parent)
     : Drive(parent)
     , m_link(link)
     , m_options(options)
@@ -158,8 +155,8 @@ ServoModbusDrive::ServoModbusDrive(ModbusLink *link, int address, const ServoMod
 
 Capabilities ServoModbusDrive::capabilities() const
 {
-    return Capability::ReadParameters | Capability::WriteParameters | Capability::Monitor
-         | Capability::ReadAlarm | Capability::EeOperations;
+    return Capability::ReadParameters | Capability::WriteParameters | Capability::Monitor | Capability::ReadAlarm
+        | Capability::EeOperations;
 }
 
 QString ServoModbusDrive::unsupportedReason(Capability c) const
@@ -167,8 +164,8 @@ QString ServoModbusDrive::unsupportedReason(Capability c) const
     switch (c) {
     case Capability::ClearAlarm:
         return tr("The servo-modbus protocol has no command to clear an alarm. Remove the "
-                       "cause, then reset the alarm at the drive (its panel, an alarm-reset input "
-                       "or a power cycle) and read the alarm again.");
+                  "cause, then reset the alarm at the drive (its panel, an alarm-reset input "
+                  "or a power cycle) and read the alarm again.");
     case Capability::Jog:
     case Capability::MoveRelative:
     case Capability::MoveAbsolute:
@@ -178,10 +175,9 @@ QString ServoModbusDrive::unsupportedReason(Capability c) const
     case Capability::EmergencyStop:
     case Capability::SetPosition:
         return tr("The servo-modbus protocol reads and writes parameters and monitor values "
-                       "only; it has no motion, enable or stop commands. The axis runs from the "
-                       "drive's own control inputs (pulses, analog command, I/O).");
-    default:
-        return Drive::unsupportedReason(c);
+                  "only; it has no motion, enable or stop commands. The axis runs from the "
+                  "drive's own control inputs (pulses, analog command, I/O).");
+    default: return Drive::unsupportedReason(c);
     }
 }
 
@@ -238,8 +234,8 @@ DriveReply *ServoModbusDrive::readStatus()
     DriveReply *reply = newReply();
     // DP-SPd .. DP-Err is exactly 20 registers: one request.
     const QList<quint16> regsWanted = {0x00, 0x01, 0x02, AlarmRegister};
-    const QList<ModbusRequest> requests =
-        readRequests(address(), servomodbus::planRegisterReads(regsWanted), QStringLiteral("status"));
+    const QList<ModbusRequest> requests = readRequests(address(), servomodbus::planRegisterReads(regsWanted),
+                                                       QStringLiteral("status"));
     ModbusBatch::run(m_link, requests, reply, ModbusBatch::Mode::StopOnError,
                      [this, reply, requests](const Error &error, const QList<ModbusBatch::Result> &results) {
                          DriveStatus s = status();
@@ -295,12 +291,12 @@ DriveReply *ServoModbusDrive::readParameters(const QList<int> &indices)
         return finishedReply(e);
     for (int n : indices) {
         if (!servomodbus::isParameterIndex(n))
-            return finishedReply({ErrorCode::InvalidArgument,
-                                  tr("PA%1 does not exist: this drive has PA0..PA59.").arg(n)});
+            return finishedReply(
+                {ErrorCode::InvalidArgument, tr("PA%1 does not exist: this drive has PA0..PA59.").arg(n)});
     }
     DriveReply *reply = newReply();
-    const QList<ModbusRequest> requests =
-        readRequests(address(), servomodbus::planReads(indices), QStringLiteral("read parameters"));
+    const QList<ModbusRequest> requests = readRequests(address(), servomodbus::planReads(indices),
+                                                       QStringLiteral("read parameters"));
     ModbusBatch::run(
         m_link, requests, reply, ModbusBatch::Mode::StopOnError,
         [this, reply, requests, indices](const Error &error, const QList<ModbusBatch::Result> &results) {
@@ -311,10 +307,8 @@ DriveReply *ServoModbusDrive::readParameters(const QList<int> &indices)
                     if (!results.at(i).error)
                         continue;
                     const int first = servomodbus::parameterIndex(requests.at(i).pdu.start);
-                    e.message = tr("PA%1..PA%2: %3")
-                                    .arg(first)
-                                    .arg(first + requests.at(i).pdu.count - 1)
-                                    .arg(error.message);
+                    e.message =
+                        tr("PA%1..PA%2: %3").arg(first).arg(first + requests.at(i).pdu.count - 1).arg(error.message);
                     break;
                 }
                 reply->finish(e);
@@ -346,8 +340,8 @@ DriveReply *ServoModbusDrive::readChannels(const QStringList &channelIds)
         regs += r;
     }
     DriveReply *reply = newReply();
-    const QList<ModbusRequest> requests =
-        readRequests(address(), servomodbus::planRegisterReads(regs), QStringLiteral("monitor"));
+    const QList<ModbusRequest> requests = readRequests(address(), servomodbus::planRegisterReads(regs),
+                                                       QStringLiteral("monitor"));
     ModbusBatch::run(m_link, requests, reply, ModbusBatch::Mode::StopOnError,
                      [this, reply, requests, ids](const Error &error, const QList<ModbusBatch::Result> &results) {
                          if (error) {
@@ -386,8 +380,7 @@ Error ServoModbusDrive::checkWrites(const QList<ParameterWrite> &writes) const
             return {ErrorCode::InvalidArgument,
                     tr("PA%1 does not exist: this drive has PA0..PA59. Nothing was written.").arg(w.index)};
         if (seen.contains(w.index))
-            return {ErrorCode::InvalidArgument,
-                    tr("PA%1 is given twice. Nothing was written.").arg(w.index)};
+            return {ErrorCode::InvalidArgument, tr("PA%1 is given twice. Nothing was written.").arg(w.index)};
         seen.insert(w.index);
         if (w.index == servomodbus::FirmwareParameter)
             return {ErrorCode::NotSupported,
@@ -395,7 +388,7 @@ Error ServoModbusDrive::checkWrites(const QList<ParameterWrite> &writes) const
         if (w.value < -32768 || w.value > 65535)
             return {ErrorCode::OutOfRange,
                     tr("%1 does not fit the 16-bit register of PA%2 (-32768..32767, or 0..65535 "
-                            "unsigned). Nothing was written.")
+                       "unsigned). Nothing was written.")
                         .arg(w.value)
                         .arg(w.index)};
     }
@@ -438,8 +431,8 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
                                     const QHash<int, Error> &writeErrors)
 {
     const QList<int> toRead = parametersToReadBack(writes, writeErrors);
-    const QList<ModbusRequest> requests =
-        readRequests(address(), servomodbus::planReads(toRead), QStringLiteral("verify"));
+    const QList<ModbusRequest> requests = readRequests(address(), servomodbus::planReads(toRead),
+                                                       QStringLiteral("verify"));
     QMap<int, quint16> all;
     for (const ParameterWrite &w : writes)
         all.insert(w.index, 0);
@@ -447,8 +440,7 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
     const int total = writesDone + int(requests.size());
     ModbusBatch::run(
         m_link, requests, reply, ModbusBatch::Mode::ContinueOnError,
-        [this, reply, requests, writes, writeErrors, toRead](const Error &,
-                                                             const QList<ModbusBatch::Result> &results) {
+        [this, reply, requests, writes, writeErrors, toRead](const Error &, const QList<ModbusBatch::Result> &results) {
             const QHash<quint16, quint16> regs = collect(requests, results);
             const QHash<int, Error> readErrors = errorsByParameter(requests, results);
             WriteVerification verification;
@@ -456,7 +448,8 @@ void ServoModbusDrive::verifyWrites(DriveReply *reply, const QList<ParameterWrit
                 // A read error counts only where a read-back was asked for: a refused write
                 // may share a failed read request with its neighbours.
                 const Error readError = toRead.contains(w.index) ? readErrors.value(w.index) : Error::none();
-                reply->addWriteResult(verification.add(verificationCheck(w, writeErrors.value(w.index), regs, readError)));
+                reply->addWriteResult(
+                    verification.add(verificationCheck(w, writeErrors.value(w.index), regs, readError)));
             }
             reply->finish(verification.summary());
         },
@@ -479,7 +472,7 @@ WriteVerification::Check ServoModbusDrive::verificationCheck(const ParameterWrit
         // above 32767 was meant unsigned, the rest reads as the dictionary types it.
         const quint16 raw = regs.value(reg);
         c.readBack = raw == static_cast<quint16>(w.value) ? w.value
-                   : w.value > 32767                      ? qint64(raw)
+            : w.value > 32767                             ? qint64(raw)
                                                           : parameterValue(w.index, raw);
     }
     return c;
@@ -501,14 +494,15 @@ DriveReply *ServoModbusDrive::eeOperation(EeOperation op)
         return reply;
     }
     // Auto and PA2 not known yet: read it first.
-    LinkReply *r = m_link->readHoldingRegisters(address(), servomodbus::parameterRegister(servomodbus::FirmwareParameter), 1);
+    LinkReply *r = m_link->readHoldingRegisters(address(),
+                                                servomodbus::parameterRegister(servomodbus::FirmwareParameter), 1);
     connect(r, &LinkReply::finished, reply, [this, reply, r, sop] {
         r->deleteLater();
         if (r->error()) {
             Error e = r->error();
             e.message = tr("The firmware version (PA2) could not be read, so the EE command "
-                                "format is unknown: %1 Choose the format by hand (option "
-                                "servo-modbus.eeFormat = legacy or new).")
+                           "format is unknown: %1 Choose the format by hand (option "
+                           "servo-modbus.eeFormat = legacy or new).")
                             .arg(e.message);
             reply->finish(e);
             return;
@@ -556,34 +550,30 @@ void ServoModbusDrive::pollLegacyEe(DriveReply *reply, servomodbus::EeOp op, qin
         const quint16 value = r->registers().value(1);
         const QString name = QString::fromLatin1(servomodbus::eeOpMnemonic(op));
         switch (servomodbus::interpretLegacyEeReply(value, op)) {
-        case servomodbus::EeProgress::Finished:
-            reply->finish();
-            return;
+        case servomodbus::EeProgress::Finished: reply->finish(); return;
         case servomodbus::EeProgress::Failed:
             reply->finish({ErrorCode::DriveException,
                            tr("The drive answered %1 with %2 instead of 0 (running) or %3 "
-                                   "(done): the operation failed or another one is running.")
+                              "(done): the operation failed or another one is running.")
                                .arg(name)
                                .arg(value)
                                .arg(static_cast<int>(op)),
                            value});
             return;
-        case servomodbus::EeProgress::Running:
-            break;
+        case servomodbus::EeProgress::Running: break;
         }
         if (QDateTime::currentMSecsSinceEpoch() >= deadlineMs) {
             reply->finish({ErrorCode::Timeout,
                            tr("%1 did not finish within %2 s: the drive still reports it "
-                                   "running after %3 polls. Do not switch the drive off; read its "
-                                   "parameters again to see what was stored.")
+                              "running after %3 polls. Do not switch the drive off; read its "
+                              "parameters again to see what was stored.")
                                .arg(name)
                                .arg(m_options.eeTimeoutMs / 1000.0, 0, 'f', 1)
                                .arg(polls)});
             return;
         }
-        QTimer::singleShot(m_options.eePollMs, reply, [this, reply, op, deadlineMs, polls] {
-            pollLegacyEe(reply, op, deadlineMs, polls + 1);
-        });
+        QTimer::singleShot(m_options.eePollMs, reply,
+                           [this, reply, op, deadlineMs, polls] { pollLegacyEe(reply, op, deadlineMs, polls + 1); });
     });
 }
 

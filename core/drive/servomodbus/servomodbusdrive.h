@@ -11,7 +11,6 @@
 
 namespace dd {
 
-
 // Settings of a servo-modbus drive where the seed is silent (ConnectionSettings::options).
 struct ServoModbusOptions
 {
@@ -19,9 +18,9 @@ struct ServoModbusOptions
     servomodbus::PositionPairRule positionRule = servomodbus::PositionPairRule::BinaryWords;
     // "servo-modbus.eeFormat": auto (from PA2, default) | legacy | new
     servomodbus::EeFormatChoice eeFormat = servomodbus::EeFormatChoice::Auto;
-    int eeTimeoutMs = 10000;      // "servo-modbus.eeTimeoutMs": legacy format, until done
-    int eePollMs = 50;            // "servo-modbus.eePollMs": legacy format, between polls
-    int eeReplyTimeoutMs = 3000;  // new format: the drive may answer after the EEPROM write
+    int eeTimeoutMs = 10000;     // "servo-modbus.eeTimeoutMs": legacy format, until done
+    int eePollMs = 50;           // "servo-modbus.eePollMs": legacy format, between polls
+    int eeReplyTimeoutMs = 3000; // new format: the drive may answer after the EEPROM write
 
     // Reads the options above; unknown values give an InvalidArgument error naming the key.
     static ServoModbusOptions fromMap(const QVariantMap &options, Error *error = nullptr);
@@ -41,8 +40,7 @@ class ServoModbusDrive : public Drive
 {
     Q_OBJECT
 public:
-    ServoModbusDrive(ModbusLink *link, int address, const ServoModbusOptions &options = {},
-                     QObject *parent = nullptr);
+    ServoModbusDrive(ModbusLink *link, int address, const ServoModbusOptions &options = {}, QObject *parent = nullptr);
 
     Family family() const override { return Family::ServoModbus; }
     Capabilities capabilities() const override;
@@ -59,7 +57,7 @@ public:
 
     const ServoModbusOptions &options() const { return m_options; }
     void setOptions(const ServoModbusOptions &options) { m_options = options; }
-    std::optional<quint16> firmware() const { return m_firmware; }   // PA2 once read
+    std::optional<quint16> firmware() const { return m_firmware; } // PA2 once read
     ModbusLink *link() const { return m_link; }
 
 private:
@@ -70,11 +68,9 @@ private:
     void pollLegacyEe(DriveReply *reply, servomodbus::EeOp op, qint64 deadlineMs, int polls);
     void writeThenVerify(DriveReply *reply, const QList<ParameterWrite> &writes);
     // Reads back every write the drive did not refuse and reports each (WriteVerification).
-    void verifyWrites(DriveReply *reply, const QList<ParameterWrite> &writes,
-                      const QHash<int, Error> &writeErrors);
+    void verifyWrites(DriveReply *reply, const QList<ParameterWrite> &writes, const QHash<int, Error> &writeErrors);
     WriteVerification::Check verificationCheck(const ParameterWrite &w, const Error &writeError,
-                                               const QHash<quint16, quint16> &regs,
-                                               const Error &readError) const;
+                                               const QHash<quint16, quint16> &regs, const Error &readError) const;
 
     QPointer<ModbusLink> m_link;
     ServoModbusOptions m_options;

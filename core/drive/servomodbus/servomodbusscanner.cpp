@@ -13,7 +13,7 @@ Q_LOGGING_CATEGORY(lcServoModbusScan, "drivedesk.drive.servo-modbus.scan")
 namespace dd {
 
 namespace {
-constexpr int Window = 2;        // probes handed to the link at a time
+constexpr int Window = 2; // probes handed to the link at a time
 constexpr int ProbeRequestBytes = 8;
 constexpr int ProbeReplyBytes = 7; // 0x03 reply with one register
 constexpr qsizetype MaxStrayBytes = 256;
@@ -55,14 +55,16 @@ void ServoModbusScanner::start()
     if (m_running)
         return;
     if (!m_link || !m_link->isOpen()) {
-        QMetaObject::invokeMethod(this, [this] {
-            emit finished({ErrorCode::LinkClosed, tr("The serial port is not open.")});
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                emit finished({ErrorCode::LinkClosed, tr("The serial port is not open.")});
+            },
+            Qt::QueuedConnection);
         return;
     }
     m_running = true;
-    connect(m_link, &ModbusLink::strayBytes, this, &ServoModbusScanner::onStrayBytes,
-            Qt::UniqueConnection);
+    connect(m_link, &ModbusLink::strayBytes, this, &ServoModbusScanner::onStrayBytes, Qt::UniqueConnection);
     m_originalBaud = m_link->settings().baud;
     m_bauds = m_options.bauds.isEmpty() ? QList<int>{m_originalBaud} : m_options.bauds;
     const int from = std::clamp(m_options.from, 1, 247);
@@ -104,13 +106,13 @@ void ServoModbusScanner::startBaud()
     m_finishingBaud = false;
     for (int a = from; a <= to; ++a) {
         if (m_found.contains(a))
-            ++m_done;   // found at an earlier baud
+            ++m_done; // found at an earlier baud
         else
             m_unprobed.append(a);
     }
     emit progress(m_done, m_total);
-    qCDebug(lcServoModbusScan) << "sweeping" << m_unprobed.size() << "addresses at" << baud
-                               << "timeout" << probeTimeoutMs() << "ms";
+    qCDebug(lcServoModbusScan) << "sweeping" << m_unprobed.size() << "addresses at" << baud << "timeout"
+                               << probeTimeoutMs() << "ms";
     fillWindow();
 }
 
@@ -125,8 +127,8 @@ void ServoModbusScanner::fillWindow()
         else
             sendProbe(m_unprobed.takeFirst(), Probe::First);
     }
-    if (m_running && !m_finishingBaud && m_inFlight.isEmpty() && m_unprobed.isEmpty()
-        && m_repeat.isEmpty() && m_rescue.isEmpty())
+    if (m_running && !m_finishingBaud && m_inFlight.isEmpty() && m_unprobed.isEmpty() && m_repeat.isEmpty()
+        && m_rescue.isEmpty())
         finishBaud();
 }
 
@@ -140,8 +142,7 @@ void ServoModbusScanner::sendProbe(int address, Probe kind)
     // A drive that answered late gets the link's normal timeout the second time.
     q.timeoutMs = kind == Probe::Rescue ? -1 : probeTimeoutMs();
     q.retries = 0;
-    q.note = kind == Probe::Rescue ? QStringLiteral("scan (again: its reply came late)")
-                                   : QStringLiteral("scan");
+    q.note = kind == Probe::Rescue ? QStringLiteral("scan (again: its reply came late)") : QStringLiteral("scan");
     LinkReply *r = m_link->send(q);
     ++m_probesSent;
     m_inFlight.append(r);
@@ -234,28 +235,22 @@ void ServoModbusScanner::onProbeFinished(LinkReply *reply, int address, Probe ki
         found(QString::number(reply->registers().value(0)), QString());
         break;
     }
-    case ErrorCode::DriveException:
-        found(QString(), tr("exception %1").arg(e.driveCode));
-        break;
+    case ErrorCode::DriveException: found(QString(), tr("exception %1").arg(e.driveCode)); break;
     case ErrorCode::ChecksumError:
     case ErrorCode::Malformed:
         if (kind == Probe::First) {
-            m_repeat.append(address);   // something answered garbled: once more
+            m_repeat.append(address); // something answered garbled: once more
             fillWindow();
             return;
         }
         break;
-    case ErrorCode::LinkClosed:
-        endScan(e);
-        return;
-    case ErrorCode::Cancelled:
-        return;
+    case ErrorCode::LinkClosed: endScan(e); return;
+    case ErrorCode::Cancelled: return;
     case ErrorCode::Timeout:
         m_timedOut.insert(address);
         m_lastTimedOut = true;
         break;
-    default:
-        break;
+    default: break;
     }
     if (kind != Probe::Rescue) { // a rescued address was counted when its first probe ended
         ++m_done;
@@ -292,7 +287,8 @@ void ServoModbusScanner::endScan(const Error &error)
         if (m_link->settings().baud != m_originalBaud)
             m_link->setBaudRate(m_originalBaud);
     }
-    QMetaObject::invokeMethod(this, [this, error] { emit finished(error); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, error] { emit finished(error); }, Qt::QueuedConnection);
 }
 
 } // namespace dd

@@ -47,7 +47,7 @@ public:
 
     void setAllowanceMs(int ms) { m_baseAllowanceUs = qint64(ms) * 1000; }
     int allowanceMs() const;
-    int probeTimeoutMs() const;   // at the link's current baud
+    int probeTimeoutMs() const; // at the link's current baud
     int probesSent() const { return m_probesSent; }
     bool isRunning() const { return m_running; }
 
@@ -67,19 +67,19 @@ private:
     QList<int> m_bauds;
     int m_baudIndex = -1;
     int m_originalBaud = 0;
-    QList<int> m_unprobed;        // addresses still to probe at this baud
-    QList<int> m_repeat;      // garbled replies: probe once more
-    QList<int> m_rescue;      // late replies: probe once more with the normal timeout
-    QSet<int> m_timedOut;     // at this baud
-    QSet<int> m_rescued;      // at this baud
-    QByteArray m_stray;       // recent stray bytes, searched for late replies
+    QList<int> m_unprobed; // addresses still to probe at this baud
+    QList<int> m_repeat;   // garbled replies: probe once more
+    QList<int> m_rescue;   // late replies: probe once more with the normal timeout
+    QSet<int> m_timedOut;  // at this baud
+    QSet<int> m_rescued;   // at this baud
+    QByteArray m_stray;    // recent stray bytes, searched for late replies
     QSet<int> m_found;
     QList<QPointer<LinkReply>> m_inFlight;
     int m_done = 0;
     int m_total = 0;
     int m_probesSent = 0;
     qint64 m_baseAllowanceUs = qint64(DefaultAllowanceMs) * 1000;
-    qint64 m_turnaroundUs = 0;     // drive turnaround the allowance is sized from
+    qint64 m_turnaroundUs = 0; // drive turnaround the allowance is sized from
     bool m_turnaroundSeen = false;
     bool m_lastTimedOut = false; // the last finished probe timed out
     bool m_finishingBaud = false;

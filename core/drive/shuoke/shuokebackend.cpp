@@ -1,12 +1,12 @@
 #include "core/drive/shuoke/shuokebackend.h"
 
-#include "core/link/connectionsettings.h"
 #include "core/drive/drivereply.h"
 #include "core/drive/shuoke/shuokecantransport.h"
 #include "core/drive/shuoke/shuokediscovery.h"
-#include "core/drive/shuoke/shuokeplctransport.h"
 #include "core/drive/shuoke/shuokedrive.h"
+#include "core/drive/shuoke/shuokeplctransport.h"
 #include "core/drive/shuoke/shuokeserialtransport.h"
+#include "core/link/connectionsettings.h"
 
 namespace dd {
 
@@ -46,15 +46,9 @@ bool ShuokeBackend::open(const ConnectionSettings &settings, TrafficTap *tap, Er
     m_options = options;
     switch (options.framing) {
     case ShuokeFraming::Rtu:
-    case ShuokeFraming::Ascii:
-        m_transport = new ShuokeSerialTransport(options, this);
-        break;
-    case ShuokeFraming::Can:
-        m_transport = new ShuokeCanTransport(options, this);
-        break;
-    case ShuokeFraming::Plc:
-        m_transport = new ShuokePlcTransport(options, this);
-        break;
+    case ShuokeFraming::Ascii: m_transport = new ShuokeSerialTransport(options, this); break;
+    case ShuokeFraming::Can: m_transport = new ShuokeCanTransport(options, this); break;
+    case ShuokeFraming::Plc: m_transport = new ShuokePlcTransport(options, this); break;
     }
     if (!m_transport->open(settings, tap, &e)) {
         delete m_transport;

@@ -53,9 +53,7 @@ void ShuokeDiscovery::start()
     // queues the broadcast until then, and startCan() fails if the link is really closed.
     const bool can = m_transport && m_transport->framing() == ShuokeFraming::Can;
     if (!m_transport || (!can && !m_transport->isOpen())) {
-        QTimer::singleShot(0, this, [this] {
-            finish({ErrorCode::LinkClosed, tr("The link is not open.")});
-        });
+        QTimer::singleShot(0, this, [this] { finish({ErrorCode::LinkClosed, tr("The link is not open.")}); });
         return;
     }
     if (m_transport->framing() == ShuokeFraming::Can) {
@@ -124,8 +122,8 @@ void ShuokeDiscovery::startCan()
     auto *can = static_cast<ShuokeCanTransport *>(m_transport.data());
     m_total = 1;
     m_canConnection = connect(can->link(), &CanLink::frameReceived, this, &ShuokeDiscovery::onCanFrame);
-    const Decoded<CanFrameData> frame =
-        shuoke::encodeCan(Frame::make(m_transport->options().broadcast, shuoke::CmdQueryAddress), m_transport->options().can);
+    const Decoded<CanFrameData> frame = shuoke::encodeCan(
+        Frame::make(m_transport->options().broadcast, shuoke::CmdQueryAddress), m_transport->options().can);
     if (!frame.ok() || !can->link()->send(*frame.value, QStringLiteral("scan: query address (broadcast)"))) {
         QTimer::singleShot(0, this, [this] {
             finish({ErrorCode::LinkClosed, tr("The query-address broadcast could not be sent.")});

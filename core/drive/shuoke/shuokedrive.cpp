@@ -30,10 +30,8 @@ bool startsMotion(quint8 command)
     case CmdHomeOrSCurveDirection24:
     case CmdClosedLoopMove:
     case CmdClosedLoopGearedMove:
-    case CmdClosedLoopMoveAbsolute:
-        return true;
-    default:
-        return false;
+    case CmdClosedLoopMoveAbsolute: return true;
+    default: return false;
     }
 }
 
@@ -87,9 +85,9 @@ bool ShuokeDrive::maySupport(quint8 command, int length) const
 
 Capabilities ShuokeDrive::capabilities() const
 {
-    Capabilities caps = Capability::ReadParameters | Capability::WriteParameters | Capability::Monitor
-        | Capability::Jog | Capability::MoveRelative | Capability::MoveAbsolute | Capability::Stop
-        | Capability::EmergencyStop | Capability::ReadAlarm | Capability::SetPosition;
+    Capabilities caps = Capability::ReadParameters | Capability::WriteParameters | Capability::Monitor | Capability::Jog
+        | Capability::MoveRelative | Capability::MoveAbsolute | Capability::Stop | Capability::EmergencyStop
+        | Capability::ReadAlarm | Capability::SetPosition;
     if (maySupport(CmdHome, 1))
         caps |= Capability::Home;
     return caps;
@@ -108,11 +106,9 @@ QString ShuokeDrive::unsupportedReason(Capability c) const
         return tr("Shuoke drives store their settings themselves; there is no EEPROM command.");
     case Capability::Home:
         if (!maySupport(CmdHome, 1))
-            return tr("The %1 has no homing command (0x3E is for the M6505 and M4505S).")
-                .arg(modelName(*m_model));
+            return tr("The %1 has no homing command (0x3E is for the M6505 and M4505S).").arg(modelName(*m_model));
         break;
-    default:
-        break;
+    default: break;
     }
     return Drive::unsupportedReason(c);
 }
@@ -141,8 +137,7 @@ Error ShuokeDrive::check(quint8 command, const QByteArray &data) const
         return {ErrorCode::NotSupported, unavailable};
     const QString range = validateRequestData(command, data, byteOrder());
     if (!range.isEmpty())
-        return {ErrorCode::OutOfRange,
-                tr("Not sent to the drive at address %1: %2.").arg(address()).arg(range)};
+        return {ErrorCode::OutOfRange, tr("Not sent to the drive at address %1: %2.").arg(address()).arg(range)};
     return Error::none();
 }
 
@@ -167,8 +162,8 @@ void ShuokeDrive::noteFailure(const Error &e)
     }
 }
 
-void ShuokeDrive::exchange(DriveReply *reply, quint8 command, const QByteArray &data, Handler done,
-                           bool expectReply, bool behindQueued)
+void ShuokeDrive::exchange(DriveReply *reply, quint8 command, const QByteArray &data, Handler done, bool expectReply,
+                           bool behindQueued)
 {
     if (!m_transport) {
         reply->finish({ErrorCode::LinkClosed, tr("The drive has no link.")});
@@ -230,7 +225,8 @@ DriveReply *ShuokeDrive::refreshIdentity()
     auto afterBaud = [this, reply] {
         detectModel(reply, [this, reply] {
             reply->setInfo(QStringLiteral("model"), m_model ? modelName(*m_model) : QString());
-            reply->setInfo(QStringLiteral("framing"), m_transport ? shuokeFramingId(m_transport->framing()) : QString());
+            reply->setInfo(QStringLiteral("framing"),
+                           m_transport ? shuokeFramingId(m_transport->framing()) : QString());
             DriveStatus s = status();
             s.online = true;
             updateStatus(s);
@@ -377,8 +373,8 @@ DriveReply *ShuokeDrive::doStop(bool emergency)
     auto join = OperationJoin::create(again ? 2 : 1, [reply](const Error &e) { reply->finish(e); });
     exchange(reply, command, {}, [join](const Error &e, const Frame &) { join->complete(e); });
     if (again)
-        exchange(reply, command, {}, [join](const Error &e, const Frame &) { join->complete(e); },
-                 true, true);
+        exchange(
+            reply, command, {}, [join](const Error &e, const Frame &) { join->complete(e); }, true, true);
     return reply;
 }
 
@@ -397,8 +393,8 @@ DriveReply *ShuokeDrive::moveRelative(qint64 distance, qint32 speed)
 DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
 {
     if (!isPulseCountInRange(target))
-        return finishedReply({ErrorCode::OutOfRange,
-                              tr("The target %1 is beyond the drive's 31-bit range.").arg(target)});
+        return finishedReply(
+            {ErrorCode::OutOfRange, tr("The target %1 is beyond the drive's 31-bit range.").arg(target)});
     QList<Step> speedStep;
     if (speed > 0)
         speedStep.append(Step{CmdSetMaxSpeed, encodeUInt32(static_cast<quint32>(speed), byteOrder())});
@@ -409,7 +405,8 @@ DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
         return r;
     }
     // Open loop: the target relative to the pulse counter 0x37.
-    if (const Error e = checkSteps(speedStep + QList<Step>{{CmdQueryAbsolutePosition, {}}, {CmdMoveRelative, int32(0)}}))
+    if (const Error e = checkSteps(speedStep
+                                   + QList<Step>{{CmdQueryAbsolutePosition, {}}, {CmdMoveRelative, int32(0)}}))
         return finishedReply(e);
     DriveReply *reply = newReply();
     reply->setInfo(QStringLiteral("method"), QStringLiteral("relative-from-position"));
@@ -425,7 +422,8 @@ DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
         }
         const qint64 delta = target - *pos;
         if (!isPulseCountInRange(delta)) {
-            reply->finish({ErrorCode::OutOfRange, tr("The move from %1 to %2 is beyond the drive's range.").arg(*pos).arg(target)});
+            reply->finish({ErrorCode::OutOfRange,
+                           tr("The move from %1 to %2 is beyond the drive's range.").arg(*pos).arg(target)});
             return;
         }
         reply->setInfo(QStringLiteral("distance"), delta);

@@ -108,8 +108,8 @@ private:
     Error check(quint8 command, const QByteArray &data) const;
     Error checkSteps(const QList<Step> &steps) const;
     // A stop command goes ahead of everything waiting on the link unless `behindQueued`.
-    void exchange(DriveReply *reply, quint8 command, const QByteArray &data, Handler done,
-                  bool expectReply = true, bool behindQueued = false);
+    void exchange(DriveReply *reply, quint8 command, const QByteArray &data, Handler done, bool expectReply = true,
+                  bool behindQueued = false);
     // Runs `steps` one after another; finishes `reply` with the first error or none. A
     // motion command is not sent once a stop has come since `stopsBefore` (= m_stops when
     // the operation began).
@@ -139,8 +139,8 @@ private:
     std::optional<shuoke::Model> m_model;
     QHash<int, qint64> m_lastWritten;
     int m_lastFailure = 0;
-    int m_motionQueued = 0;   // motion commands handed to the link, not answered yet
-    quint64 m_stops = 0;      // stops so far
+    int m_motionQueued = 0; // motion commands handed to the link, not answered yet
+    quint64 m_stops = 0;    // stops so far
 };
 
 } // namespace dd

@@ -25,9 +25,10 @@ struct ChannelDef
 const ChannelDef kChannels[] = {
     {"speed", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Speed"), "pulse/s", CmdQuerySpeed, 0},
     {"position", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Absolute position"), "pulse", CmdQueryAbsolutePosition, 0},
-    {"relative-position", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Relative position"), "pulse", CmdQueryRelativePosition, 0},
-    {"status", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Status bits (running, left limit, origin, right limit, enable)"), "",
-     CmdQueryStatus, 0},
+    {"relative-position", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Relative position"), "pulse", CmdQueryRelativePosition,
+     0},
+    {"status", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Status bits (running, left limit, origin, right limit, enable)"),
+     "", CmdQueryStatus, 0},
     {"inputs", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Inputs IO1..IO5"), "", CmdReadInputs, 0},
     {"control-inputs", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Inputs pulse, direction, enable, F1, F2"), "",
      CmdReadOtherInputs, 0},
@@ -102,8 +103,9 @@ void ShuokeDrive::fillSamples(DriveReply *reply, const QStringList &ids, const Q
             continue;
         if (c->command == CmdQueryStatus) {
             if (const auto st = decodeMotionStatus(data.value(c->command)))
-                reply->setSample(id, (st->running ? 1 : 0) | (st->leftLimit ? 2 : 0) | (st->origin ? 4 : 0)
-                                         | (st->rightLimit ? 8 : 0) | (st->enableInput ? 16 : 0));
+                reply->setSample(id,
+                                 (st->running ? 1 : 0) | (st->leftLimit ? 2 : 0) | (st->origin ? 4 : 0)
+                                     | (st->rightLimit ? 8 : 0) | (st->enableInput ? 16 : 0));
         } else if (c->command == CmdReadInputs || c->command == CmdReadOtherInputs) {
             if (const auto bits = decodeInputBits(data.value(c->command)))
                 reply->setSample(id, *bits);

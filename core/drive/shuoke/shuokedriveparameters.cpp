@@ -38,10 +38,11 @@ void ShuokeDrive::readOneParameter(DriveReply *reply, const ShuokeParameter &p,
         }
         const auto v = param.decode(f.data, byteOrder());
         if (!v) {
-            done({ErrorCode::Malformed, tr("The drive answered %1 data bytes for parameter %2 (%3 expected).")
-                                            .arg(f.data.size())
-                                            .arg(QString::fromLatin1(param.key))
-                                            .arg(param.size)},
+            done({ErrorCode::Malformed,
+                  tr("The drive answered %1 data bytes for parameter %2 (%3 expected).")
+                      .arg(f.data.size())
+                      .arg(QString::fromLatin1(param.key))
+                      .arg(param.size)},
                  0);
             return;
         }
@@ -123,11 +124,12 @@ Error ShuokeDrive::checkParameterWrite(const ParameterWrite &w, const ShuokePara
         return {ErrorCode::InvalidArgument,
                 tr("%1 is not a Shuoke parameter (the index is the SET command code).").arg(w.index)};
     if (!p->inRange(w.value))
-        return {ErrorCode::OutOfRange, tr("%1 must be %2..%3; %4 was not sent.")
-                                           .arg(QString::fromLatin1(p->key))
-                                           .arg(p->min)
-                                           .arg(p->max)
-                                           .arg(w.value)};
+        return {ErrorCode::OutOfRange,
+                tr("%1 must be %2..%3; %4 was not sent.")
+                    .arg(QString::fromLatin1(p->key))
+                    .arg(p->min)
+                    .arg(p->max)
+                    .arg(w.value)};
     if (const Error e = check(p->setCommand, p->encode(w.value, byteOrder())))
         return e;
     if (p->isReadable()) {
@@ -185,31 +187,31 @@ void ShuokeDrive::writeNext(DriveReply *reply, QList<ParameterWrite> writes, int
     };
     exchange(reply, p.setCommand, p.encode(w.value, byteOrder()),
              [this, reply, w, p, check, next, readBack](const Error &e, const Frame &) mutable {
-        check.writeError = e;
-        if (e) {
-            // The answer was lost or damaged; the write may have been carried out: the
-            // read-back tells. A refusal or a closed link leaves nothing to read back.
-            if (e.code != ErrorCode::DriveException && p.isReadable() && e.code != ErrorCode::LinkClosed)
-                readBack(check);
-            else
-                next(check);
-            return;
-        }
-        m_lastWritten.insert(w.index, w.value);
-        if (!p.isReadable()) {
-            next(check);
-            return;
-        }
-        if (p.setCommand == CmdSetBaudCode && m_transport && m_transport->baud() > 0) {
-            // The drive answers at the old rate, then switches (seed: "change the current baud rate").
-            const int baud = baudRateForCode(static_cast<int>(w.value));
-            if (!m_transport->setBaud(baud))
-                reply->setInfo(QStringLiteral("baudSwitchFailed"), baud);
-            else
-                reply->setInfo(QStringLiteral("linkBaud"), baud);
-        }
-        readBack(check);
-    });
+                 check.writeError = e;
+                 if (e) {
+                     // The answer was lost or damaged; the write may have been carried out: the
+                     // read-back tells. A refusal or a closed link leaves nothing to read back.
+                     if (e.code != ErrorCode::DriveException && p.isReadable() && e.code != ErrorCode::LinkClosed)
+                         readBack(check);
+                     else
+                         next(check);
+                     return;
+                 }
+                 m_lastWritten.insert(w.index, w.value);
+                 if (!p.isReadable()) {
+                     next(check);
+                     return;
+                 }
+                 if (p.setCommand == CmdSetBaudCode && m_transport && m_transport->baud() > 0) {
+                     // The drive answers at the old rate, then switches (seed: "change the current baud rate").
+                     const int baud = baudRateForCode(static_cast<int>(w.value));
+                     if (!m_transport->setBaud(baud))
+                         reply->setInfo(QStringLiteral("baudSwitchFailed"), baud);
+                     else
+                         reply->setInfo(QStringLiteral("linkBaud"), baud);
+                 }
+                 readBack(check);
+             });
 }
 
 } // namespace dd

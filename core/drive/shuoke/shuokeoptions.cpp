@@ -60,12 +60,12 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
     }
     if (settings.isCan() != (o.framing == ShuokeFraming::Can) && !e.isError())
         fail({ErrorCode::InvalidArgument,
-              settings.isCan()
-                  ? QCoreApplication::translate("dd::ShuokeOptions",
-                                                "The %1 framing needs a serial port, not a CAN interface.")
-                        .arg(shuokeFramingId(o.framing))
-                  : QCoreApplication::translate("dd::ShuokeOptions",
-                                                "The can framing needs a CAN interface (plugin:interface), not a serial port.")});
+              settings.isCan() ? QCoreApplication::translate("dd::ShuokeOptions",
+                                                             "The %1 framing needs a serial port, not a CAN interface.")
+                                     .arg(shuokeFramingId(o.framing))
+                               : QCoreApplication::translate(
+                                   "dd::ShuokeOptions",
+                                   "The can framing needs a CAN interface (plugin:interface), not a serial port.")});
 
     const QString checksum = text("shuoke.checksum", "sum").toLower();
     if (checksum == QLatin1String("sum"))
@@ -109,7 +109,8 @@ ShuokeOptions ShuokeOptions::fromSettings(const ConnectionSettings &settings, Er
     bool ok = true;
     const int gap = text("shuoke.minGapMs", "50").toInt(&ok);
     if (!ok || gap < 0 || gap > 10000)
-        fail(badValue(QStringLiteral("shuoke.minGapMs"), text("shuoke.minGapMs", "50"), QStringLiteral("0..10000 (ms)")));
+        fail(badValue(QStringLiteral("shuoke.minGapMs"), text("shuoke.minGapMs", "50"),
+                      QStringLiteral("0..10000 (ms)")));
     else
         o.minGapMs = gap;
 

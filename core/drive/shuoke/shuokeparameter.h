@@ -15,9 +15,9 @@ namespace dd {
 // the write-only settings, which no command reads back.
 struct ShuokeParameter
 {
-    quint8 setCommand = 0;   // = parameter index
-    quint8 readCommand = 0;  // 0: write-only
-    int size = 4;            // data bytes of the SET request and GET reply: 1 or 4
+    quint8 setCommand = 0;  // = parameter index
+    quint8 readCommand = 0; // 0: write-only
+    int size = 4;           // data bytes of the SET request and GET reply: 1 or 4
     qint64 min = 0;
     qint64 max = 0;
     const char *key = nullptr; // dictionary key, e.g. "start-speed"

@@ -66,7 +66,8 @@ QString ShuokePlcTransport::cannotCarry(const Frame &frame) const
     if (!base.isEmpty())
         return base;
     const shuoke::CommandInfo *info = shuoke::commandInfo(frame.command);
-    const QString name = info ? QCoreApplication::translate("dd::shuoke", info->name) : shuoke::commandName(frame.command);
+    const QString name = info ? QCoreApplication::translate("dd::shuoke", info->name)
+                              : shuoke::commandName(frame.command);
     if (!info || info->plcAccess == shuoke::PlcAccess::None)
         return tr("\"%1\" has no register in PLC mode; use the RTU framing for it.").arg(name);
     if (info->plcAccess == shuoke::PlcAccess::Read && info->plcRegisters == 0)
@@ -107,8 +108,8 @@ Decoded<Frame> ShuokePlcTransport::decode(const LinkReply &reply, const ShuokeRe
 {
     const shuoke::CommandInfo *info = shuoke::commandInfo(request.frame.command);
     if (info && info->plcAccess == shuoke::PlcAccess::Read) {
-        const Decoded<QByteArray> data =
-            shuoke::plcReplyData(request.frame.command, shuoke::plcRegistersToBytes(reply.registers()));
+        const Decoded<QByteArray> data = shuoke::plcReplyData(request.frame.command,
+                                                              shuoke::plcRegistersToBytes(reply.registers()));
         if (!data.ok())
             return Decoded<Frame>::failure(data.error);
         return Decoded<Frame>::success(Frame::make(request.frame.address, request.frame.command, *data.value));

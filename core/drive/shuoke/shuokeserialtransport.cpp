@@ -37,7 +37,10 @@ bool ShuokeSerialTransport::isOpen() const
 
 QString ShuokeSerialTransport::description() const
 {
-    return tr("%1 @ %2 baud, Shuoke %3").arg(m_link->name()).arg(m_link->settings().baud).arg(shuokeFramingId(framing()).toUpper());
+    return tr("%1 @ %2 baud, Shuoke %3")
+        .arg(m_link->name())
+        .arg(m_link->settings().baud)
+        .arg(shuokeFramingId(framing()).toUpper());
 }
 
 void ShuokeSerialTransport::cancelAll(const Error &why)
@@ -100,8 +103,7 @@ ReplyMatcher ShuokeSerialTransport::rtuMatcher(const Frame &request, const shuok
         if (buf.size() < 3)
             return FrameMatch::incomplete();
         const quint8 len = static_cast<quint8>(buf.at(2));
-        const QList<shuoke::detail::RtuCandidate> candidates =
-            shuoke::detail::rtuCandidates(commandByte, len, options);
+        const QList<shuoke::detail::RtuCandidate> candidates = shuoke::detail::rtuCandidates(commandByte, len, options);
         bool waiting = false;
         qsizetype corruptSize = 0;
         for (const shuoke::detail::RtuCandidate &c : candidates) {

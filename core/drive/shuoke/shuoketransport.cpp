@@ -82,8 +82,7 @@ void ShuokeTransport::request(const ShuokeRequest &request, QObject *context, Ha
     Error startError;
     LinkReply *reply = start(request, &startError);
     if (!reply) {
-        later(startError.isError() ? startError
-                                   : Error{ErrorCode::LinkClosed, tr("The link is not open.")});
+        later(startError.isError() ? startError : Error{ErrorCode::LinkClosed, tr("The link is not open.")});
         return;
     }
     // The caller went away: the link skips or drops the request's reply.

@@ -8,7 +8,10 @@ namespace dd::modbusrtu {
 
 namespace {
 
-quint8 byteAt(const QByteArray &a, qsizetype i) { return static_cast<quint8>(a.at(i)); }
+quint8 byteAt(const QByteArray &a, qsizetype i)
+{
+    return static_cast<quint8>(a.at(i));
+}
 
 quint16 wordAt(const QByteArray &a, qsizetype i)
 {
@@ -30,8 +33,14 @@ QByteArray header(quint8 address, quint8 function)
     return out;
 }
 
-QString hex2(quint32 v) { return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0')); }
-QString hex4(quint32 v) { return QStringLiteral("0x%1").arg(v, 4, 16, QLatin1Char('0')); }
+QString hex2(quint32 v)
+{
+    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
+}
+QString hex4(quint32 v)
+{
+    return QStringLiteral("0x%1").arg(v, 4, 16, QLatin1Char('0'));
+}
 
 // A caller's limit never widens the Modbus one: 124 or 125 registers of 0x10 would not fit
 // an ADU (and the encoders refuse them), so "maxCount 125 for both functions" means 123 for 0x10.
@@ -95,8 +104,7 @@ QString exceptionCodeName(quint8 code)
 
 bool isKnownFunction(quint8 function)
 {
-    return function == ReadHoldingRegisters || function == WriteSingleRegister
-        || function == WriteMultipleRegisters;
+    return function == ReadHoldingRegisters || function == WriteSingleRegister || function == WriteMultipleRegisters;
 }
 
 // ---- Encoders ----
@@ -135,8 +143,7 @@ QByteArray encodeWriteMultipleRequest(quint8 address, quint16 start, const QList
 QByteArray encodeRequest(const Request &request)
 {
     switch (request.function) {
-    case ReadHoldingRegisters:
-        return encodeReadHoldingRequest(request.address, request.start, request.count);
+    case ReadHoldingRegisters: return encodeReadHoldingRequest(request.address, request.start, request.count);
     case WriteSingleRegister:
         if (request.values.size() != 1)
             return {};
@@ -145,8 +152,7 @@ QByteArray encodeRequest(const Request &request)
         if (request.values.size() != request.count)
             return {};
         return encodeWriteMultipleRequest(request.address, request.start, request.values);
-    default:
-        return {};
+    default: return {};
     }
 }
 
@@ -290,8 +296,7 @@ Decoded<Reply> decodeReply(const QByteArray &adu, const Request &request, Decode
             return fail<R>(reason, DecodeError::ByteCountMismatch,
                            QStringLiteral("byte count %1 but %2 data bytes").arg(byteCount).arg(n - 5));
         if (byteCount % 2 != 0)
-            return fail<R>(reason, DecodeError::ByteCountMismatch,
-                           QStringLiteral("odd byte count %1").arg(byteCount));
+            return fail<R>(reason, DecodeError::ByteCountMismatch, QStringLiteral("odd byte count %1").arg(byteCount));
         if (byteCount / 2 != request.count)
             return fail<R>(reason, DecodeError::CountMismatch,
                            QStringLiteral("%1 registers returned, %2 requested").arg(byteCount / 2).arg(request.count));
@@ -321,8 +326,7 @@ Decoded<Reply> decodeReply(const QByteArray &adu, const Request &request, Decode
                            QStringLiteral("count %1 echoed, %2 sent").arg(r.count).arg(request.count));
         return succeed(reason, r);
     }
-    default:
-        return fail<R>(reason, DecodeError::UnknownFunction, QStringLiteral("function %1").arg(hex2(fc)));
+    default: return fail<R>(reason, DecodeError::UnknownFunction, QStringLiteral("function %1").arg(hex2(fc)));
     }
 }
 

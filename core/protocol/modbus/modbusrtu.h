@@ -13,11 +13,7 @@
 // big-endian on the wire as Modbus specifies. No I/O, no state.
 namespace dd::modbusrtu {
 
-enum FunctionCode : quint8 {
-    ReadHoldingRegisters = 0x03,
-    WriteSingleRegister = 0x06,
-    WriteMultipleRegisters = 0x10
-};
+enum FunctionCode : quint8 { ReadHoldingRegisters = 0x03, WriteSingleRegister = 0x06, WriteMultipleRegisters = 0x10 };
 
 constexpr quint8 ExceptionFlag = 0x80;     // set in the function byte of an exception reply
 constexpr quint8 BroadcastAddress = 0x00;  // never answered
@@ -58,8 +54,8 @@ enum class DecodeError {
 };
 
 QString decodeErrorName(DecodeError e); // stable English identifier, e.g. "bad-crc"
-QString exceptionCodeName(quint8 code);  // e.g. "server device failure", or "exception 0x42"
-bool isKnownFunction(quint8 function);    // 0x03, 0x06 or 0x10
+QString exceptionCodeName(quint8 code); // e.g. "server device failure", or "exception 0x42"
+bool isKnownFunction(quint8 function);  // 0x03, 0x06 or 0x10
 
 // A request as the drive sees it.
 //  0x03: start, count; values empty.
@@ -75,8 +71,8 @@ struct Request
 
     bool operator==(const Request &o) const
     {
-        return address == o.address && function == o.function && start == o.start
-            && count == o.count && values == o.values;
+        return address == o.address && function == o.function && start == o.start && count == o.count
+            && values == o.values;
     }
     bool operator!=(const Request &o) const { return !(*this == o); }
 };
@@ -99,8 +95,7 @@ struct Reply
     bool operator==(const Reply &o) const
     {
         return address == o.address && function == o.function && isException == o.isException
-            && exceptionCode == o.exceptionCode && start == o.start && count == o.count
-            && values == o.values;
+            && exceptionCode == o.exceptionCode && start == o.start && count == o.count && values == o.values;
     }
     bool operator!=(const Reply &o) const { return !(*this == o); }
 };
@@ -129,8 +124,7 @@ int expectedReplySize(const Request &request);
 // count (against the frame and against 2 * count), count in 1..maxCount. A maxCount above
 // the Modbus limit of the function is lowered to it.
 // `reason`, when given, receives the DecodeError (None on success).
-Decoded<Request> decodeRequest(const QByteArray &adu, int maxCount = UseStandardLimit,
-                               DecodeError *reason = nullptr);
+Decoded<Request> decodeRequest(const QByteArray &adu, int maxCount = UseStandardLimit, DecodeError *reason = nullptr);
 
 // Host side: one complete reply ADU, judged against the request it answers.
 // Checks, in order: size >= 5, CRC, then
@@ -142,7 +136,6 @@ Decoded<Request> decodeRequest(const QByteArray &adu, int maxCount = UseStandard
 // The value of a 0x06 reply is returned, not compared with the request's: the
 // servo-modbus legacy EE operation reports progress in it (0 = still running).
 // A request to the broadcast address expects no reply: any reply is AddressMismatch.
-Decoded<Reply> decodeReply(const QByteArray &adu, const Request &request,
-                           DecodeError *reason = nullptr);
+Decoded<Reply> decodeReply(const QByteArray &adu, const Request &request, DecodeError *reason = nullptr);
 
 } // namespace dd::modbusrtu

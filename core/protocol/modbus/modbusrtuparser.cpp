@@ -88,7 +88,12 @@ FrameCheck scan(const QByteArray &buf, Mode mode, int maxFrameSize)
 bool isKnownReplyFunction(quint8 fc)
 {
     switch (fc) {
-    case 0x03: case 0x06: case 0x10: case 0x83: case 0x86: case 0x90: return true;
+    case 0x03:
+    case 0x06:
+    case 0x10:
+    case 0x83:
+    case 0x86:
+    case 0x90: return true;
     default: return false;
     }
 }

@@ -78,8 +78,7 @@ public:
     // bytes by returning the frame's length, and - Mode::Replies and offset 0 only -
     // accepts a CRC-valid buffer of >= 4 bytes whose function code it does not know (e.g.
     // 0x04 or 0x84), so the link can report it instead of waiting for a timeout.
-    static FrameCheck checkFrame(const QByteArray &bytes, Mode mode,
-                                 int maxFrameSize = DefaultBufferCap);
+    static FrameCheck checkFrame(const QByteArray &bytes, Mode mode, int maxFrameSize = DefaultBufferCap);
 
 private:
     void extract();

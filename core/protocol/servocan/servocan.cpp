@@ -6,26 +6,32 @@ namespace dd::servocan {
 
 namespace {
 
-constexpr std::array<Command, 14> kCommands = {
-    Command::Alarm,          Command::KeepAlive,    Command::Heartbeat,
-    Command::Read,           Command::Write,        Command::RunSpeed,
-    Command::MoveRelative,   Command::MoveAbsolute, Command::PositioningSpeed,
-    Command::Enable,         Command::Stop,         Command::StopAndDisable,
-    Command::SetPosition,    Command::ClearAlarm};
+constexpr std::array<Command, 14> kCommands = {Command::Alarm,        Command::KeepAlive,    Command::Heartbeat,
+                                               Command::Read,         Command::Write,        Command::RunSpeed,
+                                               Command::MoveRelative, Command::MoveAbsolute, Command::PositioningSpeed,
+                                               Command::Enable,       Command::Stop,         Command::StopAndDisable,
+                                               Command::SetPosition,  Command::ClearAlarm};
 
 // Names and units are registered for translation; the unit hints other than r/min (seed
 // example "正 100 转") and the /100 current scale (seed: "两位小数") are not from the seed.
 constexpr std::array<ReadTypeInfo, 15> kReadTypes = {{
     {ReadType::Parameter, "parameter", QT_TRANSLATE_NOOP("dd::servocan", "Parameter"), "", 1.0, 0, false},
-    {ReadType::Speed, "speed", QT_TRANSLATE_NOOP("dd::servocan", "Speed"), QT_TRANSLATE_NOOP("dd::servocan", "r/min"), 1.0, 0, false},
-    {ReadType::Position, "position", QT_TRANSLATE_NOOP("dd::servocan", "Position"), QT_TRANSLATE_NOOP("dd::servocan", "pulses"), 1.0, 0, false},
+    {ReadType::Speed, "speed", QT_TRANSLATE_NOOP("dd::servocan", "Speed"), QT_TRANSLATE_NOOP("dd::servocan", "r/min"),
+     1.0, 0, false},
+    {ReadType::Position, "position", QT_TRANSLATE_NOOP("dd::servocan", "Position"),
+     QT_TRANSLATE_NOOP("dd::servocan", "pulses"), 1.0, 0, false},
     {ReadType::Temperature, "temperature", QT_TRANSLATE_NOOP("dd::servocan", "Temperature"), "°C", 1.0, 0, false},
-    {ReadType::PositionCommand, "position-command", QT_TRANSLATE_NOOP("dd::servocan", "Position command"), QT_TRANSLATE_NOOP("dd::servocan", "pulses"), 1.0, 0, false},
-    {ReadType::PositionError, "position-error", QT_TRANSLATE_NOOP("dd::servocan", "Position error"), QT_TRANSLATE_NOOP("dd::servocan", "pulses"), 1.0, 0, false},
+    {ReadType::PositionCommand, "position-command", QT_TRANSLATE_NOOP("dd::servocan", "Position command"),
+     QT_TRANSLATE_NOOP("dd::servocan", "pulses"), 1.0, 0, false},
+    {ReadType::PositionError, "position-error", QT_TRANSLATE_NOOP("dd::servocan", "Position error"),
+     QT_TRANSLATE_NOOP("dd::servocan", "pulses"), 1.0, 0, false},
     {ReadType::Torque, "torque", QT_TRANSLATE_NOOP("dd::servocan", "Torque"), "%", 1.0, 0, false},
-    {ReadType::OutputCurrent, "output-current", QT_TRANSLATE_NOOP("dd::servocan", "Output current"), "A", 0.01, 2, false},
-    {ReadType::SpeedCommand, "speed-command", QT_TRANSLATE_NOOP("dd::servocan", "Speed command"), QT_TRANSLATE_NOOP("dd::servocan", "r/min"), 1.0, 0, false},
-    {ReadType::TorqueCommand, "torque-command", QT_TRANSLATE_NOOP("dd::servocan", "Torque command"), "%", 1.0, 0, false},
+    {ReadType::OutputCurrent, "output-current", QT_TRANSLATE_NOOP("dd::servocan", "Output current"), "A", 0.01, 2,
+     false},
+    {ReadType::SpeedCommand, "speed-command", QT_TRANSLATE_NOOP("dd::servocan", "Speed command"),
+     QT_TRANSLATE_NOOP("dd::servocan", "r/min"), 1.0, 0, false},
+    {ReadType::TorqueCommand, "torque-command", QT_TRANSLATE_NOOP("dd::servocan", "Torque command"), "%", 1.0, 0,
+     false},
     {ReadType::RotorPosition, "rotor-position", QT_TRANSLATE_NOOP("dd::servocan", "Rotor position"), "", 1.0, 0, false},
     {ReadType::InputIo, "input-io", QT_TRANSLATE_NOOP("dd::servocan", "Input IO"), "", 1.0, 0, true},
     {ReadType::OutputIo, "output-io", QT_TRANSLATE_NOOP("dd::servocan", "Output IO"), "", 1.0, 0, true},
@@ -34,14 +40,19 @@ constexpr std::array<ReadTypeInfo, 15> kReadTypes = {{
 }};
 
 constexpr std::array<ReadType, 15> kReadTypeList = {
-    ReadType::Parameter,     ReadType::Speed,         ReadType::Position,
-    ReadType::Temperature,   ReadType::PositionCommand, ReadType::PositionError,
-    ReadType::Torque,        ReadType::OutputCurrent, ReadType::SpeedCommand,
-    ReadType::TorqueCommand, ReadType::RotorPosition, ReadType::InputIo,
-    ReadType::OutputIo,      ReadType::AlarmCode,     ReadType::BusVoltage};
+    ReadType::Parameter,       ReadType::Speed,         ReadType::Position,      ReadType::Temperature,
+    ReadType::PositionCommand, ReadType::PositionError, ReadType::Torque,        ReadType::OutputCurrent,
+    ReadType::SpeedCommand,    ReadType::TorqueCommand, ReadType::RotorPosition, ReadType::InputIo,
+    ReadType::OutputIo,        ReadType::AlarmCode,     ReadType::BusVoltage};
 
-quint8 byteOf(Command c) { return static_cast<quint8>(c); }
-quint8 byteOf(ReadType t) { return static_cast<quint8>(t); }
+quint8 byteOf(Command c)
+{
+    return static_cast<quint8>(c);
+}
+quint8 byteOf(ReadType t)
+{
+    return static_cast<quint8>(t);
+}
 
 CanFrameData makeFrame(quint8 station, Command command, const std::array<quint8, 5> &payload)
 {
@@ -83,7 +94,10 @@ QString hexByte(quint32 v, int width = 2)
 
 // ---- Commands / read types ---------------------------------------------------------------
 
-const std::array<Command, 14> &allCommands() { return kCommands; }
+const std::array<Command, 14> &allCommands()
+{
+    return kCommands;
+}
 
 std::optional<Command> commandFromByte(quint8 b)
 {
@@ -98,12 +112,9 @@ Direction commandDirection(Command c)
 {
     switch (c) {
     case Command::Alarm:
-    case Command::Heartbeat:
-        return Direction::DriveToHost;
-    case Command::Read:
-        return Direction::Both;
-    default:
-        return Direction::HostToDrive;
+    case Command::Heartbeat: return Direction::DriveToHost;
+    case Command::Read: return Direction::Both;
+    default: return Direction::HostToDrive;
     }
 }
 
@@ -128,7 +139,10 @@ QString commandName(Command c)
     return QStringLiteral("unknown");
 }
 
-const std::array<ReadType, 15> &allReadTypes() { return kReadTypeList; }
+const std::array<ReadType, 15> &allReadTypes()
+{
+    return kReadTypeList;
+}
 
 std::optional<ReadType> readTypeFromByte(quint8 b)
 {
@@ -149,7 +163,10 @@ ReadTypeInfo readTypeInfo(ReadType t)
     return kReadTypes[0];
 }
 
-double scaledValue(ReadType t, qint32 raw) { return raw * readTypeInfo(t).scale; }
+double scaledValue(ReadType t, qint32 raw)
+{
+    return raw * readTypeInfo(t).scale;
+}
 
 // ---- Encoders ----------------------------------------------------------------------------
 
@@ -158,29 +175,62 @@ CanFrameData frame(quint8 station, Command command, quint8 b2, qint32 value)
     return makeFrame(station, command, int32Payload(b2, value));
 }
 
-CanFrameData keepAlive(quint8 station) { return frame(station, Command::KeepAlive); }
+CanFrameData keepAlive(quint8 station)
+{
+    return frame(station, Command::KeepAlive);
+}
 
 CanFrameData readParameter(quint8 station, quint8 index)
 {
     return makeFrame(station, Command::Read, parameterPayload(byteOf(ReadType::Parameter), index, 0));
 }
 
-CanFrameData read(quint8 station, ReadType type) { return frame(station, Command::Read, byteOf(type)); }
+CanFrameData read(quint8 station, ReadType type)
+{
+    return frame(station, Command::Read, byteOf(type));
+}
 
 CanFrameData writeParameter(quint8 station, quint8 index, qint16 value)
 {
     return makeFrame(station, Command::Write, parameterPayload(kWriteParameter, index, value));
 }
 
-CanFrameData runSpeed(quint8 station, qint32 speed) { return frame(station, Command::RunSpeed, 0, speed); }
-CanFrameData moveRelative(quint8 station, qint32 distance) { return frame(station, Command::MoveRelative, 0, distance); }
-CanFrameData moveAbsolute(quint8 station, qint32 target) { return frame(station, Command::MoveAbsolute, 0, target); }
-CanFrameData positioningSpeed(quint8 station, qint32 speed) { return frame(station, Command::PositioningSpeed, 0, speed); }
-CanFrameData enable(quint8 station, bool on) { return frame(station, Command::Enable, on ? 1 : 0); }
-CanFrameData stop(quint8 station) { return frame(station, Command::Stop); }
-CanFrameData stopAndDisable(quint8 station) { return frame(station, Command::StopAndDisable); }
-CanFrameData setPosition(quint8 station, qint32 position) { return frame(station, Command::SetPosition, 0, position); }
-CanFrameData clearAlarm(quint8 station) { return frame(station, Command::ClearAlarm); }
+CanFrameData runSpeed(quint8 station, qint32 speed)
+{
+    return frame(station, Command::RunSpeed, 0, speed);
+}
+CanFrameData moveRelative(quint8 station, qint32 distance)
+{
+    return frame(station, Command::MoveRelative, 0, distance);
+}
+CanFrameData moveAbsolute(quint8 station, qint32 target)
+{
+    return frame(station, Command::MoveAbsolute, 0, target);
+}
+CanFrameData positioningSpeed(quint8 station, qint32 speed)
+{
+    return frame(station, Command::PositioningSpeed, 0, speed);
+}
+CanFrameData enable(quint8 station, bool on)
+{
+    return frame(station, Command::Enable, on ? 1 : 0);
+}
+CanFrameData stop(quint8 station)
+{
+    return frame(station, Command::Stop);
+}
+CanFrameData stopAndDisable(quint8 station)
+{
+    return frame(station, Command::StopAndDisable);
+}
+CanFrameData setPosition(quint8 station, qint32 position)
+{
+    return frame(station, Command::SetPosition, 0, position);
+}
+CanFrameData clearAlarm(quint8 station)
+{
+    return frame(station, Command::ClearAlarm);
+}
 
 CanFrameData heartbeat(quint8 station, quint8 state, qint32 position)
 {
@@ -223,8 +273,8 @@ Decoded<Message> decode(const CanFrameData &f)
 {
     using D = Decoded<Message>;
     if (f.extended)
-        return D::failure(QStringLiteral("servo-can: extended (29-bit) ID %1 not used by this protocol")
-                              .arg(hexByte(f.id, 8)));
+        return D::failure(
+            QStringLiteral("servo-can: extended (29-bit) ID %1 not used by this protocol").arg(hexByte(f.id, 8)));
     if (f.id < kIdBase || f.id > kMaxId)
         return D::failure(QStringLiteral("servo-can: ID %1 outside 0x064..0x0C7").arg(hexByte(f.id, 3)));
     if (f.data.size() != kFrameLength)
@@ -237,7 +287,9 @@ Decoded<Message> decode(const CanFrameData &f)
     const auto idStation = static_cast<quint8>(f.id - kIdBase);
     if (m.raw[0] != idStation)
         return D::failure(QStringLiteral("servo-can: station byte %1 does not match ID %2 (station %3)")
-                              .arg(m.raw[0]).arg(hexByte(f.id, 3)).arg(idStation));
+                              .arg(m.raw[0])
+                              .arg(hexByte(f.id, 3))
+                              .arg(idStation));
     const std::optional<Command> cmd = commandFromByte(m.raw[1]);
     if (!cmd)
         return D::failure(QStringLiteral("servo-can: unknown command %1").arg(hexByte(m.raw[1])));
@@ -252,7 +304,8 @@ Decoded<Message> decode(const CanFrameData &f)
     if (m.command == Command::Read && !readTypeFromByte(m.b2))
         return D::failure(QStringLiteral("servo-can: unknown read type %1").arg(hexByte(m.b2)));
     if (m.command == Command::Write && m.b2 != kWriteParameter)
-        return D::failure(QStringLiteral("servo-can: reserved write type %1 (only 0x01 is defined)").arg(hexByte(m.b2)));
+        return D::failure(
+            QStringLiteral("servo-can: reserved write type %1 (only 0x01 is defined)").arg(hexByte(m.b2)));
 
     if (m.isParameterFrame()) {
         if (!isValidParameterIndex(m.raw[3]))

@@ -17,17 +17,17 @@
 namespace dd::servocan {
 
 // ---- Constants ---------------------------------------------------------------------------
-constexpr quint32 kIdBase = 0x64;          // frame ID = kIdBase + station
-constexpr quint8 kMaxStation = 99;         // stations 0..99
+constexpr quint32 kIdBase = 0x64;  // frame ID = kIdBase + station
+constexpr quint8 kMaxStation = 99; // stations 0..99
 constexpr int kStationCount = 100;
 constexpr quint32 kMaxId = kIdBase + kMaxStation; // 0xC7; other IDs are reserved by the drive
-constexpr quint8 kMaxParameterIndex = 219; // parameters 0..219, int16
+constexpr quint8 kMaxParameterIndex = 219;        // parameters 0..219, int16
 constexpr int kParameterCount = 220;
-constexpr int kFrameLength = 8;            // DLC, always
-constexpr quint8 kReservedByte = 0xFF;     // b7 ("reserved checksum, fill 0xFF")
-constexpr quint8 kWriteParameter = 0x01;   // b2 of a 0x15 write; other values are reserved
-constexpr quint8 kHeartbeatIdle = 0x88;    // heartbeat state byte when idle
-constexpr int kBitrate = 1000000;          // fixed by the drive
+constexpr int kFrameLength = 8;          // DLC, always
+constexpr quint8 kReservedByte = 0xFF;   // b7 ("reserved checksum, fill 0xFF")
+constexpr quint8 kWriteParameter = 0x01; // b2 of a 0x15 write; other values are reserved
+constexpr quint8 kHeartbeatIdle = 0x88;  // heartbeat state byte when idle
+constexpr int kBitrate = 1000000;        // fixed by the drive
 
 constexpr std::chrono::milliseconds kKeepAlivePeriod{100}; // host -> drive 0x08
 constexpr std::chrono::milliseconds kHeartbeatPeriod{30};  // drive -> host 0x10
@@ -35,9 +35,9 @@ constexpr std::chrono::milliseconds kWatchdog{2000};       // drive stops withou
 constexpr std::chrono::milliseconds kAlarmRepeat{2000};    // 0x05 repeated while alarmed
 
 // Drive parameters named by the seed.
-constexpr quint8 kParamControlMode = 4;   // 8 = internal run control (needed for CAN control)
-constexpr quint8 kParamCommMode = 74;     // 1 = CAN communication mode
-constexpr quint8 kParamStation = 75;      // station number
+constexpr quint8 kParamControlMode = 4; // 8 = internal run control (needed for CAN control)
+constexpr quint8 kParamCommMode = 74;   // 1 = CAN communication mode
+constexpr quint8 kParamStation = 75;    // station number
 
 // ---- Commands (b1) -----------------------------------------------------------------------
 enum class Command : quint8 {
@@ -90,12 +90,12 @@ enum class ReadType : quint8 {
 struct ReadTypeInfo
 {
     ReadType type;
-    const char *key;   // stable identifier, e.g. "output-current" (CLI, files)
-    const char *name;  // e.g. "Output current"
-    const char *unit;  // e.g. "A"; empty when dimensionless
-    double scale;      // engineering value = raw * scale
-    int decimals;      // decimals to show
-    bool bitField;     // IO states: show as hex / bits, not as a number
+    const char *key;  // stable identifier, e.g. "output-current" (CLI, files)
+    const char *name; // e.g. "Output current"
+    const char *unit; // e.g. "A"; empty when dimensionless
+    double scale;     // engineering value = raw * scale
+    int decimals;     // decimals to show
+    bool bitField;    // IO states: show as hex / bits, not as a number
 };
 
 const std::array<ReadType, 15> &allReadTypes();
@@ -104,10 +104,22 @@ ReadTypeInfo readTypeInfo(ReadType t);
 double scaledValue(ReadType t, qint32 raw); // raw * readTypeInfo(t).scale
 
 // ---- Small helpers -----------------------------------------------------------------------
-constexpr bool isValidStation(int station) { return station >= 0 && station <= kMaxStation; }
-constexpr bool isValidParameterIndex(int index) { return index >= 0 && index <= kMaxParameterIndex; }
-constexpr quint32 frameId(quint8 station) { return kIdBase + station; }
-constexpr bool isHeartbeatIdle(quint8 state) { return state == kHeartbeatIdle; }
+constexpr bool isValidStation(int station)
+{
+    return station >= 0 && station <= kMaxStation;
+}
+constexpr bool isValidParameterIndex(int index)
+{
+    return index >= 0 && index <= kMaxParameterIndex;
+}
+constexpr quint32 frameId(quint8 station)
+{
+    return kIdBase + station;
+}
+constexpr bool isHeartbeatIdle(quint8 state)
+{
+    return state == kHeartbeatIdle;
+}
 
 // ---- Encoders ----------------------------------------------------------------------------
 // Every encoder returns ID 0x64 + station, standard format, 8 data bytes, b7 = 0xFF.
@@ -143,18 +155,18 @@ struct Message
 {
     quint8 station = 0;
     Command command = Command::KeepAlive;
-    quint8 b2 = 0;          // Read: type; Write: sub-code; Heartbeat: state; Enable: on/off;
-                            // Alarm: code low byte
-    quint8 paramIndex = 0;  // b3 of a parameter frame (Read 0xFA, Write 0x01); else 0
-    qint16 paramValue = 0;  // b5..b6 of a parameter frame; else 0
-    qint32 value = 0;       // b3..b6 as int32 LE (every frame)
+    quint8 b2 = 0;         // Read: type; Write: sub-code; Heartbeat: state; Enable: on/off;
+                           // Alarm: code low byte
+    quint8 paramIndex = 0; // b3 of a parameter frame (Read 0xFA, Write 0x01); else 0
+    qint16 paramValue = 0; // b5..b6 of a parameter frame; else 0
+    qint32 value = 0;      // b3..b6 as int32 LE (every frame)
     std::array<quint8, kFrameLength> raw{};
     // b7 is a "reserved checksum" the drive documents as always 0xFF and does not define
     // further. Decision: a frame with another b7 is accepted (a firmware that starts using
     // it must not make the drive disappear); this flag records the deviation for traces.
     bool reservedByteOk = true;
 
-    bool isParameterFrame() const; // Read with type 0xFA, or Write (sub 0x01)
+    bool isParameterFrame() const;            // Read with type 0xFA, or Write (sub 0x01)
     std::optional<ReadType> readType() const; // for Read frames
     quint16 alarmCode() const { return static_cast<quint16>(raw[2] | (raw[3] << 8)); }
     bool enableOn() const { return b2 != 0; }

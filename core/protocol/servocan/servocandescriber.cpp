@@ -13,12 +13,8 @@ QString ServoCanDescriber::describeCan(Origin origin, const CanFrameData &frame)
     const Message &m = *d.value;
     QString text;
     switch (m.command) {
-    case Command::Alarm:
-        text = m.alarmCode() ? tr("alarm %1").arg(m.alarmCode()) : tr("no alarm");
-        break;
-    case Command::KeepAlive:
-        text = tr("keep-alive");
-        break;
+    case Command::Alarm: text = m.alarmCode() ? tr("alarm %1").arg(m.alarmCode()) : tr("no alarm"); break;
+    case Command::KeepAlive: text = tr("keep-alive"); break;
     case Command::Heartbeat:
         text = m.heartbeatIdle() ? tr("heartbeat: idle, position %1").arg(m.value)
                                  : tr("heartbeat: running, position %1").arg(m.value);
@@ -46,36 +42,16 @@ QString ServoCanDescriber::describeCan(Origin origin, const CanFrameData &frame)
         text = tr("%1 = %2").arg(name, value);
         break;
     }
-    case Command::Write:
-        text = tr("write P%1 = %2").arg(m.paramIndex).arg(m.paramValue);
-        break;
-    case Command::RunSpeed:
-        text = m.value ? tr("run at %1 r/min").arg(m.value) : tr("run at 0 r/min (halt)");
-        break;
-    case Command::MoveRelative:
-        text = tr("move by %1").arg(m.value);
-        break;
-    case Command::MoveAbsolute:
-        text = tr("move to %1").arg(m.value);
-        break;
-    case Command::PositioningSpeed:
-        text = tr("positioning speed %1 r/min").arg(m.value);
-        break;
-    case Command::Enable:
-        text = m.enableOn() ? tr("servo on") : tr("servo off");
-        break;
-    case Command::Stop:
-        text = tr("stop");
-        break;
-    case Command::StopAndDisable:
-        text = tr("stop and disable");
-        break;
-    case Command::SetPosition:
-        text = tr("set position to %1").arg(m.value);
-        break;
-    case Command::ClearAlarm:
-        text = tr("clear alarm");
-        break;
+    case Command::Write: text = tr("write P%1 = %2").arg(m.paramIndex).arg(m.paramValue); break;
+    case Command::RunSpeed: text = m.value ? tr("run at %1 r/min").arg(m.value) : tr("run at 0 r/min (halt)"); break;
+    case Command::MoveRelative: text = tr("move by %1").arg(m.value); break;
+    case Command::MoveAbsolute: text = tr("move to %1").arg(m.value); break;
+    case Command::PositioningSpeed: text = tr("positioning speed %1 r/min").arg(m.value); break;
+    case Command::Enable: text = m.enableOn() ? tr("servo on") : tr("servo off"); break;
+    case Command::Stop: text = tr("stop"); break;
+    case Command::StopAndDisable: text = tr("stop and disable"); break;
+    case Command::SetPosition: text = tr("set position to %1").arg(m.value); break;
+    case Command::ClearAlarm: text = tr("clear alarm"); break;
     }
     return station(m.station) + text;
 }

@@ -13,7 +13,10 @@ namespace {
 constexpr quint16 MonitorLast = MonitorRegisterCount - 1;
 constexpr quint16 ParameterLastRegister = ParameterBaseRegister + ParameterCount - 1;
 
-bool inMonitorBlock(int first, int last) { return first >= 0 && last <= MonitorLast && first <= last; }
+bool inMonitorBlock(int first, int last)
+{
+    return first >= 0 && last <= MonitorLast && first <= last;
+}
 bool inParameterBlock(int first, int last)
 {
     return first >= ParameterBaseRegister && last <= ParameterLastRegister && first <= last;
@@ -37,7 +40,10 @@ qint64 floorDiv(qint64 a, qint64 b)
     return q;
 }
 
-QString hex4(quint32 v) { return QStringLiteral("0x%1").arg(v, 4, 16, QLatin1Char('0')); }
+QString hex4(quint32 v)
+{
+    return QStringLiteral("0x%1").arg(v, 4, 16, QLatin1Char('0'));
+}
 
 } // namespace
 
@@ -327,7 +333,8 @@ QString validateRequest(const modbusrtu::Request &r)
             return QStringLiteral("a read to the broadcast address gets no reply");
         if (!isReadableRange(r.start, r.count))
             return QStringLiteral("cannot read %1 registers at %2 (1..20 within 0x0000..0x0017 or 0x0064..0x009F)")
-                .arg(r.count).arg(hex4(r.start));
+                .arg(r.count)
+                .arg(hex4(r.start));
         return {};
     case WriteMultipleRegisters:
         if (r.values.size() != r.count)
@@ -339,13 +346,15 @@ QString validateRequest(const modbusrtu::Request &r)
         }
         if (!isWritableRange(r.start, r.count))
             return QStringLiteral("cannot write %1 registers at %2 (1..20 within 0x0064..0x009F)")
-                .arg(r.count).arg(hex4(r.start));
+                .arg(r.count)
+                .arg(hex4(r.start));
         return {};
     case WriteSingleRegister:
         if (r.values.size() != 1)
             return QStringLiteral("function 0x06 carries exactly one value");
         if (r.start != EeLegacyRegister)
-            return QStringLiteral("function 0x06 is only for EE operations at register 0x0000, not %1").arg(hex4(r.start));
+            return QStringLiteral("function 0x06 is only for EE operations at register 0x0000, not %1")
+                .arg(hex4(r.start));
         if (!eeOpFromCode(r.values.first()))
             return QStringLiteral("EE operation code %1 is not 1..5").arg(r.values.first());
         return {};

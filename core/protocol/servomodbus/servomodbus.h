@@ -18,8 +18,8 @@ namespace dd::servomodbus {
 constexpr const char *TranslationContext = "dd::servomodbus";
 QString translated(const char *sourceText); // QCoreApplication::translate in that context
 
-constexpr int MaxRegistersPerRequest = 20;   // the drive's limit for 0x03 and 0x10
-constexpr int ParameterCount = 60;           // PA0..PA59
+constexpr int MaxRegistersPerRequest = 20; // the drive's limit for 0x03 and 0x10
+constexpr int ParameterCount = 60;         // PA0..PA59
 constexpr quint16 ParameterBaseRegister = 0x0064;
 constexpr quint16 MonitorRegisterCount = 24; // 0x0000..0x0017
 constexpr int AddressParameter = 51;         // PA51 = drive address
@@ -33,12 +33,18 @@ struct MonitorRegister
     const char *meaning;  // English, QT_TRANSLATE_NOOP; empty where nobody documents it
     int highRegister;     // for the low part of a position pair: its high part; else -1
 };
-const QList<MonitorRegister> &monitorRegisters();   // 0x00..0x17 in order
+const QList<MonitorRegister> &monitorRegisters();    // 0x00..0x17 in order
 const MonitorRegister *monitorRegister(quint16 reg); // nullptr outside 0x00..0x17
 
 // ---- PA parameters ----
-constexpr bool isParameterIndex(int n) { return n >= 0 && n < ParameterCount; }
-constexpr quint16 parameterRegister(int n) { return static_cast<quint16>(ParameterBaseRegister + n); }
+constexpr bool isParameterIndex(int n)
+{
+    return n >= 0 && n < ParameterCount;
+}
+constexpr quint16 parameterRegister(int n)
+{
+    return static_cast<quint16>(ParameterBaseRegister + n);
+}
 int parameterIndex(quint16 reg); // -1 when reg is not a PA register
 
 // Whole request ranges the drive accepts.
@@ -66,8 +72,7 @@ struct RegisterWrite
 // them; on a further tie the earlier requests are the longer ones (PA0..PA59 -> 20/20/20).
 // A request never spans the hole between the monitor block and the PA block. Registers the
 // drive cannot read are left out of the plan.
-QList<RegisterRange> planRegisterReads(const QList<quint16> &registers,
-                                       int maxPerRequest = MaxRegistersPerRequest);
+QList<RegisterRange> planRegisterReads(const QList<quint16> &registers, int maxPerRequest = MaxRegistersPerRequest);
 // The same over PA indices; indices outside 0..59 are left out.
 QList<RegisterRange> planReads(const QList<int> &paIndices, int maxPerRequest = MaxRegistersPerRequest);
 // 0x10 writes of PA values (index -> raw 16-bit value): runs of consecutive indices, each
@@ -79,8 +84,8 @@ QList<RegisterWrite> planWrites(const QMap<int, quint16> &paValues, int maxPerRe
 enum class EeOp : quint16 { Set = 1, Read = 2, Backup = 3, Restore = 4, Defaults = 5 };
 const QList<EeOp> &allEeOps();
 std::optional<EeOp> eeOpFromCode(quint16 code);
-const char *eeOpMnemonic(EeOp op); // "EE-Set", "EE-rd", "EE-bA", "EE-rS", "EE-dEF"
-const char *eeOpMeaning(EeOp op);  // English, QT_TRANSLATE_NOOP in TranslationContext
+const char *eeOpMnemonic(EeOp op);   // "EE-Set", "EE-rd", "EE-bA", "EE-rS", "EE-dEF"
+const char *eeOpMeaning(EeOp op);    // English, QT_TRANSLATE_NOOP in TranslationContext
 bool eeOpNeedsConfirmation(EeOp op); // Read, Restore, Defaults overwrite the working set
 
 enum class EeFormat {

@@ -8,7 +8,7 @@ namespace dd {
 
 namespace {
 
-constexpr int kMaxListedValues = 4;   // a 20-register reply lists the first four
+constexpr int kMaxListedValues = 4; // a 20-register reply lists the first four
 
 QString hex16(quint16 v)
 {
@@ -59,9 +59,7 @@ QString ServoModbusDescriber::describeRequest(const QByteArray &bytes)
     m_request = r;
     QString text;
     switch (r.function) {
-    case ReadHoldingRegisters:
-        text = tr("read %1").arg(registerSpan(r.start, r.count));
-        break;
+    case ReadHoldingRegisters: text = tr("read %1").arg(registerSpan(r.start, r.count)); break;
     case WriteSingleRegister:
         if (r.start == servomodbus::EeLegacyRegister)
             text = tr("EE operation %1").arg(eeName(r.values.value(0)));
@@ -80,8 +78,7 @@ QString ServoModbusDescriber::describeRequest(const QByteArray &bytes)
             text = tr("write %1 = %2").arg(registerSpan(r.start, r.count), values.join(QStringLiteral(", ")));
         }
         break;
-    default:
-        return failed({});
+    default: return failed({});
     }
     if (r.address == BroadcastAddress)
         return tr("all (broadcast): %1").arg(text);
@@ -99,8 +96,7 @@ QString ServoModbusDescriber::describeReply(const QByteArray &bytes) const
         return failed(d.error);
     const Reply &r = *d.value;
     if (r.isException)
-        return station(r.address)
-               + tr("exception %1: %2").arg(r.exceptionCode).arg(exceptionCodeName(r.exceptionCode));
+        return station(r.address) + tr("exception %1: %2").arg(r.exceptionCode).arg(exceptionCodeName(r.exceptionCode));
     QString text;
     switch (r.function) {
     case ReadHoldingRegisters: {
@@ -126,8 +122,7 @@ QString ServoModbusDescriber::describeReply(const QByteArray &bytes) const
         else
             text = tr("written %1").arg(registerSpan(r.start, r.count));
         break;
-    default:
-        return failed({});
+    default: return failed({});
     }
     return station(r.address) + text;
 }

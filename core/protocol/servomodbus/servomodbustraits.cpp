@@ -11,7 +11,11 @@ const FamilyTraits &traits()
     static const FamilyTraits t{
         Family::ServoModbus,
         QT_TRANSLATE_NOOP("dd::FamilyTraits", "Servo (Modbus)"),
-        {{QStringLiteral("rtu"), QT_TRANSLATE_NOOP("dd::FamilyTraits", "RTU (binary)"), LinkKind::Serial, {1, 247}, true}},
+        {{QStringLiteral("rtu"),
+          QT_TRANSLATE_NOOP("dd::FamilyTraits", "RTU (binary)"),
+          LinkKind::Serial,
+          {1, 247},
+          true}},
         19200,
         {9600, 19200, 38400, 57600, 115200},
         0,

@@ -15,7 +15,10 @@ int hexValue(char c)
     return -1;
 }
 
-Decoded<Frame> fail(const QString &why) { return Decoded<Frame>::failure(QStringLiteral("ASCII: ") + why); }
+Decoded<Frame> fail(const QString &why)
+{
+    return Decoded<Frame>::failure(QStringLiteral("ASCII: ") + why);
+}
 
 } // namespace
 

@@ -59,8 +59,9 @@ std::optional<Frame> AsciiStreamParser::takeFrame()
             }
             const bool crBeforeLf = c == '\r' && (i + 1 == buffer.size() || buffer.at(i + 1) == '\n');
             if (!isHexDigit(c) && !crBeforeLf) {
-                reject(i + 1, QStringLiteral("ASCII: non-hex character 0x%1 in frame")
-                                  .arg(static_cast<quint8>(c), 2, 16, QLatin1Char('0')));
+                reject(i + 1,
+                       QStringLiteral("ASCII: non-hex character 0x%1 in frame")
+                           .arg(static_cast<quint8>(c), 2, 16, QLatin1Char('0')));
                 broken = true;
                 break;
             }
@@ -96,4 +97,3 @@ QList<Frame> AsciiStreamParser::feed(const QByteArray &bytes)
 }
 
 } // namespace dd::shuoke
-

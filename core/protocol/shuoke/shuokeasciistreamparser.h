@@ -40,7 +40,10 @@ public:
 
     qsizetype bufferedSize() const { return m_buffer.size(); }
     qsizetype capacity() const { return m_buffer.capacity(); }
-    quint64 discardedBytes() const { return m_buffer.discardedBytes(); } // bytes outside any frame, or of rejected frames
+    quint64 discardedBytes() const
+    {
+        return m_buffer.discardedBytes();
+    } // bytes outside any frame, or of rejected frames
     quint64 rejectedFrames() const { return m_rejected; }
     QString lastError() const { return m_lastError; }
     const AsciiOptions &options() const { return m_options; }

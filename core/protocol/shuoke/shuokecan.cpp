@@ -3,7 +3,10 @@
 namespace dd::shuoke {
 
 namespace {
-Decoded<Frame> fail(const QString &why) { return Decoded<Frame>::failure(QStringLiteral("CAN: ") + why); }
+Decoded<Frame> fail(const QString &why)
+{
+    return Decoded<Frame>::failure(QStringLiteral("CAN: ") + why);
+}
 } // namespace
 
 Decoded<CanFrameData> encodeCan(const Frame &frame, const CanOptions &options)
@@ -38,7 +41,8 @@ Decoded<Frame> decodeCan(const CanFrameData &can)
     const int len = static_cast<quint8>(d.at(2));
     if (can.extended) {
         if (can.id != address && can.id != 0)
-            return fail(QStringLiteral("extended id 0x%1 is neither the address %2 nor 0").arg(can.id, 0, 16).arg(address));
+            return fail(
+                QStringLiteral("extended id 0x%1 is neither the address %2 nor 0").arg(can.id, 0, 16).arg(address));
     } else if (can.id != address) {
         return fail(QStringLiteral("id 0x%1 does not match the address byte %2").arg(can.id, 0, 16).arg(address));
     }

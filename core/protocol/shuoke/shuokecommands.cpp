@@ -8,8 +8,14 @@ namespace dd::shuoke {
 
 namespace {
 
-constexpr quint16 L(int n) { return static_cast<quint16>(1u << n); }
-constexpr quint16 L(int a, int b) { return static_cast<quint16>(L(a) | L(b)); }
+constexpr quint16 L(int n)
+{
+    return static_cast<quint16>(1u << n);
+}
+constexpr quint16 L(int a, int b)
+{
+    return static_cast<quint16>(L(a) | L(b));
+}
 constexpr quint16 LRange(int from, int to)
 {
     quint16 m = 0;
@@ -18,9 +24,8 @@ constexpr quint16 LRange(int from, int to)
     return m;
 }
 
-CommandInfo entry(quint8 code, const char *name, quint16 request, quint16 reply,
-                  CommandFlags flags = NoFlags, quint8 readCommand = 0,
-                  PlcAccess plc = PlcAccess::None, quint8 registers = 0, quint8 altReply = 0)
+CommandInfo entry(quint8 code, const char *name, quint16 request, quint16 reply, CommandFlags flags = NoFlags,
+                  quint8 readCommand = 0, PlcAccess plc = PlcAccess::None, quint8 registers = 0, quint8 altReply = 0)
 {
     CommandInfo c;
     c.code = code;
@@ -64,9 +69,11 @@ QList<CommandInfo> buildTable()
         entry(0x2F, QT_TRANSLATE_NOOP("dd::shuoke", "Set homing speed"), L(4), L(0), NotM4505, 0x30, W, 2),
         entry(0x30, QT_TRANSLATE_NOOP("dd::shuoke", "Get homing speed"), L(0), L(4), NotM4505, 0, R, 2),
         entry(0x31, QT_TRANSLATE_NOOP("dd::shuoke", "Move relative (signed pulses)"), L(4), L(0), NoFlags, 0, W, 2),
-        entry(0x32, QT_TRANSLATE_NOOP("dd::shuoke", "Move relative (direction + 24-bit pulses)"), L(4), L(0), NoFlags, 0, W, 2),
+        entry(0x32, QT_TRANSLATE_NOOP("dd::shuoke", "Move relative (direction + 24-bit pulses)"), L(4), L(0), NoFlags,
+              0, W, 2),
         entry(0x33, QT_TRANSLATE_NOOP("dd::shuoke", "Run at constant speed (signed)"), L(4), L(0), NoFlags, 0, W, 2),
-        entry(0x34, QT_TRANSLATE_NOOP("dd::shuoke", "Run at constant speed (direction + 24-bit)"), L(4), L(0), NoFlags, 0, W, 2),
+        entry(0x34, QT_TRANSLATE_NOOP("dd::shuoke", "Run at constant speed (direction + 24-bit)"), L(4), L(0), NoFlags,
+              0, W, 2),
         entry(0x35, QT_TRANSLATE_NOOP("dd::shuoke", "Change speed while running"), L(4), L(0), NotM4505, 0, W, 2),
         entry(0x36, QT_TRANSLATE_NOOP("dd::shuoke", "Query speed"), L(0), L(4), NoFlags, 0, R, 2),
         entry(0x37, QT_TRANSLATE_NOOP("dd::shuoke", "Query absolute position"), L(0), L(4), NoFlags, 0, R, 2),
@@ -95,29 +102,37 @@ QList<CommandInfo> buildTable()
               CommandFlags(M4505SOnly) | WriteOnly),
         // The seed marks 0x4A..0x4D "M4505S only", but it also documents CAN for the
         // closed-loop M6505, which needs them: allowed for every model but the M4505.
-        entry(0x4A, QT_TRANSLATE_NOOP("dd::shuoke", "CAN frame format"), L(1), L(1), CommandFlags(NotM4505) | WriteOnly),
-        entry(0x4B, QT_TRANSLATE_NOOP("dd::shuoke", "CAN bitrate code"), L(1), L(1), CommandFlags(NotM4505) | WriteOnly),
-        entry(0x4C, QT_TRANSLATE_NOOP("dd::shuoke", "Serial to CAN test echo"), L(5), L(5), CommandFlags(NotM4505) | SerialOnly),
-        entry(0x4D, QT_TRANSLATE_NOOP("dd::shuoke", "CAN to serial test echo"), L(5), L(5), CommandFlags(NotM4505) | CanOnly),
+        entry(0x4A, QT_TRANSLATE_NOOP("dd::shuoke", "CAN frame format"), L(1), L(1),
+              CommandFlags(NotM4505) | WriteOnly),
+        entry(0x4B, QT_TRANSLATE_NOOP("dd::shuoke", "CAN bitrate code"), L(1), L(1),
+              CommandFlags(NotM4505) | WriteOnly),
+        entry(0x4C, QT_TRANSLATE_NOOP("dd::shuoke", "Serial to CAN test echo"), L(5), L(5),
+              CommandFlags(NotM4505) | SerialOnly),
+        entry(0x4D, QT_TRANSLATE_NOOP("dd::shuoke", "CAN to serial test echo"), L(5), L(5),
+              CommandFlags(NotM4505) | CanOnly),
         entry(0x4E, QT_TRANSLATE_NOOP("dd::shuoke", "Home (variant 2) / S-curve move (signed pulses)"), L(1, 4), L(0),
               NotM4505, 0, None, 0, 0x3E),
-        entry(0x4F, QT_TRANSLATE_NOOP("dd::shuoke", "Home (variant 3) / S-curve move (direction + 24-bit)"), L(1, 4), L(0),
-              NotM4505, 0, None, 0, 0x3E),
+        entry(0x4F, QT_TRANSLATE_NOOP("dd::shuoke", "Home (variant 3) / S-curve move (direction + 24-bit)"), L(1, 4),
+              L(0), NotM4505, 0, None, 0, 0x3E),
         entry(0x55, QT_TRANSLATE_NOOP("dd::shuoke", "Closed loop: move by feedback pulses"), L(4), L(0), CL, 0, W, 2),
         entry(0x56, QT_TRANSLATE_NOOP("dd::shuoke", "Closed loop: move by geared pulses"), L(4), L(0), CL, 0, W, 2),
         entry(0x57, QT_TRANSLATE_NOOP("dd::shuoke", "Closed loop: move to absolute position"), L(4), L(0), CL, 0, W, 2),
         entry(0x58, QT_TRANSLATE_NOOP("dd::shuoke", "Closed loop: read absolute position"), L(0), L(4), CL, 0, R, 2),
-        entry(0x59, QT_TRANSLATE_NOOP("dd::shuoke", "Closed loop: set or clear absolute position"), L(0, 4), L(0), CL, 0x58, W, 2),
+        entry(0x59, QT_TRANSLATE_NOOP("dd::shuoke", "Closed loop: set or clear absolute position"), L(0, 4), L(0), CL,
+              0x58, W, 2),
         entry(0x5A, QT_TRANSLATE_NOOP("dd::shuoke", "Closed loop: read relative position"), L(0), L(4), CL, 0, R, 2),
-        entry(0x5B, QT_TRANSLATE_NOOP("dd::shuoke", "Closed loop: set or clear relative position"), L(0, 4), L(0), CL, 0x5A, W, 2),
+        entry(0x5B, QT_TRANSLATE_NOOP("dd::shuoke", "Closed loop: set or clear relative position"), L(0, 4), L(0), CL,
+              0x5A, W, 2),
         entry(0x5C, QT_TRANSLATE_NOOP("dd::shuoke", "Encoder direction"), L(1), L(0), CL | WriteOnly, 0, W, 1),
         entry(0x5D, QT_TRANSLATE_NOOP("dd::shuoke", "Motion direction"), L(1), L(0), CL | WriteOnly, 0, W, 1),
-        entry(0x5E, QT_TRANSLATE_NOOP("dd::shuoke", "Accumulated-error correction"), L(1), L(0), CL | WriteOnly, 0, W, 1),
+        entry(0x5E, QT_TRANSLATE_NOOP("dd::shuoke", "Accumulated-error correction"), L(1), L(0), CL | WriteOnly, 0, W,
+              1),
         entry(0x5F, QT_TRANSLATE_NOOP("dd::shuoke", "Set gear numerator"), L(4), L(0), CL, 0x60, W, 2),
         entry(0x60, QT_TRANSLATE_NOOP("dd::shuoke", "Get gear numerator"), L(0), L(4), CL, 0, R, 2),
         entry(0x61, QT_TRANSLATE_NOOP("dd::shuoke", "Set gear denominator"), L(4), L(0), CL, 0x62, W, 2),
         entry(0x62, QT_TRANSLATE_NOOP("dd::shuoke", "Get gear denominator"), L(0), L(4), CL, 0, R, 2),
-        entry(0x65, QT_TRANSLATE_NOOP("dd::shuoke", "Encoder A/B error tolerance"), L(4), L(0), CL | WriteOnly, 0, W, 2),
+        entry(0x65, QT_TRANSLATE_NOOP("dd::shuoke", "Encoder A/B error tolerance"), L(4), L(0), CL | WriteOnly, 0, W,
+              2),
         entry(0x66, QT_TRANSLATE_NOOP("dd::shuoke", "Maximum pulses without encoder signal"), L(4), L(0),
               CL | WriteOnly, 0, W, 2),
     };
@@ -133,8 +148,14 @@ int highestBit(quint16 mask)
 
 } // namespace
 
-int CommandInfo::maxRequestLength() const { return highestBit(requestLengths); }
-int CommandInfo::maxReplyLength() const { return highestBit(replyLengths); }
+int CommandInfo::maxRequestLength() const
+{
+    return highestBit(requestLengths);
+}
+int CommandInfo::maxReplyLength() const
+{
+    return highestBit(replyLengths);
+}
 
 QString modelName(Model model)
 {
@@ -173,8 +194,8 @@ bool isSupportedBy(quint8 code, Model model, int requestLength)
     if (!c)
         return false;
     if (code == CmdHomeOrSCurveInt32 || code == CmdHomeOrSCurveDirection24) {
-        const bool homing = model != Model::M4505;        // 1 data byte
-        const bool sCurve = model == Model::M4505S;       // 4 data bytes
+        const bool homing = model != Model::M4505;  // 1 data byte
+        const bool sCurve = model == Model::M4505S; // 4 data bytes
         if (requestLength == 1)
             return homing;
         if (requestLength == 4)
@@ -260,7 +281,7 @@ QString failureDescription(quint8 code)
 namespace {
 constexpr int kBaudRates[] = {300, 600, 1200, 2400, 4800, 9600, 19200, 38400, 57600};
 constexpr int kCanBitrates[] = {1000000, 900000, 800000, 750000, 600000, 500000, 400000, 250000, 200000,
-                                150000, 125000, 100000, 80000, 50000, 25000, 20000, 10000, 5000};
+                                150000,  125000, 100000, 80000,  50000,  25000,  20000,  10000,  5000};
 } // namespace
 
 int baudRateForCode(int code)
@@ -276,7 +297,10 @@ int baudCodeForRate(int baud)
     return 0;
 }
 
-bool isUsableBaudCode(int code) { return code >= kMinBaudCode && code <= kMaxBaudCode; }
+bool isUsableBaudCode(int code)
+{
+    return code >= kMinBaudCode && code <= kMaxBaudCode;
+}
 
 int canBitrateForCode(int code)
 {

@@ -21,11 +21,11 @@ enum CommandFlag : quint16 {
     NotM4505 = 0x0002,         // M6505 and M4505S only
     M6505Only = 0x0004,
     M4505SOnly = 0x0008,
-    WriteOnly = 0x0010,        // a setting no command reads back
-    SerialOnly = 0x0020,       // the request is only accepted over RS232/RS485
-    CanOnly = 0x0040,          // the request is only accepted over CAN (0x4D)
-    ClosedLoop = 0x0080,       // closed-loop (encoder) command of the M6505
-    NoCrcCheck = 0x0100,       // the drive does not check this request's CRC (0x20)
+    WriteOnly = 0x0010,  // a setting no command reads back
+    SerialOnly = 0x0020, // the request is only accepted over RS232/RS485
+    CanOnly = 0x0040,    // the request is only accepted over CAN (0x4D)
+    ClosedLoop = 0x0080, // closed-loop (encoder) command of the M6505
+    NoCrcCheck = 0x0100, // the drive does not check this request's CRC (0x20)
 };
 Q_DECLARE_FLAGS(CommandFlags, CommandFlag)
 
@@ -35,14 +35,14 @@ enum class PlcAccess : quint8 { None, Read, Write };
 struct CommandInfo
 {
     quint8 code = 0;
-    const char *name = nullptr;     // English, marked QT_TRANSLATE_NOOP("dd::shuoke", ...)
-    quint16 requestLengths = 0;     // bit n set: a request with n data bytes is valid
-    quint16 replyLengths = 0;       // bit n set: a success reply with n data bytes is valid
+    const char *name = nullptr;       // English, marked QT_TRANSLATE_NOOP("dd::shuoke", ...)
+    quint16 requestLengths = 0;       // bit n set: a request with n data bytes is valid
+    quint16 replyLengths = 0;         // bit n set: a success reply with n data bytes is valid
     quint8 replyCommands[2] = {0, 0}; // accepted reply command codes (0 = unused slot)
     CommandFlags flags;
-    quint8 readCommand = 0;         // the command that reads back what this one sets; 0 none
+    quint8 readCommand = 0; // the command that reads back what this one sets; 0 none
     PlcAccess plcAccess = PlcAccess::None;
-    quint8 plcRegisters = 0;        // register count of the PLC read / write
+    quint8 plcRegisters = 0; // register count of the PLC read / write
 
     bool allowsRequestLength(int n) const { return n >= 0 && n < 16 && (requestLengths >> n) & 1u; }
     bool allowsReplyLength(int n) const { return n >= 0 && n < 16 && (replyLengths >> n) & 1u; }
@@ -98,8 +98,8 @@ enum Command : quint8 {
     CmdCanBitrate = 0x4B,
     CmdSerialToCanEcho = 0x4C,
     CmdCanToSerialEcho = 0x4D,
-    CmdHomeOrSCurveInt32 = 0x4E,        // 1 byte: homing variant 2; 4 bytes: S-curve move
-    CmdHomeOrSCurveDirection24 = 0x4F,  // 1 byte: homing variant 3; 4 bytes: S-curve move
+    CmdHomeOrSCurveInt32 = 0x4E,       // 1 byte: homing variant 2; 4 bytes: S-curve move
+    CmdHomeOrSCurveDirection24 = 0x4F, // 1 byte: homing variant 3; 4 bytes: S-curve move
     CmdClosedLoopMove = 0x55,
     CmdClosedLoopGearedMove = 0x56,
     CmdClosedLoopMoveAbsolute = 0x57,
@@ -142,9 +142,18 @@ bool isKnownLayout(quint8 commandByte, int dataLength);
 enum class BroadcastAddress : quint8 { Zero = 0, AllOnes = 255 };
 constexpr quint8 kBroadcastZero = 0;
 constexpr quint8 kBroadcastAllOnes = 255;
-constexpr quint8 broadcastAddress(BroadcastAddress setting) { return static_cast<quint8>(setting); }
-constexpr bool isBroadcastAddress(quint8 address) { return address == kBroadcastZero || address == kBroadcastAllOnes; }
-constexpr bool isUnicastAddress(int address) { return address >= 1 && address <= 247; }
+constexpr quint8 broadcastAddress(BroadcastAddress setting)
+{
+    return static_cast<quint8>(setting);
+}
+constexpr bool isBroadcastAddress(quint8 address)
+{
+    return address == kBroadcastZero || address == kBroadcastAllOnes;
+}
+constexpr bool isUnicastAddress(int address)
+{
+    return address >= 1 && address <= 247;
+}
 
 // Whether a reply from `replyAddress` may answer `request`: any address answers a
 // broadcast (0 or 255), 0x22 may answer from the old or the new address.
@@ -173,15 +182,15 @@ QString failureDescription(quint8 code);
 constexpr int kMinBaudCode = 1;
 constexpr int kMaxBaudCode = 8;
 constexpr int kReservedBaudCode = 9;
-int baudRateForCode(int code);  // 0 when the code is not 1..9
-int baudCodeForRate(int baud);  // 0 when the rate has no code (57600 gives 9)
+int baudRateForCode(int code);   // 0 when the code is not 1..9
+int baudCodeForRate(int baud);   // 0 when the rate has no code (57600 gives 9)
 bool isUsableBaudCode(int code); // 1..8
 
 // CAN bitrate codes of 0x4B: 1=1 Mbit/s .. 18=5 kbit/s; default 12 (100 kbit/s).
 constexpr int kMinCanBitrateCode = 1;
 constexpr int kMaxCanBitrateCode = 18;
 constexpr int kDefaultCanBitrateCode = 12;
-int canBitrateForCode(int code);   // bit/s, 0 when the code is not 1..18
+int canBitrateForCode(int code);    // bit/s, 0 when the code is not 1..18
 int canBitrateCodeFor(int bitrate); // 0 when the bitrate has no code
 
 } // namespace dd::shuoke

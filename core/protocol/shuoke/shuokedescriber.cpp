@@ -31,9 +31,9 @@ ShuokeDescriber::ShuokeDescriber(const QString &framing, const QVariantMap &opti
     else if (f == QLatin1String("plc"))
         m_serialFraming = SerialFraming::Plc;
     m_bigEndian = options.value(QStringLiteral("shuoke.byteOrder")).toString().trimmed().toLower()
-                  == QLatin1String("big");
+        == QLatin1String("big");
     m_twosComplement = options.value(QStringLiteral("shuoke.checksum")).toString().trimmed().toLower()
-                       == QLatin1String("twos-complement");
+        == QLatin1String("twos-complement");
     m_plcBase = quint16(options.value(QStringLiteral("shuoke.plcBase"), 0).toUInt());
 }
 

@@ -15,8 +15,8 @@ namespace dd::shuoke {
 struct Frame
 {
     quint8 address = 0;
-    quint8 command = 0;     // 0x20..0x66; never carries the 0x80 failure bit
-    QByteArray data;        // the command's data bytes (0..7 for every known command)
+    quint8 command = 0; // 0x20..0x66; never carries the 0x80 failure bit
+    QByteArray data;    // the command's data bytes (0..7 for every known command)
     bool failure = false;
     quint8 failureCode = 0; // 0x01..0x05 (see failureCodeText); meaningful when failure
 

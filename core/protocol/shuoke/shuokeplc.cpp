@@ -7,7 +7,10 @@ namespace dd::shuoke {
 
 namespace {
 
-QString hex2(quint8 v) { return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0')); }
+QString hex2(quint8 v)
+{
+    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
+}
 
 template <typename T>
 Decoded<T> fail(const QString &why)
@@ -98,7 +101,8 @@ Decoded<QByteArray> plcReplyData(quint8 command, const QByteArray &registerBytes
         return fail<QByteArray>(QStringLiteral("command %1 is not a PLC read").arg(hex2(command)));
     const int n = info->maxReplyLength();
     if (registerBytes.size() < n)
-        return fail<QByteArray>(QStringLiteral("%1 register bytes hold no %2-byte reply").arg(registerBytes.size()).arg(n));
+        return fail<QByteArray>(
+            QStringLiteral("%1 register bytes hold no %2-byte reply").arg(registerBytes.size()).arg(n));
     return Decoded<QByteArray>::success(registerBytes.left(n));
 }
 
@@ -113,7 +117,8 @@ Decoded<Frame> decodePlcReply(const QByteArray &adu, const Frame &request, const
         return fail<Frame>(QStringLiteral("CRC mismatch"));
     const quint8 address = static_cast<quint8>(adu.at(0));
     if (!isReplyAddress(address, request))
-        return fail<Frame>(QStringLiteral("reply from address %1 to a request for %2").arg(address).arg(request.address));
+        return fail<Frame>(
+            QStringLiteral("reply from address %1 to a request for %2").arg(address).arg(request.address));
     const quint8 function = static_cast<quint8>(adu.at(1));
     const quint8 expected = layout.value->function;
     if (function == (expected | 0x80)) {
@@ -127,9 +132,11 @@ Decoded<Frame> decodePlcReply(const QByteArray &adu, const Frame &request, const
     if (expected == PlcReadRegisters) {
         const int byteCount = static_cast<quint8>(adu.at(2));
         if (byteCount != 2 * layout.value->registerCount)
-            return fail<Frame>(QStringLiteral("byte count %1, %2 expected").arg(byteCount).arg(2 * layout.value->registerCount));
+            return fail<Frame>(
+                QStringLiteral("byte count %1, %2 expected").arg(byteCount).arg(2 * layout.value->registerCount));
         if (adu.size() != 5 + byteCount)
-            return fail<Frame>(QStringLiteral("reply of %1 bytes for a byte count of %2").arg(adu.size()).arg(byteCount));
+            return fail<Frame>(
+                QStringLiteral("reply of %1 bytes for a byte count of %2").arg(adu.size()).arg(byteCount));
         const Decoded<QByteArray> data = plcReplyData(request.command, adu.mid(3, byteCount));
         if (!data.ok())
             return Decoded<Frame>::failure(data.error);
@@ -177,7 +184,8 @@ Decoded<Frame> decodePlcRequest(const QByteArray &adu, const PlcOptions &options
     }
     const int byteCount = static_cast<quint8>(adu.at(6));
     if (byteCount != 2 * count || adu.size() != 9 + byteCount)
-        return fail<Frame>(QStringLiteral("write request with byte count %1 in %2 bytes").arg(byteCount).arg(adu.size()));
+        return fail<Frame>(
+            QStringLiteral("write request with byte count %1 in %2 bytes").arg(byteCount).arg(adu.size()));
     return Decoded<Frame>::success(Frame::make(address, info->code, adu.mid(7, info->maxRequestLength())));
 }
 

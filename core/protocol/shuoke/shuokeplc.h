@@ -33,10 +33,10 @@ struct PlcOptions
 // What a Modbus client has to send for a request.
 struct PlcRequestLayout
 {
-    quint8 function = 0;        // PlcReadRegisters or PlcWriteRegisters
+    quint8 function = 0; // PlcReadRegisters or PlcWriteRegisters
     quint16 registerAddress = 0;
     quint16 registerCount = 0;
-    QByteArray values;          // write: 2 x registerCount bytes; read: empty
+    QByteArray values; // write: 2 x registerCount bytes; read: empty
 };
 
 Decoded<PlcRequestLayout> plcRequestLayout(const Frame &request, const PlcOptions &options = {});

@@ -28,7 +28,7 @@ struct RtuOptions
     bool skipHandshakeCrc = false;   // receive, drive side: 0x20 is taken without a CRC check
 };
 
-constexpr int kRtuOverhead = 5;     // addr, cmd, len, crc lo, crc hi
+constexpr int kRtuOverhead = 5; // addr, cmd, len, crc lo, crc hi
 constexpr int kRtuMinFrameSize = 5;
 constexpr int kFixedFrameSize = 10; // FixedLength layout
 constexpr int kFixedDataSize = 5;

@@ -26,7 +26,10 @@ quint32 decodeUnsigned(const char *p, int bytes, ByteOrder order)
     return value;
 }
 
-QString hex2(quint8 v) { return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0')); }
+QString hex2(quint8 v)
+{
+    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
+}
 
 QString checkFlag(const QByteArray &data, const char *what)
 {
@@ -36,9 +39,18 @@ QString checkFlag(const QByteArray &data, const char *what)
 
 } // namespace
 
-QByteArray encodeUInt32(quint32 value, ByteOrder order) { return encodeUnsigned(value, 4, order); }
-QByteArray encodeInt32(qint32 value, ByteOrder order) { return encodeUnsigned(static_cast<quint32>(value), 4, order); }
-QByteArray encodeUInt16(quint16 value, ByteOrder order) { return encodeUnsigned(value, 2, order); }
+QByteArray encodeUInt32(quint32 value, ByteOrder order)
+{
+    return encodeUnsigned(value, 4, order);
+}
+QByteArray encodeInt32(qint32 value, ByteOrder order)
+{
+    return encodeUnsigned(static_cast<quint32>(value), 4, order);
+}
+QByteArray encodeUInt16(quint16 value, ByteOrder order)
+{
+    return encodeUnsigned(value, 2, order);
+}
 
 std::optional<quint32> decodeUInt32(const QByteArray &data, ByteOrder order)
 {
@@ -90,7 +102,8 @@ QString validateRequestData(quint8 command, const QByteArray &data, ByteOrder or
     const int n = static_cast<int>(data.size());
     if (!info->allowsRequestLength(n))
         return QStringLiteral("command %1 (%2) does not take %3 data bytes")
-            .arg(hex2(command), QLatin1String(info->name)).arg(n);
+            .arg(hex2(command), QLatin1String(info->name))
+            .arg(n);
     if (n == 0)
         return QString();
 
@@ -105,7 +118,14 @@ QString validateRequestData(quint8 command, const QByteArray &data, ByteOrder or
             return QStringLiteral("baud code 9 (57600) is reserved by the drive");
         return isUsableBaudCode(code) ? QString() : QStringLiteral("baud code must be 1..8, got %1").arg(code);
     }
-    case 0x25: case 0x27: case 0x29: case 0x2B: case 0x2D: case 0x2F: case 0x35: case 0x44: {
+    case 0x25:
+    case 0x27:
+    case 0x29:
+    case 0x2B:
+    case 0x2D:
+    case 0x2F:
+    case 0x35:
+    case 0x44: {
         const quint32 v = *decodeUInt32(data, order);
         return isSpeedInRange(v) ? QString() : QStringLiteral("speed must be 0..100000, got %1").arg(v);
     }
@@ -119,28 +139,36 @@ QString validateRequestData(quint8 command, const QByteArray &data, ByteOrder or
             return QStringLiteral("direction byte must be 0 or 1");
         return isSignedSpeedInRange(*v) ? QString() : QStringLiteral("speed must be 0..100000, got %1").arg(qAbs(*v));
     }
-    case 0x32:
-        return decodeDirection24(data, order) ? QString() : QStringLiteral("direction byte must be 0 or 1");
-    case 0x31: case 0x55: case 0x56: case 0x57: {
+    case 0x32: return decodeDirection24(data, order) ? QString() : QStringLiteral("direction byte must be 0 or 1");
+    case 0x31:
+    case 0x55:
+    case 0x56:
+    case 0x57: {
         const qint32 v = *decodeInt32(data, order);
         return isPulseCountInRange(v) ? QString() : QStringLiteral("pulse count out of the 31-bit range");
     }
-    case 0x4E: case 0x4F:
+    case 0x4E:
+    case 0x4F:
         if (n == 1)
             return checkFlag(data, "homing direction");
         if (command == 0x4E)
-            return isPulseCountInRange(*decodeInt32(data, order)) ? QString()
-                                                                 : QStringLiteral("pulse count out of the 31-bit range");
+            return isPulseCountInRange(*decodeInt32(data, order))
+                ? QString()
+                : QStringLiteral("pulse count out of the 31-bit range");
         return decodeDirection24(data, order) ? QString() : QStringLiteral("direction byte must be 0 or 1");
-    case 0x3E:
-        return checkFlag(data, "homing direction");
-    case 0x48: case 0x49: case 0x4A: case 0x5C: case 0x5D: case 0x5E:
-        return checkFlag(data, "setting");
+    case 0x3E: return checkFlag(data, "homing direction");
+    case 0x48:
+    case 0x49:
+    case 0x4A:
+    case 0x5C:
+    case 0x5D:
+    case 0x5E: return checkFlag(data, "setting");
     case 0x4B: {
         const int code = static_cast<quint8>(data.at(0));
         return canBitrateForCode(code) ? QString() : QStringLiteral("CAN bitrate code must be 1..18, got %1").arg(code);
     }
-    case 0x40: case 0x41: {
+    case 0x40:
+    case 0x41: {
         const int index = static_cast<quint8>(data.at(0));
         return (index >= 1 && index <= 15) ? QString()
                                            : QStringLiteral("IO substitution index must be 1..15, got %1").arg(index);
@@ -154,8 +182,7 @@ QString validateRequestData(quint8 command, const QByteArray &data, ByteOrder or
         return isGearDenominatorInRange(v) ? QString()
                                            : QStringLiteral("gear denominator must be 1..65535, got %1").arg(v);
     }
-    default:
-        return QString();
+    default: return QString();
     }
 }
 

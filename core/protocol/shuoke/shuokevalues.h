@@ -39,13 +39,28 @@ std::optional<qint32> decodeDirection24(const QByteArray &data, ByteOrder order 
 // Speeds, start/stop speeds, accelerations, decelerations, speed step F: 0..100000
 // pulses/s; the drive answers 0x04 beyond that, so the tool validates before sending.
 constexpr qint64 kMaxSpeed = 100000;
-constexpr bool isSpeedInRange(qint64 v) { return v >= 0 && v <= kMaxSpeed; }
-constexpr bool isSignedSpeedInRange(qint64 v) { return v >= -kMaxSpeed && v <= kMaxSpeed; }
+constexpr bool isSpeedInRange(qint64 v)
+{
+    return v >= 0 && v <= kMaxSpeed;
+}
+constexpr bool isSignedSpeedInRange(qint64 v)
+{
+    return v >= -kMaxSpeed && v <= kMaxSpeed;
+}
 // Gear numerator / denominator: the drive uses 16 bits; the denominator must not be 0.
-constexpr bool isGearNumeratorInRange(qint64 v) { return v >= 0 && v <= 0xFFFF; }
-constexpr bool isGearDenominatorInRange(qint64 v) { return v >= 1 && v <= 0xFFFF; }
+constexpr bool isGearNumeratorInRange(qint64 v)
+{
+    return v >= 0 && v <= 0xFFFF;
+}
+constexpr bool isGearDenominatorInRange(qint64 v)
+{
+    return v >= 1 && v <= 0xFFFF;
+}
 // Signed pulse counts of 0x31, 0x4E, 0x55, 0x56 ("31-bit" magnitude: INT32_MIN excluded).
-constexpr bool isPulseCountInRange(qint64 v) { return v >= -0x7FFFFFFFLL && v <= 0x7FFFFFFFLL; }
+constexpr bool isPulseCountInRange(qint64 v)
+{
+    return v >= -0x7FFFFFFFLL && v <= 0x7FFFFFFFLL;
+}
 
 // Checks a request's data against the command table (length) and the value ranges
 // above (0x22 address 1..247, 0x24 baud code 1..8, 0x4B bitrate code 1..18, on/off
@@ -64,8 +79,8 @@ struct MotionStatus
 
     bool operator==(const MotionStatus &o) const
     {
-        return running == o.running && leftLimit == o.leftLimit && origin == o.origin
-            && rightLimit == o.rightLimit && enableInput == o.enableInput;
+        return running == o.running && leftLimit == o.leftLimit && origin == o.origin && rightLimit == o.rightLimit
+            && enableInput == o.enableInput;
     }
 };
 std::optional<MotionStatus> decodeMotionStatus(const QByteArray &data);

@@ -1,10 +1,10 @@
 #include "ui/panels/alarms/alarmspanel.h"
 
-#include "ui/common/displaytext.h"
+#include "core/common/csvfield.h"
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
 #include "core/drive/drivereply.h"
-#include "core/common/csvfield.h"
+#include "ui/common/displaytext.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -125,14 +125,15 @@ void AlarmsPanel::readAlarm()
     m_readOnce = true;
     m_read->setEnabled(false);
     QPointer<AlarmsPanel> self(this);
-    context().hub->run(context().connectionId, context().address, [](Drive &d) { return d.readAlarm(); },
-                       [self](const DriveResult &r) {
-                           if (!self)
-                               return;
-                           self->updateCapabilities();
-                           if (self->reportResult(r))
-                               self->onCode(r.status.alarmCode);
-                       });
+    context().hub->run(
+        context().connectionId, context().address, [](Drive &d) { return d.readAlarm(); },
+        [self](const DriveResult &r) {
+            if (!self)
+                return;
+            self->updateCapabilities();
+            if (self->reportResult(r))
+                self->onCode(r.status.alarmCode);
+        });
 }
 
 void AlarmsPanel::clearAlarm()
@@ -141,14 +142,15 @@ void AlarmsPanel::clearAlarm()
         return;
     m_clear->setEnabled(false);
     QPointer<AlarmsPanel> self(this);
-    context().hub->run(context().connectionId, context().address, [](Drive &d) { return d.clearAlarm(); },
-                       [self](const DriveResult &r) {
-                           if (!self)
-                               return;
-                           self->updateCapabilities();
-                           if (self->reportResult(r))
-                               self->readAlarm();   // the code the drive reports now
-                       });
+    context().hub->run(
+        context().connectionId, context().address, [](Drive &d) { return d.clearAlarm(); },
+        [self](const DriveResult &r) {
+            if (!self)
+                return;
+            self->updateCapabilities();
+            if (self->reportResult(r))
+                self->readAlarm(); // the code the drive reports now
+        });
 }
 
 Error AlarmsPanel::exportHistory(const QString &path) const
@@ -158,13 +160,13 @@ Error AlarmsPanel::exportHistory(const QString &path) const
         QDateTime t = e.time;
         t = t.toOffsetFromUtc(t.offsetFromUtc());
         bytes += t.toString(Qt::ISODateWithMs).toLatin1() + ',' + QByteArray::number(e.code) + ','
-                 + csvField(alarmText(e.code)) + '\n';
+            + csvField(alarmText(e.code)) + '\n';
     }
     const QString shown = QDir::toNativeSeparators(path);
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return {ErrorCode::FileError, tr("Cannot write %1: %2.").arg(shown, file.errorString())};
-    if (file.write(bytes) != bytes.size() || !file.flush()) {   // Qt 6.4: check before commit()
+    if (file.write(bytes) != bytes.size() || !file.flush()) { // Qt 6.4: check before commit()
         const QString why = file.errorString();
         file.cancelWriting();
         return {ErrorCode::FileError, tr("Cannot write %1: %2.").arg(shown, why)};
@@ -179,8 +181,8 @@ void AlarmsPanel::exportWithDialog()
     const QString name = QStringLiteral("alarms-%1-%2.csv")
                              .arg(familyId(context().family))
                              .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export alarm history"),
-                                                      QDir::home().filePath(name), tr("CSV files (*.csv)"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export alarm history"), QDir::home().filePath(name),
+                                                      tr("CSV files (*.csv)"));
     if (path.isEmpty())
         return;
     // Not a Recent file: an export is not opened again.
@@ -246,7 +248,7 @@ void AlarmsPanel::showHistory()
     m_table->setRowCount(int(m_history.size()));
     const QLocale locale;
     for (int i = 0; i < m_history.size(); ++i) {
-        const HistoryEntry &e = m_history.at(m_history.size() - 1 - i);   // newest first
+        const HistoryEntry &e = m_history.at(m_history.size() - 1 - i); // newest first
         auto *time = new QTableWidgetItem(locale.toString(e.time, QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")));
         auto *code = new QTableWidgetItem(QString::number(e.code));
         code->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -266,11 +268,11 @@ void AlarmsPanel::updateCapabilities()
     const DriveInfo &info = driveInfo();
     const QString waiting = tr("Waiting for the drive's description…");
     const QString readReason = context().can(Capability::ReadAlarm)
-                                   ? QString()
-                                   : (info.valid ? info.reason(Capability::ReadAlarm) : waiting);
+        ? QString()
+        : (info.valid ? info.reason(Capability::ReadAlarm) : waiting);
     const QString clearReason = context().can(Capability::ClearAlarm)
-                                    ? QString()
-                                    : (info.valid ? info.reason(Capability::ClearAlarm) : waiting);
+        ? QString()
+        : (info.valid ? info.reason(Capability::ClearAlarm) : waiting);
     m_read->setEnabled(readReason.isEmpty());
     m_read->setToolTip(readReason.isEmpty() ? tr("Ask the drive for its current alarm code") : readReason);
     m_clear->setEnabled(clearReason.isEmpty());

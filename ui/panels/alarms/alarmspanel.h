@@ -1,7 +1,7 @@
 #pragma once
 
-#include "ui/workspace/drivepanel.h"
 #include "core/params/alarmdictionary.h"
+#include "ui/workspace/drivepanel.h"
 
 #include <QDateTime>
 
@@ -58,8 +58,8 @@ private:
     void exportWithDialog();
 
     AlarmDictionary m_dictionary;
-    int m_code = -1;                 // -1: not known yet
-    QList<HistoryEntry> m_history;   // oldest first
+    int m_code = -1;               // -1: not known yet
+    QList<HistoryEntry> m_history; // oldest first
     bool m_readOnce = false;
 
     QGroupBox *m_currentBox = nullptr;

@@ -140,7 +140,8 @@ void BackupDiffTable::fill(bool keepChecks)
                      "then connect again with the new settings.");
         name->setToolTip(tip);
         setItem(row, Parameter, name);
-        setItem(row, FileValue, new QTableWidgetItem(e.fileValue ? QString::number(*e.fileValue) : QStringLiteral("—")));
+        setItem(row, FileValue,
+                new QTableWidgetItem(e.fileValue ? QString::number(*e.fileValue) : QStringLiteral("—")));
         QString drive = e.driveValue ? QString::number(*e.driveValue) : QStringLiteral("—");
         if (e.access == Access::WriteOnly)
             drive = tr("not readable");

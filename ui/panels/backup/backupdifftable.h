@@ -32,7 +32,7 @@ public:
     QList<int> checkedIndices() const;
     void setChecked(int parameterIndex, bool checked);
     void setAllChecked(bool checked);
-    int rowOf(int parameterIndex) const;   // -1 when not listed
+    int rowOf(int parameterIndex) const; // -1 when not listed
 
     static QString statusText(DiffStatus status);
     void retranslate();

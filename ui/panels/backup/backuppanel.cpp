@@ -1,8 +1,8 @@
 #include "ui/panels/backup/backuppanel.h"
 
-#include "ui/panels/backup/backupdifftable.h"
 #include "core/drive/drivehub.h"
 #include "core/params/parameterdictionary.h"
+#include "ui/panels/backup/backupdifftable.h"
 #include "ui/panels/backup/restorereportdialog.h"
 #include "ui/panels/backup/transferoperation.h"
 
@@ -123,7 +123,7 @@ bool BackupPanel::looksLikeBackup(const QString &path)
     QFile f(path);
     const bool jsonName = path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive);
     if (f.size() > BackupFile::MaxFileSize || !f.open(QIODevice::ReadOnly))
-        return jsonName;   // let the loader say why it cannot be read
+        return jsonName; // let the loader say why it cannot be read
     const QJsonDocument doc = QJsonDocument::fromJson(f.readAll());
     if (!doc.isObject())
         return jsonName;
@@ -172,9 +172,9 @@ void BackupPanel::onBackedUp(const DriveResult &result, const TransferOutcome &o
         return fail(result.error, tr("No backup was saved:"));
     if (Error e = outcome.backup.save(path, *outcome.dictionary))
         return fail(e, tr("No backup was saved:"));
-    setMessage(tr("Saved %n parameter(s) to %1.", nullptr, outcome.backup.values().size())
-                   .arg(QDir::toNativeSeparators(path)),
-               MessageKind::Success);
+    setMessage(
+        tr("Saved %n parameter(s) to %1.", nullptr, outcome.backup.values().size()).arg(QDir::toNativeSeparators(path)),
+        MessageKind::Success);
     emit fileUsed(path);
     emit backupSaved(path);
 }
@@ -209,7 +209,7 @@ void BackupPanel::loadFile(const QString &path)
     BackupFile file;
     Error e = file.load(path);
     if (!e)
-        e = file.checkCompatible(context().family, QString(), true);   // the family only
+        e = file.checkCompatible(context().family, QString(), true); // the family only
     m_path = path;
     m_report = RestoreReport();
     if (e) {
@@ -337,7 +337,7 @@ void BackupPanel::onRestored(const DriveResult &result, const TransferOutcome &o
     if (!result.ok())
         reportError(result.error);
     emit restored(complete);
-    compare();   // show what is left to restore
+    compare(); // show what is left to restore
 }
 
 // ---- Common ----
@@ -405,11 +405,11 @@ void BackupPanel::showFileInfo()
                       m_file.values().size())
                        .arg(name, family)
                        .arg(m_file.address())
-                       .arg(firmware,
-                            QLocale().toString(m_file.created().toLocalTime(), QLocale::ShortFormat));
+                       .arg(firmware, QLocale().toString(m_file.created().toLocalTime(), QLocale::ShortFormat));
     const QString driveFirmware = driveInfo().identity.firmware;
     if (!driveFirmware.isEmpty() && m_file.checkCompatible(context().family, driveFirmware, false))
-        text += QLatin1Char('\n') + tr("The drive has firmware %1: a restore asks for confirmation.").arg(driveFirmware);
+        text += QLatin1Char('\n')
+            + tr("The drive has firmware %1: a restore asks for confirmation.").arg(driveFirmware);
     m_fileInfo->setText(text);
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "core/drive/restorereport.h"
-#include "ui/workspace/drivepanel.h"
 #include "core/params/backupfile.h"
+#include "ui/workspace/drivepanel.h"
 
 #include <QPointer>
 #include <functional>
@@ -56,7 +56,7 @@ public:
     const BackupFile &loadedFile() const { return m_file; }
     BackupDiffTable *diffTable() const { return m_diffTable; }
     const RestoreReport &lastReport() const { return m_report; }
-    RestoreReportDialog *reportDialog() const;   // the last report, while it is open
+    RestoreReportDialog *reportDialog() const; // the last report, while it is open
 
     // Whether `path` is (or claims to be) a DriveDesk backup: a JSON object with the backup
     // format, or a .json file that cannot be read as another kind of JSON object.

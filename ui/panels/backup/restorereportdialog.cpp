@@ -28,8 +28,8 @@ RestoreReportDialog::RestoreReportDialog(const RestoreReport &report, const Para
 
     m_table = new QTableWidget(int(report.selected.size()), 5, this);
     m_table->setObjectName(QStringLiteral("restoreReportTable"));
-    m_table->setHorizontalHeaderLabels({tr("Parameter"), tr("In the file"), tr("Read back"),
-                                        tr("Outcome"), tr("Detail")});
+    m_table->setHorizontalHeaderLabels(
+        {tr("Parameter"), tr("In the file"), tr("Read back"), tr("Outcome"), tr("Detail")});
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
@@ -47,8 +47,7 @@ RestoreReportDialog::RestoreReportDialog(const RestoreReport &report, const Para
         m_table->setItem(row, 2, new QTableWidgetItem(readBack));
         auto *outcomeItem = new QTableWidgetItem(outcomeText(outcome));
         outcomeItem->setData(Qt::UserRole, RestoreReport::outcomeId(outcome));
-        const bool good = outcome == RestoreReport::Outcome::Verified
-            || outcome == RestoreReport::Outcome::WrittenOnly;
+        const bool good = outcome == RestoreReport::Outcome::Verified || outcome == RestoreReport::Outcome::WrittenOnly;
         outcomeItem->setForeground(good ? QColor(0x2e, 0x7d, 0x32) : QColor(0xc6, 0x28, 0x28));
         m_table->setItem(row, 3, outcomeItem);
         m_table->setItem(row, 4, new QTableWidgetItem(r ? r->error : QString()));
@@ -76,12 +75,13 @@ QString RestoreReportDialog::summary() const
                        .arg(failed)
                        .arg(m_report.indices(O::NotAttempted).size());
     if (const int unconfirmed = int(m_report.indices(O::Unconfirmed).size()))
-        text += QLatin1Char(' ') + tr("%n parameter(s) could not be read back: what the drive holds is unknown; "
-                                      "compare again.",
-                                      nullptr, unconfirmed);
+        text += QLatin1Char(' ')
+            + tr("%n parameter(s) could not be read back: what the drive holds is unknown; "
+                 "compare again.",
+                 nullptr, unconfirmed);
     if (const int writeOnly = int(m_report.indices(O::WrittenOnly).size()))
-        text += QLatin1Char(' ') + tr("%n write-only parameter(s) written; the drive cannot report them back.",
-                                      nullptr, writeOnly);
+        text += QLatin1Char(' ')
+            + tr("%n write-only parameter(s) written; the drive cannot report them back.", nullptr, writeOnly);
     return text;
 }
 

@@ -18,8 +18,8 @@ class RestoreReportDialog : public QDialog
 {
     Q_OBJECT
 public:
-    RestoreReportDialog(const RestoreReport &report, const ParameterDictionary &dictionary,
-                        const QString &fileName, QWidget *parent = nullptr);
+    RestoreReportDialog(const RestoreReport &report, const ParameterDictionary &dictionary, const QString &fileName,
+                        QWidget *parent = nullptr);
 
     const RestoreReport &report() const { return m_report; }
     QString summary() const;

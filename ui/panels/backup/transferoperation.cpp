@@ -18,17 +18,16 @@ DriveHub::Operation transferOperation(Start start, std::shared_ptr<TransferOutco
         out->dictionary = drive.dictionary();
         if (!out->dictionary) {
             // The bundled dictionaries live as long as the program: no ownership needed.
-            out->dictionary = std::shared_ptr<const ParameterDictionary>(
-                &ParameterDictionary::bundled(drive.family()), [](const ParameterDictionary *) {});
+            out->dictionary = std::shared_ptr<const ParameterDictionary>(&ParameterDictionary::bundled(drive.family()),
+                                                                         [](const ParameterDictionary *) {});
         }
         QObject::connect(transfer, &ParameterTransfer::progress, reply, &DriveReply::reportProgress);
-        QObject::connect(transfer, &ParameterTransfer::finished, reply,
-                         [transfer, reply, out](const Error &error) {
-                             out->backup = transfer->backupFile();
-                             out->diff = transfer->diff();
-                             out->report = transfer->report();
-                             reply->finish(error);
-                         });
+        QObject::connect(transfer, &ParameterTransfer::finished, reply, [transfer, reply, out](const Error &error) {
+            out->backup = transfer->backupFile();
+            out->diff = transfer->diff();
+            out->report = transfer->report();
+            reply->finish(error);
+        });
         start(*transfer);
         return reply;
     };
@@ -48,8 +47,7 @@ DriveHub::Operation TransferOperation::compare(const BackupFile &file, std::shar
 DriveHub::Operation TransferOperation::restore(const BackupFile &file, const RestoreOptions &options,
                                                std::shared_ptr<TransferOutcome> out)
 {
-    return transferOperation([file, options](ParameterTransfer &t) { t.restore(file, options); },
-                             std::move(out));
+    return transferOperation([file, options](ParameterTransfer &t) { t.restore(file, options); }, std::move(out));
 }
 
 } // namespace dd

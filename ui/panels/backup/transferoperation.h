@@ -18,10 +18,10 @@ class ParameterDictionary;
 // finishes, so the hub's done callback (GUI thread) may read them.
 struct TransferOutcome
 {
-    BackupFile backup;                                      // backup()
-    ParameterDiff diff;                                     // compare() and restore()
-    RestoreReport report;                                   // restore()
-    std::shared_ptr<const ParameterDictionary> dictionary;  // the one the drive uses
+    BackupFile backup;                                     // backup()
+    ParameterDiff diff;                                    // compare() and restore()
+    RestoreReport report;                                  // restore()
+    std::shared_ptr<const ParameterDictionary> dictionary; // the one the drive uses
 };
 
 class TransferOperation

@@ -48,7 +48,7 @@ EePanel::EePanel(const DriveContext &context, QWidget *parent)
     m_reason->setStyleSheet(QStringLiteral("color: #c62828;"));
     m_progress = createProgressBar(this);
     m_progress->setObjectName(QStringLiteral("eeProgress"));
-    m_progress->setRange(0, 0);   // the drive reports only "running" or "done"
+    m_progress->setRange(0, 0); // the drive reports only "running" or "done"
     m_message = createMessageLabel(this, QStringLiteral("eeMessage"));
     m_tick.setInterval(100);
     connect(&m_tick, &QTimer::timeout, this, &EePanel::updateElapsed);
@@ -108,9 +108,8 @@ QString EePanel::message() const
 bool EePanel::confirm(EeOperation op)
 {
     QMessageBox box(QMessageBox::Warning, tr("%1: %2").arg(eeMnemonic(op), eeMeaning(op)),
-                    explanation(op) + QLatin1String("\n\n") + tr("Run %1 on drive %2 now?")
-                                                                    .arg(eeMnemonic(op))
-                                                                    .arg(context().address),
+                    explanation(op) + QLatin1String("\n\n")
+                        + tr("Run %1 on drive %2 now?").arg(eeMnemonic(op)).arg(context().address),
                     QMessageBox::Yes | QMessageBox::Cancel, this);
     box.setObjectName(QStringLiteral("eeConfirmation"));
     box.setDefaultButton(QMessageBox::Cancel);
@@ -133,12 +132,12 @@ void EePanel::runOperation(EeOperation op)
     updateActions();
     emit operationStarted(op);
     QPointer<EePanel> self(this);
-    context().hub->run(context().connectionId, context().address,
-                       [op](Drive &d) { return d.eeOperation(op); },
-                       [self, op](const DriveResult &r) {
-                           if (self)
-                               self->onFinished(op, r);
-                       });
+    context().hub->run(
+        context().connectionId, context().address, [op](Drive &d) { return d.eeOperation(op); },
+        [self, op](const DriveResult &r) {
+            if (self)
+                self->onFinished(op, r);
+        });
 }
 
 void EePanel::updateElapsed()
@@ -164,8 +163,9 @@ void EePanel::onFinished(EeOperation op, const DriveResult &result)
     } else {
         QString text = tr("%1 done (%2 s): %3.").arg(eeMnemonic(op), seconds, eeMeaning(op));
         if (op == EeOperation::Reload || op == EeOperation::RestoreBackup || op == EeOperation::FactoryDefaults)
-            text += QLatin1Char(' ') + tr("The drive now works with other values: read the parameters "
-                                          "again (Parameters tab) to see them.");
+            text += QLatin1Char(' ')
+                + tr("The drive now works with other values: read the parameters "
+                     "again (Parameters tab) to see them.");
         setMessage(text, MessageKind::Success);
     }
     updateActions();

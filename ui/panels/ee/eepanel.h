@@ -3,9 +3,9 @@
 #include "ui/workspace/drivepanel.h"
 
 #include <QElapsedTimer>
-#include <optional>
 #include <QMap>
 #include <QTimer>
+#include <optional>
 
 class QGroupBox;
 class QLabel;

@@ -22,8 +22,7 @@ JogButton::JogButton(int direction, QWidget *parent)
     m_renew.setTimerType(Qt::PreciseTimer);
     connect(&m_renew, &QTimer::timeout, this, &JogButton::renew);
     if (qGuiApp)
-        connect(qGuiApp, &QGuiApplication::applicationStateChanged, this,
-                &JogButton::onApplicationStateChanged);
+        connect(qGuiApp, &QGuiApplication::applicationStateChanged, this, &JogButton::onApplicationStateChanged);
 }
 
 JogButton::~JogButton()
@@ -76,15 +75,16 @@ void JogButton::startHold()
     m_renew.start();
     const qint32 speed = m_direction * m_speed;
     QPointer<JogButton> self(this);
-    m_hub->run(m_connectionId, m_address, [speed](Drive &d) { return d.jog(speed); },
-               [self, generation](const DriveResult &r) {
-                   // A failure after the button was let go (a short tap: the axis was
-                   // stopped before it could start) is no news.
-                   if (!self || r.ok() || !self->m_holding || self->m_generation != generation)
-                       return;
-                   self->endHold(StopReason::JogFailed, true);
-                   emit self->errorOccurred(r.error);
-               });
+    m_hub->run(
+        m_connectionId, m_address, [speed](Drive &d) { return d.jog(speed); },
+        [self, generation](const DriveResult &r) {
+            // A failure after the button was let go (a short tap: the axis was
+            // stopped before it could start) is no news.
+            if (!self || r.ok() || !self->m_holding || self->m_generation != generation)
+                return;
+            self->endHold(StopReason::JogFailed, true);
+            emit self->errorOccurred(r.error);
+        });
     emit jogStarted(speed);
 }
 
@@ -98,11 +98,12 @@ void JogButton::endHold(StopReason reason, bool sendStop)
     setDown(false);
     if (sendStop && m_hub) {
         QPointer<JogButton> self(this);
-        m_hub->run(m_connectionId, m_address, [](Drive &d) { return d.stop(false); },
-                   [self](const DriveResult &r) {
-                       if (self && !r.ok() && r.error.code != ErrorCode::LinkClosed)
-                           emit self->errorOccurred(r.error);
-                   });
+        m_hub->run(
+            m_connectionId, m_address, [](Drive &d) { return d.stop(false); },
+            [self](const DriveResult &r) {
+                if (self && !r.ok() && r.error.code != ErrorCode::LinkClosed)
+                    emit self->errorOccurred(r.error);
+            });
     }
     emit jogStopped(reason);
 }
@@ -180,8 +181,7 @@ void JogButton::keyReleaseEvent(QKeyEvent *event)
 
 void JogButton::focusOutEvent(QFocusEvent *event)
 {
-    endHold(event->reason() == Qt::ActiveWindowFocusReason ? StopReason::WindowDeactivated
-                                                           : StopReason::FocusLost,
+    endHold(event->reason() == Qt::ActiveWindowFocusReason ? StopReason::WindowDeactivated : StopReason::FocusLost,
             true);
     QPushButton::focusOutEvent(event);
 }

@@ -36,16 +36,16 @@ public:
         Hidden,
         Disabled,
         LinkLost,
-        LeaseExpired,   // the I/O side stopped the axis: no renewal came in time
-        DriveLost,      // the drive stopped answering: the I/O side ended the jog
-        JogFailed,      // the drive refused or did not start the jog
-        Requested       // stopHold() by the owner (STOP, tab change ...)
+        LeaseExpired, // the I/O side stopped the axis: no renewal came in time
+        DriveLost,    // the drive stopped answering: the I/O side ended the jog
+        JogFailed,    // the drive refused or did not start the jog
+        Requested     // stopHold() by the owner (STOP, tab change ...)
     };
     Q_ENUM(StopReason)
 
     // `direction`: +1 or -1, applied to speed().
     explicit JogButton(int direction, QWidget *parent = nullptr);
-    ~JogButton() override;   // a held button sends its stop
+    ~JogButton() override; // a held button sends its stop
 
     void setDrive(DriveHub *hub, int connectionId, int address);
     int direction() const { return m_direction; }
@@ -85,8 +85,8 @@ private:
     int m_direction = 1;
     qint32 m_speed = 0;
     bool m_holding = false;
-    bool m_keyHold = false;        // held with the keyboard (Space)
-    quint64 m_generation = 0;      // one per hold: late jog results of an old hold are ignored
+    bool m_keyHold = false;   // held with the keyboard (Space)
+    quint64 m_generation = 0; // one per hold: late jog results of an old hold are ignored
     QTimer m_renew;
     QList<QMetaObject::Connection> m_hubConnections;
 };

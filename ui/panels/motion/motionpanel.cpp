@@ -1,10 +1,10 @@
 #include "ui/panels/motion/motionpanel.h"
 
-#include "core/protocol/familytraits.h"
-#include "ui/common/displaytext.h"
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
 #include "core/drive/drivereply.h"
+#include "core/protocol/familytraits.h"
+#include "ui/common/displaytext.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -22,7 +22,7 @@
 namespace dd {
 
 namespace {
-constexpr int kMaxCount = std::numeric_limits<qint32>::max();   // int32 moves (both families)
+constexpr int kMaxCount = std::numeric_limits<qint32>::max(); // int32 moves (both families)
 
 // A row of `widgets`, left-aligned, at the top of a group box made by makeGroup().
 void insertRow(QGroupBox *box, const QList<QWidget *> &widgets)
@@ -299,17 +299,16 @@ void MotionPanel::runCommand(const QString &what, DriveHub::Operation op)
     if (!context().isValid())
         return;
     QPointer<MotionPanel> self(this);
-    context().hub->run(context().connectionId, context().address, std::move(op),
-                       [self, what](const DriveResult &r) {
-                           if (!self)
-                               return;
-                           if (r.ok()) {
-                               self->m_jogState->setText(tr("%1: done.").arg(what));
-                           } else {
-                               self->m_jogState->setText(tr("%1 failed: %2").arg(what, r.error.message));
-                               self->reportError(r.error);
-                           }
-                       });
+    context().hub->run(context().connectionId, context().address, std::move(op), [self, what](const DriveResult &r) {
+        if (!self)
+            return;
+        if (r.ok()) {
+            self->m_jogState->setText(tr("%1: done.").arg(what));
+        } else {
+            self->m_jogState->setText(tr("%1 failed: %2").arg(what, r.error.message));
+            self->reportError(r.error);
+        }
+    });
 }
 
 void MotionPanel::move()
@@ -317,11 +316,9 @@ void MotionPanel::move()
     const qint64 value = m_moveValue->value();
     const qint32 speed = m_moveSpeed->value();
     if (m_absolute->isChecked())
-        runCommand(tr("Move to %1").arg(value),
-                   [value, speed](Drive &d) { return d.moveAbsolute(value, speed); });
+        runCommand(tr("Move to %1").arg(value), [value, speed](Drive &d) { return d.moveAbsolute(value, speed); });
     else
-        runCommand(tr("Move by %1").arg(value),
-                   [value, speed](Drive &d) { return d.moveRelative(value, speed); });
+        runCommand(tr("Move by %1").arg(value), [value, speed](Drive &d) { return d.moveRelative(value, speed); });
 }
 
 void MotionPanel::onJogStarted(qint32 speed)
@@ -343,7 +340,9 @@ void MotionPanel::onJogStopped(JogButton::StopReason reason)
     case R::Hidden: why = tr("Jog stopped: the Motion tab was hidden."); break;
     case R::Disabled: why = tr("Jog stopped: jogging was disabled."); break;
     case R::LinkLost: why = tr("Jog stopped: the connection was lost."); break;
-    case R::LeaseExpired: why = tr("Jog stopped by the drive link: DriveDesk did not confirm the held button in time."); break;
+    case R::LeaseExpired:
+        why = tr("Jog stopped by the drive link: DriveDesk did not confirm the held button in time.");
+        break;
     case R::DriveLost: why = tr("Jog ended: the drive stopped answering."); break;
     case R::JogFailed: why = tr("Jog stopped: the drive did not start."); break;
     case R::Requested: why = tr("Jog stopped."); break;
@@ -388,7 +387,7 @@ QString MotionPanel::reasonFor(Capability c) const
 
 void MotionPanel::updateCapabilities()
 {
-    const QList<Capability> motion{Capability::Enable, Capability::Jog, Capability::MoveRelative,
+    const QList<Capability> motion{Capability::Enable,       Capability::Jog,  Capability::MoveRelative,
                                    Capability::MoveAbsolute, Capability::Home, Capability::SetPosition,
                                    Capability::Stop};
     bool none = true;

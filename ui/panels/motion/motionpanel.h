@@ -1,8 +1,8 @@
 #pragma once
 
 #include "core/drive/drivehub.h"
-#include "ui/workspace/drivepanel.h"
 #include "ui/panels/motion/jogbutton.h"
+#include "ui/workspace/drivepanel.h"
 
 class QComboBox;
 class QGroupBox;

@@ -1,9 +1,9 @@
 #include "ui/panels/overview/overviewpanel.h"
 
-#include "ui/common/displaytext.h"
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
 #include "core/drive/drivereply.h"
+#include "ui/common/displaytext.h"
 
 #include <QDateTime>
 #include <QFormLayout>
@@ -106,12 +106,12 @@ void OverviewPanel::refresh()
                            self->setDriveInfo(info);
                        self->reportError(error);
                    });
-    context().hub->run(context().connectionId, context().address,
-                       [](Drive &d) { return d.readStatus(); },
-                       [self](const DriveResult &r) {
-                           if (self)
-                               self->reportResult(r);
-                       });
+    context().hub->run(
+        context().connectionId, context().address, [](Drive &d) { return d.readStatus(); },
+        [self](const DriveResult &r) {
+            if (self)
+                self->reportResult(r);
+        });
 }
 
 void OverviewPanel::driveInfoChanged(const DriveInfo &)
@@ -136,12 +136,11 @@ void OverviewPanel::retranslate()
     m_identityBox->setTitle(tr("Identity"));
     m_statusBox->setTitle(tr("Status"));
     m_capsBox->setTitle(tr("Capabilities"));
-    const QStringList identityRows{tr("Family:"), tr("Address:"), tr("Model:"), tr("Firmware:"),
-                                   tr("Link:")};
+    const QStringList identityRows{tr("Family:"), tr("Address:"), tr("Model:"), tr("Firmware:"), tr("Link:")};
     for (int i = 0; i < identityRows.size(); ++i)
         m_identityLabels.at(i)->setText(identityRows.at(i));
     const QStringList statusRows{tr("Communication:"), tr("Motion:"), tr("Power stage:"),
-                                 tr("Position:"), tr("Alarm:"), tr("Last update:")};
+                                 tr("Position:"),      tr("Alarm:"),  tr("Last update:")};
     for (int i = 0; i < statusRows.size(); ++i)
         m_statusLabels.at(i)->setText(statusRows.at(i));
     m_caps->setHorizontalHeaderLabels({tr("Function"), tr("Available")});
@@ -156,8 +155,8 @@ void OverviewPanel::showIdentity()
 {
     const DriveIdentity &id = driveInfo().identity;
     const QString unknown = tr("unknown");
-    m_family->setText(QStringLiteral("%1 (%2)").arg(DisplayText::familyName(context().family),
-                                                    familyId(context().family)));
+    m_family->setText(
+        QStringLiteral("%1 (%2)").arg(DisplayText::familyName(context().family), familyId(context().family)));
     m_address->setText(QString::number(context().address));
     m_model->setText(id.model.isEmpty() ? unknown : id.model);
     m_firmware->setText(id.firmware.isEmpty() ? unknown : id.firmware);
@@ -197,7 +196,6 @@ void OverviewPanel::showCapabilities()
     m_reasons->setVisible(!notes.isEmpty());
 }
 
-
 void OverviewPanel::showStatus()
 {
     const DriveStatus &s = driveInfo().status;
@@ -206,8 +204,7 @@ void OverviewPanel::showStatus()
     m_enabled->setText(DisplayText::enabledState(s));
     m_position->setText(DisplayText::position(s));
     m_alarm->setText(DisplayText::alarm(s.alarmCode));
-    m_alarm->setStyleSheet(s.alarmCode ? QStringLiteral("color: #c62828; font-weight: bold;")
-                                       : QString());
+    m_alarm->setStyleSheet(s.alarmCode ? QStringLiteral("color: #c62828; font-weight: bold;") : QString());
     m_updated->setText(s.updatedMs ? QLocale().toString(QDateTime::fromMSecsSinceEpoch(s.updatedMs).time(),
                                                         QStringLiteral("HH:mm:ss.zzz"))
                                    : QStringLiteral("—"));

@@ -1,12 +1,12 @@
 #include "ui/panels/parameters/parametereditcommand.h"
 
-#include "ui/panels/parameters/parametertablemodel.h"
 #include "core/params/parameterdictionary.h"
+#include "ui/panels/parameters/parametertablemodel.h"
 
 namespace dd {
 
-ParameterEditCommand::ParameterEditCommand(ParameterTableModel *model, int parameterIndex,
-                                           std::optional<qint64> before, std::optional<qint64> after)
+ParameterEditCommand::ParameterEditCommand(ParameterTableModel *model, int parameterIndex, std::optional<qint64> before,
+                                           std::optional<qint64> after)
     : m_model(model)
     , m_index(parameterIndex)
     , m_before(before)
@@ -14,8 +14,9 @@ ParameterEditCommand::ParameterEditCommand(ParameterTableModel *model, int param
 {
     const QString label = model->dictionary() ? model->dictionary()->label(parameterIndex)
                                               : QStringLiteral("P%1").arg(parameterIndex);
-    const std::optional<qint64> shown = after ? after : model->driveValue(parameterIndex).isKnown()
-            ? std::optional<qint64>(model->driveValue(parameterIndex).value) : std::nullopt;
+    const std::optional<qint64> shown = after         ? after
+        : model->driveValue(parameterIndex).isKnown() ? std::optional<qint64>(model->driveValue(parameterIndex).value)
+                                                      : std::nullopt;
     setText(shown ? tr("%1 = %2").arg(label).arg(*shown) : tr("Edit %1").arg(label));
 }
 

@@ -3,9 +3,9 @@
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
 #include "core/drive/drivereply.h"
+#include "core/params/parameterdictionary.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/panels/parameters/parametervaluedelegate.h"
-#include "core/params/parameterdictionary.h"
 
 #include <QAction>
 #include <QHBoxLayout>
@@ -201,7 +201,7 @@ void ParametersPanel::readAll()
     context().hub->run(
         context().connectionId, context().address,
         [indices, dictionary](Drive &d) {
-            *dictionary = d.dictionary();   // a user's dictionary, when one is set
+            *dictionary = d.dictionary(); // a user's dictionary, when one is set
             return d.readParameters(indices);
         },
         [self, dictionary](const DriveResult &r) {
@@ -283,8 +283,7 @@ void ParametersPanel::write(const QList<int> &indices, bool onlySelected)
     setBusy(true, tr("Writing %n parameter(s)…", nullptr, int(writes.size())));
     QPointer<ParametersPanel> self(this);
     context().hub->run(
-        context().connectionId, context().address,
-        [writes](Drive &d) { return d.writeParameters(writes); },
+        context().connectionId, context().address, [writes](Drive &d) { return d.writeParameters(writes); },
         [self, requested](const DriveResult &r) {
             if (self)
                 self->onWritten(r, requested);
@@ -345,11 +344,11 @@ void ParametersPanel::setBusy(bool busy, const QString &what)
 {
     m_busy = busy;
     m_progress->setVisible(busy);
-    m_progress->setRange(0, 0);   // busy until the first progress report
+    m_progress->setRange(0, 0); // busy until the first progress report
     // No edits while the drive is being read or written: a result must not overwrite them.
     m_view->setEditTriggers(busy ? QAbstractItemView::NoEditTriggers
                                  : QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
-                                       | QAbstractItemView::AnyKeyPressed);
+                                    | QAbstractItemView::AnyKeyPressed);
     if (busy)
         setMessage(what, MessageKind::Info);
     updateActions();

@@ -90,8 +90,8 @@ private:
     QAction *m_redoAction = nullptr;
     QProgressBar *m_progress = nullptr;
     QLabel *m_message = nullptr;
-    std::shared_ptr<const ParameterDictionary> m_dictionary;   // the drive's
-    QString m_modelName;          // the drive model the rows are chosen for
+    std::shared_ptr<const ParameterDictionary> m_dictionary; // the drive's
+    QString m_modelName;                                     // the drive model the rows are chosen for
     bool m_busy = false;
     bool m_everRead = false;
 };

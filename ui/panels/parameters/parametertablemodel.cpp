@@ -1,8 +1,8 @@
 #include "ui/panels/parameters/parametertablemodel.h"
 
+#include "core/params/parameterdictionary.h"
 #include "ui/panels/parameters/parametereditcommand.h"
 #include "ui/panels/parameters/parametervaluevalidator.h"
-#include "core/params/parameterdictionary.h"
 
 #include <QBrush>
 #include <QColor>
@@ -16,7 +16,7 @@ namespace {
 const QColor VerifiedColor(0x2e, 0x7d, 0x32);
 const QColor FailedColor(0xc6, 0x28, 0x28);
 const QColor ChangedBackground(0xff, 0xf3, 0xcd);
-const QChar ChangedMark(0x25CF);   // ●
+const QChar ChangedMark(0x25CF); // ●
 
 bool appliesTo(const ParameterInfo &p, const QString &model)
 {
@@ -31,8 +31,7 @@ ParameterTableModel::ParameterTableModel(QObject *parent)
 
 ParameterTableModel::~ParameterTableModel() = default;
 
-void ParameterTableModel::setDictionary(std::shared_ptr<const ParameterDictionary> dictionary,
-                                        const QString &model)
+void ParameterTableModel::setDictionary(std::shared_ptr<const ParameterDictionary> dictionary, const QString &model)
 {
     beginResetModel();
     QHash<int, Row> old;
@@ -163,8 +162,7 @@ void ParameterTableModel::setDriveValues(const QMap<int, qint64> &values, ValueS
         emit editsChanged();
 }
 
-void ParameterTableModel::applyWriteResults(const QList<ParameterWriteResult> &results,
-                                            const QList<int> &requested)
+void ParameterTableModel::applyWriteResults(const QList<ParameterWriteResult> &results, const QList<int> &requested)
 {
     QList<int> answered;
     for (const ParameterWriteResult &w : results) {
@@ -248,18 +246,15 @@ QVariant ParameterTableModel::data(const QModelIndex &index, int role) const
     const int column = index.column();
     const bool changed = rowChanged(r);
     switch (role) {
-    case Qt::DisplayRole:
-        return display(r, column);
+    case Qt::DisplayRole: return display(r, column);
     case Qt::EditRole:
         if (column == Value) {
             const std::optional<qint64> v = value(r.info.index);
             return v ? QString::number(*v) : QString();
         }
         return display(r, column);
-    case SearchRole:
-        return searchText(r);
-    case ParameterIndexRole:
-        return r.info.index;
+    case SearchRole: return searchText(r);
+    case ParameterIndexRole: return r.info.index;
     case Qt::TextAlignmentRole:
         if (column == Index || column == Value || column == DriveValue || column == Default)
             return int(Qt::AlignRight | Qt::AlignVCenter);
@@ -284,18 +279,15 @@ QVariant ParameterTableModel::data(const QModelIndex &index, int role) const
             || (column == Mark && changed))
             return QBrush(column == Mark ? QColor(0xb2, 0x6a, 0x00) : FailedColor);
         return {};
-    case Qt::ToolTipRole:
-        return toolTip(r, column, changed);
-    default:
-        return {};
+    case Qt::ToolTipRole: return toolTip(r, column, changed);
+    default: return {};
     }
 }
 
 QVariant ParameterTableModel::toolTip(const Row &r, int column, bool changed) const
 {
     switch (column) {
-    case Name:
-        return r.info.description.text(QLocale());
+    case Name: return r.info.description.text(QLocale());
     case Mark:
     case Value:
         if (!r.info.isWritable())
@@ -309,10 +301,8 @@ QVariant ParameterTableModel::toolTip(const Row &r, int column, bool changed) co
         if (!r.info.isReadable())
             return tr("The drive cannot report this parameter: DriveDesk shows the value it last wrote.");
         return {};
-    case State:
-        return r.message.isEmpty() ? QVariant() : QVariant(r.message);
-    default:
-        return {};
+    case State: return r.message.isEmpty() ? QVariant() : QVariant(r.message);
+    default: return {};
     }
 }
 
@@ -320,26 +310,18 @@ QVariant ParameterTableModel::display(const Row &r, int column) const
 {
     const ParameterInfo &p = r.info;
     switch (column) {
-    case Mark:
-        return rowChanged(r) ? QString(ChangedMark) : QString();
-    case Index:
-        return p.index;
-    case Key:
-        return p.key;
-    case Name:
-        return p.displayName(QLocale());
+    case Mark: return rowChanged(r) ? QString(ChangedMark) : QString();
+    case Index: return p.index;
+    case Key: return p.key;
+    case Name: return p.displayName(QLocale());
     case Value: {
         const std::optional<qint64> v = value(p.index);
         return v ? QVariant(QString::number(*v)) : QVariant(QString());
     }
-    case DriveValue:
-        return driveText(r);
-    case Unit:
-        return p.unit;
-    case Range:
-        return QStringLiteral("%1 … %2").arg(p.min).arg(p.max);
-    case Default:
-        return p.defaultValue ? QString::number(*p.defaultValue) : QStringLiteral("—");
+    case DriveValue: return driveText(r);
+    case Unit: return p.unit;
+    case Range: return QStringLiteral("%1 … %2").arg(p.min).arg(p.max);
+    case Default: return p.defaultValue ? QString::number(*p.defaultValue) : QStringLiteral("—");
     case Access:
         switch (p.access) {
         case dd::Access::ReadWrite: return tr("read/write");
@@ -347,10 +329,8 @@ QVariant ParameterTableModel::display(const Row &r, int column) const
         case dd::Access::WriteOnly: return tr("write-only");
         }
         return {};
-    case State:
-        return stateText(r);
-    default:
-        return {};
+    case State: return stateText(r);
+    default: return {};
     }
 }
 
@@ -367,16 +347,11 @@ QString ParameterTableModel::driveText(const Row &r) const
 QString ParameterTableModel::stateText(const Row &r) const
 {
     switch (r.state) {
-    case WriteState::None:
-        return QString();
-    case WriteState::Verified:
-        return tr("written, verified");
-    case WriteState::WrittenOnly:
-        return tr("written (cannot be read back)");
-    case WriteState::Failed:
-        return tr("failed: %1").arg(r.message);
-    case WriteState::NotAttempted:
-        return tr("not written");
+    case WriteState::None: return QString();
+    case WriteState::Verified: return tr("written, verified");
+    case WriteState::WrittenOnly: return tr("written (cannot be read back)");
+    case WriteState::Failed: return tr("failed: %1").arg(r.message);
+    case WriteState::NotAttempted: return tr("not written");
     }
     return QString();
 }
@@ -435,7 +410,7 @@ bool ParameterTableModel::setData(const QModelIndex &index, const QVariant &valu
     }
     std::optional<qint64> after = v;
     if (r.drive.source == ValueSource::ReadFromDrive && r.drive.value == v)
-        after.reset();   // back to the drive's value: no longer an edit
+        after.reset(); // back to the drive's value: no longer an edit
     if (after == r.edited)
         return true;
     if (m_undo)

@@ -27,11 +27,10 @@ class ParameterTableModel : public QAbstractTableModel
 {
     Q_OBJECT
 public:
-    enum Column { Mark, Index, Key, Name, Value, DriveValue, Unit, Range, Default, Access, State,
-                  ColumnCount };
+    enum Column { Mark, Index, Key, Name, Value, DriveValue, Unit, Range, Default, Access, State, ColumnCount };
     enum Role {
-        SearchRole = Qt::UserRole + 1,   // "12 PA12 <name in every language>"
-        ParameterIndexRole               // the dictionary index of the row
+        SearchRole = Qt::UserRole + 1, // "12 PA12 <name in every language>"
+        ParameterIndexRole             // the dictionary index of the row
     };
     // The outcome of the last write of a parameter.
     enum class WriteState { None, Verified, WrittenOnly, Failed, NotAttempted };
@@ -46,11 +45,11 @@ public:
     const ParameterDictionary *dictionary() const { return m_dictionary.get(); }
     void setUndoStack(QUndoStack *stack) { m_undo = stack; }
 
-    int rowOf(int parameterIndex) const;         // -1 when not shown
+    int rowOf(int parameterIndex) const; // -1 when not shown
     int parameterAt(int row) const;
     const ParameterInfo *info(int parameterIndex) const;
-    QList<int> parameterIndices() const;         // every row, in order
-    QList<int> readableIndices() const;          // rows that can be read from the drive
+    QList<int> parameterIndices() const; // every row, in order
+    QList<int> readableIndices() const;  // rows that can be read from the drive
 
     ParameterValue driveValue(int parameterIndex) const;
     std::optional<qint64> editedValue(int parameterIndex) const;

@@ -43,8 +43,7 @@ void ParameterValueDelegate::setEditorData(QWidget *editor, const QModelIndex &i
     QStyledItemDelegate::setEditorData(editor, index);
 }
 
-void ParameterValueDelegate::setModelData(QWidget *editor, QAbstractItemModel *model,
-                                          const QModelIndex &index) const
+void ParameterValueDelegate::setModelData(QWidget *editor, QAbstractItemModel *model, const QModelIndex &index) const
 {
     auto *edit = qobject_cast<QLineEdit *>(editor);
     if (!edit || index.column() != ParameterTableModel::Value) {
@@ -69,7 +68,7 @@ bool ParameterValueDelegate::eventFilter(QObject *object, QEvent *event)
             if (!reason.isEmpty()) {
                 showProblem(edit, reason);
                 emit valueRefused(reason);
-                return true;   // the editor stays open with the text
+                return true; // the editor stays open with the text
             }
         }
     }
@@ -86,8 +85,7 @@ QString ParameterValueDelegate::problemOf(QWidget *editor) const
 void ParameterValueDelegate::showProblem(QWidget *editor, const QString &reason) const
 {
     editor->setToolTip(reason);
-    editor->setStyleSheet(reason.isEmpty() ? QString()
-                                           : QStringLiteral("QLineEdit { border: 2px solid #c62828; }"));
+    editor->setStyleSheet(reason.isEmpty() ? QString() : QStringLiteral("QLineEdit { border: 2px solid #c62828; }"));
     if (reason.isEmpty())
         QToolTip::hideText();
     else if (editor->isVisible())

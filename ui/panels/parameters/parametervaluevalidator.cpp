@@ -4,8 +4,8 @@
 
 namespace dd {
 
-ParameterValueValidator::ParameterValueValidator(const ParameterDictionary *dictionary,
-                                                 int parameterIndex, QObject *parent)
+ParameterValueValidator::ParameterValueValidator(const ParameterDictionary *dictionary, int parameterIndex,
+                                                 QObject *parent)
     : QValidator(parent)
     , m_dictionary(dictionary)
     , m_index(parameterIndex)
@@ -56,16 +56,15 @@ bool ParameterValueValidator::parseValue(const QString &text, qint64 *value)
     return true;
 }
 
-Error ParameterValueValidator::check(const ParameterDictionary &dictionary, int index,
-                                     const QString &text, qint64 *value)
+Error ParameterValueValidator::check(const ParameterDictionary &dictionary, int index, const QString &text,
+                                     qint64 *value)
 {
     qint64 v = 0;
     if (text.trimmed().isEmpty())
         return {ErrorCode::InvalidArgument, tr("Enter a value.")};
     if (!parseValue(text, &v))
         return {ErrorCode::InvalidArgument,
-                tr("“%1” is not a whole number (write it in decimal, or in hexadecimal as 0x…).")
-                    .arg(text.trimmed())};
+                tr("“%1” is not a whole number (write it in decimal, or in hexadecimal as 0x…).").arg(text.trimmed())};
     if (Error e = dictionary.validateWrite(index, v))
         return e;
     *value = v;

@@ -17,16 +17,14 @@ class ParameterValueValidator : public QValidator
 {
     Q_OBJECT
 public:
-    ParameterValueValidator(const ParameterDictionary *dictionary, int parameterIndex,
-                            QObject *parent = nullptr);
+    ParameterValueValidator(const ParameterDictionary *dictionary, int parameterIndex, QObject *parent = nullptr);
 
     State validate(QString &input, int &pos) const override;
     // The translated reason `text` is refused; empty when it is acceptable.
     QString reason(const QString &text) const;
 
     // Parses and validates `text` for parameter `index`; on success *value is set.
-    static Error check(const ParameterDictionary &dictionary, int index, const QString &text,
-                       qint64 *value);
+    static Error check(const ParameterDictionary &dictionary, int index, const QString &text, qint64 *value);
     // A whole number: optional sign, decimal digits, or 0x and hexadecimal digits.
     static bool parseValue(const QString &text, qint64 *value);
 

@@ -38,8 +38,7 @@ TrendControls::TrendControls(QWidget *parent)
         m_windowCombo->addItem(QString(), s);
     m_windowCombo->setCurrentIndex(1); // 30 s
     m_windowLabel->setBuddy(m_windowCombo);
-    connect(m_windowCombo, &QComboBox::currentIndexChanged, this,
-            [this] { emit windowChanged(windowSeconds()); });
+    connect(m_windowCombo, &QComboBox::currentIndexChanged, this, [this] { emit windowChanged(windowSeconds()); });
 
     m_rateSpin->setRange(0.1, 1000.0);
     m_rateSpin->setDecimals(1);
@@ -55,8 +54,7 @@ TrendControls::TrendControls(QWidget *parent)
     m_exportWindowAction = csvMenu->addAction(QString());
     m_exportCsvButton->setMenu(csvMenu);
     connect(m_exportAllAction, &QAction::triggered, this, [this] { emit exportCsvRequested(true); });
-    connect(m_exportWindowAction, &QAction::triggered, this,
-            [this] { emit exportCsvRequested(false); });
+    connect(m_exportWindowAction, &QAction::triggered, this, [this] { emit exportCsvRequested(false); });
     connect(m_exportPngButton, &QPushButton::clicked, this, &TrendControls::exportPngRequested);
 
     auto *row = new QHBoxLayout(this);

@@ -26,8 +26,8 @@ public:
     double sampleRate() const;
     void setSampleRate(double hz); // emits nothing
 
-    void setPaused(bool paused);   // button state only; emits nothing
-    void setZoomed(bool zoomed);   // enables "Reset zoom"
+    void setPaused(bool paused); // button state only; emits nothing
+    void setZoomed(bool zoomed); // enables "Reset zoom"
 
     QPushButton *pauseButton() const { return m_pauseButton; }
 

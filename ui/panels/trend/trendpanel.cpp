@@ -109,7 +109,7 @@ QStringList TrendPanel::channelsToRead() const
 void TrendPanel::sample()
 {
     if (m_inFlight || !context().isValid())
-        return;   // the link is slower than the rate: skip rather than queue
+        return; // the link is slower than the rate: skip rather than queue
     const QStringList ids = channelsToRead();
     if (ids.isEmpty())
         return;
@@ -122,7 +122,7 @@ void TrendPanel::sample()
                 return;
             self->m_inFlight = false;
             if (!r.ok()) {
-                if (!self->m_failing)   // once per outage, not at the sample rate
+                if (!self->m_failing) // once per outage, not at the sample rate
                     self->reportResult(r);
                 self->m_failing = true;
                 return;

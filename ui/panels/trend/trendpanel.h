@@ -49,7 +49,7 @@ private:
     QLabel *m_unavailable = nullptr;
     QScrollArea *m_scroll = nullptr;
     QTimer m_timer;
-    QElapsedTimer m_clock;    // sample time when the drive gives none
+    QElapsedTimer m_clock; // sample time when the drive gives none
     bool m_inFlight = false;
     bool m_failing = false;
     bool m_channelsSet = false;

@@ -33,15 +33,14 @@ namespace dd {
 
 namespace {
 
-constexpr int RefreshIntervalMs = 40;     // 25 Hz
+constexpr int RefreshIntervalMs = 40;         // 25 Hz
 constexpr int SlowestRefreshIntervalMs = 200; // 5 Hz on a machine too slow for 25
 
 // Distinguishable on white and in grey-scale print; repeats after eight channels.
 const QList<QColor> &seriesColors()
 {
-    static const QList<QColor> colors{QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
-                                      QColor(0x2c, 0xa0, 0x2c), QColor(0xff, 0x7f, 0x0e),
-                                      QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
+    static const QList<QColor> colors{QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c),
+                                      QColor(0xff, 0x7f, 0x0e), QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
                                       QColor(0x17, 0xbe, 0xcf), QColor(0x7f, 0x7f, 0x7f)};
     return colors;
 }
@@ -140,12 +139,11 @@ void TrendView::buildControls()
 void TrendView::buildChannelPanel()
 {
     m_panel = new TrendChannelPanel(this);
-    connect(m_panel, &TrendChannelPanel::visibilityChanged, this,
-            [this](const QString &id, bool) {
-                updateSeriesName(id);
-                invalidate();
-                refreshNow();
-            });
+    connect(m_panel, &TrendChannelPanel::visibilityChanged, this, [this](const QString &id, bool) {
+        updateSeriesName(id);
+        invalidate();
+        refreshNow();
+    });
     connect(m_panel, &TrendChannelPanel::scaleChanged, this, [this](const QString &id) {
         updateSeriesName(id);
         m_zoomY = false; // the scaled data moved: fit the value axis again
@@ -280,7 +278,7 @@ void TrendView::updateSeriesName(const QString &id)
         name += QStringLiteral(" ×") + locale.toString(st.scale, 'g', 6);
     if (st.offset != 0.0)
         name += (st.offset > 0 ? QStringLiteral(" + ") : QStringLiteral(" − "))
-                + locale.toString(std::fabs(st.offset), 'g', 6);
+            + locale.toString(std::fabs(st.offset), 'g', 6);
     s->setName(name);
     s->setVisible(st.visible);
     const auto markers = m_chart->legend()->markers(s);
@@ -385,8 +383,8 @@ TrendView::SeriesPoints TrendView::decimate(qint64 fromUs, qint64 toUs, int widt
                 s->clear();
             continue;
         }
-        TrendPlotBuilder::Result r = TrendPlotBuilder::build(
-            *buf, fromUs, toUs, width, m_recorder->originUs(), st.scale, st.offset);
+        TrendPlotBuilder::Result r = TrendPlotBuilder::build(*buf, fromUs, toUs, width, m_recorder->originUs(),
+                                                             st.scale, st.offset);
         if (r.hasData()) {
             *yMin = std::min(*yMin, r.yMin);
             *yMax = std::max(*yMax, r.yMax);
@@ -536,8 +534,7 @@ void TrendView::updateCursor()
                 value = locale.toString(s->value, 'f', c.decimals);
         }
         const QString name = c.name.isEmpty() ? c.id : c.name;
-        parts.append(c.unit.isEmpty() ? tr("%1: %2").arg(name, value)
-                                      : tr("%1: %2 %3").arg(name, value, c.unit));
+        parts.append(c.unit.isEmpty() ? tr("%1: %2").arg(name, value) : tr("%1: %2 %3").arg(name, value, c.unit));
     }
     m_readout->setText(parts.join(QStringLiteral("   ")));
 }
@@ -576,8 +573,8 @@ Error TrendView::exportCsv(const QString &path, ExportRange range) const
 {
     const QStringList ids = exportChannelIds();
     const TrendSnapshot snap = range == ExportRange::WholeRecording
-                                   ? m_recorder->snapshotAll(ids)
-                                   : m_recorder->snapshot(m_viewFromUs, m_viewToUs, ids);
+        ? m_recorder->snapshotAll(ids)
+        : m_recorder->snapshot(m_viewFromUs, m_viewToUs, ids);
     return CsvWriter::save(path, snap);
 }
 
@@ -585,8 +582,7 @@ Error TrendView::exportPng(const QString &path) const
 {
     const QPixmap image = m_chartView->grab();
     QSaveFile file(path);
-    if (image.isNull() || !file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG")
-        || !file.commit()) {
+    if (image.isNull() || !file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
         return Error{ErrorCode::FileError,
                      tr("Cannot save the plot image %1: %2. Check that the folder exists and "
                         "is writable.")

@@ -55,7 +55,7 @@ public:
 
     TrendRecorder *recorder() const { return m_recorder; }
 
-    int windowSeconds() const; // one of TrendControls::windowChoicesSeconds()
+    int windowSeconds() const;          // one of TrendControls::windowChoicesSeconds()
     void setWindowSeconds(int seconds); // the nearest choice
 
     double sampleRate() const;

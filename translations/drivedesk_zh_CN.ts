@@ -499,6 +499,14 @@
         <source>How long to wait for each address to answer. USB adapters add up to 16 ms of latency: keep 50 ms or more unless the port is a native RS485 interface.</source>
         <translation>每个地址等待应答的时间。USB 转换器会增加最多 16 ms 的延迟：除非是原生 RS485 接口，否则请保持 50 ms 或以上。</translation>
     </message>
+    <message>
+        <source>No serial port was found. Plug in the USB adapter (it appears here within a second), or try DriveDesk on simulated drives.</source>
+        <translation>没有找到串口。请插入 USB 转换器（一秒内会出现在这里），或在模拟驱动器上试用 DriveDesk。</translation>
+    </message>
+    <message>
+        <source>Start the &amp;demo bench</source>
+        <translation>启动演示试验台(&amp;D)</translation>
+    </message>
 </context>
 <context>
     <name>dd::ConnectRequest</name>
@@ -765,6 +773,14 @@
     <message>
         <source>With --connect: %1 or detect (default).</source>
         <translation>与 --connect 配合：%1 或 detect（默认，自动识别）。</translation>
+    </message>
+    <message>
+        <source>A backup or run file: it is added to File &gt; Recent files and opens in the drive&apos;s tabs when a drive is selected.</source>
+        <translation>备份文件或整定记录文件：加入“文件 &gt; 最近的文件”，选中驱动器后在该驱动器的标签页中打开。</translation>
+    </message>
+    <message>
+        <source>Give one file at most (%1 given).</source>
+        <translation>最多只能给一个文件（给了 %1 个）。</translation>
     </message>
 </context>
 <context>
@@ -1223,10 +1239,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>请先选择驱动器：%1 将在该驱动器的某个标签页中打开。</translation>
     </message>
     <message>
-        <source>About DriveDesk</source>
-        <translation>关于 DriveDesk</translation>
-    </message>
-    <message>
         <source>DriveDesk — commissioning workbench</source>
         <translation>DriveDesk — 驱动器调试工具</translation>
     </message>
@@ -1305,10 +1317,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Main tool bar</source>
         <translation>主工具栏</translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;Commissioning and tuning workbench for servo and stepper drives over RS485 / RS232 and CAN.&lt;/p&gt;&lt;p&gt;Drive families: %3.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;通过 RS485 / RS232 和 CAN 调试、整定伺服和步进驱动器的工具。&lt;/p&gt;&lt;p&gt;驱动器系列：%3。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -5071,6 +5079,82 @@ Servo enable on or off.
         <translation>
             <numerusform>%n 个参数的回读值与写入值不同（第一个：%1：%2）。驱动器可能限制了该值或在当前状态下不接受它，或该参数为只读。</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>dd::SerialAccess</name>
+    <message>
+        <source>You may not use the serial port %1 (permission denied), and no group gives access to it. Ask the administrator of this computer for access.</source>
+        <translation>您无权使用串口 %1（权限被拒绝），且没有任何用户组可以访问它。请向这台计算机的管理员申请访问权限。</translation>
+    </message>
+    <message>
+        <source>You may not use the serial port %1 yet: you were added to the group &apos;%2&apos; after you logged in. Log out and log in again (or restart the computer).</source>
+        <translation>您暂时还不能使用串口 %1：您是在登录之后才被加入用户组“%2”的。请注销并重新登录（或重启计算机）。</translation>
+    </message>
+    <message>
+        <source>You may not use the serial port %1: it belongs to the group &apos;%2&apos;, and you are not a member. Add yourself once with
+    %3
+then log out and log in again (or restart the computer).</source>
+        <translation>您无权使用串口 %1：它属于用户组“%2”，而您不是该组成员。请执行一次
+    %3
+把自己加入该组，然后注销并重新登录（或重启计算机）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::SerialAccessDialog</name>
+    <message>
+        <source>Copied</source>
+        <translation>已复制</translation>
+    </message>
+    <message>
+        <source>No permission for %1</source>
+        <translation>无权访问 %1</translation>
+    </message>
+    <message>
+        <source>You may not use the serial port %1: it belongs to the group &apos;%2&apos;, and you are not a member. Add yourself once, in a terminal:</source>
+        <translation>您无权使用串口 %1：它属于用户组“%2”，而您不是该组成员。请在终端中执行一次下面的命令把自己加入该组：</translation>
+    </message>
+    <message>
+        <source>Then log out and log in again (or restart the computer), so that the new group takes effect, and connect again.</source>
+        <translation>然后注销并重新登录（或重启计算机），使新的用户组生效，再重新连接。</translation>
+    </message>
+    <message>
+        <source>&amp;Copy command</source>
+        <translation>复制命令(&amp;C)</translation>
+    </message>
+</context>
+<context>
+    <name>dd::AboutDialog</name>
+    <message>
+        <source>About DriveDesk</source>
+        <translation>关于 DriveDesk</translation>
+    </message>
+    <message>
+        <source>%1 (built with %2)</source>
+        <translation>%1（编译时为 %2）</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;Commissioning and tuning workbench for servo and stepper drives over RS485 / RS232 and CAN.&lt;/p&gt;&lt;p&gt;Drive families: %2.&lt;/p&gt;&lt;p&gt;Qt %3.&lt;/p&gt;&lt;p&gt;DriveDesk is free software: you can redistribute it and modify it under the terms of the GNU General Public License, version 3 or (at your option) any later version. It comes with ABSOLUTELY NO WARRANTY. See the LICENSE file, or &lt;a href=&quot;https://www.gnu.org/licenses/gpl-3.0.html&quot;&gt;gnu.org/licenses/gpl-3.0&lt;/a&gt;.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;通过 RS485 / RS232 和 CAN 调试和整定伺服与步进驱动器的工作台。&lt;/p&gt;&lt;p&gt;驱动器系列：%2。&lt;/p&gt;&lt;p&gt;Qt %3。&lt;/p&gt;&lt;p&gt;DriveDesk 是自由软件：您可以依据 GNU 通用公共许可证第 3 版或（由您选择）任何更新的版本再发布和修改它。它不提供任何担保。详见 LICENSE 文件或 &lt;a href="https://www.gnu.org/licenses/gpl-3.0.html"&gt;gnu.org/licenses/gpl-3.0&lt;/a&gt;。&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CommandLineFile</name>
+    <message>
+        <source>%1 opens in the drive&apos;s tabs when a drive is selected: connect (File → Connect) or start the demo bench.</source>
+        <translation>选中驱动器后，%1 会在该驱动器的标签页中打开：请连接（文件 → 连接）或启动演示试验台。</translation>
+    </message>
+    <message>
+        <source>%1 does not exist.</source>
+        <translation>%1 不存在。</translation>
+    </message>
+    <message>
+        <source>%1 is not a file that can be read.</source>
+        <translation>%1 不是可读取的文件。</translation>
+    </message>
+    <message>
+        <source>No tab of this drive opens %1; it stays under File → Recent files.</source>
+        <translation>这个驱动器的标签页都不能打开 %1；它保留在“文件 → 最近的文件”中。</translation>
     </message>
 </context>
 </TS>

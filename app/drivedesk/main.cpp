@@ -1,14 +1,17 @@
 // drivedesk: the commissioning workbench (GUI).
 #include "core/common/coreresources.h"
 #include "ui/bus/connectrequest.h"
+#include "ui/shell/commandlinefile.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/mainwindow.h"
 #include "ui/workspace/driveworkspace.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QSettings>
 #include <QTimer>
+#include <cstdlib>
 #include <optional>
 
 namespace dd {
@@ -33,6 +36,7 @@ struct Options
     QString panel;      // the drive tab to show first
     QString drive;      // select the first drive of this family
     QString screenshot; // grab the window into this PNG and quit
+    QString file;       // a backup or run file to open (drivedesk FILE: the desktop's "Open with")
     int screenshotDelayMs = 3000;
 };
 
@@ -88,6 +92,11 @@ Options parseOptions(const QApplication &app)
                                    dd::DriveDeskMain::tr("Seconds to wait before --screenshot (default 3)."),
                                    QStringLiteral("seconds"), QStringLiteral("3"));
     p.addOptions({demo, lang, connect, family, baud, bitrate, framing, panel, drive, screenshot, delay});
+    p.addPositionalArgument(
+        QStringLiteral("file"),
+        dd::DriveDeskMain::tr("A backup or run file: it is added to File > Recent files and opens in the drive's "
+                              "tabs when a drive is selected."),
+        QStringLiteral("[file]"));
     p.process(app);
 
     Options o;
@@ -102,6 +111,12 @@ Options parseOptions(const QApplication &app)
     o.drive = p.value(drive);
     o.screenshot = p.value(screenshot);
     o.screenshotDelayMs = qMax(0, int(p.value(delay).toDouble() * 1000));
+    const QStringList files = p.positionalArguments();
+    if (files.size() > 1) {
+        qCritical("%s", qPrintable(dd::DriveDeskMain::tr("Give one file at most (%1 given).").arg(files.size())));
+        std::exit(2);
+    }
+    o.file = files.value(0);
     return o;
 }
 
@@ -174,6 +189,11 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(QStringLiteral("drivedesk"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
     QGuiApplication::setApplicationDisplayName(QStringLiteral("DriveDesk"));
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.drivedesk.DriveDesk"));
+    QIcon fallbackIcon;
+    for (int size : {32, 64, 256})
+        fallbackIcon.addFile(QStringLiteral(":/icons/drivedesk-%1.png").arg(size));
+    QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("io.github.drivedesk.DriveDesk"), fallbackIcon));
     dd::ensureCoreResources();
 
     // The language first, so that --help is translated too.
@@ -191,6 +211,13 @@ int main(int argc, char *argv[])
     std::optional<dd::Family> family;
     if (!connectRequest(options, &request) || !preferredFamily(options, &family))
         return 2;
+    if (!options.file.isEmpty()) {
+        const QString problem = dd::CommandLineFile::checkReadable(options.file);
+        if (!problem.isEmpty()) {
+            qCritical("%s", qPrintable(problem));
+            return 2;
+        }
+    }
 
     dd::MainWindow window(&language); // --lang holds for this session only: not saved
     if (family)
@@ -199,6 +226,8 @@ int main(int argc, char *argv[])
     if (!options.panel.isEmpty())
         window.workspace()->setPreferredPanel(options.panel);
     window.show();
+    if (!options.file.isEmpty())
+        new dd::CommandLineFile(&window, options.file); // owned by the window
     if (options.demo)
         window.startDemo();
     if (request)

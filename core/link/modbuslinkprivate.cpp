@@ -1,6 +1,7 @@
 #include "core/link/modbuslinkprivate.h"
 
 #include "core/common/timerslack.h"
+#include "core/link/serialaccess.h"
 #include "core/link/traffictap.h"
 #include "core/link/urgentqueue.h"
 #include "core/protocol/modbus/crc16.h"
@@ -72,11 +73,13 @@ bool ModbusLink::Private::open(const SerialSettings &settings, Error *error)
     client->setNumberOfRetries(0);  // retries are ours: they must wait for a quiet line
     client->setInterFrameDelay(-1); // recompute for this baud (never shrinks otherwise)
     if (!client->connectDevice()) {
-        const Error e{ErrorCode::OpenFailed,
-                      ModbusLink::tr("Cannot open serial port %1: %2. Check the device name, that "
-                                     "no other program is using it, and that you may access it "
-                                     "(dialout group).")
-                          .arg(settings.portName, client->errorString())};
+        Error e{ErrorCode::OpenFailed,
+                ModbusLink::tr("Cannot open serial port %1: %2. Check the device name, that "
+                               "no other program is using it, and that you may access it "
+                               "(dialout group).")
+                    .arg(settings.portName, client->errorString())};
+        if (const auto denied = serialAccessProblem(settings.portName))
+            e.message = denied->message();
         delete client;
         if (error)
             *error = e;

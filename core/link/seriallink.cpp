@@ -1,6 +1,7 @@
 #include "core/link/seriallink.h"
 
 #include "core/common/timerslack.h"
+#include "core/link/serialaccess.h"
 #include "core/link/traffictap.h"
 #include "core/link/urgentqueue.h"
 
@@ -49,10 +50,12 @@ bool SerialLink::open(const SerialSettings &settings, Error *error)
     port->setStopBits(settings.stopBits);
     port->setFlowControl(QSerialPort::NoFlowControl);
     if (!port->open(QIODevice::ReadWrite)) {
-        const Error e{ErrorCode::OpenFailed,
-                      tr("Cannot open serial port %1: %2. Check the device name, that no other "
-                         "program is using it, and that you may access it (dialout group).")
-                          .arg(settings.portName, port->errorString())};
+        Error e{ErrorCode::OpenFailed,
+                tr("Cannot open serial port %1: %2. Check the device name, that no other "
+                   "program is using it, and that you may access it (dialout group).")
+                    .arg(settings.portName, port->errorString())};
+        if (const auto denied = serialAccessProblem(settings.portName))
+            e.message = denied->message();
         delete port;
         if (error)
             *error = e;

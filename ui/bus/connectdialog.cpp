@@ -117,6 +117,19 @@ QWidget *ConnectDialog::createSerialPage()
     form->addRow(m_portLabel, m_port);
     form->addRow(m_baudLabel, m_baud);
     form->addRow(QString(), m_sweep);
+    m_noPorts = new QWidget(page);
+    m_noPorts->setObjectName(QStringLiteral("noPortsHint"));
+    auto *hint = new QHBoxLayout(m_noPorts);
+    hint->setContentsMargins(0, 0, 0, 0);
+    m_noPortsText = new QLabel(m_noPorts);
+    m_noPortsText->setWordWrap(true);
+    m_demo = new QPushButton(m_noPorts);
+    m_demo->setObjectName(QStringLiteral("startDemoButton"));
+    connect(m_demo, &QPushButton::clicked, this, [this] { done(DemoRequested); });
+    hint->addWidget(m_noPortsText, 1);
+    hint->addWidget(m_demo, 0, Qt::AlignTop);
+    m_noPorts->hide();
+    form->addRow(m_noPorts);
     return page;
 }
 
@@ -207,9 +220,20 @@ QString ConnectDialog::currentInterface() const
 
 void ConnectDialog::fillPorts()
 {
+    setPorts(m_watcher->ports());
+}
+
+bool ConnectDialog::offersDemo() const
+{
+    return !m_noPorts->isHidden();
+}
+
+void ConnectDialog::setPorts(const QList<SerialPortEntry> &ports)
+{
+    m_noPorts->setHidden(!ports.isEmpty());
     const QString current = currentPort().isEmpty() ? m_wantedPort : currentPort();
     m_port->clear();
-    for (const SerialPortEntry &e : m_watcher->ports()) {
+    for (const SerialPortEntry &e : ports) {
         m_port->addItem(e.label(), e.path);
         m_port->setItemData(m_port->count() - 1, e.label(), Qt::ToolTipRole);
     }
@@ -401,6 +425,7 @@ void ConnectDialog::accept()
 void ConnectDialog::showEvent(QShowEvent *event)
 {
     m_watcher->start();
+    fillPorts(); // also when the list did not change (none at all: the demo bench is offered)
     QDialog::showEvent(event);
 }
 
@@ -429,6 +454,9 @@ void ConnectDialog::retranslate()
     m_baudLabel->setText(tr("&Baud rate:"));
     m_baud->setItemText(0, tr("Family default"));
     m_sweep->setText(tr("Try all common baud rates when scanning"));
+    m_noPortsText->setText(tr("No serial port was found. Plug in the USB adapter (it appears here within a "
+                              "second), or try DriveDesk on simulated drives."));
+    m_demo->setText(tr("Start the &demo bench"));
     m_pluginLabel->setText(tr("P&lugin:"));
     m_interfaceLabel->setText(tr("&Interface:"));
     m_refreshCan->setText(tr("Refresh"));

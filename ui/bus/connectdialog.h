@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ui/bus/connectrequest.h"
+#include "ui/bus/serialportentry.h"
 
 #include <QDialog>
 
@@ -28,6 +29,10 @@ class ConnectDialog : public QDialog
 {
     Q_OBJECT
 public:
+    // exec()'s result when the user chose "Start the demo bench" (offered when no serial port
+    // is found).
+    static constexpr int DemoRequested = 2;
+
     explicit ConnectDialog(QWidget *parent = nullptr);
 
     void setRequest(const ConnectRequest &request);
@@ -39,6 +44,10 @@ public:
 
     SerialPortWatcher *portWatcher() const { return m_watcher; }
     QComboBox *portCombo() const { return m_port; }
+    // Lists these serial ports (the watcher's list); with none, says so and offers the demo
+    // bench instead.
+    void setPorts(const QList<SerialPortEntry> &ports);
+    bool offersDemo() const;
 
     void accept() override;
 
@@ -75,6 +84,9 @@ private:
     QLabel *m_baudLabel = nullptr;
     QComboBox *m_baud = nullptr;
     QCheckBox *m_sweep = nullptr;
+    QWidget *m_noPorts = nullptr;
+    QLabel *m_noPortsText = nullptr;
+    QPushButton *m_demo = nullptr;
     // CAN.
     QLabel *m_pluginLabel = nullptr;
     QComboBox *m_plugin = nullptr;

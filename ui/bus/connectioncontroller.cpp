@@ -248,6 +248,13 @@ void ConnectionController::attemptFailed(const Error &error)
     }
     m_errors.append(error);
     emit errorOccurred(error);
+    if (error.code == ErrorCode::OpenFailed && m_job.attempt < m_job.attempts.size()) {
+        const ConnectionSettings &s = m_job.attempts.at(m_job.attempt);
+        if (!s.isCan()) {
+            if (const auto denied = serialAccessProblem(s.port))
+                emit serialAccessDenied(*denied);
+        }
+    }
     finishJob();
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/common/error.h"
 #include "core/drive/drivetypes.h"
+#include "core/link/serialaccess.h"
 #include "ui/bus/connectrequest.h"
 
 #include <QHash>
@@ -45,6 +46,8 @@ signals:
     void finished(const QString &summary, bool ok);
     void connected(int id);
     void errorOccurred(const dd::Error &error);
+    // A serial port could not be opened because this user may not use it (after errorOccurred).
+    void serialAccessDenied(const dd::SerialAccessProblem &problem);
 
 private:
     struct Job

@@ -6,8 +6,10 @@
 #include "ui/bus/connectioncontroller.h"
 #include "ui/bus/drivedirectory.h"
 #include "ui/bus/scanprogresswidget.h"
+#include "ui/bus/serialaccessdialog.h"
 #include "ui/bus/statuspoller.h"
 #include "ui/framemonitor/framemonitordock.h"
+#include "ui/shell/aboutdialog.h"
 #include "ui/shell/demolauncher.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/recentfiles.h"
@@ -242,6 +244,11 @@ void MainWindow::wireParts()
     connect(m_connections, &ConnectionController::finished, this,
             [this](const QString &summary) { m_statusBar->showMessage(summary, 10000); });
     connect(m_connections, &ConnectionController::errorOccurred, m_statusBar, &StatusBarWidget::countError);
+    connect(m_connections, &ConnectionController::serialAccessDenied, this, [this](const SerialAccessProblem &p) {
+        auto *dialog = new SerialAccessDialog(p, this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->open();
+    });
     connect(m_workspace, &DriveWorkspace::errorOccurred, m_statusBar, &StatusBarWidget::countError);
     connect(m_workspace, &DriveWorkspace::fileUsed, m_recent, &RecentFiles::add);
     connect(m_poller, &StatusPoller::pollFailed, m_statusBar,
@@ -284,8 +291,11 @@ void MainWindow::showConnectDialog()
 {
     ConnectDialog dialog(this);
     dialog.loadSettings();
-    if (dialog.exec() == QDialog::Accepted)
+    const int result = dialog.exec();
+    if (result == QDialog::Accepted)
         connectTo(dialog.request());
+    else if (result == ConnectDialog::DemoRequested)
+        startDemo();
 }
 
 void MainWindow::disconnectSelected()
@@ -314,14 +324,7 @@ void MainWindow::openRecentFile(const QString &path)
 
 void MainWindow::showAbout()
 {
-    QMessageBox::about(this, tr("About DriveDesk"),
-                       tr("<h3>DriveDesk %1</h3>"
-                          "<p>Commissioning and tuning workbench for servo and stepper drives over RS485 / "
-                          "RS232 and CAN.</p>"
-                          "<p>Drive families: %3.</p>"
-                          "<p>Built with Qt %2.</p>")
-                           .arg(QStringLiteral(DRIVEDESK_VERSION), QString::fromLatin1(qVersion()),
-                                familyIds().join(QStringLiteral(", "))));
+    AboutDialog(this).exec();
 }
 
 void MainWindow::restoreLayout()

@@ -12,6 +12,7 @@ PACKAGES=(
   libmodbus-dev mbpoll
   clang libclang-rt-14-dev clang-format
   xvfb xauth fonts-noto-cjk
+  help2man lintian desktop-file-utils appstream shared-mime-info bash-completion
 )
 
 missing=()

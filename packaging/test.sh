@@ -10,8 +10,14 @@
 #   fuzz     build-fuzz/  clang libFuzzer targets (tests/fuzz), each fuzzed for a bounded
 #                         time on a copy of its corpus (default 25 s; --fuzz-seconds N or
 #                         DRIVEDESK_FUZZ_SECONDS)
+#   package  build/       the Debian package (cmake --build build --target package, reusing
+#                         the default stage's build), checked with lintian,
+#                         desktop-file-validate, appstreamcli and update-mime-database, then
+#                         unpacked into a temporary root (dpkg -x) and run from there with a
+#                         clean environment: drivedesk-cli --sim info, drivedesk --demo
+#                         --screenshot (offscreen), the bash completion. One test per check.
 #
-# Usage: packaging/test.sh [--stage format|default|asan|fuzz|all[,...]] [--fuzz-seconds N]
+# Usage: packaging/test.sh [--stage format|default|asan|fuzz|package|all[,...]] [--fuzz-seconds N]
 # Every stage runs even when an earlier one failed; a stage that does not configure or build
 # counts as one failure and says that its tests did not run. The exit status is non-zero when
 # anything failed. The last line is always "N passed, N failed" (ctest tests of every stage
@@ -29,15 +35,15 @@ while [ $# -gt 0 ]; do
     --stage=*) stages="${1#--stage=}"; shift ;;
     --fuzz-seconds) fuzz_seconds="${2:-}"; shift 2 ;;
     --fuzz-seconds=*) fuzz_seconds="${1#--fuzz-seconds=}"; shift ;;
-    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,27p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done
-[ "$stages" = "all" ] && stages="format,default,asan,fuzz"
+[ "$stages" = "all" ] && stages="format,default,package,asan,fuzz"
 case "$fuzz_seconds" in ''|*[!0-9]*) echo "test.sh: --fuzz-seconds needs a whole number" >&2; exit 2 ;; esac
 IFS=',' read -r -a stage_list <<< "$stages"
 for s in "${stage_list[@]}"; do
-  case "$s" in format|default|asan|fuzz) ;; *) echo "test.sh: unknown stage '$s' (format, default, asan, fuzz, all)" >&2; exit 2 ;; esac
+  case "$s" in format|default|asan|fuzz|package) ;; *) echo "test.sh: unknown stage '$s' (format, default, asan, fuzz, package, all)" >&2; exit 2 ;; esac
 done
 
 passed=0
@@ -179,9 +185,127 @@ stage_format() {
   fi
 }
 
+# One check of the package stage: a test that passes or fails.
+package_check() {
+  local name="$1"; shift
+  if "$@"; then
+    passed=$((passed + 1)); echo "ok $name"
+  else
+    failed=$((failed + 1)); echo "FAILED $name"; note "package: $name FAILED"
+  fi
+}
+
+# Every file the package must hold (a missing install rule fails here).
+package_has_files() {
+  local root="$1" f missing=0
+  for f in usr/bin/drivedesk usr/bin/drivedesk-cli usr/bin/drivedesk-sim \
+           usr/share/applications/io.github.drivedesk.DriveDesk.desktop \
+           usr/share/metainfo/io.github.drivedesk.DriveDesk.metainfo.xml \
+           usr/share/mime/packages/drivedesk.xml \
+           usr/share/icons/hicolor/scalable/apps/io.github.drivedesk.DriveDesk.svg \
+           usr/share/icons/hicolor/48x48/apps/io.github.drivedesk.DriveDesk.png \
+           usr/share/icons/hicolor/256x256/apps/io.github.drivedesk.DriveDesk.png \
+           usr/share/man/man1/drivedesk.1.gz usr/share/man/man1/drivedesk-cli.1.gz \
+           usr/share/man/man1/drivedesk-sim.1.gz usr/share/man/zh_CN/man1/drivedesk-cli.1.gz \
+           usr/share/bash-completion/completions/drivedesk-cli \
+           usr/share/doc/drivedesk/copyright usr/share/doc/drivedesk/changelog.gz; do
+    [ -s "$root/$f" ] || { echo "missing from the package: /$f"; missing=1; }
+  done
+  return "$missing"
+}
+
+# Runs an installed program with nothing from the build tree: a clean environment whose
+# PATH starts at the unpacked root.
+run_installed() {
+  local root="$1"; shift
+  env -i PATH="$root/usr/bin:/usr/bin:/bin" HOME="$root/home" XDG_RUNTIME_DIR="$root/run" \
+    QT_QPA_PLATFORM=offscreen LANG=C.UTF-8 "$@"
+}
+
+installed_cli_info() {
+  local root="$1" out
+  out="$(run_installed "$root" drivedesk-cli --sim info 2>&1)" || { echo "$out"; return 1; }
+  echo "$out" | head -n 3
+  grep -q '^Family *servo-modbus' <<< "$out"
+}
+
+installed_gui_screenshot() {
+  local root="$1" shot="$1/demo.png"
+  run_installed "$root" drivedesk --demo --screenshot "$shot" --screenshot-delay 3 > "$root/gui.log" 2>&1 \
+    || { tail -n 20 "$root/gui.log"; return 1; }
+  [ "$(stat -c %s "$shot" 2>/dev/null || echo 0)" -gt 20000 ] || { echo "no screenshot in $shot"; return 1; }
+}
+
+# The completion as bash runs it (bash-completion's helpers), against the installed program.
+installed_completion() {
+  local root="$1" got
+  complete_words() {
+    run_installed "$root" bash -c 'source /usr/share/bash-completion/bash_completion; source "$1"; shift
+      COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); COMP_LINE="$*"; COMP_POINT=${#COMP_LINE}
+      _drivedesk_cli; printf "%s\n" "${COMPREPLY[@]}"' _ \
+      "$root/usr/share/bash-completion/completions/drivedesk-cli" "$@"
+  }
+  got="$(complete_words drivedesk-cli mon)"; [ "$got" = "monitor" ] || { echo "command: '$got'"; return 1; }
+  got="$(complete_words drivedesk-cli --family shuoke get start-s)"
+  [ "$got" = "start-speed" ] || { echo "parameter: '$got'"; return 1; }
+  got="$(complete_words drivedesk-cli --family shuoke monitor speed,position-e)"
+  [ "$got" = "speed,position-error" ] || { echo "channel: '$got'"; return 1; }
+  got="$(complete_words drivedesk-cli restore x.json --dry)"
+  [ "$got" = "--dry-run" ] || { echo "option: '$got'"; return 1; }
+}
+
+mime_types_load() {
+  local root="$1" db
+  db="$(mktemp -d)"
+  mkdir -p "$db/mime/packages"
+  cp "$root/usr/share/mime/packages/drivedesk.xml" "$db/mime/packages/"
+  local out rc=0
+  out="$(update-mime-database "$db/mime" 2>&1)" || { echo "$out"; rc=1; }
+  # the run files by extension, the backups by content
+  [ "$rc" -eq 0 ] && { grep -q 'application/x-drivedesk-run:\*\.ddrun' "$db/mime/globs2" || rc=1; }
+  [ "$rc" -eq 0 ] && { grep -aq 'application/x-drivedesk-backup' "$db/mime/magic" || rc=1; }
+  rm -rf "$db"
+  return "$rc"
+}
+
+stage_package() {
+  local start deb root
+  start=$(date +%s)
+  banner "package: build the Debian package"
+  if [ ! -f build/build.ninja ] && ! cmake --preset default; then
+    failed=$((failed + 1)); note "package: configure FAILED"; return
+  fi
+  rm -f build/drivedesk_*.deb
+  if ! cmake --build --preset default --target package; then
+    failed=$((failed + 1)); note "package: building the package FAILED"
+    note "package: stage took $(seconds_since "$start") s"; return
+  fi
+  deb="$(ls build/drivedesk_*_amd64.deb 2>/dev/null | head -n 1)"
+  if [ -z "$deb" ]; then
+    failed=$((failed + 1)); note "package: no build/drivedesk_*_amd64.deb"; return
+  fi
+  banner "package: checks of $deb"
+  package_check "lintian: no errors, no warnings" lintian --fail-on error,warning --tag-display-limit 0 "$deb"
+  root="$(mktemp -d)"
+  mkdir -p "$root/home" "$root/run"; chmod 700 "$root/run"
+  dpkg -x "$deb" "$root"
+  package_check "the package holds every file" package_has_files "$root"
+  package_check "desktop-file-validate" \
+    desktop-file-validate "$root/usr/share/applications/io.github.drivedesk.DriveDesk.desktop"
+  package_check "appstreamcli validate" \
+    appstreamcli validate --no-net "$root/usr/share/metainfo/io.github.drivedesk.DriveDesk.metainfo.xml"
+  package_check "update-mime-database takes the MIME types" mime_types_load "$root"
+  package_check "installed drivedesk-cli --sim info" installed_cli_info "$root"
+  package_check "installed drivedesk --demo --screenshot" installed_gui_screenshot "$root"
+  package_check "installed bash completion" installed_completion "$root"
+  rm -rf "$root"
+  note "package: $deb; stage took $(seconds_since "$start") s"
+}
+
 for s in "${stage_list[@]}"; do
   case "$s" in
     format) stage_format ;;
+    package) stage_package ;;
     default|asan) stage_ctest "$s" ;;
     fuzz) stage_fuzz ;;
   esac

@@ -95,8 +95,8 @@ void FleetBackupCommand::save()
         o.insert(QStringLiteral("parameters"), file.values().size());
         o.insert(QStringLiteral("checksum"), BackupFile::checksum(file.values()));
         drives.append(o);
-        rows.append({tr("drive %1").arg(r.address),
-                     tr("%n parameter(s) -> %1", nullptr, file.values().size()).arg(name)});
+        rows.append(
+            {tr("drive %1").arg(r.address), tr("%n parameter(s) -> %1", nullptr, file.values().size()).arg(name)});
     }
 
     QJsonObject link;

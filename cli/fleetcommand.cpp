@@ -31,8 +31,8 @@ bool FleetCommand::prepareTargets(const CliInvocation &inv, QString *error)
         const QString option = QString::fromLatin1(o);
         if (!inv.has(option))
             continue;
-        const auto v =
-            CliValues::integer(inv.value(option), range.first, range.last, QStringLiteral("--") + option, error);
+        const auto v = CliValues::integer(inv.value(option), range.first, range.last, QStringLiteral("--") + option,
+                                          error);
         if (!v)
             return false;
         (option == QLatin1String("from") ? m_scan.from : m_scan.to) = int(*v);
@@ -70,9 +70,8 @@ void FleetCommand::scan()
         if (error && found.isEmpty())
             return fail(error);
         if (found.isEmpty())
-            return fail({ErrorCode::Timeout, tr("No drive answered the scan of addresses %1 to %2.")
-                                                 .arg(m_scan.from)
-                                                 .arg(m_scan.to)});
+            return fail({ErrorCode::Timeout,
+                         tr("No drive answered the scan of addresses %1 to %2.").arg(m_scan.from).arg(m_scan.to)});
         QStringList list;
         for (int a : std::as_const(found))
             list << QString::number(a);
@@ -186,9 +185,10 @@ void FleetCommand::conclude(const QJsonObject &json, const QString &text)
             code = r.error.code;
         bad << QString::number(r.address);
     }
-    fail({code, tr("%n of %1 drive(s) did not complete: %2.", nullptr, int(bad.size()))
-                    .arg(m_transfer->results().size())
-                    .arg(bad.join(QLatin1String(", ")))},
+    fail({code,
+          tr("%n of %1 drive(s) did not complete: %2.", nullptr, int(bad.size()))
+              .arg(m_transfer->results().size())
+              .arg(bad.join(QLatin1String(", ")))},
          json, worst);
 }
 

@@ -55,8 +55,8 @@ bool SourceDiffCommand::parseSpec(const QString &text, Spec *spec, QString *erro
     }
     if (text.startsWith(QLatin1String("drive:"))) {
         const AddressRange range = g.addressRange();
-        const auto a = CliValues::integer(text.mid(6), range.first, range.last,
-                                          tr("diff: the address of %1").arg(text), error);
+        const auto a = CliValues::integer(text.mid(6), range.first, range.last, tr("diff: the address of %1").arg(text),
+                                          error);
         if (!a)
             return false;
         spec->kind = ParameterSource::Kind::Drive;

@@ -52,7 +52,7 @@ private:
 QStringList TestCliFleet::args(std::initializer_list<const char *> words) const
 {
     QStringList l{QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--port"), m_port,
-                  QStringLiteral("--baud"), QStringLiteral("115200")};
+                  QStringLiteral("--baud"),   QStringLiteral("115200")};
     for (const char *w : words)
         l << QString::fromUtf8(w);
     return l;
@@ -217,7 +217,9 @@ void TestCliFleet::diffCombinations()
     QCOMPARE(r.exitCode, 0);
     QCOMPARE(r.json().value("same").toInt(), 0);
     const QString dict = writeDictionaryWithDefaults();
-    r = runCli(args({"--json", "--dictionary"}) << dict << "diff" << "defaults" << "drive:2");
+    r = runCli(args({"--json", "--dictionary"}) << dict << "diff"
+                                                << "defaults"
+                                                << "drive:2");
     QCOMPARE(r.exitCode, 1);
     QCOMPARE(r.json().value("different").toInt(), 1); // PA12's default is not the factory value
     QCOMPARE(r.json().value("same").toInt(), 9);
@@ -229,7 +231,8 @@ QString TestCliFleet::writeDictionaryWithDefaults()
     // except PA12 (one more).
     QFile f(QStringLiteral(":/drivedesk/dictionaries/servo-modbus.json"));
     if (!f.open(QIODevice::ReadOnly))
-        f.setFileName(qEnvironmentVariable("DRIVEDESK_SOURCE_DIR") + QStringLiteral("/resources/dictionaries/servo-modbus.json"));
+        f.setFileName(qEnvironmentVariable("DRIVEDESK_SOURCE_DIR")
+                      + QStringLiteral("/resources/dictionaries/servo-modbus.json"));
     if (!f.isOpen() && !f.open(QIODevice::ReadOnly))
         return {};
     QJsonObject root = QJsonDocument::fromJson(f.readAll()).object();
@@ -257,8 +260,9 @@ void TestCliFleet::changedOnlyRoundTrip()
     QVERIFY(!dict.isEmpty());
     sim(1)->setParameter(15, 1515);
     const QString file = m_dir.filePath(QStringLiteral("changed.json"));
-    CliRun r = runCli(args({"--json", "--address", "1", "--dictionary"}) << dict << "backup" << "--changed-only" << "-o"
-                                                                              << file);
+    CliRun r = runCli(args({"--json", "--address", "1", "--dictionary"}) << dict << "backup"
+                                                                         << "--changed-only"
+                                                                         << "-o" << file);
     QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
     QVERIFY(r.json().value("changedOnly").toBool());
     BackupFile f;
@@ -311,14 +315,14 @@ void TestCliFleet::badInputsSendNothing()
     const QList<QStringList> bad = {
         args({"--trace", "--address", "2,300", "restore"}) << file, // outside 1..247
         args({"--trace", "--address", "2,x", "restore"}) << file,
-        args({"--trace", "--address", "2,2", "restore"}) << file,   // twice
+        args({"--trace", "--address", "2,2", "restore"}) << file,    // twice
         args({"--trace", "--address", "1,2", "restore"}) << canFile, // another family
         args({"--trace", "restore", "--all"}) << canFile,
-        args({"--trace", "--address", "1,2", "info"}),              // one drive only
+        args({"--trace", "--address", "1,2", "info"}), // one drive only
         args({"--trace", "--address", "1", "restore", "--all"}) << file,
         args({"--trace", "diff", "drive:1"}) << canFile,
         args({"--trace", "diff", "drive:999", "defaults"}),
-        {QStringLiteral("diff"), file, canFile},                     // families differ
+        {QStringLiteral("diff"), file, canFile}, // families differ
         args({"--trace", "diff", "drive:1", "nosuchfile.json"}),
     };
     for (const QStringList &a : bad) {

@@ -261,11 +261,14 @@ void TestFaultFleet::linkVanishesMidRestore()
     int replies = 0;
     connect(m_bench->serialBus(), &SimSerialBus::replyWritten, this, [&](const QByteArray &, qint64, int) {
         if (++replies == 12)
-            QMetaObject::invokeMethod(m_bench.get(), [this] { m_bench->stop(); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                m_bench.get(), [this] { m_bench->stop(); }, Qt::QueuedConnection);
     });
     QElapsedTimer timer;
     timer.start();
-    QVERIFY2(run(t, [&] { t.restore(file, {}); }, 15000), "the restore hangs when the link vanishes");
+    QVERIFY2(run(
+                 t, [&] { t.restore(file, {}); }, 15000),
+             "the restore hangs when the link vanishes");
     qInfo("all 8 drives reported %lld ms after the start", timer.elapsed());
     int failed = 0;
     for (const FleetDriveResult &r : t.results()) {

@@ -104,7 +104,7 @@ private:
 
 struct Frames
 {
-    QList<int> tx, rx; // bytes (serial) or data length (CAN) per frame
+    QList<int> tx, rx;    // bytes (serial) or data length (CAN) per frame
     QList<qint64> gapsUs; // serial: from each reply's arrival to the next request's hand-over
     qint64 lastRxUs = -1;
     void clear()
@@ -184,8 +184,8 @@ std::unique_ptr<Client> connectTo(const ConnectionSettings &settings, int drives
                              f->tx << int(r.bytes.size());
                              if (f->lastRxUs >= 0 && !r.isCan)
                                  f->gapsUs << r.timestampUs - f->lastRxUs;
-                         } else if (r.direction == TrafficRecord::Direction::Rx && !(r.isCan && (r.canId & 0x780) == 0x700))
-                         {
+                         } else if (r.direction == TrafficRecord::Direction::Rx
+                                    && !(r.isCan && (r.canId & 0x780) == 0x700)) {
                              f->rx << int(r.bytes.size());
                              f->lastRxUs = r.timestampUs;
                          }
@@ -251,7 +251,8 @@ void benchModbusBackup()
     double floorUs = 0;
     for (int i = 0; i < g_runs; ++i) {
         QString why;
-        const double t = runJob(*c, [](FleetTransfer &f) { f.backup(); }, &why);
+        const double t = runJob(
+            *c, [](FleetTransfer &f) { f.backup(); }, &why);
         if (t < 0)
             return out(name + QStringLiteral(": FAILED: ") + why);
         runs << t;
@@ -286,7 +287,8 @@ void benchCanBackup()
     double floorUs = 0;
     for (int i = 0; i < g_runs; ++i) {
         QString why;
-        const double t = runJob(*c, [](FleetTransfer &f) { f.backup(); }, &why);
+        const double t = runJob(
+            *c, [](FleetTransfer &f) { f.backup(); }, &why);
         if (t < 0)
             return out(name + QStringLiteral(": FAILED: ") + why);
         runs << t;
@@ -333,7 +335,9 @@ void benchModbusRestore()
     file.setValues(values);
     // The reads that find the differences cost what a backup's do: measured on the wire.
     QString why;
-    if (runJob(*c, [](FleetTransfer &f) { f.backup(); }, &why) < 0)
+    if (runJob(
+            *c, [](FleetTransfer &f) { f.backup(); }, &why)
+        < 0)
         return out(name + QStringLiteral(": FAILED: ") + why);
     const double readsUs = serialFloorUs(c->frames.tx, c->frames.rx, 115200, SimSerialDevice::DefaultLatencyUs);
     QList<double> runs;
@@ -346,7 +350,8 @@ void benchModbusRestore()
                     d->setParameter(p, quint16(100 + p));
             }
         });
-        const double t = runJob(*c, [&](FleetTransfer &f) { f.restore(file, {}); }, &why);
+        const double t = runJob(
+            *c, [&](FleetTransfer &f) { f.restore(file, {}); }, &why);
         if (t < 0)
             return out(name + QStringLiteral(": FAILED: ") + why);
         runs << t;
@@ -358,8 +363,8 @@ void benchModbusRestore()
                           "writes, their read-backs. The writes and read-backs alone: floor %2, ratio %3 "
                           "(the reads that find the differences: %4); %5")
                .arg(c->frames.tx.size() / 8.0)
-               .arg(ms(writesUs / 1000), QString::number(median(runs) / (writesUs / 1000), 'f', 3),
-                    ms(readsUs / 1000), c->frames.gapText()));
+               .arg(ms(writesUs / 1000), QString::number(median(runs) / (writesUs / 1000), 'f', 3), ms(readsUs / 1000),
+                    c->frames.gapText()));
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 #include "ui/bus/drivedirectory.h"
 #include "ui/bus/scanprogresswidget.h"
 #include "ui/bus/statuspoller.h"
+#include "ui/fleet/fleetactions.h"
 #include "ui/framemonitor/framemonitordock.h"
 #include "ui/shell/demolauncher.h"
 #include "ui/shell/languagemanager.h"
@@ -172,6 +173,7 @@ void MainWindow::createMenus()
     m_viewMenu = menuBar()->addMenu(QString());
     m_viewMenu->setObjectName(QStringLiteral("viewMenu"));
     m_viewMenu->addAction(m_busDock->toggleViewAction());
+    new FleetActions(m_directory, m_busTree, m_viewMenu, this); // Compare, several drives
 
     m_languageMenu = menuBar()->addMenu(QString());
     m_languageMenu->setObjectName(QStringLiteral("languageMenu"));

@@ -249,6 +249,10 @@
         <source>The backup was taken from firmware %1; the drive has firmware %2. Parameters may differ between firmware versions: compare them first, then force the restore if you are sure.</source>
         <translation>备份取自固件 %1，驱动器固件为 %2。不同固件版本的参数可能不同：请先比较参数，确认无误后再强制恢复。</translation>
     </message>
+    <message>
+        <source>%1: field &quot;scope&quot; must be &quot;all&quot; or &quot;%2&quot; (found &quot;%3&quot;)</source>
+        <translation>%1：字段 &quot;scope&quot; 必须是 &quot;all&quot; 或 &quot;%2&quot;（实际为 &quot;%3&quot;）</translation>
+    </message>
 </context>
 <context>
     <name>dd::BusTreeWidget</name>
@@ -317,6 +321,24 @@
     <message>
         <source>%1 — %2 (%3)</source>
         <translation>%1 — %2（%3）</translation>
+    </message>
+    <message numerus="yes">
+        <source>Apply backup to %n drive(s)…</source>
+        <translation>
+            <numerusform>将备份应用到 %n 台驱动器…</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Copy parameters from drive %1 to %n drive(s)…</source>
+        <translation>
+            <numerusform>将驱动器 %1 的参数复制到 %n 台驱动器…</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Compare %n drive(s)…</source>
+        <translation>
+            <numerusform>比较 %n 台驱动器…</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3934,6 +3956,12 @@ Write anyway?</source>
             <numerusform>已将 %n 个参数保存到 %1。</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>%n parameter(s) changed from the defaults saved to %1.</source>
+        <translation>
+            <numerusform>已将 %n 个与默认值不同的参数保存到 %1。</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>dd::FileCommand</name>
@@ -4593,6 +4621,14 @@ Servo enable on or off.
         <source>The %1 family talks RS485: use --port DEVICE instead of --can.</source>
         <translation>%1 系列使用 RS485 通讯：请用 --port DEVICE 代替 --can。</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; works on one drive: give one --address. backup, restore and diff take several (--address 1,2,5).</source>
+        <translation>&quot;%1&quot; 只作用于一台驱动器：请只给一个 --address。backup、restore 和 diff 可接受多个（--address 1,2,5）。</translation>
+    </message>
+    <message>
+        <source>--address: %1 is given twice.</source>
+        <translation>--address：%1 重复给出。</translation>
+    </message>
 </context>
 <context>
     <name>dd::CliCommand</name>
@@ -5071,6 +5107,457 @@ Servo enable on or off.
         <translation>
             <numerusform>%n 个参数的回读值与写入值不同（第一个：%1：%2）。驱动器可能限制了该值或在当前状态下不接受它，或该参数为只读。</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetBackupCommand</name>
+    <message>
+        <source>backup of several drives needs the folder to write to: backup --all -o DIR.</source>
+        <translation>备份多台驱动器需要指定写入的文件夹：backup --all -o DIR。</translation>
+    </message>
+    <message>
+        <source>backup: %1 is a file; several drives are saved into a folder (-o DIR).</source>
+        <translation>backup：%1 是文件；多台驱动器的备份保存在文件夹中（-o DIR）。</translation>
+    </message>
+    <message>
+        <source>backup: the folder %1 does not exist.</source>
+        <translation>backup：文件夹 %1 不存在。</translation>
+    </message>
+    <message>
+        <source>backup: cannot create the folder %1.</source>
+        <translation>backup：无法创建文件夹 %1。</translation>
+    </message>
+    <message>
+        <source>drive %1</source>
+        <translation>驱动器 %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) -&gt; %1</source>
+        <translation>
+            <numerusform>%n 个参数 -&gt; %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>backup: cannot write %1: %2</source>
+        <translation>backup：无法写入 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) saved to %2 (index: %3).</source>
+        <translation>
+            <numerusform>%n 台驱动器中有 %1 台已保存到 %2（索引：%3）。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetCommand</name>
+    <message>
+        <source>%1: give either --all or --address, not both.</source>
+        <translation>%1：请给出 --all 或 --address，不能同时给出。</translation>
+    </message>
+    <message>
+        <source>%1: --from and --to narrow the scan of --all.</source>
+        <translation>%1：--from 和 --to 用于缩小 --all 的扫描范围。</translation>
+    </message>
+    <message>
+        <source>%1: --from %2 is above --to %3.</source>
+        <translation>%1：--from %2 大于 --to %3。</translation>
+    </message>
+    <message>
+        <source>This family cannot scan; name the drives with --address.</source>
+        <translation>该系列不能扫描；请用 --address 指定驱动器。</translation>
+    </message>
+    <message>
+        <source>Scanning addresses %1 to %2 ...</source>
+        <translation>正在扫描地址 %1 到 %2 ...</translation>
+    </message>
+    <message>
+        <source>Interrupted during the scan; nothing was done.</source>
+        <translation>扫描时被中断；未做任何操作。</translation>
+    </message>
+    <message>
+        <source>No drive answered the scan of addresses %1 to %2.</source>
+        <translation>扫描地址 %1 到 %2 时没有驱动器应答。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Found %n drive(s): %1.</source>
+        <translation>
+            <numerusform>找到 %n 台驱动器：%1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Finishing the drives under way so that their reports are complete; no further drive is started.</source>
+        <translation>正在完成进行中的驱动器，以便报告完整；不再开始新的驱动器。</translation>
+    </message>
+    <message>
+        <source>The link was lost. Check the adapter and its cable.</source>
+        <translation>连接已断开。请检查适配器及其电缆。</translation>
+    </message>
+    <message>
+        <source>drive %1: not attempted (%2)</source>
+        <translation>驱动器 %1：未尝试（%2）</translation>
+    </message>
+    <message>
+        <source>drive %1: not attempted</source>
+        <translation>驱动器 %1：未尝试</translation>
+    </message>
+    <message>
+        <source>while identifying it</source>
+        <translation>识别时</translation>
+    </message>
+    <message>
+        <source>while reading its parameters</source>
+        <translation>读取参数时</translation>
+    </message>
+    <message>
+        <source>while writing</source>
+        <translation>写入时</translation>
+    </message>
+    <message>
+        <source>before it started</source>
+        <translation>开始之前</translation>
+    </message>
+    <message>
+        <source>drive %1: FAILED %2: %3</source>
+        <translation>驱动器 %1：%2失败：%3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n of %1 drive(s) did not complete: %2.</source>
+        <translation>
+            <numerusform>%1 台驱动器中有 %n 台未完成：%2。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetRestoreCommand</name>
+    <message>
+        <source>a backup file</source>
+        <translation>一个备份文件</translation>
+    </message>
+    <message>
+        <source>drive %1: already matches the file; nothing to write.</source>
+        <translation>驱动器 %1：已与文件一致；无需写入。</translation>
+    </message>
+    <message numerus="yes">
+        <source>drive %1: %n parameter(s) would be written.</source>
+        <translation>
+            <numerusform>驱动器 %1：将写入 %n 个参数。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>drive %1: %n parameter(s) written and verified.</source>
+        <translation>
+            <numerusform>驱动器 %1：已写入并校验 %n 个参数。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Dry run on %n drive(s); nothing was sent.</source>
+        <translation>
+            <numerusform>对 %n 台驱动器试运行；未发送任何内容。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) restored from %2.</source>
+        <translation>
+            <numerusform>%n 台驱动器中有 %1 台已从 %2 恢复。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::SourceDiffCommand</name>
+    <message>
+        <source>diff: the address of %1</source>
+        <translation>diff：%1 的地址</translation>
+    </message>
+    <message>
+        <source>diff: %1 is neither a file nor drive, drive:ADDRESS or defaults.</source>
+        <translation>diff：%1 既不是文件，也不是 drive、drive:地址 或 defaults。</translation>
+    </message>
+    <message>
+        <source>two sources</source>
+        <translation>两个来源</translation>
+    </message>
+    <message>
+        <source>%1 is a backup of a %2 drive and %3 of a %4 drive: parameters of different families have different meanings and are never compared.</source>
+        <translation>%1 是 %2 驱动器的备份，%3 是 %4 驱动器的：不同系列的参数含义不同，从不比较。</translation>
+    </message>
+    <message>
+        <source>%1 is a backup of a %2 drive; the drives on this link are %3 drives and are never compared with another family. To talk to %2 drives add --family %2.</source>
+        <translation>%1 是 %2 驱动器的备份；此连接上是 %3 驱动器，从不与其他系列比较。要与 %2 驱动器通信，请加 --family %2。</translation>
+    </message>
+    <message>
+        <source>drive %1: %2</source>
+        <translation>驱动器 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1  %2</source>
+        <translation>%1  %2</translation>
+    </message>
+    <message>
+        <source> (communication setting)</source>
+        <translation>（通信设置）</translation>
+    </message>
+    <message>
+        <source>Firmware differs: %1 has %2, %3 has %4.
+</source>
+        <translation>固件不同：%1 为 %2，%3 为 %4。
+</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 same (%3 / %4).</source>
+        <translation>%1 个不同，%2 个相同（%3 / %4）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CompareView</name>
+    <message>
+        <source>%1 is not added: %2</source>
+        <translation>未添加 %1：%2</translation>
+    </message>
+    <message>
+        <source>The %1 dictionary gives no default values (its manual publishes none); a dictionary file of your own can add them.</source>
+        <translation>%1 参数字典没有默认值（其手册未公布）；可以用自己的字典文件添加。</translation>
+    </message>
+    <message>
+        <source>drive %1 could not be read: %2</source>
+        <translation>无法读取驱动器 %1：%2</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>%1
+firmware %2</source>
+        <translation>%1
+固件 %2</translation>
+    </message>
+    <message>
+        <source> (communication)</source>
+        <translation>（通信）</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) differ.</source>
+        <translation>
+            <numerusform>%n 个参数不同。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The firmware differs between the sources: values may mean different things.</source>
+        <translation>各来源的固件不同：数值的含义可能不同。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: drive %2</source>
+        <translation>%1：驱动器 %2</translation>
+    </message>
+    <message>
+        <source>No drive on an open link</source>
+        <translation>已打开的连接上没有驱动器</translation>
+    </message>
+    <message>
+        <source>Add a backup file</source>
+        <translation>添加备份文件</translation>
+    </message>
+    <message>
+        <source>DriveDesk backups (*.json *.ddbackup);;All files (*)</source>
+        <translation>DriveDesk 备份 (*.json *.ddbackup);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Export the comparison</source>
+        <translation>导出比较结果</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Compare parameters</source>
+        <translation>比较参数</translation>
+    </message>
+    <message>
+        <source>Add drive…</source>
+        <translation>添加驱动器…</translation>
+    </message>
+    <message>
+        <source>Add file…</source>
+        <translation>添加文件…</translation>
+    </message>
+    <message>
+        <source>Add defaults</source>
+        <translation>添加默认值</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>导出 CSV…</translation>
+    </message>
+    <message>
+        <source>Only differences</source>
+        <translation>仅显示差异</translation>
+    </message>
+    <message>
+        <source>Search parameters</source>
+        <translation>搜索参数</translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetActions</name>
+    <message>
+        <source>Co&amp;mpare parameters…</source>
+        <translation>比较参数(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>Apply a backup to several drives</source>
+        <translation>将备份应用到多台驱动器</translation>
+    </message>
+    <message>
+        <source>DriveDesk backups (*.json *.ddbackup);;All files (*)</source>
+        <translation>DriveDesk 备份 (*.json *.ddbackup);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Apply backup</source>
+        <translation>应用备份</translation>
+    </message>
+    <message>
+        <source>%1 is a backup of a %2 drive; these are %3 drives. A backup is never applied to another family.</source>
+        <translation>%1 是 %2 驱动器的备份；这些是 %3 驱动器。备份从不应用到其他系列。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetApplyDialog</name>
+    <message>
+        <source>drive %1</source>
+        <translation>驱动器 %1</translation>
+    </message>
+    <message>
+        <source>Reading drive %1…</source>
+        <translation>正在读取驱动器 %1…</translation>
+    </message>
+    <message>
+        <source>Drive %1 could not be read: %2. Nothing was written.</source>
+        <translation>无法读取驱动器 %1：%2。未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Reading the drives to plan the changes; nothing is written yet…</source>
+        <translation>正在读取驱动器以规划更改；尚未写入任何内容…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Plan: %n parameter(s) to write in all. Only these are written; each is read back.</source>
+        <translation>
+            <numerusform>计划：共写入 %n 个参数。只写入这些参数，每个都会回读校验。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write to the enabled or moving drive(s) %1 anyway: a parameter changed while the axis is energised takes effect at once and can make it jerk or move.</source>
+        <translation>仍然写入已使能或正在运动的驱动器 %1：轴通电时更改的参数立即生效，可能使其抖动或运动。</translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>正在写入…</translation>
+    </message>
+    <message>
+        <source>Done: %1 verified, %2 failed, %3 not attempted.</source>
+        <translation>完成：%1 台已校验，%2 台失败，%3 台未尝试。</translation>
+    </message>
+    <message>
+        <source>reading…</source>
+        <translation>正在读取…</translation>
+    </message>
+    <message>
+        <source>already matches: nothing to write</source>
+        <translation>已一致：无需写入</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) will change</source>
+        <translation>
+            <numerusform>将更改 %n 个参数</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not planned: %1 — it will not be written</source>
+        <translation>未能规划：%1 — 不会写入</translation>
+    </message>
+    <message>
+        <source>writing…</source>
+        <translation>正在写入…</translation>
+    </message>
+    <message numerus="yes">
+        <source>verified: %n parameter(s) written and read back</source>
+        <translation>
+            <numerusform>已校验：%n 个参数已写入并回读</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>FAILED: %1 (written: %2; not written or unknown: %3)</source>
+        <translation>失败：%1（已写入：%2；未写入或未知：%3）</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>not attempted (an earlier drive failed)</source>
+        <translation>未尝试（之前的驱动器失败）</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>left alone: a communication setting (stays %1)</source>
+        <translation>保持不变：通信设置（仍为 %1）</translation>
+    </message>
+    <message>
+        <source>Apply to several drives</source>
+        <translation>应用到多台驱动器</translation>
+    </message>
+    <message>
+        <source>From %1 to the drives %2. Communication settings (address, baud rate, station number) are left alone.</source>
+        <translation>从 %1 到驱动器 %2。通信设置（地址、波特率、站号）保持不变。</translation>
+    </message>
+    <message>
+        <source>(no source yet)</source>
+        <translation>（尚无来源）</translation>
+    </message>
+    <message>
+        <source>Drive / parameter</source>
+        <translation>驱动器 / 参数</translation>
+    </message>
+    <message>
+        <source>Plan and result</source>
+        <translation>计划与结果</translation>
+    </message>
+    <message>
+        <source>Stop at the first failed drive</source>
+        <translation>在第一台失败的驱动器处停止</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>应用</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterComparison</name>
+    <message>
+        <source>%1 is of a %2 drive and %3 of a %4 drive: parameters of different families have different meanings and are never compared.</source>
+        <translation>%1 属于 %2 驱动器，%3 属于 %4 驱动器：不同系列的参数含义不同，从不比较。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterSource</name>
+    <message>
+        <source>defaults</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>drive %1</source>
+        <translation>驱动器 %1</translation>
     </message>
 </context>
 </TS>

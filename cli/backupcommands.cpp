@@ -1,10 +1,12 @@
 #include "cli/backupcommands.h"
 
 #include "cli/clidescribe.h"
+#include "cli/restoredescribe.h"
 #include "core/protocol/familytraits.h"
 
 #include "core/drive/drive.h"
 #include "core/drive/parametertransfer.h"
+#include "core/fleet/defaultvalues.h"
 #include "core/params/parameterdictionary.h"
 
 #include <QDir>
@@ -32,6 +34,7 @@ bool BackupCommand::prepare(const CliInvocation &inv, QString *error)
 {
     if (!expectArguments(inv, 0, 0, QString(), error))
         return false;
+    m_changedOnly = inv.has(QStringLiteral("changed-only"));
     m_path = inv.value(QStringLiteral("output"));
     if (m_path.isEmpty()) {
         *error = tr("backup needs the file to write: backup -o FILE.");
@@ -49,6 +52,28 @@ bool BackupCommand::prepare(const CliInvocation &inv, QString *error)
     return true;
 }
 
+void BackupCommand::complete(BackupFile *file, const ConnectionSettings &c, const ParameterDictionary &dict,
+                             bool changedOnly)
+{
+    QJsonObject link = file->link();
+    if (c.isCan()) {
+        link.insert(QStringLiteral("can"), c.can);
+        if (c.bitrate)
+            link.insert(QStringLiteral("bitrate"), c.bitrate);
+    } else if (!c.port.isEmpty()) {
+        link.insert(QStringLiteral("port"), c.port);
+        if (c.baud)
+            link.insert(QStringLiteral("baud"), c.baud);
+    }
+    if (!c.framing.isEmpty())
+        link.insert(QStringLiteral("framing"), c.framing);
+    file->setLink(link);
+    if (changedOnly) {
+        file->setValues(DefaultValues::changedOnly(dict, file->values()));
+        file->setChangedOnly(true);
+    }
+}
+
 void BackupCommand::start()
 {
     m_transfer = new ParameterTransfer(drive(), this);
@@ -56,28 +81,17 @@ void BackupCommand::start()
         if (error)
             return fail(error);
         BackupFile file = m_transfer->backupFile();
-        const ConnectionSettings &c = context()->globals.connection;
-        QJsonObject link = file.link();
-        if (c.isCan()) {
-            link.insert(QStringLiteral("can"), c.can);
-            if (c.bitrate)
-                link.insert(QStringLiteral("bitrate"), c.bitrate);
-        } else if (!c.port.isEmpty()) {
-            link.insert(QStringLiteral("port"), c.port);
-            if (c.baud)
-                link.insert(QStringLiteral("baud"), c.baud);
-        }
-        if (!c.framing.isEmpty())
-            link.insert(QStringLiteral("framing"), c.framing);
-        file.setLink(link);
+        complete(&file, context()->globals.connection, m_transfer->dictionary(), m_changedOnly);
         if (Error e = file.save(m_path, m_transfer->dictionary()))
             return fail(e, {}, CliExit::DriveFailed);
         const int n = file.values().size();
         succeed({{QStringLiteral("file"), m_path},
                  {QStringLiteral("parameters"), n},
+                 {QStringLiteral("changedOnly"), m_changedOnly},
                  {QStringLiteral("firmware"), file.firmware()},
                  {QStringLiteral("model"), file.model()}},
-                tr("%n parameter(s) saved to %1.", nullptr, n).arg(m_path));
+                m_changedOnly ? tr("%n parameter(s) changed from the defaults saved to %1.", nullptr, n).arg(m_path)
+                              : tr("%n parameter(s) saved to %1.", nullptr, n).arg(m_path));
     });
     m_transfer->backup();
 }
@@ -89,17 +103,22 @@ bool FileCommand::prepare(const CliInvocation &inv, QString *error)
     if (!expectArguments(inv, 1, 1, tr("a backup file"), error))
         return false;
     m_path = inv.positionals.at(0);
+    return loadFile(context(), m_path, &m_file, error);
+}
+
+bool FileCommand::loadFile(const CliContext *context, const QString &path, BackupFile *file, QString *error)
+{
     // Everything is checked here, before the link is opened: structure, checksum, family,
     // indices and ranges (against the dictionary in use).
-    if (Error e = m_file.load(m_path, context()->dictionary.get())) {
+    if (Error e = file->load(path, context->dictionary.get())) {
         *error = e.message;
         return false;
     }
-    const Family linkFamily = context()->globals.connection.family;
-    if (m_file.family() && *m_file.family() != linkFamily) {
+    const Family linkFamily = context->globals.connection.family;
+    if (file->family() && *file->family() != linkFamily) {
         *error = tr("%1 is a backup of a %2 drive; this link is for %3 drives. A backup is "
                     "never restored onto another family; to talk to a %2 drive add --family %2.")
-                     .arg(m_path, familyId(*m_file.family()), familyId(linkFamily));
+                     .arg(path, familyId(*file->family()), familyId(linkFamily));
         return false;
     }
     return true;
@@ -146,6 +165,11 @@ QString FileCommand::diffText(bool onlyDifferences) const
 
 // --- diff -------------------------------------------------------------------------------
 
+CliExit diffExitForFailure(const Error &error)
+{
+    return exitFor(error) == CliExit::OpenFailed ? CliExit::OpenFailed : CliExit::Usage;
+}
+
 void DiffCommand::start()
 {
     m_transfer = new ParameterTransfer(drive(), this);
@@ -164,7 +188,7 @@ void DiffCommand::start()
                                {QStringLiteral("parameters"), diffJson()}};
         QString text = diffText(true);
         text += tr("%1 differ, %2 same (%3).").arg(differ).arg(same).arg(m_path);
-        succeed(json, text);
+        succeed(json, text, differ > 0 ? CliExit::DriveFailed : CliExit::Ok);
     });
     m_transfer->compare(m_file);
 }
@@ -175,17 +199,22 @@ bool RestoreCommand::prepare(const CliInvocation &inv, QString *error)
 {
     if (!FileCommand::prepare(inv, error))
         return false;
-    m_options.dryRun = inv.has(QStringLiteral("dry-run"));
-    m_options.force = inv.has(QStringLiteral("force"));
+    return parseOptions(inv, m_file, m_path, *context()->dictionary, &m_options, error);
+}
+
+bool RestoreCommand::parseOptions(const CliInvocation &inv, const BackupFile &file, const QString &path,
+                                  const ParameterDictionary &dict, RestoreOptions *options, QString *error)
+{
+    options->dryRun = inv.has(QStringLiteral("dry-run"));
+    options->force = inv.has(QStringLiteral("force"));
     if (inv.has(QStringLiteral("only"))) {
-        const ParameterDictionary &dict = *context()->dictionary;
-        if (Error e = dict.resolveList({inv.value(QStringLiteral("only"))}, &m_options.only)) {
+        if (Error e = dict.resolveList({inv.value(QStringLiteral("only"))}, &options->only)) {
             *error = e.message;
             return false;
         }
-        for (int i : std::as_const(m_options.only)) {
-            if (!m_file.values().isKnown(i)) {
-                *error = tr("restore --only: %1 has no value in %2.").arg(dict.label(i), m_path);
+        for (int i : std::as_const(options->only)) {
+            if (!file.values().isKnown(i)) {
+                *error = tr("restore --only: %1 has no value in %2.").arg(dict.label(i), path);
                 return false;
             }
             const ParameterInfo *p = dict.byIndex(i);
@@ -216,23 +245,19 @@ void RestoreCommand::report(const Error &error)
     const ParameterDictionary &dict = m_transfer->dictionary();
     const RestoreReport &r = m_transfer->report();
 
-    QJsonArray selected;
     QList<QPair<QString, QString>> rows;
-    for (const DiffEntry &e : r.selected) {
-        QJsonObject o{{QStringLiteral("index"), e.index},
-                      {QStringLiteral("key"), e.key},
-                      {QStringLiteral("from"), optionalValue(e.driveValue)},
-                      {QStringLiteral("to"), optionalValue(e.fileValue)}};
-        const QString state = r.dryRun ? tr("would be written") : outcome(e.index, &o);
-        selected.append(o);
-        rows.append({dict.label(e.index),
-                     tr("%1 -> %2  %3").arg(optionalText(e.driveValue), optionalText(e.fileValue), state)});
-    }
-    const QJsonObject json = reportJson(selected);
+    QJsonObject json{{QStringLiteral("file"), m_path},
+                     {QStringLiteral("dryRun"), r.dryRun},
+                     {QStringLiteral("forced"), m_options.force},
+                     {QStringLiteral("selected"), RestoreDescribe::selected(dict, r, &rows)}};
+    RestoreDescribe::insertOutcomes(dict, r, &json);
 
     if (error) {
-        if (!r.selected.isEmpty() && !out()->isJson())
-            printIncomplete(rows);
+        if (!r.selected.isEmpty() && !out()->isJson()) {
+            out()->line(CliDescribe::table(rows));
+            for (const QString &line : RestoreDescribe::incomplete(dict, r))
+                out()->line(line);
+        }
         return fail(error, json);
     }
     if (r.selected.isEmpty())
@@ -246,75 +271,6 @@ void RestoreCommand::report(const Error &error)
             out()->note(tr("The values are in the drive's RAM; `ee set` stores them to EEPROM."));
     }
     succeed(json, text);
-}
-
-QString RestoreCommand::outcome(int index, QJsonObject *o) const
-{
-    using O = RestoreReport::Outcome;
-    const RestoreReport &r = m_transfer->report();
-    const O outcome = r.outcome(index);
-    o->insert(QStringLiteral("result"), RestoreReport::outcomeId(outcome));
-    const ParameterWriteResult *res = r.result(index);
-    if (res && res->readable && res->written && !res->readBackFailed)
-        o->insert(QStringLiteral("readBack"), double(res->readBack));
-    switch (outcome) {
-    case O::Verified: return tr("verified");
-    case O::WrittenOnly: return tr("written (write-only: cannot be read back)");
-    case O::Mismatch: return tr("WRITTEN, READ BACK %1").arg(res ? res->readBack : 0);
-    case O::Failed: return tr("NOT WRITTEN: %1").arg(res ? res->error : QString());
-    case O::NotAttempted: return tr("NOT WRITTEN (not attempted)");
-    case O::Unconfirmed:
-        return res && res->written ? tr("WRITTEN, NOT VERIFIED (no answer to the read-back)")
-                                   : tr("UNKNOWN: %1").arg(res ? res->error : QString());
-    }
-    return QString();
-}
-
-QJsonObject RestoreCommand::reportJson(const QJsonArray &selected) const
-{
-    using O = RestoreReport::Outcome;
-    const ParameterDictionary &dict = m_transfer->dictionary();
-    const RestoreReport &r = m_transfer->report();
-    auto keys = [&dict](const QList<int> &indices) {
-        QJsonArray a;
-        for (int i : indices) {
-            const ParameterInfo *p = dict.byIndex(i);
-            a.append(p ? p->key : QString::number(i));
-        }
-        return a;
-    };
-    QJsonObject json{{QStringLiteral("file"), m_path},
-                     {QStringLiteral("dryRun"), r.dryRun},
-                     {QStringLiteral("forced"), m_options.force},
-                     {QStringLiteral("selected"), selected}};
-    if (!r.dryRun) {
-        json.insert(QStringLiteral("verified"), keys(r.indices(O::Verified)));
-        json.insert(QStringLiteral("written"), keys(r.written()));
-        json.insert(QStringLiteral("notWritten"), keys(r.notWritten()));
-        json.insert(QStringLiteral("mismatch"), keys(r.indices(O::Mismatch)));
-        json.insert(QStringLiteral("unconfirmed"), keys(r.indices(O::Unconfirmed)));
-    }
-    return json;
-}
-
-void RestoreCommand::printIncomplete(const QList<QPair<QString, QString>> &rows)
-{
-    const ParameterDictionary &dict = m_transfer->dictionary();
-    const RestoreReport &r = m_transfer->report();
-    auto labels = [&dict](const QList<int> &indices) {
-        QStringList l;
-        for (int i : indices)
-            l << dict.label(i);
-        return l;
-    };
-    out()->line(CliDescribe::table(rows));
-    const QStringList w = labels(r.written());
-    const QStringList n = labels(r.notWritten());
-    out()->line(tr("Written: %1").arg(w.isEmpty() ? tr("none") : w.join(QLatin1String(", "))));
-    out()->line(tr("Not written: %1").arg(n.isEmpty() ? tr("none") : n.join(QLatin1String(", "))));
-    const QStringList u = labels(r.indices(RestoreReport::Outcome::Unconfirmed));
-    if (!u.isEmpty())
-        out()->line(tr("Unknown (read them again): %1").arg(u.join(QLatin1String(", "))));
 }
 
 } // namespace dd

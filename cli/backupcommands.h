@@ -10,7 +10,9 @@
 
 namespace dd {
 
+class ParameterDictionary;
 class ParameterTransfer;
+struct ConnectionSettings;
 
 class BackupCommand : public CliCommand
 {
@@ -22,9 +24,14 @@ public:
     }
     bool prepare(const CliInvocation &inv, QString *error) override;
     void start() override;
+    // The link settings into the file; with changedOnly only the values changed from the
+    // dictionary's defaults, the file marked so.
+    static void complete(BackupFile *file, const ConnectionSettings &c, const ParameterDictionary &dict,
+                         bool changedOnly);
 
 private:
     QString m_path;
+    bool m_changedOnly = false;
     ParameterTransfer *m_transfer = nullptr;
 };
 
@@ -35,6 +42,8 @@ class FileCommand : public CliCommand
 public:
     using CliCommand::CliCommand;
     bool prepare(const CliInvocation &inv, QString *error) override;
+    // Loads and checks a backup file completely (also its family against the link's).
+    static bool loadFile(const CliContext *context, const QString &path, BackupFile *file, QString *error);
 
 protected:
     QJsonArray diffJson() const;
@@ -43,6 +52,10 @@ protected:
     BackupFile m_file;
     ParameterTransfer *m_transfer = nullptr;
 };
+
+// diff's exit code, like diff(1): 0 equal, 1 different, 2 trouble (bad input, or a drive
+// that did not answer), 3 the port could not be opened.
+CliExit diffExitForFailure(const Error &error);
 
 class DiffCommand : public FileCommand
 {
@@ -53,6 +66,9 @@ public:
     {
     }
     void start() override;
+
+protected:
+    CliExit exitForFailure(const Error &error) const override { return diffExitForFailure(error); }
 };
 
 class RestoreCommand : public FileCommand
@@ -64,17 +80,15 @@ public:
     {
     }
     bool prepare(const CliInvocation &inv, QString *error) override;
+    // --dry-run, --force, --only (checked against the file and the dictionary).
+    static bool parseOptions(const CliInvocation &inv, const BackupFile &file, const QString &path,
+                             const ParameterDictionary &dict, RestoreOptions *options, QString *error);
     void start() override;
     // Writes in flight finish and are verified; the report tells what was done.
     void interrupt(int) override;
 
 private:
     void report(const Error &error);
-    // What became of the parameter's write (also into its JSON object `o`).
-    QString outcome(int index, QJsonObject *o) const;
-    QJsonObject reportJson(const QJsonArray &selected) const;
-    // After a failure: what was written and what was not.
-    void printIncomplete(const QList<QPair<QString, QString>> &rows);
     RestoreOptions m_options;
 };
 

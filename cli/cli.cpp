@@ -60,6 +60,7 @@ int Cli::run(const QStringList &arguments)
 
     CliContext context;
     context.out = &out;
+    context.globals.linkOptional = CliCommands::worksWithoutLink(inv);
     if (!context.globals.load(inv, &error)) {
         out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
         return int(CliExit::Usage);
@@ -67,7 +68,15 @@ int Cli::run(const QStringList &arguments)
     if (const std::optional<CliExit> code = loadDictionary(context, inv.command))
         return int(*code);
 
-    std::unique_ptr<CliCommand> command(CliCommands::create(inv.command, &context));
+    std::unique_ptr<CliCommand> command(CliCommands::create(inv, &context));
+    if (context.globals.addresses.size() > 1 && !command->takesManyDrives()) {
+        out.failure(inv.command, int(CliExit::Usage),
+                    {ErrorCode::InvalidArgument,
+                     tr("\"%1\" works on one drive: give one --address. backup, restore and diff take "
+                        "several (--address 1,2,5).")
+                         .arg(inv.command)});
+        return int(CliExit::Usage);
+    }
     if (!command->prepare(inv, &error)) {
         out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
         return int(CliExit::Usage);

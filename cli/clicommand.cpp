@@ -55,27 +55,34 @@ void CliCommand::linkLost(const Error &why)
     fail(e);
 }
 
-void CliCommand::succeed(const QJsonObject &json, const QString &text)
+void CliCommand::succeed(const QJsonObject &json, const QString &text, CliExit code)
 {
     if (m_done)
         return;
     QJsonObject doc{{QStringLiteral("command"), m_name}, {QStringLiteral("ok"), true}};
+    if (code != CliExit::Ok)
+        doc.insert(QStringLiteral("exitCode"), int(code));
     for (auto it = json.begin(); it != json.end(); ++it)
         doc.insert(it.key(), it.value());
     out()->result(doc, text);
-    finish(CliExit::Ok);
+    finish(code);
 }
 
 void CliCommand::fail(const Error &error, const QJsonObject &partial, std::optional<CliExit> code)
 {
     if (m_done)
         return;
-    const CliExit c = code.value_or(exitFor(error) == CliExit::Ok ? CliExit::DriveFailed : exitFor(error));
+    const CliExit c = code.value_or(exitForFailure(error));
     Error shown = error;
     if (error.code == ErrorCode::Timeout && m_name != QLatin1String("scan"))
         shown.message += QLatin1Char(' ') + tr("If the address or baud rate may be wrong, try: drivedesk-cli ... scan");
     out()->failure(m_name, int(c), shown, partial);
     finish(c);
+}
+
+CliExit CliCommand::exitForFailure(const Error &error) const
+{
+    return exitFor(error) == CliExit::Ok ? CliExit::DriveFailed : exitFor(error);
 }
 
 void CliCommand::finish(CliExit code)

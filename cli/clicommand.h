@@ -51,6 +51,8 @@ public:
     virtual bool needsLink() const { return true; }
     // Whether it talks to the drive at --address (all but scan).
     virtual bool needsDrive() const { return true; }
+    // Whether it works on several drives (--address 1,2,5 or --all).
+    virtual bool takesManyDrives() const { return false; }
     // Whether begin() identifies the drive before start(), and whether start() runs anyway
     // when that fails (stop: a stop is always sent).
     virtual bool identifyFirst() const { return needsDrive(); }
@@ -72,9 +74,13 @@ protected:
     CliOutput *out() const { return m_ctx->out; }
     Drive *drive() const { return m_ctx->drive(); }
 
-    void succeed(const QJsonObject &json, const QString &text);
+    // The command did its work; `code` is its answer (diff: 1 = different).
+    void succeed(const QJsonObject &json, const QString &text, CliExit code = CliExit::Ok);
     // Report `error` and finish with `code` (default: the code for the error).
     void fail(const Error &error, const QJsonObject &partial = {}, std::optional<CliExit> code = std::nullopt);
+    // The exit code of a failure when fail() is given none (diff: 2 for any trouble, since
+    // its 1 means "different").
+    virtual CliExit exitForFailure(const Error &error) const;
     void finish(CliExit code);
     // Checks the number of arguments; false with a message when it does not fit.
     bool expectArguments(const CliInvocation &inv, int min, int max, const QString &what, QString *error) const;

@@ -3,10 +3,13 @@
 #include "cli/backupcommands.h"
 #include "cli/drivecommands.h"
 #include "cli/eecommand.h"
+#include "cli/fleetbackupcommand.h"
+#include "cli/fleetrestorecommand.h"
 #include "cli/monitorcommand.h"
 #include "cli/motioncommands.h"
 #include "cli/paramcommands.h"
 #include "cli/scancommand.h"
+#include "cli/sourcediffcommand.h"
 
 namespace dd {
 
@@ -30,9 +33,12 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("info"), {}},
         {QStringLiteral("get"), {}},
         {QStringLiteral("set"), {}},
-        {QStringLiteral("backup"), {valued("output", QLatin1Char('o'))}},
+        {QStringLiteral("backup"),
+         {valued("output", QLatin1Char('o')), flag("changed-only"), flag("all"), valued("from"), valued("to")}},
         {QStringLiteral("diff"), {}},
-        {QStringLiteral("restore"), {flag("dry-run"), valued("only"), flag("force")}},
+        {QStringLiteral("restore"),
+         {flag("dry-run"), valued("only"), flag("force"), flag("all"), valued("from"), valued("to"),
+          flag("stop-on-failure")}},
         {QStringLiteral("ee"), {}},
         {QStringLiteral("monitor"), {valued("rate"), valued("duration"), valued("output", QLatin1Char('o'))}},
         {QStringLiteral("jog"), {valued("duration")}},
@@ -43,6 +49,24 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("home"), {flag("positive"), flag("no-wait")}},
         {QStringLiteral("channels"), {}},
     };
+}
+
+bool CliCommands::worksWithoutLink(const CliInvocation &inv)
+{
+    return inv.command == QLatin1String("diff") && inv.positionals.size() == 2
+        && !SourceDiffCommand::namesADrive(inv.positionals);
+}
+
+CliCommand *CliCommands::create(const CliInvocation &inv, CliContext *context)
+{
+    const bool many = inv.has(QStringLiteral("all")) || context->globals.addresses.size() > 1;
+    if (inv.command == QLatin1String("backup") && many)
+        return new FleetBackupCommand(context);
+    if (inv.command == QLatin1String("restore") && many)
+        return new FleetRestoreCommand(context);
+    if (inv.command == QLatin1String("diff") && inv.positionals.size() >= 2)
+        return new SourceDiffCommand(context);
+    return create(inv.command, context);
 }
 
 CliCommand *CliCommands::create(const QString &name, CliContext *context)

@@ -101,7 +101,7 @@ bool CliGlobals::loadLink(const CliInvocation &inv, QString *error)
         *error = tr("--sim brings its own simulated bus: leave out --port and --can.");
         return false;
     }
-    if (!sim && c.port.isEmpty() && c.can.isEmpty()) {
+    if (!sim && c.port.isEmpty() && c.can.isEmpty() && !linkOptional) {
         *error = tr("No link given: add --port DEVICE (e.g. /dev/ttyUSB0) or --can PLUGIN:INTERFACE "
                     "(e.g. socketcan:can0), or --sim to use the built-in simulator.");
         return false;
@@ -224,11 +224,19 @@ bool CliGlobals::loadAddress(const CliInvocation &inv, QString *error)
     if (!addressGiven)
         return true;
     const AddressRange range = addressRange();
-    const auto v = CliValues::integer(inv.value(QStringLiteral("address")), range.first, range.last,
-                                      QStringLiteral("--address"), error);
-    if (!v)
+    const auto list = CliValues::integerList(inv.value(QStringLiteral("address")), range.first, range.last,
+                                             QStringLiteral("--address"), error);
+    if (!list)
         return false;
-    address = int(*v);
+    addresses.clear();
+    for (qint64 a : *list) {
+        if (addresses.contains(int(a))) {
+            *error = tr("--address: %1 is given twice.").arg(a);
+            return false;
+        }
+        addresses << int(a);
+    }
+    address = addresses.first();
     return true;
 }
 

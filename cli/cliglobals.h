@@ -16,6 +16,11 @@ public:
     ConnectionSettings connection;
     bool addressGiven = false;
     int address = 1;
+    // --address 1,2,5: every address given, in order (one entry for a single --address;
+    // empty without --address). Only the commands that work on several drives take more.
+    QList<int> addresses;
+    // Set before load() for a command that may run without a link (diff of two files).
+    bool linkOptional = false;
     bool json = false;
     bool trace = false;
     QString dictionaryFile;

@@ -37,6 +37,17 @@ QList<int> ParameterTransfer::readableIndices(const ParameterDictionary &diction
     return out;
 }
 
+QString ParameterTransfer::stageId(Stage stage)
+{
+    switch (stage) {
+    case Stage::Idle: return QStringLiteral("idle");
+    case Stage::Identify: return QStringLiteral("identify");
+    case Stage::Read: return QStringLiteral("read");
+    case Stage::Write: return QStringLiteral("write");
+    }
+    return {};
+}
+
 void ParameterTransfer::backup()
 {
     begin(Job::Backup);
@@ -63,6 +74,7 @@ void ParameterTransfer::begin(Job job)
     }
     m_job = job;
     m_running = true;
+    m_stage = Stage::Idle;
     m_backup = BackupFile();
     m_driveValues.clear();
     m_report = RestoreReport();
@@ -93,6 +105,7 @@ void ParameterTransfer::watch(DriveReply *reply, void (ParameterTransfer::*next)
 
 void ParameterTransfer::identify()
 {
+    m_stage = Stage::Identify;
     watch(m_drive->refreshIdentity(), &ParameterTransfer::onIdentified);
 }
 
@@ -116,6 +129,7 @@ void ParameterTransfer::readValues()
     const QList<int> indices = readableIndices(dictionary(), m_drive->identity().model);
     if (indices.isEmpty())
         return end({ErrorCode::NotSupported, tr("The parameter dictionary lists no readable parameter.")});
+    m_stage = Stage::Read;
     watch(m_drive->readParameters(indices), &ParameterTransfer::onRead);
 }
 
@@ -163,6 +177,7 @@ void ParameterTransfer::afterRead()
 
 void ParameterTransfer::write()
 {
+    m_stage = Stage::Write;
     QList<ParameterWrite> writes;
     for (const DiffEntry &e : std::as_const(m_report.selected))
         writes.append({e.index, e.fileValue.value_or(0)});

@@ -38,6 +38,11 @@ public:
     // The dictionary used: the drive's, else the bundled one of the drive's family.
     const ParameterDictionary &dictionary() const;
 
+    // Where a job is, or where it stopped when it failed.
+    enum class Stage { Idle, Identify, Read, Write };
+    Stage stage() const { return m_stage; }
+    static QString stageId(Stage stage); // "idle", "identify", "read", "write"
+
     void backup();
     void compare(const BackupFile &file);
     void restore(const BackupFile &file, const RestoreOptions &options);
@@ -73,6 +78,7 @@ private:
     std::shared_ptr<const ParameterDictionary> m_dictionary;
     Job m_job = Job::Backup;
     bool m_running = false;
+    Stage m_stage = Stage::Idle;
     BackupFile m_file; // compare / restore: the file
     RestoreOptions m_options;
     BackupFile m_backup; // backup: the result

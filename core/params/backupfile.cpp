@@ -24,7 +24,7 @@ static const QStringList &rootFields()
         QStringLiteral("format"),     QStringLiteral("formatVersion"), QStringLiteral("toolVersion"),
         QStringLiteral("created"),    QStringLiteral("family"),        QStringLiteral("address"),
         QStringLiteral("firmware"),   QStringLiteral("model"),         QStringLiteral("link"),
-        QStringLiteral("parameters"), QStringLiteral("checksum")};
+        QStringLiteral("parameters"), QStringLiteral("checksum"),      QStringLiteral("scope")};
     return fields;
 }
 
@@ -34,6 +34,11 @@ static const QStringList &entryFields()
                                        QStringLiteral("value"),      QStringLiteral("unit"), QStringLiteral("access"),
                                        QStringLiteral("lastWritten")};
     return fields;
+}
+
+QString BackupFile::changedOnlyScope()
+{
+    return QStringLiteral("changed-from-defaults");
 }
 
 QString BackupFile::formatName()
@@ -115,6 +120,8 @@ Error BackupFile::toJson(const ParameterDictionary &dictionary, QByteArray *out)
     root.insert(QStringLiteral("firmware"), m_firmware);
     root.insert(QStringLiteral("model"), m_model);
     root.insert(QStringLiteral("link"), m_link);
+    if (m_changedOnly)
+        root.insert(QStringLiteral("scope"), changedOnlyScope());
     root.insert(QStringLiteral("parameters"), parameters);
     root.insert(QStringLiteral("checksum"), checksum(m_values));
     const QByteArray bytes = QJsonDocument(root).toJson(QJsonDocument::Indented);
@@ -258,8 +265,14 @@ Error BackupFile::parse(const QJsonObject &root, const QString &source, const Pa
     const auto link = r.object(QStringLiteral("link"));
     const auto entries = r.array(QStringLiteral("parameters"), MaxParameters);
     const auto checksumText = r.string(QStringLiteral("checksum"), 80);
+    const auto scope = r.string(QStringLiteral("scope"), 64, JsonFieldReader::Optional);
     if (!r.ok())
         return r.error();
+    if (scope && *scope != changedOnlyScope() && *scope != QLatin1String("all")) {
+        return Error{ErrorCode::Malformed,
+                     tr("%1: field \"scope\" must be \"all\" or \"%2\" (found \"%3\")")
+                         .arg(source, changedOnlyScope(), scope->left(64))};
+    }
     const QDateTime created = QDateTime::fromString(*createdText, Qt::ISODate);
     if (!created.isValid()) {
         return Error{ErrorCode::Malformed,
@@ -364,6 +377,7 @@ Error BackupFile::parse(const QJsonObject &root, const QString &source, const Pa
     m_model = *model;
     m_link = *link;
     m_values = values;
+    m_changedOnly = scope && *scope == changedOnlyScope();
     return Error::none();
 }
 

@@ -28,6 +28,9 @@ public:
     static constexpr int MaxParameters = 65536;
     static constexpr int MaxLinkEntries = 32;
     static QString formatName(); // "drivedesk-backup"
+    // The value of the optional root field "scope" of a file that holds only the parameters
+    // changed from the dictionary's defaults (absent or "all": a full backup).
+    static QString changedOnlyScope(); // "changed-from-defaults"
 
     BackupFile(); // toolVersion = this build, created = now
 
@@ -51,6 +54,10 @@ public:
     // source LastWritten, all others ReadFromDrive.
     const ParameterSet &values() const { return m_values; }
     void setValues(const ParameterSet &values) { m_values = values; }
+    // Only the parameters that differ from the dictionary's defaults (saved as "scope":
+    // "changed-from-defaults"): a restore of it touches only those.
+    bool isChangedOnly() const { return m_changedOnly; }
+    void setChangedOnly(bool changedOnly) { m_changedOnly = changedOnly; }
 
     // The file's bytes. Fails (nothing produced) when the family is unset, the address is
     // outside 0..255, or a value is not in the dictionary or outside its range.
@@ -83,6 +90,7 @@ private:
     QString m_model;
     QJsonObject m_link;
     ParameterSet m_values;
+    bool m_changedOnly = false;
 };
 
 } // namespace dd

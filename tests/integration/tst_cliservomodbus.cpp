@@ -130,7 +130,7 @@ void TestCliServoModbus::backupChangeDiffRestoreVerify()
     m_sim->setParameter(20, quint16(original[20] + 5));
     m_sim->setParameter(33, quint16(original[33] + 1));
     r = runCli(args({"diff"}) << file);
-    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY2(r.exitCode == 1, r.err.constData()); // like diff(1): 1 = different
     QVERIFY(r.out.contains("PA20"));
     QVERIFY(r.out.contains("PA33"));
     QVERIFY(r.out.contains("2 differ"));

@@ -245,7 +245,7 @@ void TestCliShuoke::backupChangeDiffRestoreVerify()
     sim(bench).setSetting(shuoke::CmdSetDeceleration, decel + 100);
     sim(bench).setSetting(shuoke::CmdSetStopSpeed, stop + 7);
     r = runCli(args(bench, {"--json", "diff"}) << file);
-    QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+    QVERIFY2(r.exitCode == 1, qPrintable(r.text())); // like diff(1): 1 = different
     QCOMPARE(r.json().value("different").toInt(), 2);
 
     r = runCli(args(bench, {"--json", "restore"}) << file);

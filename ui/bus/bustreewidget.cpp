@@ -29,7 +29,7 @@ BusTreeWidget::BusTreeWidget(DriveDirectory *directory, QWidget *parent)
     setColumnCount(ColumnCount);
     setUniformRowHeights(true);
     setAlternatingRowColors(true);
-    setSelectionMode(QAbstractItemView::SingleSelection);
+    setSelectionMode(QAbstractItemView::ExtendedSelection);
     setContextMenuPolicy(Qt::CustomContextMenu);
     header()->setSectionResizeMode(QHeaderView::Interactive);
     header()->setStretchLastSection(true);
@@ -180,6 +180,18 @@ void BusTreeWidget::onSelectionChanged()
     emit connectionSelected(id);
 }
 
+QList<int> BusTreeWidget::selectedDrives(int id) const
+{
+    QList<int> out;
+    for (const QTreeWidgetItem *item : selectedItems()) {
+        const int a = item->data(0, AddressRole).toInt();
+        if (a > 0 && item->data(0, ConnectionRole).toInt() == id)
+            out << a;
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 void BusTreeWidget::showContextMenu(const QPoint &pos)
 {
     QTreeWidgetItem *item = itemAt(pos);
@@ -190,6 +202,22 @@ void BusTreeWidget::showContextMenu(const QPoint &pos)
     QMenu menu(this);
     if (address > 0)
         menu.addAction(tr("Refresh identity"), this, [this, id, address] { m_directory->refresh(id, address); });
+    if (address > 0) {
+        QList<int> selected = selectedDrives(id);
+        if (!selected.contains(address))
+            selected = {address};
+        QList<int> others = selected;
+        others.removeAll(address);
+        menu.addSeparator();
+        menu.addAction(tr("Apply backup to %n drive(s)…", nullptr, int(selected.size())), this,
+                       [this, id, selected] { emit applyBackupRequested(id, selected); });
+        menu.addAction(tr("Copy parameters from drive %1 to %n drive(s)…", nullptr, int(others.size())).arg(address),
+                       this, [this, id, address, others] { emit copyParametersRequested(id, address, others); })
+            ->setEnabled(!others.isEmpty());
+        menu.addAction(tr("Compare %n drive(s)…", nullptr, int(selected.size())), this,
+                       [this, id, selected] { emit compareRequested(id, selected); });
+        menu.addSeparator();
+    }
     menu.addAction(tr("Scan again"), this, [this, id] { emit rescanRequested(id); });
     menu.addAction(tr("Disconnect"), this, [this, id] { emit disconnectRequested(id); });
     menu.exec(viewport()->mapToGlobal(pos));

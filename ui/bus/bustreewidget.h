@@ -23,6 +23,8 @@ public:
     // Selects the drive (or clears the selection with id 0).
     void selectDrive(int id, int address);
     int selectedConnection() const; // 0: none (a drive's connection counts)
+    // The selected drives of connection `id` (several with Ctrl / Shift), ascending.
+    QList<int> selectedDrives(int id) const;
 
 signals:
     // (0, 0): nothing or a connection is selected.
@@ -30,6 +32,11 @@ signals:
     void connectionSelected(int id);
     void rescanRequested(int id);
     void disconnectRequested(int id);
+    // Several drives: the context menu's "Apply backup…", "Copy parameters from drive N…"
+    // and "Compare…" on the selected drives of a connection.
+    void applyBackupRequested(int id, const QList<int> &addresses);
+    void copyParametersRequested(int id, int sourceAddress, const QList<int> &targets);
+    void compareRequested(int id, const QList<int> &addresses);
 
 protected:
     void changeEvent(QEvent *event) override;

@@ -8,6 +8,7 @@
 #include "ui/bus/scanprogresswidget.h"
 #include "ui/bus/serialaccessdialog.h"
 #include "ui/bus/statuspoller.h"
+#include "ui/fleet/fleetactions.h"
 #include "ui/framemonitor/framemonitordock.h"
 #include "ui/shell/aboutdialog.h"
 #include "ui/shell/demolauncher.h"
@@ -174,6 +175,7 @@ void MainWindow::createMenus()
     m_viewMenu = menuBar()->addMenu(QString());
     m_viewMenu->setObjectName(QStringLiteral("viewMenu"));
     m_viewMenu->addAction(m_busDock->toggleViewAction());
+    new FleetActions(m_directory, m_busTree, m_viewMenu, this); // Compare, several drives
 
     m_languageMenu = menuBar()->addMenu(QString());
     m_languageMenu->setObjectName(QStringLiteral("languageMenu"));

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "cli/fleetcommand.h"
+
+#include "core/drive/restorereport.h"
+#include "core/params/backupfile.h"
+
+namespace dd {
+
+// restore FILE --all / restore FILE --address 1,2,5: the same file to every drive, each at
+// its own address; per drive only the differences are written and each is read back.
+// Communication settings (address, baud, station number) are left alone unless --only names
+// them. --stop-on-failure: one drive after the other, none after the first that fails.
+class FleetRestoreCommand : public FleetCommand
+{
+    Q_OBJECT
+public:
+    explicit FleetRestoreCommand(CliContext *c)
+        : FleetCommand(QStringLiteral("restore"), c)
+    {
+    }
+    bool prepare(const CliInvocation &inv, QString *error) override;
+
+protected:
+    void run(const QList<int> &addresses) override;
+
+private:
+    void report();
+
+    QString m_path;
+    BackupFile m_file;
+    RestoreOptions m_options;
+    bool m_stopOnFailure = false;
+};
+
+} // namespace dd

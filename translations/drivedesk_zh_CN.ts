@@ -4260,41 +4260,6 @@ write each, read it back and report whether it was verified.
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] backup -o FILE
-Read every readable parameter and save them to a backup file (saved
-atomically: an interrupted backup never leaves a half-written file).
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] backup -o FILE
-读取全部可读参数并保存到备份文件（原子保存：备份中断也不会留下写了
-一半的文件）。
-</translation>
-    </message>
-    <message>
-        <source>Usage: drivedesk-cli [OPTIONS] diff FILE
-Compare the drive with a backup file, parameter by parameter. Exit code 0
-also when they differ; the output and the JSON say which differ.
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] diff FILE
-逐个参数比较驱动器与备份文件。有差异时退出码也为 0；输出和 JSON 中
-会列出哪些参数不同。
-</translation>
-    </message>
-    <message>
-        <source>Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
-Write the parameters that differ from the file and verify each by reading it
-back. The file is checked completely before anything is sent. A file from
-another family is refused; from another firmware only with --force.
---dry-run shows what would be written. On failure the report says exactly
-which parameters were written and which were not.
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
-写入与文件不同的参数，并逐个回读校验。发送任何数据之前会完整检查文件。
-其他系列的备份文件一律拒绝；其他固件版本的备份文件须加 --force。
---dry-run 只显示将写入的内容。失败时报告会准确列出哪些参数已写入、
-哪些未写入。
-</translation>
-    </message>
-    <message>
         <source>Usage: drivedesk-cli [OPTIONS] ee set|rd|ba|rs|def
 servo-modbus EEPROM operations, waiting for completion:
   set  store the parameters to EEPROM      rd   reload them from EEPROM
@@ -4490,52 +4455,6 @@ Commission servo and stepper drives from scripts.
 </translation>
     </message>
     <message>
-        <source>Commands:
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 find drives: family, address, baud, firmware, state
-  info                           identity, firmware, state, alarm, capabilities
-  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
-  set PARAM=VALUE ...            validate, write, read back, report verified or not
-  backup -o FILE                 every readable parameter to a backup file
-  diff FILE                      drive against file, parameter by parameter
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 write the differences, verify each
-  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 sample live values (Ctrl-C ends)
-  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 move, and wait until the axis is at rest
-  stop [--emergency]             stop (emergency stop where the family has one)
-  enable on|off                  servo enable on or off
-  clear-alarm                    clear the alarm and check that it is gone
-  home [--positive] [--no-wait]  homing, negative direction first
-  channels                       the monitor channels this drive offers
-</source>
-        <translation>命令：
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 查找驱动器：系列、地址、波特率、固件、状态
-  info                           标识、固件、状态、报警、支持的功能
-  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
-  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
-  backup -o FILE                 将全部可读参数备份到文件
-  diff FILE                      逐个参数比较驱动器与文件
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 写入有差异的参数，并逐个校验
-  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 采样实时值（Ctrl-C 结束）
-  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 定位运动，并等待轴静止
-  stop [--emergency]             停止（该系列支持时可急停）
-  enable on|off                  伺服使能开或关
-  clear-alarm                    清除报警并确认报警已消除
-  home [--positive] [--no-wait]  回零，先向负方向
-  channels                       该驱动器提供的监控通道
-</translation>
-    </message>
-    <message>
         <source>Exit codes:
   0  success
   1  the drive or the protocol failed (timeout, exception, verify mismatch)
@@ -4628,6 +4547,117 @@ Servo enable on or off.
     <message>
         <source>--address: %1 is given twice.</source>
         <translation>--address：%1 重复给出。</translation>
+    </message>
+    <message>
+        <source>Commands:
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 find drives: family, address, baud, firmware, state
+  info                           identity, firmware, state, alarm, capabilities
+  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
+  set PARAM=VALUE ...            validate, write, read back, report verified or not
+  backup -o FILE [--changed-only] every readable parameter to a backup file
+  backup (--all | --address 1,2,5) -o DIR
+                                 one file per drive, FAMILY-ADDRESS.json, and index.json
+  diff FILE | diff A B           compare; A, B = FILE, drive, drive:ADDRESS or defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 write the differences, verify each
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 the same to several drives, each at its address
+  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 sample live values (Ctrl-C ends)
+  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 move, and wait until the axis is at rest
+  stop [--emergency]             stop (emergency stop where the family has one)
+  enable on|off                  servo enable on or off
+  clear-alarm                    clear the alarm and check that it is gone
+  home [--positive] [--no-wait]  homing, negative direction first
+  channels                       the monitor channels this drive offers
+</source>
+        <translation>命令：
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 查找驱动器：系列、地址、波特率、固件、状态
+  info                           标识、固件、状态、报警、支持的功能
+  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
+  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
+  backup -o FILE [--changed-only] 将全部可读参数备份到文件
+  backup (--all | --address 1,2,5) -o DIR
+                                 每台驱动器一个文件 FAMILY-ADDRESS.json，另有 index.json
+  diff FILE | diff A B           比较；A、B 为 FILE、drive、drive:地址 或 defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 写入有差异的参数，并逐个校验
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 同上，写入多台驱动器，各在其地址
+  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 采样实时值（Ctrl-C 结束）
+  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 定位运动，并等待轴静止
+  stop [--emergency]             停止（该系列支持时可急停）
+  enable on|off                  伺服使能开或关
+  clear-alarm                    清除报警并确认报警已消除
+  home [--positive] [--no-wait]  回零，先向负方向
+  channels                       该驱动器提供的监控通道
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] backup -o FILE [--changed-only]
+       drivedesk-cli [OPTIONS] (--all | --address 1,2,5) backup -o DIR [--from A] [--to B]
+Read every readable parameter and save them to a backup file (saved
+atomically: an interrupted backup never leaves a half-written file).
+--changed-only keeps only the settings that differ from the dictionary&apos;s
+defaults (the file says so; its restore touches only those). Several drives
+(--all: every drive a scan finds): one file per drive, FAMILY-ADDRESS.json,
+and DIR/index.json; the exit code is the worst drive&apos;s.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] backup -o FILE [--changed-only]
+      drivedesk-cli [OPTIONS] (--all | --address 1,2,5) backup -o DIR [--from A] [--to B]
+读取全部可读参数并保存到备份文件（原子保存：备份中断也不会留下写了
+一半的文件）。
+--changed-only 只保存与参数字典默认值不同的设置（文件中有标记；恢复它
+只会改动这些参数）。多台驱动器（--all：扫描找到的每一台）：每台一个文件
+FAMILY-ADDRESS.json，另有 DIR/index.json；退出码取最差的那台驱动器的。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] diff FILE
+       drivedesk-cli [OPTIONS] diff A B
+Compare the drive with a backup file, or any two sources: a backup file,
+drive (the drive at --address), drive:ADDRESS or defaults. Two files need
+no link. Sources of different families are refused. Exit code as diff(1):
+0 equal, 1 different, 2 trouble (bad input, a drive that did not answer).
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] diff FILE
+      drivedesk-cli [OPTIONS] diff A B
+比较驱动器与备份文件，或任意两个来源：备份文件、drive（--address 指定的
+驱动器）、drive:地址 或 defaults（默认值）。比较两个文件无需连接。不同系列
+的来源一律拒绝。退出码同 diff(1)：0 相同，1 不同，2 出错（输入有误、驱动器
+无应答）。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+Write the parameters that differ from the file and verify each by reading it
+back. The file is checked completely before anything is sent. A file from
+another family is refused; from another firmware only with --force.
+--dry-run shows what would be written. On failure the report says exactly
+which parameters were written and which were not.
+With --all (every drive a scan finds) or --address 1,2,5 the file goes to
+each drive at its own address; communication settings are never copied
+unless --only names them. --stop-on-failure: one drive after the other,
+none after the first that fails. The exit code is the worst drive&apos;s.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+写入与文件不同的参数，并逐个回读校验。发送任何数据之前会完整检查文件。
+其他系列的备份文件一律拒绝；其他固件版本的备份文件须加 --force。
+--dry-run 只显示将写入的内容。失败时报告会准确列出哪些参数已写入、
+哪些未写入。
+使用 --all（扫描找到的每一台）或 --address 1,2,5 时，文件写入每台驱动器各自
+的地址；通信设置除非在 --only 中指明，否则从不复制。--stop-on-failure：逐台
+进行，第一台失败后不再继续。退出码取最差的那台驱动器的。
+</translation>
     </message>
 </context>
 <context>

@@ -60,10 +60,14 @@ QString CliHelp::commandList()
               "  info                           identity, firmware, state, alarm, capabilities\n"
               "  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name\n"
               "  set PARAM=VALUE ...            validate, write, read back, report verified or not\n"
-              "  backup -o FILE                 every readable parameter to a backup file\n"
-              "  diff FILE                      drive against file, parameter by parameter\n"
+              "  backup -o FILE [--changed-only] every readable parameter to a backup file\n"
+              "  backup (--all | --address 1,2,5) -o DIR\n"
+              "                                 one file per drive, FAMILY-ADDRESS.json, and index.json\n"
+              "  diff FILE | diff A B           compare; A, B = FILE, drive, drive:ADDRESS or defaults\n"
               "  restore FILE [--dry-run] [--only PARAM,...] [--force]\n"
               "                                 write the differences, verify each\n"
+              "  restore FILE (--all | --address 1,2,5) [--stop-on-failure]\n"
+              "                                 the same to several drives, each at its address\n"
               "  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them\n"
               "  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]\n"
               "                                 sample live values (Ctrl-C ends)\n"
@@ -129,20 +133,32 @@ QString CliHelp::command(const QString &name)
                   "Check every value against the dictionary (nothing is sent if one is bad),\n"
                   "write each, read it back and report whether it was verified.\n");
     if (name == QLatin1String("backup"))
-        return tr("Usage: drivedesk-cli [OPTIONS] backup -o FILE\n"
+        return tr("Usage: drivedesk-cli [OPTIONS] backup -o FILE [--changed-only]\n"
+                  "       drivedesk-cli [OPTIONS] (--all | --address 1,2,5) backup -o DIR [--from A] [--to B]\n"
                   "Read every readable parameter and save them to a backup file (saved\n"
-                  "atomically: an interrupted backup never leaves a half-written file).\n");
+                  "atomically: an interrupted backup never leaves a half-written file).\n"
+                  "--changed-only keeps only the settings that differ from the dictionary's\n"
+                  "defaults (the file says so; its restore touches only those). Several drives\n"
+                  "(--all: every drive a scan finds): one file per drive, FAMILY-ADDRESS.json,\n"
+                  "and DIR/index.json; the exit code is the worst drive's.\n");
     if (name == QLatin1String("diff"))
         return tr("Usage: drivedesk-cli [OPTIONS] diff FILE\n"
-                  "Compare the drive with a backup file, parameter by parameter. Exit code 0\n"
-                  "also when they differ; the output and the JSON say which differ.\n");
+                  "       drivedesk-cli [OPTIONS] diff A B\n"
+                  "Compare the drive with a backup file, or any two sources: a backup file,\n"
+                  "drive (the drive at --address), drive:ADDRESS or defaults. Two files need\n"
+                  "no link. Sources of different families are refused. Exit code as diff(1):\n"
+                  "0 equal, 1 different, 2 trouble (bad input, a drive that did not answer).\n");
     if (name == QLatin1String("restore"))
         return tr("Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]\n"
                   "Write the parameters that differ from the file and verify each by reading it\n"
                   "back. The file is checked completely before anything is sent. A file from\n"
                   "another family is refused; from another firmware only with --force.\n"
                   "--dry-run shows what would be written. On failure the report says exactly\n"
-                  "which parameters were written and which were not.\n");
+                  "which parameters were written and which were not.\n"
+                  "With --all (every drive a scan finds) or --address 1,2,5 the file goes to\n"
+                  "each drive at its own address; communication settings are never copied\n"
+                  "unless --only names them. --stop-on-failure: one drive after the other,\n"
+                  "none after the first that fails. The exit code is the worst drive's.\n");
     if (name == QLatin1String("ee"))
         return tr("Usage: drivedesk-cli [OPTIONS] ee set|rd|ba|rs|def\n"
                   "servo-modbus EEPROM operations, waiting for completion:\n"

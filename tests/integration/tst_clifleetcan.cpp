@@ -38,7 +38,10 @@ private:
 
 QStringList TestCliFleetCan::args(std::initializer_list<const char *> words) const
 {
-    QStringList l{QStringLiteral("--family"), QStringLiteral("servo-can"), QStringLiteral("--can"), m_can};
+    // A generous timeout: the simulator shares this process with the waiting test, and CI
+    // runs the suite on a loaded machine (and under ASan).
+    QStringList l{QStringLiteral("--family"),  QStringLiteral("servo-can"), QStringLiteral("--can"), m_can,
+                  QStringLiteral("--timeout"), QStringLiteral("300")};
     for (const char *w : words)
         l << QString::fromUtf8(w);
     return l;

@@ -66,9 +66,8 @@ CompareView::CompareView(DriveDirectory *directory, QWidget *parent)
 
     connect(m_addDrive, &QPushButton::clicked, this, &CompareView::chooseDrive);
     connect(m_addFile, &QPushButton::clicked, this, &CompareView::chooseFile);
-    connect(m_addDefaults, &QPushButton::clicked, this, [this] {
-        showError(addDefaults(m_sources.isEmpty() ? Family::ServoModbus : m_sources.first().family));
-    });
+    connect(m_addDefaults, &QPushButton::clicked, this,
+            [this] { showError(addDefaults(m_sources.isEmpty() ? Family::ServoModbus : m_sources.first().family)); });
     connect(m_export, &QPushButton::clicked, this, &CompareView::chooseExport);
     connect(m_onlyDifferences, &QCheckBox::toggled, this, &CompareView::applyFilter);
     connect(m_search, &QLineEdit::textChanged, this, &CompareView::applyFilter);
@@ -210,7 +209,8 @@ void CompareView::rebuild()
     if (m_error.isEmpty() && !m_sources.isEmpty()) {
         text = tr("%n parameter(s) differ.", nullptr, c.differenceCount());
         if (c.firmwareDiffers())
-            text += QLatin1Char(' ') + tr("The firmware differs between the sources: values may mean different things.");
+            text += QLatin1Char(' ')
+                + tr("The firmware differs between the sources: values may mean different things.");
     }
     m_message->setText(text);
     m_export->setEnabled(!m_sources.isEmpty());
@@ -283,8 +283,8 @@ void CompareView::chooseFile()
 
 void CompareView::chooseExport()
 {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export the comparison"), QString(), tr("CSV files (*.csv)"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export the comparison"), QString(),
+                                                      tr("CSV files (*.csv)"));
     if (!path.isEmpty())
         showError(exportCsv(path));
 }

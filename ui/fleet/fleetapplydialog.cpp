@@ -89,18 +89,17 @@ void FleetApplyDialog::setSourceDrive(int address)
     retranslate();
     m_message->setText(tr("Reading drive %1…").arg(address));
     auto out = std::make_shared<TransferOutcome>();
-    m_directory->hub()->run(m_connectionId, address, TransferOperation::backup(out),
-                            [this, out, address](const DriveResult &r) {
-                                if (r.error) {
-                                    m_message->setText(tr("Drive %1 could not be read: %2. Nothing was written.")
-                                                           .arg(address)
-                                                           .arg(r.error.message));
-                                    return;
-                                }
-                                m_file = out->backup;
-                                m_hasSource = true;
-                                plan();
-                            });
+    m_directory->hub()->run(
+        m_connectionId, address, TransferOperation::backup(out), [this, out, address](const DriveResult &r) {
+            if (r.error) {
+                m_message->setText(
+                    tr("Drive %1 could not be read: %2. Nothing was written.").arg(address).arg(r.error.message));
+                return;
+            }
+            m_file = out->backup;
+            m_hasSource = true;
+            plan();
+        });
 }
 
 void FleetApplyDialog::plan()
@@ -128,8 +127,8 @@ void FleetApplyDialog::onPlanned(int address, const Error &error, const RestoreR
     int changes = 0;
     for (int a : std::as_const(m_targets))
         changes += int(m_plans.value(a).selected.size());
-    m_message->setText(tr("Plan: %n parameter(s) to write in all. Only these are written; each is read back.",
-                          nullptr, changes));
+    m_message->setText(
+        tr("Plan: %n parameter(s) to write in all. Only these are written; each is read back.", nullptr, changes));
     updateButtons();
     emit planReady();
 }
@@ -264,7 +263,8 @@ void FleetApplyDialog::finishIfDone()
         return;
     m_applying = false;
     m_done = true;
-    m_message->setText(tr("Done: %1 verified, %2 failed, %3 not attempted.").arg(verified).arg(failed).arg(notAttempted));
+    m_message->setText(
+        tr("Done: %1 verified, %2 failed, %3 not attempted.").arg(verified).arg(failed).arg(notAttempted));
     updateButtons();
     emit applied();
 }
@@ -282,8 +282,8 @@ void FleetApplyDialog::updateItem(int address)
             item = m_tree->topLevelItem(i);
     if (!item)
         return;
-    const ParameterDictionary &dict =
-        ParameterDictionary::bundled(m_file.family().value_or(m_directory->connectionSettings(m_connectionId).family));
+    const ParameterDictionary &dict = ParameterDictionary::bundled(
+        m_file.family().value_or(m_directory->connectionSettings(m_connectionId).family));
     item->setText(0, tr("drive %1").arg(address));
     const RestoreReport &plan = m_plans.value(address);
     const RestoreReport &done = m_reports.value(address);
@@ -320,16 +320,18 @@ void FleetApplyDialog::updateItem(int address)
     for (const DiffEntry &e : plan.selected) {
         auto *child = new QTreeWidgetItem(item);
         child->setText(0, dict.label(e.index));
-        child->setText(1, tr("%1 → %2").arg(e.driveValue ? QString::number(*e.driveValue) : QStringLiteral("—"),
-                                            e.fileValue ? QString::number(*e.fileValue) : QStringLiteral("—")));
+        child->setText(1,
+                       tr("%1 → %2").arg(e.driveValue ? QString::number(*e.driveValue) : QStringLiteral("—"),
+                                         e.fileValue ? QString::number(*e.fileValue) : QStringLiteral("—")));
     }
     for (const DiffEntry &e : plan.diff.entries()) {
         if (!e.communication || e.status == DiffStatus::Same || e.status == DiffStatus::OnlyOnDrive)
             continue;
         auto *child = new QTreeWidgetItem(item);
         child->setText(0, dict.label(e.index));
-        child->setText(1, tr("left alone: a communication setting (stays %1)")
-                              .arg(e.driveValue ? QString::number(*e.driveValue) : QStringLiteral("—")));
+        child->setText(1,
+                       tr("left alone: a communication setting (stays %1)")
+                           .arg(e.driveValue ? QString::number(*e.driveValue) : QStringLiteral("—")));
     }
     item->setExpanded(true);
 }
@@ -347,10 +349,10 @@ void FleetApplyDialog::retranslate()
     QStringList list;
     for (int a : std::as_const(m_targets))
         list << QString::number(a);
-    m_source->setText(tr("From %1 to the drives %2. Communication settings (address, baud rate, station "
-                         "number) are left alone.")
-                          .arg(m_sourceName.isEmpty() ? tr("(no source yet)") : m_sourceName,
-                               list.join(QLatin1String(", "))));
+    m_source->setText(
+        tr("From %1 to the drives %2. Communication settings (address, baud rate, station "
+           "number) are left alone.")
+            .arg(m_sourceName.isEmpty() ? tr("(no source yet)") : m_sourceName, list.join(QLatin1String(", "))));
     m_tree->setHeaderLabels({tr("Drive / parameter"), tr("Plan and result")});
     m_stopAtFirst->setText(tr("Stop at the first failed drive"));
     m_apply->setText(tr("Apply"));

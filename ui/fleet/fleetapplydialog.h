@@ -32,8 +32,7 @@ class FleetApplyDialog : public QDialog
 public:
     enum class DriveState { Planning, Planned, PlanFailed, Writing, Verified, Failed, NotAttempted };
 
-    FleetApplyDialog(DriveDirectory *directory, int connectionId, const QList<int> &targets,
-                     QWidget *parent = nullptr);
+    FleetApplyDialog(DriveDirectory *directory, int connectionId, const QList<int> &targets, QWidget *parent = nullptr);
     ~FleetApplyDialog() override;
 
     // The source; the plan starts at once.

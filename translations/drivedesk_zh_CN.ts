@@ -1366,10 +1366,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%2 上地址 %1 的应答与请求不符（%3）。</translation>
     </message>
     <message>
-        <source>Only a late answer to an earlier request came from address %1 on %2. The drive answers more slowly than the timeout allows: raise the timeout.</source>
-        <translation>%2 上地址 %1 只返回了对先前请求的迟到应答。驱动器的应答慢于超时设定，请加大超时时间。</translation>
-    </message>
-    <message>
         <source>The reply from address %1 on %2 failed its CRC. Check the cable shielding, the bus termination and the baud rate.</source>
         <translation>%2 上地址 %1 的应答 CRC 校验失败。请检查电缆屏蔽、总线终端电阻和波特率。</translation>
     </message>
@@ -1396,6 +1392,18 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>A frame from address %1 arrived instead: do two drives share an address, or does another master talk on the bus?</source>
         <translation>收到的是地址 %1 的帧：是否有两台驱动器使用同一地址，或总线上有另一个主站？</translation>
+    </message>
+    <message>
+        <source>A reply from address %1 on %2 reached the port before the request was written: a duplicated or late answer to an earlier request, dropped.</source>
+        <translation>来自地址 %1（%2）的应答在请求写出之前就已到达端口：这是对先前请求的重复或迟到应答，已丢弃。</translation>
+    </message>
+    <message>
+        <source>A reply from address %1 on %2 came %3 us after the request, sooner than the wire can carry request and reply at %4 baud (%5 us), while the last request to that address was still unanswered: it was dropped as that request&apos;s late answer.</source>
+        <translation>来自地址 %1（%2）的应答在请求发出后 %3 微秒即到达，早于 %4 波特率下线路传送请求和应答所需的时间（%5 微秒），而发往该地址的上一个请求尚未得到应答：该应答被视为上一个请求的迟到应答而丢弃。</translation>
+    </message>
+    <message>
+        <source>The next attempt takes a fast reply; if this was the last attempt, raise the retries (--retries).</source>
+        <translation>下一次尝试会接受快速应答；如果这已是最后一次尝试，请增加重试次数（--retries）。</translation>
     </message>
 </context>
 <context>
@@ -1922,6 +1930,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Answers came after the timeout: the drive is slower than the response allowance (%1 ms): raise the timeout.</source>
         <translation>应答在超时之后才到达：驱动器比应答余量（%1 ms）慢，请增大超时时间。</translation>
+    </message>
+    <message>
+        <source>No reply on %1 within %2 ms but a frame of the awaited shape that came %3 us after the request, sooner than the wire can carry request and reply (%4 us), while an earlier request was still unanswered: it was dropped as that request&apos;s late answer. The next attempt accepts a fast reply; if this one was the last, raise the retries (--retries).</source>
+        <translation>%1 上在 %2 毫秒内没有应答，只收到一个符合预期格式的帧：它在请求发出后 %3 微秒即到达，早于线路传送请求和应答所需的时间（%4 微秒），而先前的一个请求尚未得到应答，因此它被视为该请求的迟到应答而丢弃。下一次尝试会接受快速应答；如果这已是最后一次尝试，请增加重试次数（--retries）。</translation>
     </message>
 </context>
 <context>
@@ -4593,6 +4605,28 @@ Servo enable on or off.
         <source>The %1 family talks RS485: use --port DEVICE instead of --can.</source>
         <translation>%1 系列使用 RS485 通讯：请用 --port DEVICE 代替 --can。</translation>
     </message>
+    <message>
+        <source>  ping [--count N]               link health: turnaround, timeouts, errors, and
+                                 the timeout and gap to use; exit 1 if no answer
+</source>
+        <translation>  ping [--count N]               链路健康：往返时间、超时、错误，以及
+                                 建议的超时和间隔；无应答时退出码为 1
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] ping [--count N]
+Ask the drive for its status N times (default 10), one request at a time, and
+report the link&apos;s health: turnaround min / median / max, timeouts, checksum
+errors, late or duplicated replies, retries, and the reply allowance (--timeout)
+and gap between requests it recommends. Exit code 1 when the drive answered none.
+</source>
+        <translation>用法：drivedesk-cli [选项] ping [--count N]
+逐个向驱动器查询 N 次状态（默认 10 次），并报告链路健康状况：
+往返时间的最小值 / 中位数 / 最大值、超时、校验错误、迟到或重复的应答、
+重试次数，以及建议的应答余量（--timeout）和请求间隔。
+驱动器一次也没有应答时退出码为 1。
+</translation>
+    </message>
 </context>
 <context>
     <name>dd::CliCommand</name>
@@ -5071,6 +5105,61 @@ Servo enable on or off.
         <translation>
             <numerusform>%n 个参数的回读值与写入值不同（第一个：%1：%2）。驱动器可能限制了该值或在当前状态下不接受它，或该参数为只读。</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>dd::PingCommand</name>
+    <message>
+        <source>The drive at address %1 answered none of %2 requests. Last error: %3</source>
+        <translation>地址 %1 的驱动器对 %2 个请求均未应答。最后一个错误：%3</translation>
+    </message>
+    <message>
+        <source>Answered</source>
+        <translation>已应答</translation>
+    </message>
+    <message>
+        <source>%1 of %2 (%3 requests on the wire)</source>
+        <translation>%2 个中的 %1 个（线路上共 %3 个请求）</translation>
+    </message>
+    <message>
+        <source>Turnaround</source>
+        <translation>往返时间</translation>
+    </message>
+    <message>
+        <source>min %1 ms, median %2 ms, max %3 ms</source>
+        <translation>最小 %1 毫秒，中位数 %2 毫秒，最大 %3 毫秒</translation>
+    </message>
+    <message>
+        <source>Timeouts</source>
+        <translation>超时</translation>
+    </message>
+    <message>
+        <source>Checksum errors</source>
+        <translation>校验错误</translation>
+    </message>
+    <message>
+        <source>Late or duplicated replies</source>
+        <translation>迟到或重复的应答</translation>
+    </message>
+    <message>
+        <source>Retries</source>
+        <translation>重试</translation>
+    </message>
+    <message>
+        <source>Recommended timeout</source>
+        <translation>建议超时</translation>
+    </message>
+    <message>
+        <source>--timeout %1 (reply allowance beyond the wire time, ms)</source>
+        <translation>--timeout %1（线路传输时间之外的应答余量，毫秒）</translation>
+    </message>
+    <message>
+        <source>Recommended gap</source>
+        <translation>建议间隔</translation>
+    </message>
+    <message>
+        <source>%1 ms between requests</source>
+        <translation>请求之间 %1 毫秒</translation>
     </message>
 </context>
 </TS>

@@ -15,7 +15,8 @@ bool PingCommand::prepare(const CliInvocation &inv, QString *error)
     if (!expectArguments(inv, 0, 0, QString(), error))
         return false;
     if (inv.has(QStringLiteral("count"))) {
-        const auto v = CliValues::integer(inv.value(QStringLiteral("count")), 1, 100000, QStringLiteral("--count"), error);
+        const auto v = CliValues::integer(inv.value(QStringLiteral("count")), 1, 100000, QStringLiteral("--count"),
+                                          error);
         if (!v)
             return false;
         m_count = int(*v);
@@ -60,7 +61,9 @@ void PingCommand::report()
         {QStringLiteral("answered"), answered},
         {QStringLiteral("requests"), h.requests},
         {QStringLiteral("turnaroundMs"),
-         QJsonObject{{QStringLiteral("min"), h.minMs}, {QStringLiteral("median"), h.medianMs}, {QStringLiteral("max"), h.maxMs}}},
+         QJsonObject{{QStringLiteral("min"), h.minMs},
+                     {QStringLiteral("median"), h.medianMs},
+                     {QStringLiteral("max"), h.maxMs}}},
         {QStringLiteral("timeouts"), h.timeouts},
         {QStringLiteral("checksumErrors"), h.checksumErrors},
         {QStringLiteral("lateReplies"), h.lateReplies},
@@ -84,7 +87,8 @@ void PingCommand::report()
         {tr("Checksum errors"), QString::number(h.checksumErrors)},
         {tr("Late or duplicated replies"), QString::number(h.lateReplies)},
         {tr("Retries"), QString::number(h.retries)},
-        {tr("Recommended timeout"), tr("--timeout %1 (reply allowance beyond the wire time, ms)").arg(h.recommendedTimeoutMs)},
+        {tr("Recommended timeout"),
+         tr("--timeout %1 (reply allowance beyond the wire time, ms)").arg(h.recommendedTimeoutMs)},
         {tr("Recommended gap"), tr("%1 ms between requests").arg(h.recommendedGapMs)},
     };
     succeed(json, CliDescribe::table(rows));

@@ -5162,4 +5162,67 @@ and gap between requests it recommends. Exit code 1 when the drive answered none
         <translation>请求之间 %1 毫秒</translation>
     </message>
 </context>
+<context>
+    <name>dd::LinkHealthDock</name>
+    <message>
+        <source>%1, address %2</source>
+        <translation>%1，地址 %2</translation>
+    </message>
+    <message>
+        <source>%1 / %2 / %3 ms</source>
+        <translation>%1 / %2 / %3 毫秒</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 毫秒</translation>
+    </message>
+    <message>
+        <source>Link health</source>
+        <translation>链路健康</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>驱动器</translation>
+    </message>
+    <message>
+        <source>Requests</source>
+        <translation>请求</translation>
+    </message>
+    <message>
+        <source>Answered</source>
+        <translation>已应答</translation>
+    </message>
+    <message>
+        <source>Turnaround min / median / max</source>
+        <translation>往返时间 最小 / 中位数 / 最大</translation>
+    </message>
+    <message>
+        <source>Timeouts</source>
+        <translation>超时</translation>
+    </message>
+    <message>
+        <source>Checksum errors</source>
+        <translation>校验错误</translation>
+    </message>
+    <message>
+        <source>Late or duplicated</source>
+        <translation>迟到或重复</translation>
+    </message>
+    <message>
+        <source>Retries</source>
+        <translation>重试</translation>
+    </message>
+    <message>
+        <source>Recommended timeout</source>
+        <translation>建议超时</translation>
+    </message>
+    <message>
+        <source>Recommended gap</source>
+        <translation>建议间隔</translation>
+    </message>
+    <message>
+        <source>From the traffic seen so far. The recommended timeout is the reply allowance beyond the wire time (drivedesk-cli --timeout); the gap is the quiet time between requests that lets late replies land first.</source>
+        <translation>根据目前已观察到的通信统计。建议超时是线路传输时间之外的应答余量（drivedesk-cli --timeout）；间隔是请求之间的静默时间，让迟到的应答先到达。</translation>
+    </message>
+</context>
 </TS>

@@ -37,7 +37,10 @@ public:
     };
 
     // `baud` > 0: the serial baud rate (for the wire time in the recommendation); 0: CAN.
-    explicit LinkHealth(int baud = 0) : m_baud(baud) {}
+    explicit LinkHealth(int baud = 0)
+        : m_baud(baud)
+    {
+    }
 
     // Keeps only records of `address` (serial: the frame's first byte; CAN: the low 7 bits
     // of the identifier); -1 keeps all.

@@ -182,7 +182,7 @@ private slots:
             if (b.size() != 2)
                 return;
             if (++n == 1)
-                return; // held back
+                return;                               // held back
             pty.write(reply('A', 1) + reply('A', 2)); // the late answer, then this one's
         });
         LinkReply *first = link.send(request('A'));

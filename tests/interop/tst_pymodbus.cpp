@@ -17,8 +17,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include <sys/prctl.h>
 #include <csignal>
+#include <sys/prctl.h>
 
 using namespace dd;
 using namespace dd::test;
@@ -48,9 +48,11 @@ class TestPymodbus : public QObject
 
     CliRun cli(const QStringList &args, int address = 7)
     {
-        QStringList all{QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--port"), port(),
-                        QStringLiteral("--baud"),   QString::number(m_baud),     QStringLiteral("--address"),
-                        QString::number(address),   QStringLiteral("--json")};
+        QStringList all{QStringLiteral("--family"),  QStringLiteral("servo-modbus"),
+                        QStringLiteral("--port"),    port(),
+                        QStringLiteral("--baud"),    QString::number(m_baud),
+                        QStringLiteral("--address"), QString::number(address),
+                        QStringLiteral("--json")};
         return runCli(all + args, 30000);
     }
 
@@ -73,8 +75,9 @@ class TestPymodbus : public QObject
         QFile::remove(port());
         QFile::remove(peerEnd);
         dieWithParent(m_socatProcess);
-        m_socatProcess.start(m_socat, {QStringLiteral("pty,raw,echo=0,link=") + port(),
-                                       QStringLiteral("pty,raw,echo=0,link=") + peerEnd});
+        m_socatProcess.start(
+            m_socat,
+            {QStringLiteral("pty,raw,echo=0,link=") + port(), QStringLiteral("pty,raw,echo=0,link=") + peerEnd});
         QVERIFY2(m_socatProcess.waitForStarted(5000), "socat did not start");
         QTRY_VERIFY2_WITH_TIMEOUT(QFile::exists(port()) && QFile::exists(peerEnd), "socat made no pty pair", 5000);
         dieWithParent(m_peer);
@@ -82,7 +85,8 @@ class TestPymodbus : public QObject
         m_peer.start(Python, {m_script, peerEnd, QString::number(baud), QStringLiteral("1,7")});
         QVERIFY2(m_peer.waitForStarted(5000), "python3 did not start");
         QByteArray said;
-        QTRY_VERIFY2_WITH_TIMEOUT((said += m_peer.readAll()).contains("ready") || m_peer.state() == QProcess::NotRunning,
+        QTRY_VERIFY2_WITH_TIMEOUT((said += m_peer.readAll()).contains("ready")
+                                      || m_peer.state() == QProcess::NotRunning,
                                   "pymodbus did not start", 15000);
         QVERIFY2(m_peer.state() == QProcess::Running, said.constData());
     }
@@ -120,9 +124,12 @@ private slots:
         if (QTest::currentTestFailed())
             return;
 
-        // scan finds both drives (and nothing at the silent addresses around them)
-        CliRun r = cli({QStringLiteral("scan"), QStringLiteral("--from"), QStringLiteral("1"), QStringLiteral("--to"),
-                        QStringLiteral("8"), QStringLiteral("--bauds"), QString::number(baud)});
+        // scan finds both drives (and nothing at the silent addresses around them). pymodbus
+        // (Python) answers in 5-90 ms on a loaded machine, far beyond the scan's adaptive
+        // probe timeout at 115200 (a few ms): --timeout says how long this peer may take.
+        CliRun r = cli({QStringLiteral("--timeout"), QStringLiteral("150"), QStringLiteral("scan"),
+                        QStringLiteral("--from"), QStringLiteral("1"), QStringLiteral("--to"), QStringLiteral("8"),
+                        QStringLiteral("--bauds"), QString::number(baud)});
         QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
         QList<int> found;
         for (const QJsonValue &d : r.json().value(QLatin1String("drives")).toArray()) {

@@ -41,7 +41,7 @@ private slots:
         h.add(rec(60500, Drop, rep, QStringLiteral("bad checksum"))); // checksum error
         h.add(rec(90000, Tx, req, QStringLiteral("(retry 2)")));
         h.add(rec(90100, Drop, rep, QStringLiteral("stale: came 100 us after the request")));
-        h.add(rec(92000, Rx, rep)); // 2 ms
+        h.add(rec(92000, Rx, rep));                // 2 ms
         h.add(rec(93000, Tx, "0103006600016473")); // another drive
         h.add(rec(93500, Rx, "0103021b95fadb"));
         const LinkHealth::Summary s = h.summary();

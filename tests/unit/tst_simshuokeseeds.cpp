@@ -58,9 +58,10 @@ private slots:
         QTest::addColumn<int>("get");
         QTest::addColumn<quint32>("value");
         QTest::addColumn<quint32>("kept");
-        QTest::newRow("numerator 0x12345") << int(CmdSetGearNumerator) << int(CmdGetGearNumerator) << 0x12345u << 0x2345u;
-        QTest::newRow("denominator 0x1FFFF") << int(CmdSetGearDenominator) << int(CmdGetGearDenominator) << 0x1FFFFu
-                                             << 0xFFFFu;
+        QTest::newRow("numerator 0x12345")
+            << int(CmdSetGearNumerator) << int(CmdGetGearNumerator) << 0x12345u << 0x2345u;
+        QTest::newRow("denominator 0x1FFFF")
+            << int(CmdSetGearDenominator) << int(CmdGetGearDenominator) << 0x1FFFFu << 0xFFFFu;
         QTest::newRow("numerator 0xFFFF") << int(CmdSetGearNumerator) << int(CmdGetGearNumerator) << 0xFFFFu << 0xFFFFu;
     }
     void gearKeepsTheLow16Bits()

@@ -8,6 +8,7 @@
 #include "ui/bus/scanprogresswidget.h"
 #include "ui/bus/statuspoller.h"
 #include "ui/framemonitor/framemonitordock.h"
+#include "ui/linkhealth/linkhealthdock.h"
 #include "ui/shell/demolauncher.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/recentfiles.h"
@@ -48,6 +49,9 @@ MainWindow::MainWindow(LanguageManager *language, QWidget *parent)
     addDock(frames, Qt::BottomDockWidgetArea);
     frames->hide();
     connect(frames, &FrameMonitorDock::errorOccurred, m_statusBar, &StatusBarWidget::countError);
+    auto *health = new LinkHealthDock(m_hub, this); // View → Link health, from the same traffic
+    addDock(health, Qt::BottomDockWidgetArea);
+    health->hide();
     m_recent->load();
     retranslate();
     emit m_language->languageChanged(); // check the current language in the menu

@@ -131,9 +131,10 @@ void LinkHealthDock::changeEvent(QEvent *event)
 void LinkHealthDock::retranslate()
 {
     setWindowTitle(tr("Link health"));
-    m_table->setHorizontalHeaderLabels({tr("Drive"), tr("Requests"), tr("Answered"), tr("Turnaround min / median / max"),
-                                        tr("Timeouts"), tr("Checksum errors"), tr("Late or duplicated"), tr("Retries"),
-                                        tr("Recommended timeout"), tr("Recommended gap")});
+    m_table->setHorizontalHeaderLabels({tr("Drive"), tr("Requests"), tr("Answered"),
+                                        tr("Turnaround min / median / max"), tr("Timeouts"), tr("Checksum errors"),
+                                        tr("Late or duplicated"), tr("Retries"), tr("Recommended timeout"),
+                                        tr("Recommended gap")});
     m_hint->setText(tr("From the traffic seen so far. The recommended timeout is the reply allowance beyond the wire "
                        "time (drivedesk-cli --timeout); the gap is the quiet time between requests that lets late "
                        "replies land first."));

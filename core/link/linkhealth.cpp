@@ -19,12 +19,10 @@ bool LinkHealth::concerns(const TrafficRecord &r) const
 {
     if (m_address < 0)
         return true;
-    if (r.isCan)
-        return int(r.canId & 0x7F) == m_address;
     // A drop may hold any bytes (garbage, a frame of someone else): count it while a
     // request to this drive is out.
     if (r.direction == TrafficRecord::Direction::Discarded)
-        return m_awaiting;
+        return m_awaiting || !m_canOut.isEmpty();
     return !r.bytes.isEmpty() && quint8(r.bytes.at(0)) == m_address;
 }
 
@@ -39,6 +37,14 @@ void LinkHealth::closeRequest()
         ++m_counts.timeouts;
 }
 
+void LinkHealth::answer(qint64 sentUs, qint64 atUs, int bytes)
+{
+    ++m_counts.answered;
+    m_turnaroundsMs.append(double(atUs - sentUs) / 1000.0);
+    if (m_baud > 0)
+        m_maxWireUs = std::max(m_maxWireUs, int((m_txBytes + bytes) * 10 * 1000000LL / m_baud));
+}
+
 void LinkHealth::add(const TrafficRecord &r)
 {
     if (!concerns(r))
@@ -47,25 +53,44 @@ void LinkHealth::add(const TrafficRecord &r)
     case TrafficRecord::Direction::Tx:
         if (!r.isCan && !r.bytes.isEmpty() && r.bytes.at(0) == 0)
             return; // a broadcast expects no reply
-        closeRequest();
+        if (mentions(r.note, {"keep-alive", "heartbeat"}))
+            return; // expects no reply either
         ++m_counts.requests;
         if (mentions(r.note, {"retry"}))
             ++m_counts.retries;
+        if (r.isCan) {
+            for (qsizetype i = 0; i < m_canOut.size(); ++i) {
+                if (m_canOut.at(i).bytes == r.bytes) { // asked again: the earlier one timed out
+                    m_canOut.removeAt(i);
+                    ++m_counts.timeouts;
+                    break;
+                }
+            }
+            m_canOut.append({r.timestampUs, r.bytes});
+            return;
+        }
+        closeRequest();
         m_awaiting = true;
         m_crcSeen = false;
         m_txAtUs = r.timestampUs;
         m_txBytes = int(r.bytes.size());
         return;
-    case TrafficRecord::Direction::Rx: {
-        if (!m_awaiting)
+    case TrafficRecord::Direction::Rx:
+        if (r.isCan) {
+            for (qsizetype i = 0; i < m_canOut.size(); ++i) {
+                if (m_canOut.at(i).bytes.left(2) == r.bytes.left(2)) {
+                    answer(m_canOut.at(i).atUs, r.timestampUs, 0);
+                    m_canOut.removeAt(i);
+                    return;
+                }
+            }
             return; // heartbeats and other unsolicited frames
+        }
+        if (!m_awaiting)
+            return;
         m_awaiting = false;
-        ++m_counts.answered;
-        m_turnaroundsMs.append(double(r.timestampUs - m_txAtUs) / 1000.0);
-        if (m_baud > 0)
-            m_maxWireUs = std::max(m_maxWireUs, int((m_txBytes + r.bytes.size()) * 10 * 1000000LL / m_baud));
+        answer(m_txAtUs, r.timestampUs, int(r.bytes.size()));
         return;
-    }
     case TrafficRecord::Direction::Discarded:
         if (mentions(r.note, {"checksum", "crc"}))
             m_crcSeen = true;

@@ -1,5 +1,5 @@
 // drivedesk-cli ping: the link health of one drive against the built-in simulator, for each
-// serial family; exit 1 when the drive does not answer.
+// family (servo-can on a private virtualcan hub); exit 1 when the drive does not answer.
 #include <QtTest>
 
 #include "tests/support/clirun.h"
@@ -17,6 +17,7 @@ private slots:
         QTest::addColumn<QString>("family");
         QTest::newRow("servo-modbus") << QStringLiteral("servo-modbus");
         QTest::newRow("shuoke") << QStringLiteral("shuoke");
+        QTest::newRow("servo-can (pipelined reads)") << QStringLiteral("servo-can");
     }
     void answeringDrive()
     {

@@ -74,6 +74,38 @@ private slots:
         QCOMPARE(s.recommendedTimeoutMs, 100);
     }
 
+    // CAN: three reads pipelined, answered together; a heartbeat and a keep-alive between;
+    // a read asked again (its first answer lost) counts as a timeout.
+    void pipelinedCanReads()
+    {
+        auto can = [](qint64 at, TrafficRecord::Direction d, const QByteArray &hex, const QString &note = {}) {
+            TrafficRecord r = rec(at, d, hex, note);
+            r.isCan = true;
+            r.canId = 0x65;
+            return r;
+        };
+        LinkHealth h;
+        h.setAddress(1);
+        h.add(can(0, Tx, "0112fd00000000ff"));
+        h.add(can(10, Tx, "0112fc00000000ff"));
+        h.add(can(20, Tx, "0112aa00000000ff"));
+        h.add(can(1000, Rx, "0110880000000ff0", {})); // heartbeat
+        h.add(can(1100, Tx, "0108000000000000", QStringLiteral("(keep-alive)")));
+        h.add(can(2000, Rx, "0112fd00000000ff"));
+        h.add(can(3010, Rx, "0112fc00000000ff"));
+        h.add(can(50000, Tx, "0112aa00000000ff", QStringLiteral("(retry 1)")));
+        h.add(can(54000, Rx, "0112aa00000000ff"));
+        h.add(can(55000, Tx, "0212fd00000000ff")); // station 2
+        const LinkHealth::Summary s = h.summary();
+        QCOMPARE(s.requests, 4);
+        QCOMPARE(s.answered, 3);
+        QCOMPARE(s.timeouts, 1);
+        QCOMPARE(s.retries, 1);
+        QCOMPARE(s.minMs, 2.0);
+        QCOMPARE(s.medianMs, 3.0);
+        QCOMPARE(s.maxMs, 4.0);
+    }
+
     void broadcastsAreNotRequests()
     {
         LinkHealth h(19200);

@@ -25,11 +25,10 @@ enum Column {
     ColumnCount
 };
 
-// The drive a frame concerns: a serial frame's first byte, a CAN frame's node id.
+// The drive a frame concerns: its first data byte in every family (serial frames, servo-can
+// and shuoke CAN data).
 int addressOf(const TrafficRecord &r)
 {
-    if (r.isCan)
-        return int(r.canId & 0x7F);
     return r.bytes.isEmpty() ? -1 : quint8(r.bytes.at(0));
 }
 } // namespace

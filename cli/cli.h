@@ -31,8 +31,11 @@ public:
 
     // stderr is for the CLI's own messages and --trace: the libraries' debug and info
     // chatter stays off (QT_LOGGING_RULES in the environment still overrides this); with the
-    // simulator also virtualcan's expected warnings about its private hub.
-    static void configureLogging(bool sim);
+    // simulator also virtualcan's expected warnings about its private hub. Qt Modbus's own
+    // warnings ("Cannot match response with open request, ignoring": a stray or late frame,
+    // which the link handles and --trace shows as a discarded frame) are shown only with
+    // --trace.
+    static void configureLogging(bool sim, bool trace = false);
 
 private:
     // Speaks the language of --lang (English with --json); false after saying that --lang

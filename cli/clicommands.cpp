@@ -8,6 +8,7 @@
 #include "cli/monitorcommand.h"
 #include "cli/motioncommands.h"
 #include "cli/paramcommands.h"
+#include "cli/pingcommand.h"
 #include "cli/scancommand.h"
 #include "cli/sourcediffcommand.h"
 
@@ -48,6 +49,7 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("clear-alarm"), {}},
         {QStringLiteral("home"), {flag("positive"), flag("no-wait")}},
         {QStringLiteral("channels"), {}},
+        {QStringLiteral("ping"), {valued("count")}},
     };
 }
 
@@ -97,6 +99,8 @@ CliCommand *CliCommands::create(const QString &name, CliContext *context)
         return new InfoCommand(context);
     if (name == QLatin1String("channels"))
         return new ChannelsCommand(context);
+    if (name == QLatin1String("ping"))
+        return new PingCommand(context);
     if (name == QLatin1String("stop"))
         return new StopCommand(context);
     if (name == QLatin1String("enable"))

@@ -78,7 +78,9 @@ QString CliHelp::commandList()
               "  enable on|off                  servo enable on or off\n"
               "  clear-alarm                    clear the alarm and check that it is gone\n"
               "  home [--positive] [--no-wait]  homing, negative direction first\n"
-              "  channels                       the monitor channels this drive offers\n");
+              "  channels                       the monitor channels this drive offers\n")
+        + tr("  ping [--count N]               link health: turnaround, timeouts, errors, and\n"
+             "                                 the timeout and gap to use; exit 1 if no answer\n");
 }
 
 QString CliHelp::exitCodes()
@@ -197,6 +199,12 @@ QString CliHelp::command(const QString &name)
     if (name == QLatin1String("channels"))
         return tr("Usage: drivedesk-cli [OPTIONS] channels\n"
                   "The monitor channels this drive offers, with units.\n");
+    if (name == QLatin1String("ping"))
+        return tr("Usage: drivedesk-cli [OPTIONS] ping [--count N]\n"
+                  "Ask the drive for its status N times (default 10), one request at a time, and\n"
+                  "report the link's health: turnaround min / median / max, timeouts, checksum\n"
+                  "errors, late or duplicated replies, retries, and the reply allowance (--timeout)\n"
+                  "and gap between requests it recommends. Exit code 1 when the drive answered none.\n");
     return general();
 }
 

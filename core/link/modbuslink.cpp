@@ -75,6 +75,7 @@ bool ModbusLink::setBaudRate(qint32 baud)
     }
     // Whatever was on the line belonged to the other baud rate.
     d->m_taintedUntilUs.clear();
+    d->m_owed.clear();
     return true;
 }
 

@@ -94,6 +94,7 @@ bool ModbusLink::Private::open(const SerialSettings &settings, Error *error)
     }
     m_sniffer.attach(m_client->device());
     m_taintedUntilUs.clear();
+    m_owed.clear();
     m_quietUntilUs = 0;
     m_lastCommandEndUs = 0;
     m_state = State::Idle;
@@ -190,6 +191,7 @@ void ModbusLink::Private::failAll(const Error &why, bool abortQt)
     if (m_current) {
         if (m_state == State::Awaiting) {
             const int addr = m_current->request.pdu.address;
+            m_owed.insert(addr); // aborted in flight: its answer may still come
             const int quiet = quietAfterTimeoutMs(effectiveTimeoutMs(m_current->request));
             taint(addr, nowUs() + qint64(quiet) * 1000);
             if (abortQt && isOpen()) {
@@ -385,6 +387,9 @@ void ModbusLink::Private::onSniffed(const QByteArray &bytes)
         return;
     }
     recordDiscarded(bytes, QStringLiteral("late or unsolicited bytes (no request pending)"));
+    // A late answer that lands while nothing waits pays its address's debt.
+    if (bytes.size() >= 4 && hasValidCrc16(bytes))
+        m_owed.remove(quint8(bytes.at(0)));
     ++m_strayBursts;
     noteStrayActivity();
     reportStray(bytes);

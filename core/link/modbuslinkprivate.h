@@ -10,6 +10,7 @@
 #include <QModbusDevice>
 #include <QPointer>
 #include <QQueue>
+#include <QSet>
 #include <QTimer>
 #include <optional>
 
@@ -31,6 +32,7 @@ public:
         ModbusRequest request;
         QPointer<LinkReply> reply;
         int attempts = 0;
+        bool droppedEarly = false; // a fast frame was dropped as a stale answer
     };
     enum class State {
         Idle,    // nothing in flight
@@ -73,6 +75,7 @@ public:
     bool m_crcErrorSeen = false;
     bool m_aborting = false;             // we are reconnecting: ignore what Qt reports meanwhile
     QHash<int, qint64> m_taintedUntilUs; // address -> no request before this (late replies)
+    QSet<int> m_owed;                    // addresses whose last request went unanswered (the stale-reply rule)
 
     quint64 m_timeouts = 0;
     quint64 m_retries = 0;

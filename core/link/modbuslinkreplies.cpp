@@ -119,25 +119,49 @@ void ModbusLink::Private::handleSuccess(const QModbusResponse &response)
     // Where the raw bytes are visible, the answer must be among those read since the request
     // went out (onSniffed); where not, the request must at least have been written.
     const bool stale = m_writtenUs == 0 || (m_sniffer.isActive() && !m_rxSinceSend.contains(adu));
-    if (stale || (m_settings.rejectImpossiblyEarlyReplies && arrivedUs < earliest)) {
-        // A reply this early answers an earlier request; the answer to this one is still
-        // on its way: let it pass, then ask again.
+    // The stale-reply rule (docs/reliability.md): a reply sooner than the wire allows is a
+    // stale answer only when one is owed, i.e. the last request to this address went
+    // unanswered. Dropping it pays that debt: a fast peer (pty, socat, deep-FIFO adapter)
+    // costs one attempt at most, and with nothing owed a fast reply is the answer.
+    const bool early = arrivedUs < earliest;
+    const bool owed = m_owed.contains(req.pdu.address);
+    if (stale || (early && owed)) {
         ++m_lateReplies;
+        m_owed.remove(req.pdu.address);
+        m_current->droppedEarly = !stale;
+        const qint64 after = arrivedUs - sentUs;
+        const qint64 need = 2 * (earliest - sentUs);
         recordDiscarded(adu,
-                        stale ? QStringLiteral("received before the request: a stale answer")
-                              : QStringLiteral("arrived sooner than a reply could: late answer to an "
-                                               "earlier request"));
+                        stale ? QStringLiteral("received before the request was written: a stale answer")
+                              : QStringLiteral("stale: came %1 us after the request (the wire needs %2 us) "
+                                               "while the last request to this address was unanswered")
+                                    .arg(after)
+                                    .arg(need));
         const int quiet = quietAfterTimeoutMs(effectiveTimeoutMs(req));
         taint(req.pdu.address, now + qint64(quiet) * 1000);
+        const QString seen = stale
+            ? ModbusLink::tr("A reply from address %1 on %2 reached the port before the request was "
+                             "written: a duplicated or late answer to an earlier request, dropped.")
+                  .arg(req.pdu.address)
+                  .arg(m_settings.portName)
+            : ModbusLink::tr("A reply from address %1 on %2 came %3 us after the request, sooner than "
+                             "the wire can carry request and reply at %4 baud (%5 us), while the last "
+                             "request to that address was still unanswered: it was dropped as that "
+                             "request's late answer.")
+                  .arg(req.pdu.address)
+                  .arg(m_settings.portName)
+                  .arg(after)
+                  .arg(m_settings.baud)
+                  .arg(need);
         retryOrFail({ErrorCode::Timeout,
-                     ModbusLink::tr("Only a late answer to an earlier request came from address %1 "
-                                    "on %2. The drive answers more slowly than the timeout allows: "
-                                    "raise the timeout.")
-                         .arg(req.pdu.address)
-                         .arg(m_settings.portName)},
+                     seen + QLatin1Char(' ')
+                         + ModbusLink::tr("The next attempt takes a fast reply; if this was the last "
+                                          "attempt, raise the retries (--retries).")},
                     quiet);
         return;
     }
+    // A drive answers in order: once it answered this request, no earlier answer follows.
+    m_owed.remove(req.pdu.address);
     recordRx(adu);
     const modbusrtu::Reply &r = *decoded.value;
     QList<quint16> registers;
@@ -153,6 +177,10 @@ void ModbusLink::Private::handleTimeout(int timeoutMs)
 {
     ++m_timeouts;
     const int address = m_current->request.pdu.address;
+    // Unanswered: its answer may still come and pass for the next one's (the stale-reply
+    // rule). Not when a fast reply was dropped as stale meanwhile: that may have been it.
+    if (!m_current->droppedEarly)
+        m_owed.insert(address);
     const int quiet = quietAfterTimeoutMs(timeoutMs);
     taint(address, nowUs() + qint64(quiet) * 1000);
     if (!m_rxSinceSend.isEmpty()) {

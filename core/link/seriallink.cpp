@@ -67,6 +67,7 @@ bool SerialLink::open(const SerialSettings &settings, Error *error)
     m_rx.clear();
     m_quietUntilUs = 0;
     m_lastCommandEndUs = -1;
+    m_owed.clear();
     connect(m_port, &QSerialPort::readyRead, this, &SerialLink::onReadyRead);
     connect(m_port, &QSerialPort::errorOccurred, this, &SerialLink::onPortError);
     qCDebug(lcSerialLink) << "opened" << settings.portName << settings.baud;
@@ -100,6 +101,7 @@ bool SerialLink::setBaudRate(qint32 baud)
     m_settings.baud = baud;
     m_port->clear();
     m_rx.clear();
+    m_owed.clear(); // whatever was owed was sent at the other baud rate
     return true;
 }
 
@@ -201,6 +203,7 @@ void SerialLink::transmit()
     // after the request went out it could pass for its answer. Qt's buffer is shown in the
     // trace; what the OS still holds is dropped.
     m_rx += m_port->readAll();
+    m_flushedForCurrent = !m_rx.isEmpty();
     if (!m_rx.isEmpty())
         discardBuffer(QStringLiteral("stale bytes before request"));
     m_port->clear(QSerialPort::Input);
@@ -248,8 +251,10 @@ void SerialLink::onReadyRead()
                                 QStringLiteral("unsolicited or late bytes"));
         if (m_recoveryQuietMs > 0)
             m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(m_recoveryQuietMs) * 1000);
-        if (m_current && m_state == State::Gap)
-            m_lateForCurrent = true; // after a timeout of the current request: its late answer
+        if (m_current && m_state == State::Gap) {
+            m_lateForCurrent = true;                // after a timeout of the current request: its late answer,
+            m_owed.remove(m_current->request.peer); // which is no longer owed
+        }
         return;
     }
     m_rx += data;
@@ -288,15 +293,30 @@ void SerialLink::processBuffer()
         }
         case FrameMatch::Status::Match: {
             const qint64 now = m_clock.nsecsElapsed() / 1000;
-            const qint64 earliest = (wireTimeUs(m_current->request.bytes.size()) + wireTimeUs(consumed)) / 2;
-            if (m_settings.rejectImpossiblyEarlyReplies && now - m_sentAtUs < earliest) {
+            const qint64 need = (wireTimeUs(m_current->request.bytes.size()) + wireTimeUs(consumed)) / 2;
+            const bool early = now - m_sentAtUs < need;
+            const int peer = m_current->request.peer;
+            // The stale-reply rule (docs/reliability.md): a fast frame is a stale answer only
+            // when one could be on its way. Dropping it pays that debt.
+            if (early && (m_owed.contains(peer) || m_flushedForCurrent)) {
+                ++m_staleReplies;
+                m_owed.remove(peer);
+                m_flushedForCurrent = false;
+                m_current->droppedEarly = true;
+                m_lastEarlyUs = now - m_sentAtUs;
+                m_lastEarlyNeedUs = 2 * need;
                 if (m_tap)
-                    m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, m_rx.left(consumed),
-                                        QStringLiteral("arrived sooner than a reply could: late "
-                                                       "answer to an earlier request"));
+                    m_tap->recordSerial(
+                        TrafficRecord::Direction::Discarded, m_settings.portName, m_rx.left(consumed),
+                        QStringLiteral("stale: came %1 us after the request (the wire needs %2 us) while an "
+                                       "earlier answer was still owed")
+                            .arg(m_lastEarlyUs)
+                            .arg(m_lastEarlyNeedUs));
                 m_rx.remove(0, consumed);
                 continue;
             }
+            // A peer answers in order: once it answered this request, no earlier answer can follow.
+            m_owed.remove(peer);
             if (m_tap)
                 m_tap->recordSerial(TrafficRecord::Direction::Rx, m_settings.portName, m.frame);
             m_rx.remove(0, consumed);
@@ -323,11 +343,26 @@ void SerialLink::onResponseTimeout()
     if (!m_rx.isEmpty())
         discardBuffer(QStringLiteral("incomplete reply at timeout"));
     const int timeout = effectiveTimeoutMs(m_current->request);
-    retryOrFail({ErrorCode::Timeout,
-                 tr("No reply on %1 within %2 ms. Check the drive address, the baud rate, the "
-                    "wiring (A/B swapped?) and the bus termination.")
-                     .arg(m_settings.portName)
-                     .arg(timeout)},
+    // Unanswered: its answer may still come, and could pass for the next one's. Not when a
+    // frame of its shape was dropped as stale: that may have been its answer.
+    if (!m_current->droppedEarly)
+        m_owed.insert(m_current->request.peer);
+    Error e{ErrorCode::Timeout,
+            tr("No reply on %1 within %2 ms. Check the drive address, the baud rate, the "
+               "wiring (A/B swapped?) and the bus termination.")
+                .arg(m_settings.portName)
+                .arg(timeout)};
+    if (m_current->droppedEarly)
+        e.message = tr("No reply on %1 within %2 ms but a frame of the awaited shape that came %3 us after "
+                       "the request, sooner than the wire can carry request and reply (%4 us), while an "
+                       "earlier request was still unanswered: it was dropped as that request's late "
+                       "answer. The next attempt accepts a fast reply; if this one was the last, raise the "
+                       "retries (--retries).")
+                        .arg(m_settings.portName)
+                        .arg(timeout)
+                        .arg(m_lastEarlyUs)
+                        .arg(m_lastEarlyNeedUs);
+    retryOrFail(e,
                 // Keep the line quiet long enough that a late reply lands while nothing waits.
                 std::max(2 * timeout, 20));
 }

@@ -10,6 +10,7 @@
 #include <QPointer>
 #include <QQueue>
 #include <QSerialPort>
+#include <QSet>
 #include <QTimer>
 
 #include <optional>
@@ -28,6 +29,7 @@ struct SerialRequest
     int retries = -1;           // -1: settings.retries
     QString note;               // shown in the trace
     bool urgent = false;        // stop / disable: ahead of every waiting ordinary request
+    int peer = -1;              // the drive addressed, for the stale-reply rule; -1: any
 };
 
 // Half-duplex request/reply transport on QSerialPort (RS485 / RS232).
@@ -35,11 +37,16 @@ struct SerialRequest
 // Requests queue and go out one at a time. Before each request the receive buffer is
 // cleared (anything there is stale); after each transaction the link keeps the line quiet
 // for settings.minGapMs, and commands reach the drive at least settings.minCommandSpacingMs
-// apart (last byte to last byte, plus 2 ms for timer and adapter jitter). A reply is accepted only through the request's matcher, and only
-// if it arrived no earlier than physically possible (half the wire time of request plus
-// reply): a late answer to an earlier, timed-out request can therefore never be taken as
-// the answer to the current one. After a timeout the link also waits until the line has
-// been quiet for the reply's wire time (plus margin) before it sends again.
+// apart (last byte to last byte, plus 2 ms for timer and adapter jitter). A reply is
+// accepted only through the request's matcher. The stale-reply rule (docs/reliability.md):
+// a frame that completes sooner than the wire allows (half the wire time of request plus
+// reply) is taken for a stale answer, and dropped, only when one could be on its way: an
+// earlier request to the same peer went unanswered (and nothing has paid that debt since),
+// or stale bytes were flushed just before this request. Dropping it pays the debt, so a
+// fast peer (a pty, a socat pair, a USB adapter with a deep FIFO) loses at most one
+// attempt; with nothing owed a fast reply is the answer. After a timeout the link also
+// waits until the line has been quiet for the reply's wire time (plus margin) before it
+// sends again.
 //
 // An urgent request (stop, disable) goes ahead of every waiting ordinary request, behind
 // the urgent ones queued before it, right after the transaction on the wire now (which is
@@ -80,6 +87,7 @@ public:
     quint64 timeoutCount() const { return m_timeouts; }
     quint64 retryCount() const { return m_retryCount; }
     quint64 checksumErrorCount() const { return m_checksumErrors; }
+    quint64 staleReplyCount() const { return m_staleReplies; } // dropped as stale answers
 
     // Wire time of `bytes` characters at the current settings, in microseconds.
     qint64 wireTimeUs(qsizetype bytes) const;
@@ -95,6 +103,7 @@ private:
         SerialRequest request;
         QPointer<LinkReply> reply;
         int attempts = 0;
+        bool droppedEarly = false; // a frame of this request's shape was dropped as stale
     };
     enum class State { Idle, Gap, AwaitingReply, AwaitingWrite, Recovering };
 
@@ -128,7 +137,12 @@ private:
     qint64 m_lastCommandEndUs = -1; // when the last command's last byte left (estimated)
     qint64 m_lastRxUs = 0;
     int m_recoveryQuietMs = 0;
-    bool m_lateForCurrent = false; // bytes came between attempts of the current request
+    bool m_lateForCurrent = false;    // bytes came between attempts of the current request
+    bool m_flushedForCurrent = false; // stale bytes were flushed just before this attempt
+    QSet<int> m_owed;                 // peers whose last request went unanswered
+    quint64 m_staleReplies = 0;
+    qint64 m_lastEarlyUs = 0;     // the last frame dropped as stale: after how long, and the
+    qint64 m_lastEarlyNeedUs = 0; // wire time request + reply needed
     quint64 m_timeouts = 0;
     quint64 m_retryCount = 0;
     quint64 m_checksumErrors = 0;

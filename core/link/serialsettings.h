@@ -21,10 +21,6 @@ struct SerialSettings
     int minCommandSpacingMs = 0;
     int responseTimeoutMs = 100; // allowance beyond the wire time of request + reply
     int retries = 2;             // extra attempts after a timeout / corrupt reply
-    // Discard a reply that completes sooner than half the wire time of request + reply: it
-    // can only be a late answer to an earlier request. Off only for peers that model no
-    // timing (a pty test double).
-    bool rejectImpossiblyEarlyReplies = true;
 };
 
 } // namespace dd

@@ -90,8 +90,9 @@ void SimSerialBus::onReceived(const QByteArray &bytes)
     qCDebug(lcSimFrames).noquote() << "rx" << now << bytes.toHex(' ');
 
     const int hostBaud = m_endpoint ? m_endpoint->hostBaud() : 0;
-    const qint64 rxStart = std::max(now, m_lineFreeUs);
-    qint64 lineBusyUntil = hostBaud > 0 ? rxStart + ceilUs(WireTime::serialBytesUs(bytes.size(), hostBaud)) : rxStart;
+    const qint64 rxStart = m_paced ? std::max(now, m_lineFreeUs) : now;
+    qint64 lineBusyUntil = hostBaud > 0 && m_paced ? rxStart + ceilUs(WireTime::serialBytesUs(bytes.size(), hostBaud))
+                                                   : rxStart;
     QList<Candidate> candidates;
     int answeringDevices = 0;
 
@@ -100,7 +101,7 @@ void SimSerialBus::onReceived(const QByteArray &bytes)
         const int devBaud = dev->baud();
         const int bits = dev->bitsPerChar();
         const int lineBaud = hostBaud > 0 ? hostBaud : devBaud;
-        const qint64 rxEnd = rxStart + ceilUs(WireTime::serialBytesUs(bytes.size(), lineBaud, bits));
+        const qint64 rxEnd = rxStart + (m_paced ? ceilUs(WireTime::serialBytesUs(bytes.size(), lineBaud, bits)) : 0);
         lineBusyUntil = std::max(lineBusyUntil, rxEnd);
 
         dev->advanceTo(rxEnd);
@@ -128,8 +129,9 @@ void SimSerialBus::onReceived(const QByteArray &bytes)
             reply = faults.corrupt(reply);
             if (faults.lastCorrupted())
                 ++m_stats.framesCorrupted;
-            const qint64 ready = rxEnd + dev->latencyUs() + 1000 * static_cast<qint64>(faults.extraLatencyMs());
-            const qint64 duration = ceilUs(WireTime::serialBytesUs(reply.size(), devBaud, bits));
+            const qint64 ready = rxEnd + (m_paced ? dev->latencyUs() : 0)
+                + 1000 * static_cast<qint64>(faults.extraLatencyMs());
+            const qint64 duration = m_paced ? ceilUs(WireTime::serialBytesUs(reply.size(), devBaud, bits)) : 0;
             if (mismatch)
                 reply = UartResampler::resample(reply, devBaud, lineBaud, bits);
             candidates.append({ready, duration, reply, i});

@@ -57,6 +57,13 @@ public:
     void setCollisionsModelled(bool on) { m_collisions = on; }
     bool collisionsModelled() const { return m_collisions; }
 
+    // Wire pacing (default on): replies take the wire time of request and reply at the baud
+    // rate and the device's latency. Off: every reply is written at once, as a virtual
+    // serial port, a TCP bridge or a Modbus slave simulator delivers it (faults' extra
+    // latency still applies).
+    void setWirePaced(bool on) { m_paced = on; }
+    bool isWirePaced() const { return m_paced; }
+
     qint64 nowUs() const; // the bus clock (monotonic, µs)
     qint64 lineFreeAtUs() const { return m_lineFreeUs; }
     int pendingReplies() const { return static_cast<int>(m_pending.size()); }
@@ -92,6 +99,7 @@ private:
     MicroTimer m_timer;
     qint64 m_lineFreeUs = 0;
     bool m_collisions = true;
+    bool m_paced = true;
     SimSerialBusStats m_stats;
 };
 

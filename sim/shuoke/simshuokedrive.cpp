@@ -190,7 +190,12 @@ std::optional<Frame> SimShuokeDrive::handle(const Frame &request, Medium medium,
     if (!isSupportedBy(cmd, m_config.model, len) || (overCan && info->flags.testFlag(SerialOnly))
         || (!overCan && info->flags.testFlag(CanOnly)))
         return refuse(FailureUnknownCommand);
-    if (!validateRequestData(cmd, request.data, m_config.byteOrder).isEmpty())
+    // Gear numerator / denominator (0x5F / 0x61): "大于16位，只取16无符号位数" — the drive
+    // keeps the low 16 bits of a larger value (the client refuses to send one).
+    const QByteArray checked = cmd == CmdSetGearNumerator || cmd == CmdSetGearDenominator
+        ? encodeUInt32(dataUInt(request.data) & 0xFFFFu, m_config.byteOrder)
+        : request.data;
+    if (!validateRequestData(cmd, checked, m_config.byteOrder).isEmpty())
         return refuse(FailureOutOfRange);
 
     std::optional<Frame> reply = execute(request, medium);
@@ -220,9 +225,9 @@ std::optional<Frame> SimShuokeDrive::execute(const Frame &request, Medium medium
     case CmdSetStopSpeed:
     case CmdSetAcceleration:
     case CmdSetDeceleration:
-    case CmdSetHomingSpeed:
     case CmdSetGearNumerator:
-    case CmdSetGearDenominator:
+    case CmdSetGearDenominator: setSetting(cmd, dataUInt(data) & 0xFFFFu); return ok();
+    case CmdSetHomingSpeed:
     case CmdSetSpeedStep:
     case CmdEncoderAbTolerance:
     case CmdNoEncoderMaxPulses: setSetting(cmd, dataUInt(data)); return ok();
@@ -309,7 +314,8 @@ std::optional<Frame> SimShuokeDrive::executeMotion(const Frame &request)
         m_axis.runSpeed(dir * std::min(magnitude, static_cast<double>(kMaxSpeed)));
         return done;
     }
-    case CmdQuerySpeed: return Frame::make(m_config.address, cmd, i32(std::llround(m_axis.speed())));
+    // "4BYTE 运动速度": the magnitude; only the position (0x37) is signed.
+    case CmdQuerySpeed: return Frame::make(m_config.address, cmd, u32(std::llround(std::abs(m_axis.speed()))));
     case CmdQueryAbsolutePosition: return Frame::make(m_config.address, cmd, i32(m_axis.absolutePosition()));
     case CmdClearAbsolutePosition: m_axis.clearAbsolute(); return done;
     case CmdQueryRelativePosition: return Frame::make(m_config.address, cmd, i32(m_axis.relativePosition()));

@@ -102,7 +102,6 @@ private:
         st.baud = baud;
         st.responseTimeoutMs = 50;
         st.retries = 0;
-        st.rejectImpossiblyEarlyReplies = false; // the scripted server models no wire time
         return st;
     }
 
@@ -268,7 +267,6 @@ private slots:
         QVERIFY(server.open());
         ModbusLink link;
         SerialSettings st = settingsFor(server, 9600);
-        st.rejectImpossiblyEarlyReplies = true;
         st.retries = 2;
         QVERIFY(link.open(st));
         QByteArray held;

@@ -62,7 +62,6 @@ private slots:
         s.portName = pty.clientPath();
         s.baud = 115200;
         s.retries = 0;
-        s.rejectImpossiblyEarlyReplies = false; // the pty models no timing
         QVERIFY(link.open(s));
         QByteArray seen;
         connect(&pty, &PtyEndpoint::received, this, [&](const QByteArray &b) {
@@ -97,7 +96,6 @@ private slots:
         s.baud = 115200;
         s.minGapMs = 1;
         s.minCommandSpacingMs = 30;
-        s.rejectImpossiblyEarlyReplies = false;
         QVERIFY(link.open(s));
         QElapsedTimer clock;
         clock.start();

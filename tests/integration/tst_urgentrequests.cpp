@@ -108,7 +108,6 @@ void TestUrgentRequests::serialLinkSendsUrgentRightAfterTheOneOnTheWire()
     s.retries = 0;
     s.responseTimeoutMs = 500;
     s.minGapMs = 2;
-    s.rejectImpossiblyEarlyReplies = false; // the peer models no wire time
     Error e;
     QVERIFY2(link.open(s, &e), qPrintable(e.message));
 
@@ -158,7 +157,6 @@ void TestUrgentRequests::modbusLinkSendsUrgentRightAfterTheOneInFlight()
     s.baud = 115200;
     s.retries = 0;
     s.responseTimeoutMs = 500;
-    s.rejectImpossiblyEarlyReplies = false;
     Error e;
     QVERIFY2(link.open(s, &e), qPrintable(e.message));
 

@@ -62,7 +62,6 @@ class TestLibmodbus : public QObject
         s.baud = Baud;
         s.responseTimeoutMs = 200;
         s.retries = 1;
-        s.rejectImpossiblyEarlyReplies = false; // the pty pair models no wire time
         return s;
     }
 

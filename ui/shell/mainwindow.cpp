@@ -10,6 +10,7 @@
 #include "ui/bus/statuspoller.h"
 #include "ui/fleet/fleetactions.h"
 #include "ui/framemonitor/framemonitordock.h"
+#include "ui/linkhealth/linkhealthdock.h"
 #include "ui/shell/aboutdialog.h"
 #include "ui/shell/demolauncher.h"
 #include "ui/shell/languagemanager.h"
@@ -51,6 +52,9 @@ MainWindow::MainWindow(LanguageManager *language, QWidget *parent)
     addDock(frames, Qt::BottomDockWidgetArea);
     frames->hide();
     connect(frames, &FrameMonitorDock::errorOccurred, m_statusBar, &StatusBarWidget::countError);
+    auto *health = new LinkHealthDock(m_hub, this); // View → Link health, from the same traffic
+    addDock(health, Qt::BottomDockWidgetArea);
+    health->hide();
     m_recent->load();
     retranslate();
     emit m_language->languageChanged(); // check the current language in the menu

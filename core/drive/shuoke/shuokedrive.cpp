@@ -357,6 +357,7 @@ DriveReply *ShuokeDrive::readAlarm()
 
 DriveReply *ShuokeDrive::doJog(qint32 speed)
 {
+    m_commandedDirection = speed < 0 ? -1 : (speed > 0 ? 1 : m_commandedDirection);
     return simpleCommands({{CmdRunSpeed, int32(speed)}});
 }
 
@@ -387,11 +388,13 @@ DriveReply *ShuokeDrive::moveRelative(qint64 distance, qint32 speed)
     if (speed > 0)
         steps.append(Step{CmdSetMaxSpeed, encodeUInt32(static_cast<quint32>(speed), byteOrder())});
     steps.append(Step{CmdMoveRelative, int32(distance)});
+    m_commandedDirection = distance < 0 ? -1 : (distance > 0 ? 1 : m_commandedDirection);
     return simpleCommands(steps);
 }
 
 DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
 {
+    m_commandedDirection = 0; // which way it goes is the drive's to know
     if (!isPulseCountInRange(target))
         return finishedReply(
             {ErrorCode::OutOfRange, tr("The target %1 is beyond the drive's 31-bit range.").arg(target)});
@@ -434,6 +437,7 @@ DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
 
 DriveReply *ShuokeDrive::home(bool positiveFirst)
 {
+    m_commandedDirection = 0; // which way it goes is the drive's to know
     if (!maySupport(CmdHome, 1))
         return notSupported(Capability::Home);
     return simpleCommands({{CmdHome, QByteArray(1, positiveFirst ? '\1' : '\0')}});

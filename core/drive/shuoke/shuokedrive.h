@@ -141,6 +141,10 @@ private:
     int m_lastFailure = 0;
     int m_motionQueued = 0; // motion commands handed to the link, not answered yet
     quint64 m_stops = 0;    // stops so far
+    // The sign of the last motion commanded (jog, relative move; 0: unknown). 0x36 reports
+    // the speed's magnitude (the seed marks only the position signed): the speed channel
+    // takes its direction from this.
+    int m_commandedDirection = 0;
 };
 
 } // namespace dd

@@ -114,6 +114,10 @@ void ShuokeDrive::fillSamples(DriveReply *reply, const QStringList &ids, const Q
             const auto b = intOf(c->command2);
             if (a && b)
                 reply->setSample(id, static_cast<double>(qint64(*a) - qint64(*b)));
+        } else if (c->command == CmdQuerySpeed) {
+            // The drive reports the magnitude; the direction is the one last commanded.
+            if (const auto v = intOf(c->command))
+                reply->setSample(id, *v > 0 && m_commandedDirection < 0 ? -double(*v) : double(*v));
         } else if (const auto v = intOf(c->command)) {
             reply->setSample(id, *v);
         }

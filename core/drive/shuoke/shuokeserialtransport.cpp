@@ -172,6 +172,7 @@ LinkReply *ShuokeSerialTransport::start(const ShuokeRequest &request, Error *err
     r.timeoutMs = request.timeoutMs;
     r.retries = request.retries;
     r.urgent = request.urgent;
+    r.peer = request.frame.address;
     r.note = request.note.isEmpty() ? shuoke::commandName(request.frame.command) : request.note;
     return m_link->send(r);
 }

@@ -7,6 +7,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -65,9 +66,10 @@ void TestCliSerialAccess::initTestCase()
     // nobody must be able to run the CLI and write a home: both live in a world-readable
     // temporary folder (the build tree may be in root's home).
     QVERIFY(m_dir.isValid());
-    QVERIFY(QFile::setPermissions(m_dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner
-                                      | QFileDevice::ExeOwner | QFileDevice::ReadOther | QFileDevice::ExeOther
-                                      | QFileDevice::ReadGroup | QFileDevice::ExeGroup));
+    QVERIFY(QFile::setPermissions(m_dir.path(),
+                                  QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner
+                                      | QFileDevice::ReadOther | QFileDevice::ExeOther | QFileDevice::ReadGroup
+                                      | QFileDevice::ExeGroup));
     m_cli = m_dir.filePath(QStringLiteral("drivedesk-cli"));
     QVERIFY(QFile::copy(cliPath(), m_cli));
     QVERIFY(QDir(m_dir.path()).mkdir(QStringLiteral("home")));
@@ -89,6 +91,17 @@ CliRun TestCliSerialAccess::runAsNobody(const QStringList &arguments)
     env.insert(QStringLiteral("LANGUAGE"), QStringLiteral("en"));
     env.insert(QStringLiteral("HOME"), m_dir.filePath(QStringLiteral("home")));
     env.insert(QStringLiteral("USER"), QStringLiteral("nobody"));
+    // Sanitizer builds: nobody must be able to read LeakSanitizer's suppressions (the source
+    // tree may be in root's home), so they are read from a copy.
+    QString lsan = env.value(QStringLiteral("LSAN_OPTIONS"));
+    const QRegularExpression supp(QStringLiteral("suppressions=([^:]+)"));
+    if (const QRegularExpressionMatch m = supp.match(lsan); m.hasMatch()) {
+        const QString copy = m_dir.filePath(QStringLiteral("lsan.supp"));
+        if (!QFile::exists(copy))
+            QFile::copy(m.captured(1), copy);
+        lsan.replace(m.capturedStart(1), m.capturedLength(1), copy);
+        env.insert(QStringLiteral("LSAN_OPTIONS"), lsan);
+    }
     p.setProcessEnvironment(env);
     const uid_t uid = m_nobodyUid;
     const gid_t gid = m_nobodyGid;
@@ -117,14 +130,14 @@ void TestCliSerialAccess::deniedPortSaysWhatToDo_data()
 void TestCliSerialAccess::deniedPortSaysWhatToDo()
 {
     QFETCH(QString, family);
-    const CliRun r = runAsNobody({QStringLiteral("--family"), family, QStringLiteral("--port"), m_slave,
-                                  QStringLiteral("info")});
+    const CliRun r = runAsNobody(
+        {QStringLiteral("--family"), family, QStringLiteral("--port"), m_slave, QStringLiteral("info")});
     QVERIFY2(r.finished, r.err.constData());
     QVERIFY2(r.exitCode != 120, "could not drop to the user nobody");
     QCOMPARE(r.exitCode, 3); // the port could not be opened
     const QString text = r.text();
-    QVERIFY2(text.contains(QStringLiteral("You may not use the serial port %1: it belongs to the group 'dialout'")
-                               .arg(m_slave)),
+    QVERIFY2(text.contains(
+                 QStringLiteral("You may not use the serial port %1: it belongs to the group 'dialout'").arg(m_slave)),
              qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral("    sudo usermod -aG dialout $USER\n")), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral("log out and log in again")), qPrintable(text));

@@ -267,22 +267,6 @@
         <translation>型号：%1</translation>
     </message>
     <message>
-        <source>%1, %2</source>
-        <translation>%1，%2</translation>
-    </message>
-    <message>
-        <source>on</source>
-        <translation>使能</translation>
-    </message>
-    <message>
-        <source>off</source>
-        <translation>未使能</translation>
-    </message>
-    <message>
-        <source>%1 — %2</source>
-        <translation>%1 — %2</translation>
-    </message>
-    <message>
         <source>Refresh identity</source>
         <translation>重新读取设备信息</translation>
     </message>
@@ -610,10 +594,6 @@
         <translation>无报警</translation>
     </message>
     <message>
-        <source>%1, %2</source>
-        <translation>%1，%2</translation>
-    </message>
-    <message>
         <source>Read parameters</source>
         <translation>读取参数</translation>
     </message>
@@ -668,6 +648,18 @@
     <message>
         <source>EEPROM operations</source>
         <translation>EEPROM 操作</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>运动中</translation>
+    </message>
+    <message>
+        <source>at rest</source>
+        <translation>静止</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
     </message>
 </context>
 <context>
@@ -1207,10 +1199,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
 <context>
     <name>dd::MainWindow</name>
     <message>
-        <source>STOP sent to all drives.</source>
-        <translation>已向所有驱动器发送停止命令。</translation>
-    </message>
-    <message>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
@@ -1225,10 +1213,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>About DriveDesk</source>
         <translation>关于 DriveDesk</translation>
-    </message>
-    <message>
-        <source>DriveDesk — commissioning workbench</source>
-        <translation>DriveDesk — 驱动器调试工具</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1309,6 +1293,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;Commissioning and tuning workbench for servo and stepper drives over RS485 / RS232 and CAN.&lt;/p&gt;&lt;p&gt;Drive families: %3.&lt;/p&gt;&lt;p&gt;Built with Qt %2.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;通过 RS485 / RS232 和 CAN 调试、整定伺服和步进驱动器的工具。&lt;/p&gt;&lt;p&gt;驱动器系列：%3。&lt;/p&gt;&lt;p&gt;基于 Qt %2 构建。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Commissioning workbench</source>
+        <translation>调试工作台</translation>
     </message>
 </context>
 <context>
@@ -3531,10 +3519,6 @@ Restore anyway?</source>
         <translation>%1 已完成（%2 秒）：%3。</translation>
     </message>
     <message>
-        <source>The drive now works with other values: read the parameters again (Parameters tab) to see them.</source>
-        <translation>驱动器现在使用的是另一组参数值：请重新读取参数（“参数”页）查看。</translation>
-    </message>
-    <message>
         <source>This drive has no EEPROM operations.</source>
         <translation>此驱动器没有 EEPROM 操作。</translation>
     </message>
@@ -3553,6 +3537,10 @@ Restore anyway?</source>
     <message>
         <source>asks for confirmation</source>
         <translation>需要确认</translation>
+    </message>
+    <message>
+        <source>The drive now works with other values: the Parameters tab reads them again.</source>
+        <translation>驱动器现在使用其他参数值：参数页会重新读取它们。</translation>
     </message>
 </context>
 <context>
@@ -3641,10 +3629,6 @@ Restore anyway?</source>
         <translation>未写入</translation>
     </message>
     <message>
-        <source>%1 marks a value edited here that differs from the drive&apos;s</source>
-        <translation>%1 表示此处修改的值与驱动器中的值不同</translation>
-    </message>
-    <message>
         <source>Index</source>
         <translation>编号</translation>
     </message>
@@ -3683,6 +3667,22 @@ Restore anyway?</source>
     <message>
         <source>Last write</source>
         <translation>上次写入</translation>
+    </message>
+    <message>
+        <source>Written to the drive&apos;s working memory but not saved to its EEPROM (EE-Set): the drive forgets it when switched off.</source>
+        <translation>已写入驱动器的工作存储器，但尚未保存到 EEPROM（EE-Set）：驱动器断电后会丢失。</translation>
+    </message>
+    <message>
+        <source>Undone: the value the drive had before the last write. Write it to restore it on the drive (the drive has %1 now).</source>
+        <translation>已撤销：这是上次写入前驱动器中的值。写入它即可在驱动器上恢复（驱动器当前为 %1）。</translation>
+    </message>
+    <message>
+        <source>undone: not yet written back</source>
+        <translation>已撤销：尚未写回</translation>
+    </message>
+    <message>
+        <source>%1 marks a value edited here that differs from the drive&apos;s; %2 an undone write, not yet written back; %3 a value written but not saved to EEPROM</source>
+        <translation>%1 表示此处编辑的值与驱动器中的不同；%2 表示已撤销的写入，尚未写回；%3 表示已写入但未保存到 EEPROM 的值</translation>
     </message>
 </context>
 <context>
@@ -3837,6 +3837,16 @@ Write anyway?</source>
     <message>
         <source>Redo</source>
         <translation>重做</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) changed on the drive by another tab; shown here.</source>
+        <translation>
+            <numerusform>另一个标签页在驱动器上更改了 %n 个值；已在此显示。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drive&apos;s values were replaced (EEPROM operation): reading them again.</source>
+        <translation>驱动器的参数值已被替换（EEPROM 操作）：正在重新读取。</translation>
     </message>
 </context>
 <context>
@@ -5071,6 +5081,41 @@ Servo enable on or off.
         <translation>
             <numerusform>%n 个参数的回读值与写入值不同（第一个：%1：%2）。驱动器可能限制了该值或在当前状态下不接受它，或该参数为只读。</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>dd::StopReporter</name>
+    <message>
+        <source>%1: stop sent, waiting for its state…</source>
+        <translation>%1：已发送停止，正在等待其状态…</translation>
+    </message>
+    <message>
+        <source>%1: stopped (the drive reports the axis at rest).</source>
+        <translation>%1：已停止（驱动器报告轴已静止）。</translation>
+    </message>
+    <message>
+        <source>%1: has no stop command; it is at rest.</source>
+        <translation>%1：没有停止命令；它处于静止状态。</translation>
+    </message>
+    <message>
+        <source>%1: has no stop command and is still moving; DriveDesk cannot stop it. Use the machine&apos;s emergency stop or switch off the drive&apos;s servo-on input.</source>
+        <translation>%1：没有停止命令且仍在运动；DriveDesk 无法停止它。请使用机器的急停，或关闭驱动器的伺服使能输入。</translation>
+    </message>
+    <message>
+        <source>%1: STOP failed: the drive still reports motion.</source>
+        <translation>%1：停止失败：驱动器仍报告在运动。</translation>
+    </message>
+    <message>
+        <source>%1: STOP failed: %2</source>
+        <translation>%1：停止失败：%2</translation>
+    </message>
+    <message>
+        <source>STOP sent; no drive is connected.</source>
+        <translation>已发送停止；没有连接任何驱动器。</translation>
+    </message>
+    <message>
+        <source>STOP: %1</source>
+        <translation>停止：%1</translation>
     </message>
 </context>
 </TS>

@@ -78,7 +78,7 @@ private slots:
         s.position = 12345;
         s.updatedMs = 1;
         emit hub.statusChanged(7, 5, s);
-        QTRY_VERIFY(d->text(BusTreeWidget::StateColumn).contains(QLatin1String("Running")));
+        QTRY_COMPARE(d->text(BusTreeWidget::StateColumn), QStringLiteral("Enabled · moving")); // in words
         QCOMPARE(d->text(BusTreeWidget::PositionColumn), QLocale().toString(12345));
         QVERIFY(d->icon(BusTreeWidget::StateColumn).isNull());
 
@@ -234,7 +234,11 @@ private slots:
         s.running = true;
         s.enabled = true;
         s.alarmCode = 3;
-        QCOMPARE(DisplayText::summary(s), QStringLiteral("Running, enabled, alarm 3"));
+        QCOMPARE(DisplayText::summary(s), QStringLiteral("Alarm 3 · Enabled · moving"));
+        s.alarmCode = 0;
+        s.running = false;
+        s.enabled = false;
+        QCOMPARE(DisplayText::summary(s), QStringLiteral("Disabled · at rest"));
         QCOMPARE(DisplayText::position(s), QStringLiteral("—"));
         QCOMPARE(DisplayText::driveName(Family::ServoCan, 4), QStringLiteral("Servo (CAN) #4"));
     }

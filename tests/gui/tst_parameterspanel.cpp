@@ -117,7 +117,7 @@ private slots:
         QCOMPARE(fx.drive()->parameter(10), quint16(10));
         QCOMPARE(panel.model()->writeState(12), ParameterTableModel::WriteState::Verified);
         QCOMPARE(cell(panel, 12, ParameterTableModel::State), QStringLiteral("written, verified"));
-        QCOMPARE(cell(panel, 12, ParameterTableModel::Mark), QString());
+        QCOMPARE(cell(panel, 12, ParameterTableModel::Mark), QString(QChar(0x25C7))); // not saved to EEPROM
         QVERIFY(panel.model()->isChanged(10));
 
         // Write all changed: PA10 reaches the drive and is read back.

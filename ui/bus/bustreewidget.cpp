@@ -156,11 +156,8 @@ void BusTreeWidget::updateDrive(int id, int address)
     item->setText(FirmwareColumn, info.identity.firmware);
     item->setText(PositionColumn, DisplayText::position(s));
     item->setTextAlignment(PositionColumn, Qt::AlignRight | Qt::AlignVCenter);
-    QString state = DisplayText::motionState(s);
-    if (s.online)
-        state = tr("%1, %2").arg(state, s.enabled ? tr("on") : tr("off"));
+    const QString state = DisplayText::summary(s);
     if (s.alarmCode) {
-        state = tr("%1 — %2").arg(DisplayText::alarm(s.alarmCode), state);
         item->setIcon(StateColumn, style()->standardIcon(QStyle::SP_MessageBoxWarning));
         item->setForeground(StateColumn, QBrush(QColor(0xc6, 0x28, 0x28)));
     } else {

@@ -44,9 +44,11 @@ QString DisplayText::summary(const DriveStatus &s)
 {
     if (!s.online)
         return motionState(s);
-    QString text = tr("%1, %2").arg(motionState(s), enabledState(s).toLower());
+    // In words, power stage first: "Enabled · moving", "Disabled · at rest".
+    const QString motion = s.running ? tr("moving") : tr("at rest");
+    QString text = tr("%1 · %2").arg(enabledState(s), motion);
     if (s.alarmCode)
-        text = tr("%1, %2").arg(text, alarm(s.alarmCode).toLower());
+        text = tr("%1 · %2").arg(alarm(s.alarmCode), text);
     return text;
 }
 

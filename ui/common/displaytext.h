@@ -21,7 +21,7 @@ public:
     static QString alarm(int code);                       // "Alarm 12" / "No alarm"
     static QString position(const DriveStatus &s);        // "12345" / "—"
     static QString capabilityName(Capability c);          // "Jog", "EEPROM operations"
-    // One line: "Running, enabled, alarm 12".
+    // One line in words: "Enabled · moving", "Alarm 12 · Disabled · at rest", "Offline".
     static QString summary(const DriveStatus &s);
 };
 

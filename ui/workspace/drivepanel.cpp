@@ -1,6 +1,8 @@
 #include "ui/workspace/drivepanel.h"
 
 #include "core/drive/driveresult.h"
+#include "core/protocol/familytraits.h"
+#include "ui/workspace/driveparameters.h"
 
 #include <QEvent>
 #include <QLabel>
@@ -18,6 +20,8 @@ DrivePanel::DrivePanel(const DriveContext &context, QWidget *parent)
     m_info.identity.family = context.family;
     m_info.identity.address = context.address;
     m_info.capabilities = context.capabilities;
+    if (!m_context.parameters)
+        m_context.parameters = new DriveParameters(familyTraits(context.family).eeOperations, this);
 }
 
 void DrivePanel::setActive(bool active)

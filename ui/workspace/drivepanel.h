@@ -43,6 +43,9 @@ public:
     virtual QString title() const = 0;
 
     const DriveContext &context() const { return m_context; }
+    // The drive's parameter values, shared with its other panels: report reads and writes
+    // here, follow its signals (never null).
+    DriveParameters *parameters() const { return m_context.parameters; }
     const DriveInfo &driveInfo() const { return m_info; }
     bool isActive() const { return m_active; }
 

@@ -2,6 +2,7 @@
 
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
+#include "ui/workspace/driveparameters.h"
 
 #include <QGridLayout>
 #include <QGroupBox>
@@ -162,10 +163,14 @@ void EePanel::onFinished(EeOperation op, const DriveResult &result)
                    MessageKind::Problem);
     } else {
         QString text = tr("%1 done (%2 s): %3.").arg(eeMnemonic(op), seconds, eeMeaning(op));
-        if (op == EeOperation::Reload || op == EeOperation::RestoreBackup || op == EeOperation::FactoryDefaults)
+        if (op == EeOperation::Reload || op == EeOperation::RestoreBackup || op == EeOperation::FactoryDefaults) {
             text += QLatin1Char(' ')
-                + tr("The drive now works with other values: read the parameters "
-                     "again (Parameters tab) to see them.");
+                + tr("The drive now works with other values: the Parameters tab reads them again.");
+            // EE-rd loads the EEPROM: working values and EEPROM agree afterwards.
+            parameters()->reportValuesReplaced(op == EeOperation::Reload);
+        } else if (op == EeOperation::Save) {
+            parameters()->reportSaved();
+        }
         setMessage(text, MessageKind::Success);
     }
     updateActions();

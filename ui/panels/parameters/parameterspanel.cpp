@@ -6,6 +6,7 @@
 #include "core/params/parameterdictionary.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/panels/parameters/parametervaluedelegate.h"
+#include "ui/workspace/driveparameters.h"
 
 #include <QAction>
 #include <QHBoxLayout>
@@ -57,6 +58,7 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     m_progress = createProgressBar(this);
     m_message = createMessageLabel(this, QStringLiteral("parameterMessage"));
     connectMessages();
+    connectSharedValues();
     layOut();
 
     retranslate();
@@ -146,6 +148,41 @@ void ParametersPanel::connectMessages()
     connect(m_model, &ParameterTableModel::editsChanged, this, &ParametersPanel::updateActions);
 }
 
+void ParametersPanel::connectSharedValues()
+{
+    // The drive's values are shared with its other panels: whoever reads or writes, every
+    // view follows (a restore, an EE operation, this tab).
+    DriveParameters *shared = parameters();
+    connect(shared, &DriveParameters::valuesRead, this,
+            [this](const QMap<int, qint64> &values, ValueSource source) { m_model->setDriveValues(values, source); });
+    connect(shared, &DriveParameters::writesReported, this,
+            [this](const QList<ParameterWriteResult> &results, QObject *origin) {
+                if (origin == this)
+                    return; // onWritten() has shown them, with their write states
+                QMap<int, qint64> read;
+                QMap<int, qint64> lastWritten;
+                for (const ParameterWriteResult &r : results) {
+                    if (r.outcome == WriteOutcome::Verified || r.outcome == WriteOutcome::Mismatch)
+                        read.insert(r.index, r.readBack);
+                    else if (r.outcome == WriteOutcome::WriteOnly)
+                        lastWritten.insert(r.index, r.requested);
+                }
+                m_model->setDriveValues(read);
+                m_model->setDriveValues(lastWritten, ValueSource::LastWritten);
+                if (!read.isEmpty() || !lastWritten.isEmpty())
+                    setMessage(tr("%n value(s) changed on the drive by another tab; shown here.", nullptr,
+                                  int(read.size() + lastWritten.size())),
+                               MessageKind::Info);
+            });
+    connect(shared, &DriveParameters::valuesReplaced, this, [this] {
+        // Every value may differ now: read them again (at once when shown, else when shown).
+        m_everRead = false;
+        setMessage(tr("The drive's values were replaced (EEPROM operation): reading them again."), MessageKind::Info);
+        maybeReadFirstTime();
+    });
+    connect(shared, &DriveParameters::unsavedChanged, this, [this] { m_model->setUnsaved(parameters()->unsaved()); });
+}
+
 void ParametersPanel::layOut()
 {
     auto *top = new QHBoxLayout;
@@ -218,13 +255,18 @@ void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const Pa
         m_dictionary = dictionary;
         m_model->setDictionary(m_dictionary, m_modelName);
     }
-    m_model->setDriveValues(result.parameters);
+    // Through the shared values: every view of this drive follows (connectSharedValues()).
+    parameters()->reportRead(result.parameters);
     QMap<int, qint64> lastWritten;
     const QVariantMap reported = result.info.value(QStringLiteral("lastWritten")).toMap();
     for (auto it = reported.begin(); it != reported.end(); ++it)
         lastWritten.insert(it.key().toInt(), it.value().toLongLong());
-    m_model->setDriveValues(lastWritten, ValueSource::LastWritten);
-    m_view->resizeColumnsToContents();
+    parameters()->reportRead(lastWritten, ValueSource::LastWritten);
+    // Sized to the values once; afterwards reads and writes keep the user's column layout.
+    if (!m_columnsSized && !result.parameters.isEmpty()) {
+        m_columnsSized = true;
+        m_view->resizeColumnsToContents();
+    }
     if (!reportResult(result)) {
         setMessage(tr("Reading failed after %n parameter(s): %1", nullptr, int(result.parameters.size()))
                        .arg(result.error.message),
@@ -314,7 +356,7 @@ void ParametersPanel::onWritten(const DriveResult &result, const QList<int> &req
 {
     setBusy(false);
     m_model->applyWriteResults(result.writes, requested);
-    m_view->resizeColumnToContents(ParameterTableModel::State);
+    parameters()->reportWrites(result.writes, this);
     int verified = 0;
     int writtenOnly = 0;
     int failed = 0;

@@ -170,8 +170,8 @@ private slots:
         QLineEdit *editor = typeValue(panel, 51, QStringLiteral("300"));
         QVERIFY(editor);
         QVERIFY(editor->isVisible());
-        QVERIFY2(panel.message().contains(QLatin1String("outside the allowed range 0 to 255")),
-                 qPrintable(panel.message()));
+        QVERIFY2(panel.message().contains(QLatin1String("outside the allowed range 0 to 255. Nothing was sent")),
+                 qPrintable(panel.message())); // the reason ends with a full stop
         QVERIFY(panel.message().contains(QLatin1String("Nothing was sent")));
         QVERIFY(editor->toolTip().contains(QLatin1String("0 to 255")));
         QTest::keyClick(editor, Qt::Key_Escape);

@@ -52,6 +52,18 @@ QString DisplayText::summary(const DriveStatus &s)
     return text;
 }
 
+QString DisplayText::sentence(const QString &text)
+{
+    const QString t = text.trimmed();
+    if (t.isEmpty())
+        return t;
+    const QChar last = t.back();
+    if (QStringLiteral(".!?。！？…").contains(last))
+        return t;
+    const bool chinese = last.unicode() >= 0x2E80; // CJK and full-width punctuation
+    return t + (chinese ? QStringLiteral("。") : QStringLiteral("."));
+}
+
 QString DisplayText::capabilityName(Capability c)
 {
     switch (c) {

@@ -4,6 +4,7 @@
 #include "core/drive/drivehub.h"
 #include "core/drive/drivereply.h"
 #include "core/params/parameterdictionary.h"
+#include "ui/common/displaytext.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/panels/parameters/parametervaluedelegate.h"
 #include "ui/workspace/driveparameters.h"
@@ -140,10 +141,12 @@ void ParametersPanel::connectMessages()
             setMessage(reason, MessageKind::Problem);
     });
     connect(m_delegate, &ParameterValueDelegate::valueRefused, this, [this](const QString &reason) {
-        setMessage(tr("Not accepted: %1 Nothing was sent to the drive.").arg(reason), MessageKind::Problem);
+        setMessage(tr("Not accepted: %1 Nothing was sent to the drive.").arg(DisplayText::sentence(reason)),
+                   MessageKind::Problem);
     });
     connect(m_model, &ParameterTableModel::editRefused, this, [this](int, const Error &reason) {
-        setMessage(tr("Not accepted: %1 Nothing was sent to the drive.").arg(reason.message), MessageKind::Problem);
+        setMessage(tr("Not accepted: %1 Nothing was sent to the drive.").arg(DisplayText::sentence(reason.message)),
+                   MessageKind::Problem);
     });
     connect(m_model, &ParameterTableModel::editsChanged, this, &ParametersPanel::updateActions);
 }
@@ -314,7 +317,8 @@ void ParametersPanel::write(const QList<int> &indices, bool onlySelected)
     // Every value is checked again before anything is sent (the drive checks them too).
     for (const ParameterWrite &w : std::as_const(writes)) {
         if (Error e = m_model->dictionary()->validateWrite(w.index, w.value)) {
-            setMessage(tr("Not written: %1 Nothing was sent to the drive.").arg(e.message), MessageKind::Problem);
+            setMessage(tr("Not written: %1 Nothing was sent to the drive.").arg(DisplayText::sentence(e.message)),
+                       MessageKind::Problem);
             return;
         }
     }

@@ -1600,6 +1600,30 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>STOP in the tool bar (Esc or F12) stops every drive on every connection.</source>
         <translation>工具栏上的“停止”（Esc 或 F12）会停止所有连接上的所有驱动器。</translation>
     </message>
+    <message>
+        <source>%1: sending…</source>
+        <translation>%1：正在发送…</translation>
+    </message>
+    <message>
+        <source>%1: started.</source>
+        <translation>%1：已开始。</translation>
+    </message>
+    <message>
+        <source>%1: started; its state cannot be read: %2</source>
+        <translation>%1：已开始；无法读取其状态：%2</translation>
+    </message>
+    <message>
+        <source>%1: stopped by alarm %2 at %3 %4.</source>
+        <translation>%1：因报警 %2 停在 %3 %4。</translation>
+    </message>
+    <message>
+        <source>%1: moving… position %2 %3</source>
+        <translation>%1：运动中… 位置 %2 %3</translation>
+    </message>
+    <message>
+        <source>%1: done, the axis is at rest at %2 %3.</source>
+        <translation>%1：完成，轴已静止于 %2 %3。</translation>
+    </message>
 </context>
 <context>
     <name>dd::OverviewPanel</name>

@@ -2,6 +2,7 @@
 
 #include "core/drive/driveresult.h"
 #include "core/protocol/familytraits.h"
+#include "ui/common/livetext.h"
 #include "ui/workspace/driveparameters.h"
 
 #include <QEvent>
@@ -82,8 +83,15 @@ QLabel *DrivePanel::createMessageLabel(QWidget *parent, const QString &objectNam
     return label;
 }
 
+void DrivePanel::showMessage(QLabel *label, std::function<QString()> text, MessageKind kind)
+{
+    showMessage(label, QString(), kind);
+    LiveText::set(label, std::move(text));
+}
+
 void DrivePanel::showMessage(QLabel *label, const QString &text, MessageKind kind)
 {
+    LiveText::clear(label);
     label->setText(text);
     switch (kind) {
     case MessageKind::Info: label->setStyleSheet(QString()); break;

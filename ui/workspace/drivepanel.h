@@ -85,6 +85,8 @@ protected:
     static QLabel *createMessageLabel(QWidget *parent, const QString &objectName);
     // Sets a message line's text in the colour of its kind (Info: the palette's).
     static void showMessage(QLabel *label, const QString &text, MessageKind kind);
+    // The same with a text made by `text`, again after a language switch (LiveText).
+    static void showMessage(QLabel *label, std::function<QString()> text, MessageKind kind);
     // A progress bar for a panel's bottom row: at most 220 px wide, hidden.
     static QProgressBar *createProgressBar(QWidget *parent);
     // A progress callback for DriveHub::run() that shows `done` of `total` on `bar`.

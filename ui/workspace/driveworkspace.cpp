@@ -12,6 +12,16 @@
 
 namespace dd {
 
+namespace {
+QStringList channelNames(const DriveInfo &info)
+{
+    QStringList out;
+    for (const ChannelInfo &c : info.channels)
+        out << c.name;
+    return out;
+}
+} // namespace
+
 DriveWorkspace::DriveWorkspace(DriveDirectory *directory, QWidget *parent)
     : QStackedWidget(parent)
     , m_directory(directory)
@@ -178,6 +188,8 @@ void DriveWorkspace::onDriveChanged(int id, int address)
         return;
     for (DrivePanel *p : panelsFor(id, address))
         if (p->driveInfo().capabilities != info.capabilities
+            || p->driveInfo().unsupportedReasons != info.unsupportedReasons
+            || channelNames(p->driveInfo()) != channelNames(info)
             || p->driveInfo().identity.firmware != info.identity.firmware
             || p->driveInfo().identity.model != info.identity.model || !p->driveInfo().valid)
             p->setDriveInfo(info);

@@ -107,12 +107,10 @@ void MotionPanel::buildPowerBox()
     insertRow(m_powerBox, {m_enable, m_disable});
     m_powerResult = makeResultLabel(m_powerBox, QStringLiteral("powerResult"));
     connect(m_enable, &QPushButton::clicked, this, [this] {
-        runCommand(
-            tr("Enable"), [](Drive &d) { return d.setEnabled(true); }, m_powerResult);
+        runCommand([] { return tr("Enable"); }, [](Drive &d) { return d.setEnabled(true); }, m_powerResult);
     });
     connect(m_disable, &QPushButton::clicked, this, [this] {
-        runCommand(
-            tr("Disable"), [](Drive &d) { return d.setEnabled(false); }, m_powerResult);
+        runCommand([] { return tr("Disable"); }, [](Drive &d) { return d.setEnabled(false); }, m_powerResult);
     });
 }
 
@@ -211,8 +209,8 @@ void MotionPanel::buildHomeBox()
     m_homeResult = makeResultLabel(m_homeBox, QStringLiteral("homeResult"));
     connect(m_homeButton, &QPushButton::clicked, this, [this] {
         const bool positiveFirst = m_homeDirection->currentIndex() == 0;
-        runCommand(
-            tr("Home"), [positiveFirst](Drive &d) { return d.home(positiveFirst); }, m_homeResult, true);
+        runCommand([] { return tr("Home"); }, [positiveFirst](Drive &d) { return d.home(positiveFirst); }, m_homeResult,
+                   true);
     });
 }
 
@@ -228,8 +226,7 @@ void MotionPanel::buildPositionBox()
     m_positionResult = makeResultLabel(m_positionBox, QStringLiteral("positionResult"));
     connect(m_setPositionButton, &QPushButton::clicked, this, [this] {
         const qint64 p = m_setPositionValue->value();
-        runCommand(
-            tr("Set position"), [p](Drive &d) { return d.setPosition(p); }, m_positionResult);
+        runCommand([] { return tr("Set position"); }, [p](Drive &d) { return d.setPosition(p); }, m_positionResult);
     });
 }
 
@@ -307,8 +304,7 @@ void MotionPanel::stopDrive()
     m_jogMinus->stopHold();
     m_jogPlus->stopHold();
     ++m_motionGeneration; // whatever was moving: its watch ends here
-    runCommand(
-        tr("Stop"), [](Drive &d) { return d.stop(false); }, m_stopResult, true);
+    runCommand([] { return tr("Stop"); }, [](Drive &d) { return d.stop(false); }, m_stopResult, true);
 }
 
 QLabel *MotionPanel::makeResultLabel(QGroupBox *box, const QString &objectName)
@@ -318,32 +314,38 @@ QLabel *MotionPanel::makeResultLabel(QGroupBox *box, const QString &objectName)
     return label;
 }
 
-void MotionPanel::runCommand(const QString &what, DriveHub::Operation op, QLabel *result, bool motion)
+void MotionPanel::runCommand(const Text &what, DriveHub::Operation op, QLabel *result, bool motion)
 {
     if (!context().isValid())
         return;
     const int generation = motion ? ++m_motionGeneration : m_motionGeneration;
-    showMessage(result, tr("%1: sending…").arg(what), MessageKind::Info);
+    showMessage(
+        result, [what] { return tr("%1: sending…").arg(what()); }, MessageKind::Info);
     QPointer<MotionPanel> self(this);
     QPointer<QLabel> label(result);
-    context().hub->run(context().connectionId, context().address, std::move(op),
-                       [self, what, label, motion, generation](const DriveResult &r) {
-                           if (!self || !label)
-                               return;
-                           if (!r.ok()) {
-                               showMessage(label, tr("%1 failed: %2").arg(what, DisplayText::sentence(r.error.message)),
-                                           MessageKind::Problem);
-                               self->reportError(r.error);
-                           } else if (motion) {
-                               showMessage(label, tr("%1: started.").arg(what), MessageKind::Info);
-                               self->watchMotion(generation, what, label, 0, false);
-                           } else {
-                               showMessage(label, tr("%1: done.").arg(what), MessageKind::Success);
-                           }
-                       });
+    context().hub->run(
+        context().connectionId, context().address, std::move(op),
+        [self, what, label, motion, generation](const DriveResult &r) {
+            if (!self || !label)
+                return;
+            if (!r.ok()) {
+                const QString error = r.error.message;
+                showMessage(
+                    label, [what, error] { return tr("%1 failed: %2").arg(what(), DisplayText::sentence(error)); },
+                    MessageKind::Problem);
+                self->reportError(r.error);
+            } else if (motion) {
+                showMessage(
+                    label, [what] { return tr("%1: started.").arg(what()); }, MessageKind::Info);
+                self->watchMotion(generation, what, label, 0, false);
+            } else {
+                showMessage(
+                    label, [what] { return tr("%1: done.").arg(what()); }, MessageKind::Success);
+            }
+        });
 }
 
-void MotionPanel::watchMotion(int generation, const QString &what, QLabel *result, int polls, bool seenRunning)
+void MotionPanel::watchMotion(int generation, const Text &what, QLabel *result, int polls, bool seenRunning)
 {
     // Until the drive reports the axis at rest: read its state, show where it is. A drive
     // may report the start a moment late: "at rest" counts once motion was seen, or after a
@@ -360,27 +362,38 @@ void MotionPanel::watchMotion(int generation, const QString &what, QLabel *resul
             [=](const DriveResult &r) {
                 if (!self || !label || generation != self->m_motionGeneration)
                     return;
-                const QString unit = self->distanceUnit();
+                const Text unit = [self] { return self ? self->distanceUnit() : QString(); };
                 if (!r.ok()) {
-                    showMessage(label,
-                                tr("%1: started; its state cannot be read: %2")
-                                    .arg(what, DisplayText::sentence(r.error.message)),
-                                MessageKind::Problem);
+                    const QString error = r.error.message;
+                    showMessage(
+                        label,
+                        [what, error] {
+                            return tr("%1: started; its state cannot be read: %2")
+                                .arg(what(), DisplayText::sentence(error));
+                        },
+                        MessageKind::Problem);
                     return;
                 }
-                const DriveStatus &s = r.status;
+                const DriveStatus s = r.status;
                 if (s.alarmCode) {
-                    showMessage(label,
-                                tr("%1: stopped by alarm %2 at %3 %4.")
-                                    .arg(what)
-                                    .arg(s.alarmCode)
-                                    .arg(DisplayText::position(s), unit),
-                                MessageKind::Problem);
+                    showMessage(
+                        label,
+                        [what, s, unit] {
+                            return tr("%1: stopped by alarm %2 at %3 %4.")
+                                .arg(what())
+                                .arg(s.alarmCode)
+                                .arg(DisplayText::position(s), unit());
+                        },
+                        MessageKind::Problem);
                     return;
                 }
                 if (s.running) {
-                    showMessage(label, tr("%1: moving… position %2 %3").arg(what, DisplayText::position(s), unit),
-                                MessageKind::Info);
+                    showMessage(
+                        label,
+                        [what, s, unit] {
+                            return tr("%1: moving… position %2 %3").arg(what(), DisplayText::position(s), unit());
+                        },
+                        MessageKind::Info);
                     self->watchMotion(generation, what, label, polls + 1, true);
                     return;
                 }
@@ -388,9 +401,13 @@ void MotionPanel::watchMotion(int generation, const QString &what, QLabel *resul
                     self->watchMotion(generation, what, label, polls + 1, false);
                     return;
                 }
-                showMessage(label,
-                            tr("%1: done, the axis is at rest at %2 %3.").arg(what, DisplayText::position(s), unit),
-                            MessageKind::Success);
+                showMessage(
+                    label,
+                    [what, s, unit] {
+                        return tr("%1: done, the axis is at rest at %2 %3.")
+                            .arg(what(), DisplayText::position(s), unit());
+                    },
+                    MessageKind::Success);
             });
     });
 }
@@ -400,13 +417,11 @@ void MotionPanel::move()
     const qint64 value = m_moveValue->value();
     const qint32 speed = m_moveSpeed->value();
     if (m_absolute->isChecked())
-        runCommand(
-            tr("Move to %1").arg(value), [value, speed](Drive &d) { return d.moveAbsolute(value, speed); },
-            m_moveResult, true);
+        runCommand([value] { return tr("Move to %1").arg(value); },
+                   [value, speed](Drive &d) { return d.moveAbsolute(value, speed); }, m_moveResult, true);
     else
-        runCommand(
-            tr("Move by %1").arg(value), [value, speed](Drive &d) { return d.moveRelative(value, speed); },
-            m_moveResult, true);
+        runCommand([value] { return tr("Move by %1").arg(value); },
+                   [value, speed](Drive &d) { return d.moveRelative(value, speed); }, m_moveResult, true);
 }
 
 void MotionPanel::onJogStarted(qint32 speed)

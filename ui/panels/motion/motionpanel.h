@@ -70,8 +70,9 @@ private:
     // Runs `op`; its outcome goes to `result` (the label of the action's own box). A motion
     // (`motion`: a move, homing) is "started" when the drive takes it and "done" only when
     // the drive reports the axis at rest (watchMotion()).
-    void runCommand(const QString &what, DriveHub::Operation op, QLabel *result, bool motion = false);
-    void watchMotion(int generation, const QString &what, QLabel *result, int polls, bool seenRunning);
+    using Text = std::function<QString()>; // made again after a language switch
+    void runCommand(const Text &what, DriveHub::Operation op, QLabel *result, bool motion = false);
+    void watchMotion(int generation, const Text &what, QLabel *result, int polls, bool seenRunning);
     QLabel *makeResultLabel(QGroupBox *box, const QString &objectName);
     void move();
     void onJogStarted(qint32 speed);

@@ -278,11 +278,17 @@ void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const Pa
         return;
     }
     m_everRead = true;
-    QString text = tr("Read %n parameter(s) from the drive.", nullptr, int(result.parameters.size()));
+    const int count = int(result.parameters.size());
     const int pending = int(m_model->changedIndices().size());
-    if (pending > 0)
-        text += QLatin1Char(' ') + tr("%n edited value(s) not yet written.", nullptr, pending);
-    setMessage(text, MessageKind::Success);
+    showMessage(
+        m_message,
+        [count, pending] {
+            QString text = tr("Read %n parameter(s) from the drive.", nullptr, count);
+            if (pending > 0)
+                text += QLatin1Char(' ') + tr("%n edited value(s) not yet written.", nullptr, pending);
+            return text;
+        },
+        MessageKind::Success);
     emit operationFinished(true);
 }
 
@@ -371,17 +377,23 @@ void ParametersPanel::onWritten(const DriveResult &result, const QList<int> &req
         default: ++failed; break;
         }
     }
-    QStringList parts;
-    parts << tr("%n written and verified", nullptr, verified);
-    if (writtenOnly)
-        parts << tr("%n written (write-only, cannot be read back)", nullptr, writtenOnly);
-    if (failed)
-        parts << tr("%n failed or not written", nullptr, failed);
     const bool ok = result.ok() && failed == 0;
-    QString text = parts.join(QLatin1String(", ")) + QLatin1Char('.');
-    if (!result.ok())
-        text += QLatin1Char(' ') + result.error.message;
-    setMessage(text, ok ? MessageKind::Success : MessageKind::Problem);
+    const QString error = result.ok() ? QString() : result.error.message;
+    showMessage(
+        m_message,
+        [verified, writtenOnly, failed, error] {
+            QStringList parts;
+            parts << tr("%n written and verified", nullptr, verified);
+            if (writtenOnly)
+                parts << tr("%n written (write-only, cannot be read back)", nullptr, writtenOnly);
+            if (failed)
+                parts << tr("%n failed or not written", nullptr, failed);
+            QString text = parts.join(QLatin1String(", ")) + QLatin1Char('.');
+            if (!error.isEmpty())
+                text += QLatin1Char(' ') + error;
+            return text;
+        },
+        ok ? MessageKind::Success : MessageKind::Problem);
     reportResult(result);
     emit operationFinished(ok);
 }

@@ -12,6 +12,7 @@
 #include "ui/workspace/drivepanel.h"
 #include "ui/workspace/driveworkspace.h"
 
+#include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -68,6 +69,18 @@ private slots:
         QCOMPARE(d->text(BusTreeWidget::FirmwareColumn), QStringLiteral("V2.1"));
         QVERIFY(d->text(BusTreeWidget::NameColumn).contains(QLatin1String("#5")));
         QVERIFY(c->text(BusTreeWidget::NameColumn).contains(QLatin1String("2 drive(s)")));
+
+        // Narrow: position and firmware stay in view (no sideways scrolling); the name is
+        // elided in the middle, its tool tip has the whole link.
+        tree.resize(360, 300);
+        tree.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tree));
+        QCOMPARE(tree.textElideMode(), Qt::ElideMiddle);
+        QVERIFY(tree.header()->length() <= tree.viewport()->width());
+        QVERIFY(tree.header()->sectionViewportPosition(BusTreeWidget::FirmwareColumn)
+                    + tree.header()->sectionSize(BusTreeWidget::FirmwareColumn)
+                <= tree.viewport()->width());
+        QVERIFY(c->toolTip(BusTreeWidget::NameColumn).contains(QLatin1String("/dev/ttyUSB0")));
 
         // Live state from the hub's signal.
         DriveStatus s;

@@ -31,11 +31,16 @@ BusTreeWidget::BusTreeWidget(DriveDirectory *directory, QWidget *parent)
     setAlternatingRowColors(true);
     setSelectionMode(QAbstractItemView::SingleSelection);
     setContextMenuPolicy(Qt::CustomContextMenu);
-    header()->setSectionResizeMode(QHeaderView::Interactive);
-    header()->setStretchLastSection(true);
-    header()->resizeSection(NameColumn, 165);
-    header()->resizeSection(StateColumn, 110);
-    header()->resizeSection(PositionColumn, 75);
+    // Every column in view without sideways scrolling: the name takes what is left and is
+    // elided in the middle (two links differ at their ends: "/dev/ttyUSB0 …" vs "…USB1");
+    // its tool tip has the full text. State, position and firmware fit their contents.
+    setTextElideMode(Qt::ElideMiddle);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    header()->setStretchLastSection(false);
+    header()->setSectionResizeMode(NameColumn, QHeaderView::Stretch);
+    header()->setSectionResizeMode(StateColumn, QHeaderView::ResizeToContents);
+    header()->setSectionResizeMode(PositionColumn, QHeaderView::ResizeToContents);
+    header()->setSectionResizeMode(FirmwareColumn, QHeaderView::ResizeToContents);
     retranslate();
 
     connect(directory, &DriveDirectory::connectionAdded, this, &BusTreeWidget::onConnectionAdded);

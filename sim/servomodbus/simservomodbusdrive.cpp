@@ -109,9 +109,18 @@ void SimServoModbusDrive::advanceTo(qint64 nowUs)
     }
 }
 
+void SimServoModbusDrive::setServoOnInput(bool on)
+{
+    m_servoOnInput = on;
+    if (!on)
+        m_motor.disable(); // the shaft coasts to rest
+}
+
 void SimServoModbusDrive::updateDemo(qint64 nowUs)
 {
-    if (!m_config.demoMotion || m_motor.alarmCode() != 0)
+    // The demo drive follows its control inputs: SON on (and no alarm) switches the power
+    // stage on; only then does the speed profile run.
+    if (!m_config.demoMotion || !m_servoOnInput || m_motor.alarmCode() != 0)
         return;
     if (!m_motor.isEnabled())
         m_motor.enable();

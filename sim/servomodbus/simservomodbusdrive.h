@@ -85,6 +85,10 @@ public:
 
     // The drive's side of the world.
     MotorModel &motor() { return m_motor; }
+    // The servo-on (SON) control input of the demo: the drive's power stage follows it, and
+    // the demo profile runs only while it is on (a disabled servo does not run).
+    void setServoOnInput(bool on);
+    bool servoOnInput() const { return m_servoOnInput; }
     void setAlarm(int code);
     int alarm() const { return m_motor.alarmCode(); }
     // Power cycle: working set := EEPROM, address := PA51, EE state reset.
@@ -123,6 +127,7 @@ private:
     ParameterArray m_eeprom{};
     ParameterArray m_backup{};
     MotorModel m_motor;
+    bool m_servoOnInput = true;
     ModbusRtuStreamParser m_parser{ModbusRtuStreamParser::Mode::Requests};
     qint64 m_lastBytesUs = -1;
     qint64 m_nowUs = 0;

@@ -103,6 +103,16 @@ void SimShuokeAxis::zeroCounters()
     m_clRelOffset = m_motor.position();
 }
 
+void SimShuokeAxis::setPowered(bool on)
+{
+    if (on) {
+        m_motor.enable();
+        return;
+    }
+    m_homing = false;
+    m_motor.disable();
+}
+
 void SimShuokeAxis::runSpeed(double speed)
 {
     m_homing = false;
@@ -150,8 +160,7 @@ void SimShuokeAxis::startHoming(bool positiveFirst, double speed)
     m_homingSpeed = std::max(std::abs(speed), 1.0);
     m_homingReversed = false;
     m_homingFailed = false;
-    m_motor.runSpeed(m_homingDir * m_homingSpeed);
-    m_homing = true;
+    m_homing = m_motor.runSpeed(m_homingDir * m_homingSpeed); // not without the power stage
 }
 
 bool SimShuokeAxis::isRunning() const

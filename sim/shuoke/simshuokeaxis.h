@@ -46,6 +46,10 @@ public:
     const Switches &switches() const { return m_switches; }
     void setSwitches(const Switches &s) { m_switches = s; }
     void setClosedLoop(bool on) { m_closedLoop = on; }
+    // The power stage (the drive's ENA input): off, the shaft coasts to rest, a homing run
+    // ends and motion commands are ignored; on again, the motor holds its position.
+    void setPowered(bool on);
+    bool isPowered() const { return m_motor.isEnabled(); }
     void setAcceleration(double pulsesPerSecond2);
     void setDeceleration(double pulsesPerSecond2);
 

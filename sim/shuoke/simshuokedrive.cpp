@@ -20,7 +20,14 @@ SimShuokeDrive::SimShuokeDrive(const Config &config)
     , m_axis(config.model == Model::M6505)
 {
     m_axis.setSwitches(config.switches);
+    m_axis.setPowered(config.enableInput);
     resetSettings();
+}
+
+void SimShuokeDrive::setEnableInput(bool on)
+{
+    m_config.enableInput = on;
+    m_axis.setPowered(on);
 }
 
 QString SimShuokeDrive::mediumName(Medium medium)

@@ -85,7 +85,8 @@ public:
     shuoke::Model model() const { return m_config.model; }
     shuoke::ByteOrder byteOrder() const { return m_config.byteOrder; }
     bool isBroadcast(quint8 address) const;
-    void setEnableInput(bool on) { m_config.enableInput = on; }
+    // The ENA input: without it the power stage is off and the axis does not move.
+    void setEnableInput(bool on);
     quint16 plcBase() const { return m_config.plcBase; }
     bool skipsCrcCheck() const { return m_settings.value(shuoke::CmdSkipCrcCheck) != 0; }
     bool fixedLengthReplies() const { return m_settings.value(shuoke::CmdFixedLengthReplies) != 0; }

@@ -122,6 +122,7 @@ bool SimShuokeDrive::loadState(const QJsonObject &state, QString *error)
     if (state.contains(QStringLiteral("pendingAddress")))
         m_pendingAddress = static_cast<quint8>(state.value(QStringLiteral("pendingAddress")).toInt());
     m_axis.load(state.value(QStringLiteral("axis")).toObject());
+    m_axis.setPowered(c.enableInput);
     return true;
 }
 

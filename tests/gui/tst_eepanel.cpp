@@ -126,7 +126,7 @@ private slots:
         QCOMPARE(fx.drive()->eeOperationsCompleted(), 1);
         QVERIFY(fx.drive()->lastEeOperation() == servomodbus::EeOp::Defaults);
         QCOMPARE(fx.drive()->parameter(10), factory);
-        QVERIFY(panel.message().contains(QLatin1String("read the parameters again")));
+        QVERIFY(panel.message().contains(QLatin1String("the Parameters tab reads them again")));
     }
 
     void unavailableShowsWhy()

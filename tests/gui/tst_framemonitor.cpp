@@ -231,6 +231,13 @@ private slots:
                  qPrintable(meanings.join('\n')));
         QVERIFY2(meanings.contains(QStringLiteral("TX #1 Decelerate to stop")), qPrintable(meanings.join('\n')));
         QVERIFY(!meanings.join('\n').contains(QLatin1String("?")));
+        // No line repeats its own meaning in the link's note.
+        for (int i = 0; i < model.rowCount(); ++i) {
+            const QString shown = model.index(i, FrameMonitorModel::MeaningColumn).data().toString();
+            const QString note = model.row(i).record.note;
+            if (!note.isEmpty() && model.row(i).meaning.contains(note, Qt::CaseInsensitive))
+                QCOMPARE(shown, model.row(i).meaning);
+        }
     }
 
     void dockInMainWindowShowsLiveTraffic()

@@ -12,6 +12,7 @@
 #include "ui/workspace/drivepanel.h"
 #include "ui/workspace/driveworkspace.h"
 
+#include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -69,6 +70,18 @@ private slots:
         QVERIFY(d->text(BusTreeWidget::NameColumn).contains(QLatin1String("#5")));
         QVERIFY(c->text(BusTreeWidget::NameColumn).contains(QLatin1String("2 drive(s)")));
 
+        // Narrow: position and firmware stay in view (no sideways scrolling); the name is
+        // elided in the middle, its tool tip has the whole link.
+        tree.resize(360, 300);
+        tree.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tree));
+        QCOMPARE(tree.textElideMode(), Qt::ElideMiddle);
+        QVERIFY(tree.header()->length() <= tree.viewport()->width());
+        QVERIFY(tree.header()->sectionViewportPosition(BusTreeWidget::FirmwareColumn)
+                    + tree.header()->sectionSize(BusTreeWidget::FirmwareColumn)
+                <= tree.viewport()->width());
+        QVERIFY(c->toolTip(BusTreeWidget::NameColumn).contains(QLatin1String("/dev/ttyUSB0")));
+
         // Live state from the hub's signal.
         DriveStatus s;
         s.online = true;
@@ -78,7 +91,7 @@ private slots:
         s.position = 12345;
         s.updatedMs = 1;
         emit hub.statusChanged(7, 5, s);
-        QTRY_VERIFY(d->text(BusTreeWidget::StateColumn).contains(QLatin1String("Running")));
+        QTRY_COMPARE(d->text(BusTreeWidget::StateColumn), QStringLiteral("Enabled · moving")); // in words
         QCOMPARE(d->text(BusTreeWidget::PositionColumn), QLocale().toString(12345));
         QVERIFY(d->icon(BusTreeWidget::StateColumn).isNull());
 
@@ -234,7 +247,11 @@ private slots:
         s.running = true;
         s.enabled = true;
         s.alarmCode = 3;
-        QCOMPARE(DisplayText::summary(s), QStringLiteral("Running, enabled, alarm 3"));
+        QCOMPARE(DisplayText::summary(s), QStringLiteral("Alarm 3 · Enabled · moving"));
+        s.alarmCode = 0;
+        s.running = false;
+        s.enabled = false;
+        QCOMPARE(DisplayText::summary(s), QStringLiteral("Disabled · at rest"));
         QCOMPARE(DisplayText::position(s), QStringLiteral("—"));
         QCOMPARE(DisplayText::driveName(Family::ServoCan, 4), QStringLiteral("Servo (CAN) #4"));
     }

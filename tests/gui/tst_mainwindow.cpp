@@ -1,10 +1,18 @@
 // The main window: construction, the STOP button and its shortcuts, live language switch,
 // recent files, saved layout. Offscreen, with settings in a temporary directory.
+#include "core/drive/drive.h"
+#include "core/drive/drivehub.h"
+#include "core/link/trafficrecord.h"
+#include "sim/bench/demobench.h"
 #include "ui/bus/bustreewidget.h"
+#include "ui/bus/connectioncontroller.h"
+#include "ui/bus/drivedirectory.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/mainwindow.h"
 #include "ui/shell/recentfiles.h"
+#include "ui/shell/statusbarwidget.h"
 #include "ui/shell/stopaction.h"
+#include "ui/shell/stopreporter.h"
 #include "ui/workspace/driveworkspace.h"
 
 #include <QApplication>
@@ -36,6 +44,23 @@ class TestMainWindow : public QObject
         return out;
     }
 
+    template <typename Cond>
+    static bool waitFor(Cond cond, int timeoutMs)
+    {
+        QDeadlineTimer deadline(timeoutMs);
+        while (!cond() && !deadline.hasExpired())
+            QTest::qWait(10); // an event loop turn, not a timed assertion
+        return cond();
+    }
+
+    static int connectionOf(DriveDirectory *dir, Family f)
+    {
+        for (int id : dir->connections())
+            if (dir->connectionSettings(id).family == f)
+                return id;
+        return 0;
+    }
+
 private slots:
     void initTestCase()
     {
@@ -56,7 +81,8 @@ private slots:
         QVERIFY(w.busTree()->isVisible());
         QVERIFY(w.workspace()->isVisible());
         QCOMPARE(menuTitles(w), QStringList({"&File", "&View", "&Language", "&Help"}));
-        QVERIFY(w.windowTitle().contains(QLatin1String("DriveDesk")));
+        // The platform adds the application's name: the title does not repeat it.
+        QCOMPARE(w.windowTitle(), QStringLiteral("Commissioning workbench"));
     }
 
     void stopButtonIsAlwaysVisible()
@@ -99,8 +125,89 @@ private slots:
         w.busTree()->setFocus();
         QTest::keyClick(w.busTree(), Qt::Key(key));
         QCOMPARE(spy.count(), 1);
-        // The status bar confirms it.
-        QVERIFY(w.statusBar()->currentMessage().contains(QLatin1String("STOP")));
+        // The status bar confirms it: nothing is connected.
+        QCOMPARE(w.statusBar()->currentMessage(), QStringLiteral("STOP sent; no drive is connected."));
+    }
+
+    void stopReportsEachDrive()
+    {
+        // The demo bench: one drive of each family. servo-can and shuoke move; STOP sends
+        // each family's stop frame and the report says, per drive, what the drive's own
+        // state confirms; servo-modbus has no stop command and is reported as such.
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        DriveDirectory *dir = w.directory();
+        QVERIFY(w.startDemo());
+        QVERIFY(waitFor(
+            [&] {
+                int n = 0;
+                for (int id : dir->connections())
+                    for (int a : dir->drives(id))
+                        n += dir->info(id, a).valid ? 1 : 0;
+                return n == 3 && !w.connections()->isBusy();
+            },
+            20000));
+        const int can = connectionOf(dir, Family::ServoCan);
+        const int shuoke = connectionOf(dir, Family::Shuoke);
+        const int modbus = connectionOf(dir, Family::ServoModbus);
+        QVERIFY(can && shuoke && modbus);
+        int started = 0;
+        for (int id : {can, shuoke})
+            w.hub()->run(
+                id, DemoBench::Address, [](Drive &d) { return d.moveRelative(100000000, 300); },
+                [&started](const DriveResult &r) { started += r.ok() ? 1 : 0; });
+        QVERIFY(waitFor([&] { return started == 2; }, 5000));
+
+        QSignalSpy traffic(w.hub(), &DriveHub::trafficRecorded);
+        QSignalSpy finished(w.stopReporter(), &StopReporter::finished);
+        w.stopAction()->trigger();
+        QVERIFY(finished.wait(5000));
+
+        bool canStop = false, shuokeStop = false, modbusTx = false;
+        for (const QList<QVariant> &args : std::as_const(traffic)) {
+            const auto rec = args.at(1).value<TrafficRecord>();
+            if (rec.direction != TrafficRecord::Direction::Tx)
+                continue;
+            const int id = args.at(0).toInt();
+            // servo-can station 1 (ID 0x065): 0x28 stop and disable.
+            if (id == can && rec.canId == 0x065 && rec.bytes.toHex() == "01280000000000ff")
+                canStop = true;
+            // shuoke: the broadcast emergency stop, address 0, command 0x3C.
+            if (id == shuoke && rec.bytes.startsWith(QByteArray::fromHex("003c")))
+                shuokeStop = true;
+            if (id == modbus && rec.note.contains(QLatin1String("stop"), Qt::CaseInsensitive))
+                modbusTx = true;
+        }
+        QVERIFY(canStop);
+        QVERIFY(shuokeStop);
+        QVERIFY(!modbusTx); // the family has no stop command: nothing pretends to be one
+
+        QHash<int, StopReporter::Outcome> outcome;
+        DriveStatus modbusState;
+        for (const StopReporter::Line &l : w.stopReporter()->lines()) {
+            outcome.insert(l.connectionId, l.outcome);
+            if (l.connectionId == modbus)
+                modbusState = l.status;
+        }
+        QCOMPARE(outcome.value(can), StopReporter::Outcome::Stopped);
+        QCOMPARE(outcome.value(shuoke), StopReporter::Outcome::Stopped);
+        QVERIFY(!dir->info(can, 1).status.running);
+        QVERIFY(!dir->info(shuoke, 1).status.running);
+        // servo-modbus: what its state says, not "stopped".
+        QVERIFY(modbusState.online);
+        const bool modbusRunning = modbusState.running;
+        QCOMPARE(outcome.value(modbus),
+                 modbusRunning ? StopReporter::Outcome::NotSupported : StopReporter::Outcome::AtRest);
+        const QString message = w.statusBar()->currentMessage();
+        QVERIFY2(message.contains(QLatin1String("Servo (CAN) #1: stopped")), qPrintable(message));
+        QVERIFY2(message.contains(QLatin1String("Servo (Modbus) #1: has no stop command")), qPrintable(message));
+        QVERIFY2(message.contains(QLatin1String("Shuoke")), qPrintable(message));
+        QVERIFY2(!message.contains(QLatin1String("STOP sent to all drives")), qPrintable(message));
+        // The demo servo runs only with its power stage on: the state says so.
+        if (modbusRunning)
+            QVERIFY(modbusState.enabled);
+        w.connections()->disconnectAll();
     }
 
     void chineseTranslationLoadsAndSwitchesLive()

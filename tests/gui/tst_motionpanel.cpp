@@ -4,6 +4,8 @@
 // the Chinese texts of the new panels.
 #include "core/drive/drivehub.h"
 #include "core/protocol/servocan/servocan.h"
+#include "sim/bus/simserialbus.h"
+#include "sim/shuoke/simshuokeserialdevice.h"
 #include "tests/gui/panelrig.h"
 #include "ui/bus/drivedirectory.h"
 #include "ui/framemonitor/framemonitordock.h"
@@ -372,6 +374,39 @@ private slots:
         QCOMPARE(speed->maximum(), 100000);
         QVERIFY(speed->suffix().contains(QLatin1String("pulses/s")));
         QVERIFY(p->findChild<QSpinBox *>(QStringLiteral("moveValue"))->suffix().contains(QLatin1String("pulses")));
+    }
+
+    void moveIsDoneOnlyWhenTheAxisIsAtRest()
+    {
+        // "started" when the drive takes the move; "done" only once the drive reports the
+        // axis at rest; the result is shown in the Move box, not in the jog box.
+        Rig rig;
+        SimBenchOptions o;
+        o.family = Family::Shuoke;
+        QString why;
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        MotionPanel *p = rig.panel;
+        const auto axisRunning = [&rig] {
+            return rig.sim.call([&rig] {
+                auto *dev = static_cast<SimShuokeSerialDevice *>(rig.sim.bench()->serialBus()->device(0));
+                return dev->drive().axis().isRunning();
+            });
+        };
+        p->findChild<QSpinBox *>(QStringLiteral("moveValue"))->setValue(30000);
+        p->findChild<QSpinBox *>(QStringLiteral("moveSpeed"))->setValue(30000);
+        auto *result = p->findChild<QLabel *>(QStringLiteral("moveResult"));
+        QVERIFY(result);
+        const QString jogBefore = p->findChild<QLabel *>(QStringLiteral("jogState"))->text();
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("moveButton")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QLatin1String("started"))
+                                     || result->text().contains(QLatin1String("moving")),
+                                 5000);
+        QVERIFY(axisRunning());
+        QVERIFY2(!result->text().contains(QLatin1String("done")), qPrintable(result->text()));
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QLatin1String("done")), 10000);
+        QVERIFY(!axisRunning());
+        QVERIFY2(result->text().contains(QLatin1String("at rest")), qPrintable(result->text()));
+        QCOMPARE(p->findChild<QLabel *>(QStringLiteral("jogState"))->text(), jogBefore);
     }
 
     void servoModbusShowsEveryMotionDisabledWithTheReason()

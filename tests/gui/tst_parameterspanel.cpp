@@ -117,7 +117,7 @@ private slots:
         QCOMPARE(fx.drive()->parameter(10), quint16(10));
         QCOMPARE(panel.model()->writeState(12), ParameterTableModel::WriteState::Verified);
         QCOMPARE(cell(panel, 12, ParameterTableModel::State), QStringLiteral("written, verified"));
-        QCOMPARE(cell(panel, 12, ParameterTableModel::Mark), QString());
+        QCOMPARE(cell(panel, 12, ParameterTableModel::Mark), QString(QChar(0x25C7))); // not saved to EEPROM
         QVERIFY(panel.model()->isChanged(10));
 
         // Write all changed: PA10 reaches the drive and is read back.
@@ -170,8 +170,8 @@ private slots:
         QLineEdit *editor = typeValue(panel, 51, QStringLiteral("300"));
         QVERIFY(editor);
         QVERIFY(editor->isVisible());
-        QVERIFY2(panel.message().contains(QLatin1String("outside the allowed range 0 to 255")),
-                 qPrintable(panel.message()));
+        QVERIFY2(panel.message().contains(QLatin1String("outside the allowed range 0 to 255. Nothing was sent")),
+                 qPrintable(panel.message())); // the reason ends with a full stop
         QVERIFY(panel.message().contains(QLatin1String("Nothing was sent")));
         QVERIFY(editor->toolTip().contains(QLatin1String("0 to 255")));
         QTest::keyClick(editor, Qt::Key_Escape);

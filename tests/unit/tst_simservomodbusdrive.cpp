@@ -171,6 +171,30 @@ private slots:
         QCOMPARE(r, QList<QByteArray>{adu("010302000c")});
     }
 
+    void demoRunsOnlyWithThePowerStageOn()
+    {
+        // The demo profile runs only while SON is on; off, the shaft coasts to rest and the
+        // monitor says so (DP-SPd 0, DP-oUt "servo ready" clear), also after the alarm.
+        SimServoModbusDrive::Config c = config(1);
+        c.demoMotion = true;
+        SimServoModbusDrive d(c);
+        d.advanceTo(1000000); // 1 s into the forward phase
+        QVERIFY(qint16(d.monitorRegister(0x00)) > 500);
+        QCOMPARE(d.monitorRegister(0x10) & 0x01, 0x01);
+        d.setServoOnInput(false);
+        d.advanceTo(2900000);
+        QCOMPARE(d.monitorRegister(0x00), quint16(0));
+        QCOMPARE(d.monitorRegister(0x10) & 0x01, 0);
+        QVERIFY(!d.motor().isMoving());
+        d.setServoOnInput(true);
+        d.advanceTo(9000000); // forward again
+        QVERIFY(qint16(d.monitorRegister(0x00)) > 500);
+        d.setAlarm(7);
+        d.advanceTo(10000000);
+        QCOMPARE(d.monitorRegister(0x00), quint16(0));
+        QCOMPARE(d.monitorRegister(0x10) & 0x01, 0);
+    }
+
     void stateRoundTrip()
     {
         SimServoModbusDrive a(config(6));

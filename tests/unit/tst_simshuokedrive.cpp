@@ -207,6 +207,33 @@ private slots:
         QVERIFY(!f.axis().rightLimit());
     }
 
+    void noMotionWithoutTheEnableInput()
+    {
+        // A drive whose ENA input is off has no power stage: it neither runs nor homes, and
+        // switching the input off while running lets the shaft coast to rest.
+        SimShuokeDrive d(config());
+        d.setEnableInput(false);
+        d.handle(req(CmdRunSpeed, encodeInt32(5000)), SimShuokeDrive::Medium::Serial, 0);
+        d.advanceTo(200 * Ms);
+        QVERIFY(!d.axis().isRunning());
+        QCOMPARE(d.axis().motorPosition(), 0);
+        d.handle(req(CmdHome, QByteArray(1, '\1')), SimShuokeDrive::Medium::Serial, 200 * Ms);
+        d.advanceTo(400 * Ms);
+        QVERIFY(!d.axis().isRunning());
+        QCOMPARE(d.axis().motorPosition(), 0);
+
+        d.setEnableInput(true);
+        d.handle(req(CmdRunSpeed, encodeInt32(5000)), SimShuokeDrive::Medium::Serial, 400 * Ms);
+        d.advanceTo(600 * Ms);
+        QVERIFY(d.axis().isRunning());
+        d.setEnableInput(false);
+        d.advanceTo(3000 * Ms);
+        QVERIFY(!d.axis().isRunning());
+        const qint64 rest = d.axis().motorPosition();
+        d.advanceTo(3500 * Ms);
+        QCOMPARE(d.axis().motorPosition(), rest);
+    }
+
     void stateRoundTrip()
     {
         SimShuokeDrive d(config(Model::M4505S));

@@ -31,11 +31,16 @@ BusTreeWidget::BusTreeWidget(DriveDirectory *directory, QWidget *parent)
     setAlternatingRowColors(true);
     setSelectionMode(QAbstractItemView::ExtendedSelection);
     setContextMenuPolicy(Qt::CustomContextMenu);
-    header()->setSectionResizeMode(QHeaderView::Interactive);
-    header()->setStretchLastSection(true);
-    header()->resizeSection(NameColumn, 165);
-    header()->resizeSection(StateColumn, 110);
-    header()->resizeSection(PositionColumn, 75);
+    // Every column in view without sideways scrolling: the name takes what is left and is
+    // elided in the middle (two links differ at their ends: "/dev/ttyUSB0 …" vs "…USB1");
+    // its tool tip has the full text. State, position and firmware fit their contents.
+    setTextElideMode(Qt::ElideMiddle);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    header()->setStretchLastSection(false);
+    header()->setSectionResizeMode(NameColumn, QHeaderView::Stretch);
+    header()->setSectionResizeMode(StateColumn, QHeaderView::ResizeToContents);
+    header()->setSectionResizeMode(PositionColumn, QHeaderView::ResizeToContents);
+    header()->setSectionResizeMode(FirmwareColumn, QHeaderView::ResizeToContents);
     retranslate();
 
     connect(directory, &DriveDirectory::connectionAdded, this, &BusTreeWidget::onConnectionAdded);
@@ -156,11 +161,8 @@ void BusTreeWidget::updateDrive(int id, int address)
     item->setText(FirmwareColumn, info.identity.firmware);
     item->setText(PositionColumn, DisplayText::position(s));
     item->setTextAlignment(PositionColumn, Qt::AlignRight | Qt::AlignVCenter);
-    QString state = DisplayText::motionState(s);
-    if (s.online)
-        state = tr("%1, %2").arg(state, s.enabled ? tr("on") : tr("off"));
+    const QString state = DisplayText::summary(s);
     if (s.alarmCode) {
-        state = tr("%1 — %2").arg(DisplayText::alarm(s.alarmCode), state);
         item->setIcon(StateColumn, style()->standardIcon(QStyle::SP_MessageBoxWarning));
         item->setForeground(StateColumn, QBrush(QColor(0xc6, 0x28, 0x28)));
     } else {

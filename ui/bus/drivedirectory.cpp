@@ -2,7 +2,9 @@
 
 #include "core/drive/drivehub.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
+#include <QEvent>
 #include <QPointer>
 
 namespace dd {
@@ -14,6 +16,20 @@ DriveDirectory::DriveDirectory(DriveHub *hub, QObject *parent)
     connect(hub, &DriveHub::statusChanged, this, &DriveDirectory::updateStatus);
     connect(hub, &DriveHub::alarmChanged, this, &DriveDirectory::onAlarm);
     connect(hub, &DriveHub::linkLost, this, &DriveDirectory::onLinkLost);
+    if (QCoreApplication::instance())
+        QCoreApplication::instance()->installEventFilter(this);
+}
+
+bool DriveDirectory::eventFilter(QObject *watched, QEvent *event)
+{
+    // The drive layer words its reasons and channel names in the language of the moment:
+    // ask again after a switch (driveChanged follows with the new texts).
+    if (watched == QCoreApplication::instance() && event->type() == QEvent::LanguageChange)
+        for (auto c = m_connections.cbegin(); c != m_connections.cend(); ++c)
+            if (c->state == LinkState::Open)
+                for (int address : c->drives.keys())
+                    refresh(c.key(), address);
+    return QObject::eventFilter(watched, event);
 }
 
 void DriveDirectory::addConnection(int id, const ConnectionSettings &settings)

@@ -59,6 +59,10 @@ signals:
     void alarmChanged(int id, int address, int code);
     void errorOccurred(const dd::Error &error);
 
+protected:
+    // A language switch: the drives' descriptions (reasons, channel names) are made again.
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 private:
     struct Entry
     {

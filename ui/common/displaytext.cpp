@@ -44,10 +44,24 @@ QString DisplayText::summary(const DriveStatus &s)
 {
     if (!s.online)
         return motionState(s);
-    QString text = tr("%1, %2").arg(motionState(s), enabledState(s).toLower());
+    // In words, power stage first: "Enabled · moving", "Disabled · at rest".
+    const QString motion = s.running ? tr("moving") : tr("at rest");
+    QString text = tr("%1 · %2").arg(enabledState(s), motion);
     if (s.alarmCode)
-        text = tr("%1, %2").arg(text, alarm(s.alarmCode).toLower());
+        text = tr("%1 · %2").arg(alarm(s.alarmCode), text);
     return text;
+}
+
+QString DisplayText::sentence(const QString &text)
+{
+    const QString t = text.trimmed();
+    if (t.isEmpty())
+        return t;
+    const QChar last = t.back();
+    if (QStringLiteral(".!?。！？…").contains(last))
+        return t;
+    const bool chinese = last.unicode() >= 0x2E80; // CJK and full-width punctuation
+    return t + (chinese ? QStringLiteral("。") : QStringLiteral("."));
 }
 
 QString DisplayText::capabilityName(Capability c)

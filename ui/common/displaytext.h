@@ -21,7 +21,9 @@ public:
     static QString alarm(int code);                       // "Alarm 12" / "No alarm"
     static QString position(const DriveStatus &s);        // "12345" / "—"
     static QString capabilityName(Capability c);          // "Jog", "EEPROM operations"
-    // One line: "Running, enabled, alarm 12".
+    // `text` as a sentence: a full stop added when it ends without one (。 after Chinese).
+    static QString sentence(const QString &text);
+    // One line in words: "Enabled · moving", "Alarm 12 · Disabled · at rest", "Offline".
     static QString summary(const DriveStatus &s);
 };
 

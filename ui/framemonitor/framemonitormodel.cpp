@@ -183,7 +183,11 @@ QVariant FrameMonitorModel::data(const QModelIndex &index, int role) const
         case DirectionColumn: return r.record.directionText();
         case DataColumn: return r.record.hexText();
         case MeaningColumn:
-            return r.record.note.isEmpty() ? r.meaning : QStringLiteral("%1 [%2]").arg(r.meaning, r.record.note);
+            // The link's note only when it adds something ("retry 2", "late reply"), not
+            // when it repeats the meaning ("Query absolute position [Query absolute position]").
+            if (r.record.note.isEmpty() || r.meaning.contains(r.record.note.trimmed(), Qt::CaseInsensitive))
+                return r.meaning;
+            return QStringLiteral("%1 [%2]").arg(r.meaning, r.record.note);
         }
         break;
     case Qt::ToolTipRole:

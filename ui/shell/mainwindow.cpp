@@ -17,6 +17,7 @@
 #include "ui/shell/recentfiles.h"
 #include "ui/shell/statusbarwidget.h"
 #include "ui/shell/stopaction.h"
+#include "ui/shell/stopreporter.h"
 #include "ui/workspace/driveworkspace.h"
 
 #include <QActionGroup>
@@ -110,8 +111,13 @@ void MainWindow::createActions()
     m_stop = new StopAction(this);
     addAction(m_stop); // the shortcuts work even if the tool bar is hidden
     connect(m_stop, &QAction::triggered, m_hub, &DriveHub::stopAll);
+    // Then, drive by drive, what the STOP did (StopReporter), in the status bar.
+    m_stopReporter = new StopReporter(m_directory, this);
+    connect(m_stop, &QAction::triggered, m_stopReporter, &StopReporter::start);
     connect(m_stop, &QAction::triggered, this,
-            [this] { m_statusBar->showMessage(tr("STOP sent to all drives."), 5000); });
+            [this] { m_statusBar->showLiveMessage([r = m_stopReporter] { return r->summary(); }); });
+    connect(m_stopReporter, &StopReporter::updated, this,
+            [this] { m_statusBar->showLiveMessage([r = m_stopReporter] { return r->summary(); }, 30000); });
 
     m_connectAction = new QAction(style()->standardIcon(QStyle::SP_DriveNetIcon), QString(), this);
     m_connectAction->setObjectName(QStringLiteral("connectAction"));
@@ -364,7 +370,8 @@ void MainWindow::changeEvent(QEvent *event)
 
 void MainWindow::retranslate()
 {
-    setWindowTitle(tr("DriveDesk — commissioning workbench"));
+    // The platform adds the application's name (" — DriveDesk"): not repeated here.
+    setWindowTitle(tr("Commissioning workbench"));
     m_fileMenu->setTitle(tr("&File"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));

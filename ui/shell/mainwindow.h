@@ -27,6 +27,7 @@ class ScanProgressWidget;
 class StatusBarWidget;
 class StatusPoller;
 class StopAction;
+class StopReporter;
 
 // The workbench window. It only assembles and wires the parts:
 //   DriveHub (I/O thread) → DriveDirectory (the GUI's picture of the bus) → BusTreeWidget
@@ -56,6 +57,7 @@ public:
     RecentFiles *recentFiles() const { return m_recent; }
     DemoLauncher *demo() const { return m_demo; }
     StopAction *stopAction() const { return m_stop; }
+    StopReporter *stopReporter() const { return m_stopReporter; }
     QMenu *fileMenu() const { return m_fileMenu; }
     QMenu *viewMenu() const { return m_viewMenu; }
 
@@ -111,6 +113,7 @@ private:
     QMenu *m_languageMenu = nullptr;
     QMenu *m_helpMenu = nullptr;
     StopAction *m_stop = nullptr;
+    StopReporter *m_stopReporter = nullptr;
     QAction *m_connectAction = nullptr;
     QAction *m_disconnectAction = nullptr;
     QAction *m_disconnectAllAction = nullptr;

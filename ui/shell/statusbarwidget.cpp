@@ -40,6 +40,12 @@ StatusBarWidget::StatusBarWidget(DriveHub *hub, DriveDirectory *directory, QWidg
     connect(directory, &DriveDirectory::linkStateChanged, this, &StatusBarWidget::updateLinkState);
     connect(directory, &DriveDirectory::errorOccurred, this, &StatusBarWidget::countError);
 
+    m_liveTimeout.setSingleShot(true);
+    connect(&m_liveTimeout, &QTimer::timeout, this, [this] {
+        m_liveText = nullptr;
+        clearMessage();
+    });
+    connect(this, &QStatusBar::messageChanged, this, &StatusBarWidget::onMessageChanged);
     m_tick.setInterval(1000);
     connect(&m_tick, &QTimer::timeout, this, &StatusBarWidget::onTick);
     m_tick.start();
@@ -55,6 +61,26 @@ void StatusBarWidget::countError(const Error &error)
     updateCounters();
     if (!error.message.isEmpty())
         showMessage(error.message, MessageTimeoutMs);
+}
+
+void StatusBarWidget::showLiveMessage(std::function<QString()> text, int timeoutMs)
+{
+    m_liveText = std::move(text);
+    m_liveShown = m_liveText();
+    showMessage(m_liveShown);
+    if (timeoutMs > 0)
+        m_liveTimeout.start(timeoutMs);
+    else
+        m_liveTimeout.stop();
+}
+
+void StatusBarWidget::onMessageChanged(const QString &text)
+{
+    // Another message replaced the live one (or it was cleared): forget its maker.
+    if (m_liveText && text != m_liveShown) {
+        m_liveText = nullptr;
+        m_liveTimeout.stop();
+    }
 }
 
 void StatusBarWidget::resetCounters()
@@ -143,6 +169,10 @@ void StatusBarWidget::retranslate()
     m_errorsLabel->setToolTip(tr("Discarded frames (bad checksum, garbage, late replies), lost "
                                  "links and failed operations. Right-click to reset."));
     m_retriesLabel->setToolTip(tr("Requests sent again after a timeout or a corrupt reply"));
+    if (m_liveText) {
+        m_liveShown = m_liveText();
+        showMessage(m_liveShown);
+    }
     updateLinkState();
     updateCounters();
 }

@@ -6,6 +6,7 @@
 #include <QElapsedTimer>
 #include <QStatusBar>
 #include <QTimer>
+#include <functional>
 
 class QLabel;
 
@@ -31,6 +32,9 @@ public:
 
     void countError(const dd::Error &error);
     void resetCounters();
+    // A message whose text is made by `text` now and again after a language switch, for as
+    // long as it is shown (0: until replaced).
+    void showLiveMessage(std::function<QString()> text, int timeoutMs = 0);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -42,6 +46,7 @@ private:
     void updateLinkState();
     void updateCounters();
     void retranslate();
+    void onMessageChanged(const QString &text);
 
     DriveHub *m_hub = nullptr;
     DriveDirectory *m_directory = nullptr;
@@ -55,6 +60,9 @@ private:
     double m_fps = 0;
     quint64 m_errors = 0;
     quint64 m_retries = 0;
+    std::function<QString()> m_liveText; // the shown message's maker, if it has one
+    QString m_liveShown;                 // what it made last
+    QTimer m_liveTimeout;
 };
 
 } // namespace dd

@@ -6,6 +6,7 @@
 namespace dd {
 
 class DriveHub;
+class DriveParameters;
 
 // Which drive a panel works on and what it may do there. Panels reach the drive only
 // through `hub` (DriveHub::run with `connectionId` and `address`), never directly.
@@ -16,6 +17,9 @@ struct DriveContext
     int address = 0;
     Family family = Family::ServoModbus;
     Capabilities capabilities;
+    // The drive's parameter values, shared by all its panels (made by the workspace; a
+    // panel made without one gets its own).
+    DriveParameters *parameters = nullptr;
 
     bool isValid() const { return hub && connectionId > 0; }
     bool can(Capability c) const { return capabilities.testFlag(c); }

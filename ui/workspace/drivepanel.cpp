@@ -1,6 +1,9 @@
 #include "ui/workspace/drivepanel.h"
 
 #include "core/drive/driveresult.h"
+#include "core/protocol/familytraits.h"
+#include "ui/common/livetext.h"
+#include "ui/workspace/driveparameters.h"
 
 #include <QEvent>
 #include <QLabel>
@@ -18,6 +21,8 @@ DrivePanel::DrivePanel(const DriveContext &context, QWidget *parent)
     m_info.identity.family = context.family;
     m_info.identity.address = context.address;
     m_info.capabilities = context.capabilities;
+    if (!m_context.parameters)
+        m_context.parameters = new DriveParameters(familyTraits(context.family).eeOperations, this);
 }
 
 void DrivePanel::setActive(bool active)
@@ -78,8 +83,15 @@ QLabel *DrivePanel::createMessageLabel(QWidget *parent, const QString &objectNam
     return label;
 }
 
+void DrivePanel::showMessage(QLabel *label, std::function<QString()> text, MessageKind kind)
+{
+    showMessage(label, QString(), kind);
+    LiveText::set(label, std::move(text));
+}
+
 void DrivePanel::showMessage(QLabel *label, const QString &text, MessageKind kind)
 {
+    LiveText::clear(label);
     label->setText(text);
     switch (kind) {
     case MessageKind::Info: label->setStyleSheet(QString()); break;

@@ -43,6 +43,9 @@ public:
     virtual QString title() const = 0;
 
     const DriveContext &context() const { return m_context; }
+    // The drive's parameter values, shared with its other panels: report reads and writes
+    // here, follow its signals (never null).
+    DriveParameters *parameters() const { return m_context.parameters; }
     const DriveInfo &driveInfo() const { return m_info; }
     bool isActive() const { return m_active; }
 
@@ -82,6 +85,8 @@ protected:
     static QLabel *createMessageLabel(QWidget *parent, const QString &objectName);
     // Sets a message line's text in the colour of its kind (Info: the palette's).
     static void showMessage(QLabel *label, const QString &text, MessageKind kind);
+    // The same with a text made by `text`, again after a language switch (LiveText).
+    static void showMessage(QLabel *label, std::function<QString()> text, MessageKind kind);
     // A progress bar for a panel's bottom row: at most 220 px wide, hidden.
     static QProgressBar *createProgressBar(QWidget *parent);
     // A progress callback for DriveHub::run() that shows `done` of `total` on `bar`.

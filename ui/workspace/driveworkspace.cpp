@@ -1,14 +1,26 @@
 #include "ui/workspace/driveworkspace.h"
 
+#include "core/protocol/familytraits.h"
 #include "ui/bus/drivedirectory.h"
 #include "ui/workspace/drivepanel.h"
 #include "ui/workspace/drivepanels.h"
+#include "ui/workspace/driveparameters.h"
 
 #include <QEvent>
 #include <QLabel>
 #include <QTabWidget>
 
 namespace dd {
+
+namespace {
+QStringList channelNames(const DriveInfo &info)
+{
+    QStringList out;
+    for (const ChannelInfo &c : info.channels)
+        out << c.name;
+    return out;
+}
+} // namespace
 
 DriveWorkspace::DriveWorkspace(DriveDirectory *directory, QWidget *parent)
     : QStackedWidget(parent)
@@ -79,6 +91,13 @@ QList<DrivePanel *> DriveWorkspace::panelsFor(int id, int address) const
     return out;
 }
 
+DriveParameters *DriveWorkspace::parametersFor(int id, int address) const
+{
+    QTabWidget *tabs = tabsFor(id, address);
+    return tabs ? tabs->findChild<DriveParameters *>(QStringLiteral("driveParameters"), Qt::FindDirectChildrenOnly)
+                : nullptr;
+}
+
 void DriveWorkspace::setPreferredPanel(const QString &panelId)
 {
     m_currentPanelId = panelId;
@@ -112,6 +131,11 @@ QTabWidget *DriveWorkspace::createTabs(int id, int address)
     ctx.address = address;
     ctx.family = info.identity.family;
     ctx.capabilities = info.capabilities;
+    // One set of parameter values per drive, shared by every panel; the tab set owns it (a
+    // child made after the panels, so it goes after them).
+    auto *parameters = new DriveParameters(familyTraits(ctx.family).eeOperations);
+    parameters->setObjectName(QStringLiteral("driveParameters"));
+    ctx.parameters = parameters;
 
     auto *tabs = new QTabWidget(this);
     tabs->setDocumentMode(true);
@@ -127,6 +151,7 @@ QTabWidget *DriveWorkspace::createTabs(int id, int address)
                 tabs->setTabText(i, p->title());
         });
     }
+    parameters->setParent(tabs);
     connect(tabs, &QTabWidget::currentChanged, this, [this, tabs] {
         if (auto *p = qobject_cast<DrivePanel *>(tabs->currentWidget()); p && currentWidget() == tabs)
             m_currentPanelId = p->panelId();
@@ -163,6 +188,8 @@ void DriveWorkspace::onDriveChanged(int id, int address)
         return;
     for (DrivePanel *p : panelsFor(id, address))
         if (p->driveInfo().capabilities != info.capabilities
+            || p->driveInfo().unsupportedReasons != info.unsupportedReasons
+            || channelNames(p->driveInfo()) != channelNames(info)
             || p->driveInfo().identity.firmware != info.identity.firmware
             || p->driveInfo().identity.model != info.identity.model || !p->driveInfo().valid)
             p->setDriveInfo(info);

@@ -14,6 +14,7 @@ namespace dd {
 
 class DriveDirectory;
 class DrivePanel;
+class DriveParameters;
 
 // The central area: the tabs of the selected drive. Each drive gets its own QTabWidget of
 // panels (created on first selection, see drivepanels.h) so that a panel keeps its state
@@ -30,6 +31,8 @@ public:
     DriveContext currentDrive() const;
     QTabWidget *tabsFor(int id, int address) const;
     QList<DrivePanel *> panelsFor(int id, int address) const;
+    // The parameter values every panel of the drive shares.
+    DriveParameters *parametersFor(int id, int address) const;
     // The tab to show when a drive is shown (a panel id: "overview", "trend", ...).
     void setPreferredPanel(const QString &panelId);
     QString preferredPanel() const { return m_currentPanelId; }

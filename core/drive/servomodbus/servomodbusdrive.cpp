@@ -18,6 +18,7 @@ namespace dd {
 namespace {
 
 constexpr quint16 AlarmRegister = 0x13;
+constexpr quint16 OutputsRegister = 0x10; // DP-oUt: bit 0 servo ready, bit 1 alarm
 
 qint64 nowUsSinceEpoch()
 {
@@ -233,7 +234,7 @@ DriveReply *ServoModbusDrive::readStatus()
         return finishedReply(e);
     DriveReply *reply = newReply();
     // DP-SPd .. DP-Err is exactly 20 registers: one request.
-    const QList<quint16> regsWanted = {0x00, 0x01, 0x02, AlarmRegister};
+    const QList<quint16> regsWanted = {0x00, 0x01, 0x02, OutputsRegister, AlarmRegister};
     const QList<ModbusRequest> requests = readRequests(address(), servomodbus::planRegisterReads(regsWanted),
                                                        QStringLiteral("status"));
     ModbusBatch::run(m_link, requests, reply, ModbusBatch::Mode::StopOnError,
@@ -251,6 +252,9 @@ DriveReply *ServoModbusDrive::readStatus()
                          const auto regs = collect(requests, results);
                          s.online = true;
                          s.running = qint16(regs.value(0x00)) != 0;
+                         // DP-oUt bit 0 "servo ready": the power stage is on (the drive
+                         // follows its SON input; the protocol cannot switch it).
+                         s.enabled = (regs.value(OutputsRegister) & 0x01) != 0;
                          s.positionValid = true;
                          s.position = servomodbus::combinePositionPair(regs.value(0x01), regs.value(0x02),
                                                                        m_options.positionRule);

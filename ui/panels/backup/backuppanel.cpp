@@ -5,6 +5,7 @@
 #include "ui/panels/backup/backupdifftable.h"
 #include "ui/panels/backup/restorereportdialog.h"
 #include "ui/panels/backup/transferoperation.h"
+#include "ui/workspace/driveparameters.h"
 
 #include <QCheckBox>
 #include <QDate>
@@ -333,6 +334,8 @@ void BackupPanel::onRestored(const DriveResult &result, const TransferOutcome &o
     m_reportDialog->setAttribute(Qt::WA_DeleteOnClose);
     m_reportDialog->open();
     const bool complete = m_report.isComplete();
+    // Every view of the drive's parameters shows what the restore wrote.
+    parameters()->reportWrites(m_report.results, this);
     setMessage(m_reportDialog->summary(), complete ? MessageKind::Success : MessageKind::Problem);
     if (!result.ok())
         reportError(result.error);

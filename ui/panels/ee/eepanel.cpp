@@ -2,6 +2,7 @@
 
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
+#include "ui/workspace/driveparameters.h"
 
 #include <QGridLayout>
 #include <QGroupBox>
@@ -156,17 +157,34 @@ void EePanel::onFinished(EeOperation op, const DriveResult &result)
     m_running.reset();
     m_tick.stop();
     m_progress->hide();
-    const QString seconds = QLocale().toString(m_clock.elapsed() / 1000.0, 'f', 1);
+    const double seconds = m_clock.elapsed() / 1000.0;
+    // Made again after a language switch (LiveText).
     if (!reportResult(result)) {
-        setMessage(tr("%1 failed after %2 s: %3").arg(eeMnemonic(op), seconds, result.error.message),
-                   MessageKind::Problem);
+        const QString error = result.error.message;
+        showMessage(
+            m_message,
+            [op, seconds, error] {
+                return tr("%1 failed after %2 s: %3").arg(eeMnemonic(op), QLocale().toString(seconds, 'f', 1), error);
+            },
+            MessageKind::Problem);
     } else {
-        QString text = tr("%1 done (%2 s): %3.").arg(eeMnemonic(op), seconds, eeMeaning(op));
-        if (op == EeOperation::Reload || op == EeOperation::RestoreBackup || op == EeOperation::FactoryDefaults)
-            text += QLatin1Char(' ')
-                + tr("The drive now works with other values: read the parameters "
-                     "again (Parameters tab) to see them.");
-        setMessage(text, MessageKind::Success);
+        const bool replaces = op == EeOperation::Reload || op == EeOperation::RestoreBackup
+            || op == EeOperation::FactoryDefaults;
+        showMessage(
+            m_message,
+            [op, seconds, replaces] {
+                QString text = tr("%1 done (%2 s): %3.")
+                                   .arg(eeMnemonic(op), QLocale().toString(seconds, 'f', 1), eeMeaning(op));
+                if (replaces)
+                    text += QLatin1Char(' ')
+                        + tr("The drive now works with other values: the Parameters tab reads them again.");
+                return text;
+            },
+            MessageKind::Success);
+        if (replaces)
+            parameters()->reportValuesReplaced(op == EeOperation::Reload); // EE-rd: values = EEPROM
+        else if (op == EeOperation::Save)
+            parameters()->reportSaved();
     }
     updateActions();
     emit operationFinished(op, result.ok());

@@ -16,6 +16,7 @@
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSpinBox>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <limits>
 
@@ -104,10 +105,13 @@ void MotionPanel::buildPowerBox()
     m_disable = new QPushButton(m_powerBox);
     m_disable->setObjectName(QStringLiteral("disableButton"));
     insertRow(m_powerBox, {m_enable, m_disable});
-    connect(m_enable, &QPushButton::clicked, this,
-            [this] { runCommand(tr("Enable"), [](Drive &d) { return d.setEnabled(true); }); });
-    connect(m_disable, &QPushButton::clicked, this,
-            [this] { runCommand(tr("Disable"), [](Drive &d) { return d.setEnabled(false); }); });
+    m_powerResult = makeResultLabel(m_powerBox, QStringLiteral("powerResult"));
+    connect(m_enable, &QPushButton::clicked, this, [this] {
+        runCommand([] { return tr("Enable"); }, [](Drive &d) { return d.setEnabled(true); }, m_powerResult);
+    });
+    connect(m_disable, &QPushButton::clicked, this, [this] {
+        runCommand([] { return tr("Disable"); }, [](Drive &d) { return d.setEnabled(false); }, m_powerResult);
+    });
 }
 
 void MotionPanel::buildJogBox(const SpeedRange &range)
@@ -189,6 +193,7 @@ void MotionPanel::buildMoveBox(const SpeedRange &range)
     moveGrid->addWidget(m_moveButton, 1, 3);
     moveGrid->setColumnStretch(4, 1);
     qobject_cast<QVBoxLayout *>(m_moveBox->layout())->insertLayout(0, moveGrid);
+    m_moveResult = makeResultLabel(m_moveBox, QStringLiteral("moveResult"));
     connect(m_moveButton, &QPushButton::clicked, this, &MotionPanel::move);
 }
 
@@ -201,9 +206,11 @@ void MotionPanel::buildHomeBox()
     m_homeButton = new QPushButton(m_homeBox);
     m_homeButton->setObjectName(QStringLiteral("homeButton"));
     insertRow(m_homeBox, {m_homeDirection, m_homeButton});
+    m_homeResult = makeResultLabel(m_homeBox, QStringLiteral("homeResult"));
     connect(m_homeButton, &QPushButton::clicked, this, [this] {
         const bool positiveFirst = m_homeDirection->currentIndex() == 0;
-        runCommand(tr("Home"), [positiveFirst](Drive &d) { return d.home(positiveFirst); });
+        runCommand([] { return tr("Home"); }, [positiveFirst](Drive &d) { return d.home(positiveFirst); }, m_homeResult,
+                   true);
     });
 }
 
@@ -216,9 +223,10 @@ void MotionPanel::buildPositionBox()
     m_setPositionButton = new QPushButton(m_positionBox);
     m_setPositionButton->setObjectName(QStringLiteral("setPositionButton"));
     insertRow(m_positionBox, {m_setPositionLabel, m_setPositionValue, m_setPositionButton});
+    m_positionResult = makeResultLabel(m_positionBox, QStringLiteral("positionResult"));
     connect(m_setPositionButton, &QPushButton::clicked, this, [this] {
         const qint64 p = m_setPositionValue->value();
-        runCommand(tr("Set position"), [p](Drive &d) { return d.setPosition(p); });
+        runCommand([] { return tr("Set position"); }, [p](Drive &d) { return d.setPosition(p); }, m_positionResult);
     });
 }
 
@@ -231,6 +239,9 @@ void MotionPanel::buildStopButton()
     connect(m_stop, &QPushButton::clicked, this, &MotionPanel::stopDrive);
     m_stopHint = new QLabel(this);
     m_stopHint->setWordWrap(true);
+    m_stopResult = new QLabel(this);
+    m_stopResult->setObjectName(QStringLiteral("stopResult"));
+    m_stopResult->setWordWrap(true);
 }
 
 void MotionPanel::layOut()
@@ -240,6 +251,7 @@ void MotionPanel::layOut()
     statusRow->addRow(m_position);
     auto *stopRow = new QHBoxLayout;
     stopRow->addWidget(m_stop);
+    stopRow->addWidget(m_stopResult, 1);
     stopRow->addWidget(m_stopHint, 1);
 
     auto *left = new QVBoxLayout;
@@ -291,23 +303,112 @@ void MotionPanel::stopDrive()
 {
     m_jogMinus->stopHold();
     m_jogPlus->stopHold();
-    runCommand(tr("Stop"), [](Drive &d) { return d.stop(false); });
+    ++m_motionGeneration; // whatever was moving: its watch ends here
+    runCommand([] { return tr("Stop"); }, [](Drive &d) { return d.stop(false); }, m_stopResult, true);
 }
 
-void MotionPanel::runCommand(const QString &what, DriveHub::Operation op)
+QLabel *MotionPanel::makeResultLabel(QGroupBox *box, const QString &objectName)
+{
+    auto *label = createMessageLabel(box, objectName);
+    qobject_cast<QVBoxLayout *>(box->layout())->addWidget(label);
+    return label;
+}
+
+void MotionPanel::runCommand(const Text &what, DriveHub::Operation op, QLabel *result, bool motion)
 {
     if (!context().isValid())
         return;
+    const int generation = motion ? ++m_motionGeneration : m_motionGeneration;
+    showMessage(
+        result, [what] { return tr("%1: sending…").arg(what()); }, MessageKind::Info);
     QPointer<MotionPanel> self(this);
-    context().hub->run(context().connectionId, context().address, std::move(op), [self, what](const DriveResult &r) {
-        if (!self)
+    QPointer<QLabel> label(result);
+    context().hub->run(
+        context().connectionId, context().address, std::move(op),
+        [self, what, label, motion, generation](const DriveResult &r) {
+            if (!self || !label)
+                return;
+            if (!r.ok()) {
+                const QString error = r.error.message;
+                showMessage(
+                    label, [what, error] { return tr("%1 failed: %2").arg(what(), DisplayText::sentence(error)); },
+                    MessageKind::Problem);
+                self->reportError(r.error);
+            } else if (motion) {
+                showMessage(
+                    label, [what] { return tr("%1: started.").arg(what()); }, MessageKind::Info);
+                self->watchMotion(generation, what, label, 0, false);
+            } else {
+                showMessage(
+                    label, [what] { return tr("%1: done.").arg(what()); }, MessageKind::Success);
+            }
+        });
+}
+
+void MotionPanel::watchMotion(int generation, const Text &what, QLabel *result, int polls, bool seenRunning)
+{
+    // Until the drive reports the axis at rest: read its state, show where it is. A drive
+    // may report the start a moment late: "at rest" counts once motion was seen, or after a
+    // few reads without any.
+    constexpr int PollMs = 150;
+    constexpr int ReadsBeforeRestCounts = 4;
+    QPointer<MotionPanel> self(this);
+    QPointer<QLabel> label(result);
+    QTimer::singleShot(polls == 0 ? 0 : PollMs, this, [=] {
+        if (!self || !label || generation != self->m_motionGeneration)
             return;
-        if (r.ok()) {
-            self->m_jogState->setText(tr("%1: done.").arg(what));
-        } else {
-            self->m_jogState->setText(tr("%1 failed: %2").arg(what, r.error.message));
-            self->reportError(r.error);
-        }
+        self->context().hub->run(
+            self->context().connectionId, self->context().address, [](Drive &d) { return d.readStatus(); },
+            [=](const DriveResult &r) {
+                if (!self || !label || generation != self->m_motionGeneration)
+                    return;
+                const Text unit = [self] { return self ? self->distanceUnit() : QString(); };
+                if (!r.ok()) {
+                    const QString error = r.error.message;
+                    showMessage(
+                        label,
+                        [what, error] {
+                            return tr("%1: started; its state cannot be read: %2")
+                                .arg(what(), DisplayText::sentence(error));
+                        },
+                        MessageKind::Problem);
+                    return;
+                }
+                const DriveStatus s = r.status;
+                if (s.alarmCode) {
+                    showMessage(
+                        label,
+                        [what, s, unit] {
+                            return tr("%1: stopped by alarm %2 at %3 %4.")
+                                .arg(what())
+                                .arg(s.alarmCode)
+                                .arg(DisplayText::position(s), unit());
+                        },
+                        MessageKind::Problem);
+                    return;
+                }
+                if (s.running) {
+                    showMessage(
+                        label,
+                        [what, s, unit] {
+                            return tr("%1: moving… position %2 %3").arg(what(), DisplayText::position(s), unit());
+                        },
+                        MessageKind::Info);
+                    self->watchMotion(generation, what, label, polls + 1, true);
+                    return;
+                }
+                if (!seenRunning && polls < ReadsBeforeRestCounts) {
+                    self->watchMotion(generation, what, label, polls + 1, false);
+                    return;
+                }
+                showMessage(
+                    label,
+                    [what, s, unit] {
+                        return tr("%1: done, the axis is at rest at %2 %3.")
+                            .arg(what(), DisplayText::position(s), unit());
+                    },
+                    MessageKind::Success);
+            });
     });
 }
 
@@ -316,9 +417,11 @@ void MotionPanel::move()
     const qint64 value = m_moveValue->value();
     const qint32 speed = m_moveSpeed->value();
     if (m_absolute->isChecked())
-        runCommand(tr("Move to %1").arg(value), [value, speed](Drive &d) { return d.moveAbsolute(value, speed); });
+        runCommand([value] { return tr("Move to %1").arg(value); },
+                   [value, speed](Drive &d) { return d.moveAbsolute(value, speed); }, m_moveResult, true);
     else
-        runCommand(tr("Move by %1").arg(value), [value, speed](Drive &d) { return d.moveRelative(value, speed); });
+        runCommand([value] { return tr("Move by %1").arg(value); },
+                   [value, speed](Drive &d) { return d.moveRelative(value, speed); }, m_moveResult, true);
 }
 
 void MotionPanel::onJogStarted(qint32 speed)

@@ -67,7 +67,13 @@ private:
     void updateCapabilities();
     void updateMoveCapabilities(bool showReasons);
     void showStatus();
-    void runCommand(const QString &what, DriveHub::Operation op);
+    // Runs `op`; its outcome goes to `result` (the label of the action's own box). A motion
+    // (`motion`: a move, homing) is "started" when the drive takes it and "done" only when
+    // the drive reports the axis at rest (watchMotion()).
+    using Text = std::function<QString()>; // made again after a language switch
+    void runCommand(const Text &what, DriveHub::Operation op, QLabel *result, bool motion = false);
+    void watchMotion(int generation, const Text &what, QLabel *result, int polls, bool seenRunning);
+    QLabel *makeResultLabel(QGroupBox *box, const QString &objectName);
     void move();
     void onJogStarted(qint32 speed);
     void onJogStopped(JogButton::StopReason reason);
@@ -114,6 +120,14 @@ private:
 
     QPushButton *m_stop = nullptr;
     QLabel *m_stopHint = nullptr;
+    QLabel *m_stopResult = nullptr;
+
+    // The result of the last action in each box.
+    QLabel *m_powerResult = nullptr;
+    QLabel *m_moveResult = nullptr;
+    QLabel *m_homeResult = nullptr;
+    QLabel *m_positionResult = nullptr;
+    int m_motionGeneration = 0; // a new motion command ends the watch of the previous one
 };
 
 } // namespace dd

@@ -4,8 +4,10 @@
 #include "core/drive/drivehub.h"
 #include "core/drive/drivereply.h"
 #include "core/params/parameterdictionary.h"
+#include "ui/common/displaytext.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/panels/parameters/parametervaluedelegate.h"
+#include "ui/workspace/driveparameters.h"
 
 #include <QAction>
 #include <QHBoxLayout>
@@ -57,6 +59,7 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     m_progress = createProgressBar(this);
     m_message = createMessageLabel(this, QStringLiteral("parameterMessage"));
     connectMessages();
+    connectSharedValues();
     layOut();
 
     retranslate();
@@ -138,12 +141,49 @@ void ParametersPanel::connectMessages()
             setMessage(reason, MessageKind::Problem);
     });
     connect(m_delegate, &ParameterValueDelegate::valueRefused, this, [this](const QString &reason) {
-        setMessage(tr("Not accepted: %1 Nothing was sent to the drive.").arg(reason), MessageKind::Problem);
+        setMessage(tr("Not accepted: %1 Nothing was sent to the drive.").arg(DisplayText::sentence(reason)),
+                   MessageKind::Problem);
     });
     connect(m_model, &ParameterTableModel::editRefused, this, [this](int, const Error &reason) {
-        setMessage(tr("Not accepted: %1 Nothing was sent to the drive.").arg(reason.message), MessageKind::Problem);
+        setMessage(tr("Not accepted: %1 Nothing was sent to the drive.").arg(DisplayText::sentence(reason.message)),
+                   MessageKind::Problem);
     });
     connect(m_model, &ParameterTableModel::editsChanged, this, &ParametersPanel::updateActions);
+}
+
+void ParametersPanel::connectSharedValues()
+{
+    // The drive's values are shared with its other panels: whoever reads or writes, every
+    // view follows (a restore, an EE operation, this tab).
+    DriveParameters *shared = parameters();
+    connect(shared, &DriveParameters::valuesRead, this,
+            [this](const QMap<int, qint64> &values, ValueSource source) { m_model->setDriveValues(values, source); });
+    connect(shared, &DriveParameters::writesReported, this,
+            [this](const QList<ParameterWriteResult> &results, QObject *origin) {
+                if (origin == this)
+                    return; // onWritten() has shown them, with their write states
+                QMap<int, qint64> read;
+                QMap<int, qint64> lastWritten;
+                for (const ParameterWriteResult &r : results) {
+                    if (r.outcome == WriteOutcome::Verified || r.outcome == WriteOutcome::Mismatch)
+                        read.insert(r.index, r.readBack);
+                    else if (r.outcome == WriteOutcome::WriteOnly)
+                        lastWritten.insert(r.index, r.requested);
+                }
+                m_model->setDriveValues(read);
+                m_model->setDriveValues(lastWritten, ValueSource::LastWritten);
+                if (!read.isEmpty() || !lastWritten.isEmpty())
+                    setMessage(tr("%n value(s) changed on the drive by another tab; shown here.", nullptr,
+                                  int(read.size() + lastWritten.size())),
+                               MessageKind::Info);
+            });
+    connect(shared, &DriveParameters::valuesReplaced, this, [this] {
+        // Every value may differ now: read them again (at once when shown, else when shown).
+        m_everRead = false;
+        setMessage(tr("The drive's values were replaced (EEPROM operation): reading them again."), MessageKind::Info);
+        maybeReadFirstTime();
+    });
+    connect(shared, &DriveParameters::unsavedChanged, this, [this] { m_model->setUnsaved(parameters()->unsaved()); });
 }
 
 void ParametersPanel::layOut()
@@ -218,13 +258,18 @@ void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const Pa
         m_dictionary = dictionary;
         m_model->setDictionary(m_dictionary, m_modelName);
     }
-    m_model->setDriveValues(result.parameters);
+    // Through the shared values: every view of this drive follows (connectSharedValues()).
+    parameters()->reportRead(result.parameters);
     QMap<int, qint64> lastWritten;
     const QVariantMap reported = result.info.value(QStringLiteral("lastWritten")).toMap();
     for (auto it = reported.begin(); it != reported.end(); ++it)
         lastWritten.insert(it.key().toInt(), it.value().toLongLong());
-    m_model->setDriveValues(lastWritten, ValueSource::LastWritten);
-    m_view->resizeColumnsToContents();
+    parameters()->reportRead(lastWritten, ValueSource::LastWritten);
+    // Sized to the values once; afterwards reads and writes keep the user's column layout.
+    if (!m_columnsSized && !result.parameters.isEmpty()) {
+        m_columnsSized = true;
+        m_view->resizeColumnsToContents();
+    }
     if (!reportResult(result)) {
         setMessage(tr("Reading failed after %n parameter(s): %1", nullptr, int(result.parameters.size()))
                        .arg(result.error.message),
@@ -233,11 +278,17 @@ void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const Pa
         return;
     }
     m_everRead = true;
-    QString text = tr("Read %n parameter(s) from the drive.", nullptr, int(result.parameters.size()));
+    const int count = int(result.parameters.size());
     const int pending = int(m_model->changedIndices().size());
-    if (pending > 0)
-        text += QLatin1Char(' ') + tr("%n edited value(s) not yet written.", nullptr, pending);
-    setMessage(text, MessageKind::Success);
+    showMessage(
+        m_message,
+        [count, pending] {
+            QString text = tr("Read %n parameter(s) from the drive.", nullptr, count);
+            if (pending > 0)
+                text += QLatin1Char(' ') + tr("%n edited value(s) not yet written.", nullptr, pending);
+            return text;
+        },
+        MessageKind::Success);
     emit operationFinished(true);
 }
 
@@ -272,7 +323,8 @@ void ParametersPanel::write(const QList<int> &indices, bool onlySelected)
     // Every value is checked again before anything is sent (the drive checks them too).
     for (const ParameterWrite &w : std::as_const(writes)) {
         if (Error e = m_model->dictionary()->validateWrite(w.index, w.value)) {
-            setMessage(tr("Not written: %1 Nothing was sent to the drive.").arg(e.message), MessageKind::Problem);
+            setMessage(tr("Not written: %1 Nothing was sent to the drive.").arg(DisplayText::sentence(e.message)),
+                       MessageKind::Problem);
             return;
         }
     }
@@ -314,7 +366,7 @@ void ParametersPanel::onWritten(const DriveResult &result, const QList<int> &req
 {
     setBusy(false);
     m_model->applyWriteResults(result.writes, requested);
-    m_view->resizeColumnToContents(ParameterTableModel::State);
+    parameters()->reportWrites(result.writes, this);
     int verified = 0;
     int writtenOnly = 0;
     int failed = 0;
@@ -325,17 +377,23 @@ void ParametersPanel::onWritten(const DriveResult &result, const QList<int> &req
         default: ++failed; break;
         }
     }
-    QStringList parts;
-    parts << tr("%n written and verified", nullptr, verified);
-    if (writtenOnly)
-        parts << tr("%n written (write-only, cannot be read back)", nullptr, writtenOnly);
-    if (failed)
-        parts << tr("%n failed or not written", nullptr, failed);
     const bool ok = result.ok() && failed == 0;
-    QString text = parts.join(QLatin1String(", ")) + QLatin1Char('.');
-    if (!result.ok())
-        text += QLatin1Char(' ') + result.error.message;
-    setMessage(text, ok ? MessageKind::Success : MessageKind::Problem);
+    const QString error = result.ok() ? QString() : result.error.message;
+    showMessage(
+        m_message,
+        [verified, writtenOnly, failed, error] {
+            QStringList parts;
+            parts << tr("%n written and verified", nullptr, verified);
+            if (writtenOnly)
+                parts << tr("%n written (write-only, cannot be read back)", nullptr, writtenOnly);
+            if (failed)
+                parts << tr("%n failed or not written", nullptr, failed);
+            QString text = parts.join(QLatin1String(", ")) + QLatin1Char('.');
+            if (!error.isEmpty())
+                text += QLatin1Char(' ') + error;
+            return text;
+        },
+        ok ? MessageKind::Success : MessageKind::Problem);
     reportResult(result);
     emit operationFinished(ok);
 }

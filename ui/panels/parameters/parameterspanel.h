@@ -62,6 +62,7 @@ private:
     void buildUndoActions();
     void buildTable();
     void connectMessages();
+    void connectSharedValues();
     void layOut();
     void write(const QList<int> &indices, bool onlySelected);
     bool confirmCommunicationWrites(const QList<int> &indices);
@@ -94,6 +95,7 @@ private:
     QString m_modelName;                                     // the drive model the rows are chosen for
     bool m_busy = false;
     bool m_everRead = false;
+    bool m_columnsSized = false;
 };
 
 } // namespace dd

@@ -17,6 +17,8 @@ const QColor VerifiedColor(0x2e, 0x7d, 0x32);
 const QColor FailedColor(0xc6, 0x28, 0x28);
 const QColor ChangedBackground(0xff, 0xf3, 0xcd);
 const QChar ChangedMark(0x25CF); // ●
+const QChar UndoneMark(0x21B6);  // ↶ an undone write, to be written back
+const QChar UnsavedMark(0x25C7); // ◇ written, not saved to EEPROM
 
 bool appliesTo(const ParameterInfo &p, const QString &model)
 {
@@ -202,12 +204,28 @@ void ParameterTableModel::applyWriteResults(const QList<ParameterWriteResult> &r
     emit editsChanged();
 }
 
-void ParameterTableModel::setEditedValue(int parameterIndex, std::optional<qint64> value)
+bool ParameterTableModel::isUndoneWrite(int parameterIndex) const
+{
+    const Row *r = rowFor(parameterIndex);
+    return r && r->undoneWrite && rowChanged(*r);
+}
+
+void ParameterTableModel::setUnsaved(const QSet<int> &indices)
+{
+    if (indices == m_unsaved)
+        return;
+    m_unsaved = indices;
+    if (!m_rows.isEmpty())
+        emit dataChanged(index(0, Mark), index(int(m_rows.size()) - 1, Mark));
+}
+
+void ParameterTableModel::setEditedValue(int parameterIndex, std::optional<qint64> value, bool undoneWrite)
 {
     Row *r = rowFor(parameterIndex);
     if (!r)
         return;
     r->edited = value;
+    r->undoneWrite = undoneWrite && value.has_value();
     r->state = WriteState::None;
     r->message.clear();
     emitRowChanged(rowOf(parameterIndex));
@@ -289,9 +307,17 @@ QVariant ParameterTableModel::toolTip(const Row &r, int column, bool changed) co
     switch (column) {
     case Name: return r.info.description.text(QLocale());
     case Mark:
+        if (!changed && m_unsaved.contains(r.info.index))
+            return tr("Written to the drive's working memory but not saved to its EEPROM (EE-Set): "
+                      "the drive forgets it when switched off.");
+        [[fallthrough]];
     case Value:
         if (!r.info.isWritable())
             return tr("Read-only: the drive does not accept a new value.");
+        if (changed && r.undoneWrite)
+            return tr("Undone: the value the drive had before the last write. Write it to restore it "
+                      "on the drive (the drive has %1 now).")
+                .arg(r.drive.value);
         if (changed)
             return r.drive.source == ValueSource::ReadFromDrive
                 ? tr("Edited: the drive has %1. Write it to send the new value.").arg(r.drive.value)
@@ -310,7 +336,10 @@ QVariant ParameterTableModel::display(const Row &r, int column) const
 {
     const ParameterInfo &p = r.info;
     switch (column) {
-    case Mark: return rowChanged(r) ? QString(ChangedMark) : QString();
+    case Mark:
+        if (rowChanged(r))
+            return QString(r.undoneWrite ? UndoneMark : ChangedMark);
+        return m_unsaved.contains(p.index) ? QString(UnsavedMark) : QString();
     case Index: return p.index;
     case Key: return p.key;
     case Name: return p.displayName(QLocale());
@@ -346,6 +375,8 @@ QString ParameterTableModel::driveText(const Row &r) const
 
 QString ParameterTableModel::stateText(const Row &r) const
 {
+    if (r.undoneWrite && rowChanged(r))
+        return tr("undone: not yet written back");
     switch (r.state) {
     case WriteState::None: return QString();
     case WriteState::Verified: return tr("written, verified");
@@ -368,7 +399,11 @@ QVariant ParameterTableModel::headerData(int section, Qt::Orientation orientatio
     if (orientation != Qt::Horizontal)
         return {};
     if (role == Qt::ToolTipRole && section == Mark)
-        return tr("%1 marks a value edited here that differs from the drive's").arg(ChangedMark);
+        return tr("%1 marks a value edited here that differs from the drive's; %2 an undone write, "
+                  "not yet written back; %3 a value written but not saved to EEPROM")
+            .arg(ChangedMark)
+            .arg(UndoneMark)
+            .arg(UnsavedMark);
     if (role != Qt::DisplayRole)
         return {};
     switch (section) {

@@ -7,6 +7,7 @@
 
 #include <QAbstractTableModel>
 #include <QPointer>
+#include <QSet>
 #include <QVector>
 #include <memory>
 #include <optional>
@@ -69,7 +70,13 @@ public:
     // a result are marked not attempted.
     void applyWriteResults(const QList<ParameterWriteResult> &results, const QList<int> &requested);
     // Sets (nullopt: drops) an edit without validation or undo; for ParameterEditCommand.
-    void setEditedValue(int parameterIndex, std::optional<qint64> value);
+    // `undoneWrite`: the edit brings back the value the drive had before a write (shown
+    // marked as such until written or edited).
+    void setEditedValue(int parameterIndex, std::optional<qint64> value, bool undoneWrite = false);
+    bool isUndoneWrite(int parameterIndex) const;
+    // Parameters written since the last save to EEPROM (servo-modbus): marked in the table.
+    void setUnsaved(const QSet<int> &indices);
+    bool isUnsaved(int parameterIndex) const { return m_unsaved.contains(parameterIndex); }
     // Validates `text` for the parameter; on success *value is set.
     Error checkText(int parameterIndex, const QString &text, qint64 *value) const;
 
@@ -96,6 +103,7 @@ private:
         std::optional<qint64> edited;
         WriteState state = WriteState::None;
         QString message;
+        bool undoneWrite = false; // the edit is an undone write (see setEditedValue)
     };
 
     Row *rowFor(int parameterIndex);
@@ -112,6 +120,7 @@ private:
     QVector<Row> m_rows;
     QHash<int, int> m_rowOf;
     QPointer<QUndoStack> m_undo;
+    QSet<int> m_unsaved;
 };
 
 } // namespace dd

@@ -1,11 +1,13 @@
 #include "cli/clicommands.h"
 
 #include "cli/backupcommands.h"
+#include "cli/capturecommand.h"
 #include "cli/drivecommands.h"
 #include "cli/eecommand.h"
 #include "cli/monitorcommand.h"
 #include "cli/motioncommands.h"
 #include "cli/paramcommands.h"
+#include "cli/runcommands.h"
 #include "cli/scancommand.h"
 
 namespace dd {
@@ -42,6 +44,11 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("clear-alarm"), {}},
         {QStringLiteral("home"), {flag("positive"), flag("no-wait")}},
         {QStringLiteral("channels"), {}},
+        {QStringLiteral("capture"),
+         {valued("trigger"), valued("pre"), valued("duration"), valued("mode"), valued("timeout"), valued("notes"),
+          valued("output", QLatin1Char('o'))}},
+        {QStringLiteral("runs"), {}},
+        {QStringLiteral("spectrum"), {valued("peaks"), valued("from")}},
     };
 }
 
@@ -73,6 +80,12 @@ CliCommand *CliCommands::create(const QString &name, CliContext *context)
         return new InfoCommand(context);
     if (name == QLatin1String("channels"))
         return new ChannelsCommand(context);
+    if (name == QLatin1String("capture"))
+        return new CaptureCommand(context);
+    if (name == QLatin1String("runs"))
+        return new RunsCommand(context);
+    if (name == QLatin1String("spectrum"))
+        return new SpectrumCommand(context);
     if (name == QLatin1String("stop"))
         return new StopCommand(context);
     if (name == QLatin1String("enable"))

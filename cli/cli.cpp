@@ -62,6 +62,15 @@ int Cli::run(const QStringList &arguments)
 
     CliContext context;
     context.out = &out;
+    if (inv.command == QLatin1String("runs") || inv.command == QLatin1String("spectrum")) {
+        // Commands on run files: no link, no drive, no dictionary.
+        std::unique_ptr<CliCommand> command(CliCommands::create(inv.command, &context));
+        if (!command->prepare(inv, &error)) {
+            out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
+            return int(CliExit::Usage);
+        }
+        return runCommand(command.get(), context);
+    }
     context.globals.linkOptional = CliCommands::worksWithoutLink(inv);
     if (!context.globals.load(inv, &error)) {
         out.failure(inv.command, int(CliExit::Usage), {ErrorCode::InvalidArgument, error});
@@ -133,7 +142,11 @@ std::optional<CliExit> Cli::loadDictionary(CliContext &context, const QString &c
     CliOutput &out = *context.out;
     auto dictionary = std::make_shared<ParameterDictionary>();
     const Family family = context.globals.connection.family;
-    if (!context.globals.dictionaryFile.isEmpty()) {
+    const bool simulatorDictionary = context.globals.dictionaryFile == QLatin1String("simulator")
+        || (context.globals.sim && context.globals.dictionaryFile.isEmpty());
+    if (simulatorDictionary) {
+        *dictionary = ParameterDictionary::bundledSimulator(family);
+    } else if (!context.globals.dictionaryFile.isEmpty()) {
         if (Error e = dictionary->loadFromFile(context.globals.dictionaryFile, family)) {
             out.failure(command, int(CliExit::Usage), e);
             return CliExit::Usage;
@@ -159,6 +172,7 @@ Error Cli::startBench(SimBench *bench, CliGlobals *globals)
     o.framing = c.framing;
     o.stateFile = globals->simStateFile;
     o.demoMotion = globals->simMotion;
+    o.resonanceHz = globals->simResonanceHz;
     if (globals->isCanLink())
         o.can = QStringLiteral("virtualcan:auto"); // a private hub: nobody else on this bus
     if (globals->simDrives.isEmpty())

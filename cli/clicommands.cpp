@@ -1,6 +1,7 @@
 #include "cli/clicommands.h"
 
 #include "cli/backupcommands.h"
+#include "cli/capturecommand.h"
 #include "cli/drivecommands.h"
 #include "cli/eecommand.h"
 #include "cli/fleetbackupcommand.h"
@@ -9,6 +10,7 @@
 #include "cli/motioncommands.h"
 #include "cli/paramcommands.h"
 #include "cli/pingcommand.h"
+#include "cli/runcommands.h"
 #include "cli/scancommand.h"
 #include "cli/sourcediffcommand.h"
 
@@ -50,6 +52,11 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("home"), {flag("positive"), flag("no-wait")}},
         {QStringLiteral("channels"), {}},
         {QStringLiteral("ping"), {valued("count")}},
+        {QStringLiteral("capture"),
+         {valued("trigger"), valued("pre"), valued("duration"), valued("mode"), valued("timeout"), valued("notes"),
+          valued("output", QLatin1Char('o'))}},
+        {QStringLiteral("runs"), {}},
+        {QStringLiteral("spectrum"), {valued("peaks"), valued("from")}},
     };
 }
 
@@ -101,6 +108,12 @@ CliCommand *CliCommands::create(const QString &name, CliContext *context)
         return new ChannelsCommand(context);
     if (name == QLatin1String("ping"))
         return new PingCommand(context);
+    if (name == QLatin1String("capture"))
+        return new CaptureCommand(context);
+    if (name == QLatin1String("runs"))
+        return new RunsCommand(context);
+    if (name == QLatin1String("spectrum"))
+        return new SpectrumCommand(context);
     if (name == QLatin1String("stop"))
         return new StopCommand(context);
     if (name == QLatin1String("enable"))

@@ -26,6 +26,7 @@ QList<CliOptionSpec> CliGlobals::optionSpecs()
         {QStringLiteral("sim-drives"), true, {}},
         {QStringLiteral("sim-state"), true, {}},
         {QStringLiteral("sim-motion"), false, {}},
+        {QStringLiteral("sim-resonance-hz"), true, {}},
         {QStringLiteral("lang"), true, {}}, // read by Cli::run before parsing (CliLanguage)
         {QStringLiteral("help"), false, QLatin1Char('h')},
         {QStringLiteral("version"), false, QLatin1Char('V')},
@@ -58,8 +59,18 @@ bool CliGlobals::loadFlags(const CliInvocation &inv, QString *error)
     json = inv.has(QStringLiteral("json"));
     trace = inv.has(QStringLiteral("trace"));
     sim = inv.has(QStringLiteral("sim")) || inv.has(QStringLiteral("sim-drives"))
-        || inv.has(QStringLiteral("sim-state")) || inv.has(QStringLiteral("sim-motion"));
+        || inv.has(QStringLiteral("sim-state")) || inv.has(QStringLiteral("sim-motion"))
+        || inv.has(QStringLiteral("sim-resonance-hz"));
     simMotion = inv.has(QStringLiteral("sim-motion"));
+    if (inv.has(QStringLiteral("sim-resonance-hz"))) {
+        bool ok = false;
+        simResonanceHz = inv.value(QStringLiteral("sim-resonance-hz")).toDouble(&ok);
+        if (!ok || !(simResonanceHz >= 1.0 && simResonanceHz <= 1000.0)) {
+            *error = tr("--sim-resonance-hz must be a frequency from 1 to 1000 Hz, not \"%1\".")
+                         .arg(inv.value(QStringLiteral("sim-resonance-hz")));
+            return false;
+        }
+    }
     simStateFile = inv.value(QStringLiteral("sim-state"));
     if (inv.has(QStringLiteral("sim-state")) && simStateFile.isEmpty()) {
         *error = tr("--sim-state needs a file name.");

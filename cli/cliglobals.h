@@ -32,9 +32,10 @@ public:
         int baud = 0;
     };
     QList<SimDrive> simDrives;
-    bool simMotion = false; // --sim-motion: the simulated drives move on their own
-    QString simStateFile;   // --sim-state FILE: the bench's state, loaded and saved
-    QString simDescription; // set once the bench runs
+    bool simMotion = false;      // --sim-motion: the simulated drives move on their own
+    double simResonanceHz = 0.0; // --sim-resonance-hz F: a compliant load resonating at F
+    QString simStateFile;        // --sim-state FILE: the bench's state, loaded and saved
+    QString simDescription;      // set once the bench runs
 
     // The option table (for the parser and the help).
     static QList<CliOptionSpec> optionSpecs();

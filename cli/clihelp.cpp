@@ -29,7 +29,8 @@ QString CliHelp::linkOptions()
               "  --address N                    the drive to talk to (default 1)\n"
               "  --timeout MS                   reply allowance beyond the wire time\n"
               "  --retries N                    extra attempts after a timeout\n"
-              "  --dictionary FILE              parameter dictionary (names, ranges, units)\n"
+              "  --dictionary FILE              parameter dictionary (names, ranges, units);\n"
+              "                                 \"simulator\": the simulator's, with its loop gains\n"
               "  --option FAMILY.KEY=VALUE      a family setting where the protocol documents are\n"
               "                                 ambiguous, e.g. shuoke.checksum=twos-complement,\n"
               "                                 servo-modbus.positionRule=decimal10000 (repeatable;\n"
@@ -78,7 +79,13 @@ QString CliHelp::commandList()
               "  enable on|off                  servo enable on or off\n"
               "  clear-alarm                    clear the alarm and check that it is gone\n"
               "  home [--positive] [--no-wait]  homing, negative direction first\n"
-              "  channels                       the monitor channels this drive offers\n")
+              "  channels                       the monitor channels this drive offers\n"
+              "  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]\n"
+              "          [--mode single|auto] [--timeout S] -o RUN.ddrun\n"
+              "                                 triggered capture to a run file\n"
+              "  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences\n"
+              "  spectrum RUN.ddrun CHANNEL [--peaks N]\n"
+              "                                 a channel's spectrum and its peaks\n")
         + tr("  ping [--count N]               link health: turnaround, timeouts, errors, and\n"
              "                                 the timeout and gap to use; exit 1 if no answer\n");
 }
@@ -103,7 +110,10 @@ QString CliHelp::simulator()
               "  --sim-state FILE               keep the simulated drives' state (parameters,\n"
               "                                 EEPROM, position, alarm) in FILE between runs\n"
               "  --sim-motion                   the simulated drives move on their own (for\n"
-              "                                 monitor demos; where the family's simulator can)\n");
+              "                                 monitor demos; where the family's simulator can)\n"
+              "  --sim-resonance-hz F           the simulated load resonates at F Hz (1..1000)\n"
+              "  With --sim the simulator's dictionary is used: it names the simulator's own\n"
+              "  loop gains in its \"tuning\" group (docs/tuning.md).\n");
 }
 
 QString CliHelp::examples()
@@ -205,6 +215,23 @@ QString CliHelp::command(const QString &name)
                   "report the link's health: turnaround min / median / max, timeouts, checksum\n"
                   "errors, late or duplicated replies, retries, and the reply allowance (--timeout)\n"
                   "and gap between requests it recommends. Exit code 1 when the drive answered none.\n");
+    if (name == QLatin1String("capture"))
+        return tr("Usage: drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre PERCENT]\n"
+                  "          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun\n"
+                  "EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE\n"
+                  "      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now (default)\n"
+                  "Samples as fast as the link allows; --pre is the share of the record before the\n"
+                  "trigger (default 0), --duration the record (default 1 s); auto captures anyway\n"
+                  "after --timeout seconds (default 1). Saves the samples and the drive's tuning\n"
+                  "parameters (read from it) to RUN.ddrun (docs/tuning.md).\n");
+    if (name == QLatin1String("runs"))
+        return tr("Usage: drivedesk-cli runs RUN.ddrun [RUN2.ddrun ...]\n"
+                  "The runs' metrics side by side, and the tuning parameters that differ between\n"
+                  "consecutive runs with what the metrics did. Reads files only.\n");
+    if (name == QLatin1String("spectrum"))
+        return tr("Usage: drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ]\n"
+                  "The channel's amplitude spectrum (Hann window; resolution stated) and its N\n"
+                  "highest peaks (default 5), at HZ and above with --from. Reads files only.\n");
     return general();
 }
 

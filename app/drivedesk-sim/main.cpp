@@ -142,10 +142,15 @@ struct CommandLine
                              QStringLiteral("FILE")};
     QCommandLineOption demo{QStringLiteral("demo-motion"),
                             tr("Let the drives move on their own (a slow demo profile).")};
+    QCommandLineOption resonance{
+        QStringLiteral("resonance-hz"),
+        tr("Give the closed-loop drives a compliant load resonating at F Hz (1..1000; the simulator's model)."),
+        QStringLiteral("F")};
 
     QList<QCommandLineOption> all() const
     {
-        return {family, address, pty, link, can, baud, bitrate, framing, latency, drop, corrupt, seed, state, demo};
+        return {family,  address, pty,     link, can,   baud, bitrate,  framing,
+                latency, drop,    corrupt, seed, state, demo, resonance};
     }
 
     // Fills *o from the parsed command line; returns what is wrong with it (empty: nothing).
@@ -158,6 +163,13 @@ struct CommandLine
         }
         o->stateFile = p.value(state);
         o->demoMotion = p.isSet(demo);
+        if (p.isSet(resonance)) {
+            bool ok = false;
+            const double hz = p.value(resonance).toDouble(&ok);
+            if (!ok || !(hz >= 1.0 && hz <= 1000.0))
+                return tr("--resonance-hz must be a frequency from 1 to 1000 Hz, not '%1'.").arg(p.value(resonance));
+            o->resonanceHz = hz;
+        }
         return {};
     }
 

@@ -78,6 +78,33 @@ Error ParameterDictionary::loadBundled(Family family)
     return loadFromFile(resourcePath(family), family);
 }
 
+QString ParameterDictionary::simulatorResourcePath(Family family)
+{
+    ensureCoreResources();
+    const QString path = QStringLiteral(":/drivedesk/dictionaries/simulator/%1.json").arg(familyId(family));
+    return QFileInfo::exists(path) ? path : QString();
+}
+
+const ParameterDictionary &ParameterDictionary::bundledSimulator(Family family)
+{
+    static const QHash<Family, ParameterDictionary> all = [] {
+        QHash<Family, ParameterDictionary> dictionaries;
+        for (Family f : allFamilies()) {
+            ParameterDictionary d;
+            const QString path = simulatorResourcePath(f);
+            if (path.isEmpty()) {
+                d = bundled(f);
+            } else if (const Error e = d.loadFromFile(path, f)) {
+                qCCritical(lcParams) << "bundled simulator dictionary of" << familyId(f) << "is broken:" << e.message;
+                d = bundled(f);
+            }
+            dictionaries.insert(f, d);
+        }
+        return dictionaries;
+    }();
+    return *all.constFind(family);
+}
+
 Error ParameterDictionary::loadFromFile(const QString &path, std::optional<Family> expectedFamily)
 {
     QByteArray data;
@@ -241,7 +268,8 @@ Error ParameterDictionary::parse(const QJsonObject &root, const QString &source,
 {
     JsonFieldReader r(root, source);
     r.checkKnownFields({QStringLiteral("format"), QStringLiteral("formatVersion"), QStringLiteral("family"),
-                        QStringLiteral("description"), QStringLiteral("valueType"), QStringLiteral("parameters")});
+                        QStringLiteral("description"), QStringLiteral("valueType"), QStringLiteral("parameters"),
+                        QStringLiteral("tuning")});
     const auto format = r.string(QStringLiteral("format"), 64);
     if (format && *format != formatName()) {
         return Error{ErrorCode::Malformed,
@@ -281,6 +309,7 @@ Error ParameterDictionary::parse(const QJsonObject &root, const QString &source,
                        .arg(source, *typeText));
     }
     const auto entries = r.array(QStringLiteral("parameters"), MaxIndex + 1);
+    const auto tuning = r.array(QStringLiteral("tuning"), 64, JsonFieldReader::Optional);
     if (!r.ok())
         return r.error();
     if (entries->isEmpty())
@@ -322,12 +351,72 @@ Error ParameterDictionary::parse(const QJsonObject &root, const QString &source,
     std::sort(parameters.begin(), parameters.end(),
               [](const ParameterInfo &a, const ParameterInfo &b) { return a.index < b.index; });
 
-    m_family = *family;
-    m_source = source;
-    m_description = description.value_or(LocalizedText());
-    m_parameters = parameters;
-    rebuildIndexes();
+    ParameterDictionary result;
+    result.m_family = *family;
+    result.m_source = source;
+    result.m_description = description.value_or(LocalizedText());
+    result.m_parameters = parameters;
+    result.rebuildIndexes();
+    if (tuning) {
+        if (Error e = result.parseTuning(*tuning, source))
+            return e;
+    }
+    *this = result;
     return Error::none();
+}
+
+Error ParameterDictionary::parseTuning(const QJsonArray &group, const QString &source)
+{
+    QHash<QString, int> roleAt;
+    QHash<int, int> indexAt;
+    for (int i = 0; i < group.size(); ++i) {
+        const QString where = QStringLiteral("%1: tuning[%2]").arg(source, QString::number(i));
+        if (!group.at(i).isObject())
+            return {ErrorCode::Malformed, tr("%1 must be an object with \"key\" and \"role\"").arg(where)};
+        JsonFieldReader r(group.at(i).toObject(), where);
+        r.checkKnownFields({QStringLiteral("key"), QStringLiteral("role")});
+        const auto key = r.string(QStringLiteral("key"), 64);
+        const auto role = r.string(QStringLiteral("role"), 64);
+        if (!r.ok())
+            return r.error();
+        const ParameterInfo *p = byKey(*key);
+        if (!p)
+            return {ErrorCode::Malformed, tr("%1: no parameter has the key \"%2\"").arg(where, *key)};
+        if (!p->isReadable())
+            return {ErrorCode::Malformed,
+                    tr("%1: %2 is write-only; a tuning parameter must be readable").arg(where, p->key)};
+        if (!TuningEntry::knownRoles().contains(*role))
+            return {ErrorCode::Malformed,
+                    tr("%1: unknown role \"%2\" (known: %3)")
+                        .arg(where, *role, TuningEntry::knownRoles().join(QStringLiteral(", ")))};
+        if (roleAt.contains(*role))
+            return {ErrorCode::Malformed,
+                    tr("%1: role \"%2\" is already given to tuning[%3]")
+                        .arg(where, *role, QString::number(roleAt.value(*role)))};
+        if (indexAt.contains(p->index))
+            return {ErrorCode::Malformed,
+                    tr("%1: %2 is already in tuning[%3]").arg(where, p->key, QString::number(indexAt.value(p->index)))};
+        roleAt.insert(*role, i);
+        indexAt.insert(p->index, i);
+        m_tuning.append({p->index, *role});
+    }
+    return Error::none();
+}
+
+QString ParameterDictionary::roleOf(int index) const
+{
+    for (const TuningEntry &e : m_tuning)
+        if (e.index == index)
+            return e.role;
+    return {};
+}
+
+int ParameterDictionary::indexOfRole(const QString &role) const
+{
+    for (const TuningEntry &e : m_tuning)
+        if (e.role == role)
+            return e.index;
+    return -1;
 }
 
 void ParameterDictionary::rebuildIndexes()

@@ -4,6 +4,7 @@
 #include "core/common/family.h"
 #include "core/params/localizedtext.h"
 #include "core/params/parameterinfo.h"
+#include "core/params/tuningentry.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -35,6 +36,12 @@ public:
     static QString userFilePath(Family family);
     // The bundled dictionary of a family, loaded once (thread-safe).
     static const ParameterDictionary &bundled(Family family);
+    // ":/drivedesk/dictionaries/simulator/<family>.json": the family's dictionary as
+    // DriveDesk's simulator answers it, naming the simulator's own loop-gain parameters in
+    // its "tuning" group (docs/tuning.md). Empty path when the family has none.
+    static QString simulatorResourcePath(Family family);
+    // That dictionary, loaded once (thread-safe); the family's bundled one when it has none.
+    static const ParameterDictionary &bundledSimulator(Family family);
 
     Error loadBundled(Family family);
     Error loadFromFile(const QString &path, std::optional<Family> expectedFamily = std::nullopt);
@@ -52,6 +59,11 @@ public:
     LocalizedText description() const { return m_description; }
     const QVector<ParameterInfo> &parameters() const { return m_parameters; } // ascending index
     QList<int> indices() const;
+    // The "tuning" group: the parameters that tune the drive's loops, with their roles, in
+    // the dictionary's order. Empty when the dictionary names none.
+    const QVector<TuningEntry> &tuning() const { return m_tuning; }
+    QString roleOf(int index) const;            // "" when the parameter has no tuning role
+    int indexOfRole(const QString &role) const; // -1 when no parameter plays it
 
     const ParameterInfo *byIndex(int index) const;
     const ParameterInfo *byKey(const QString &key) const; // case-insensitive
@@ -80,12 +92,14 @@ public:
 
 private:
     Error parse(const QJsonObject &root, const QString &source, std::optional<Family> expected);
+    Error parseTuning(const QJsonArray &group, const QString &source);
     void rebuildIndexes();
 
     Family m_family = Family::ServoCan;
     QString m_source;
     LocalizedText m_description;
     QVector<ParameterInfo> m_parameters;
+    QVector<TuningEntry> m_tuning;
     QHash<int, int> m_byIndex;    // index -> position
     QHash<QString, int> m_byKey;  // lower-case key -> position
     QHash<QString, int> m_byName; // case-folded name -> position, -1 when ambiguous

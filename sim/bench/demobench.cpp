@@ -10,6 +10,10 @@ DemoBench::DemoBench(QObject *parent)
     : QObject(parent)
 {
     qRegisterMetaType<dd::Error>();
+    bool ok = false;
+    const double hz = qEnvironmentVariable("DRIVEDESK_DEMO_RESONANCE_HZ").toDouble(&ok);
+    if (ok && hz >= 1.0 && hz <= 1000.0)
+        m_resonanceHz = hz;
 }
 
 DemoBench::~DemoBench()
@@ -36,7 +40,7 @@ Error DemoBench::start()
     m_thread->start();
     Error error;
     QMetaObject::invokeMethod(
-        m_worker, [this, &error] { error = m_worker->build(Address); }, Qt::BlockingQueuedConnection);
+        m_worker, [this, &error] { error = m_worker->build(Address, m_resonanceHz); }, Qt::BlockingQueuedConnection);
     if (error.isError()) {
         stop();
         return error;

@@ -35,6 +35,11 @@ public:
     explicit DemoBench(QObject *parent = nullptr);
     ~DemoBench() override; // stops the bench (the links' clients see the adapters vanish)
 
+    // The closed-loop drives carry a compliant load resonating at this frequency (0: rigid).
+    // Default: the environment variable DRIVEDESK_DEMO_RESONANCE_HZ (docs/tuning.md).
+    void setResonanceHz(double hz) { m_resonanceHz = hz; }
+    double resonanceHz() const { return m_resonanceHz; }
+
     // Creates the simulators on the bench thread; fails at once if one cannot be created.
     Error start();
     void stop();
@@ -58,6 +63,7 @@ private:
     QStringList m_descriptions;
     bool m_running = false;
     bool m_ready = false;
+    double m_resonanceHz = 0.0;
 };
 
 } // namespace dd

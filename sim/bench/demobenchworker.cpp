@@ -18,7 +18,7 @@ DemoBenchWorker::~DemoBenchWorker()
     qDeleteAll(m_benches);
 }
 
-Error DemoBenchWorker::build(int address)
+Error DemoBenchWorker::build(int address, double resonanceHz)
 {
     if (!PtyEndpoint::isSupported())
         return {ErrorCode::NotSupported,
@@ -34,6 +34,7 @@ Error DemoBenchWorker::build(int address)
             o.family = t->family;
             o.addresses = {address};
             o.demoMotion = simFamily(t->family).demoMotion;
+            o.resonanceHz = resonanceHz;
             if (t->framings.size() > 1)
                 o.framing = t->framings.first().id;
             if (link == LinkKind::Can)

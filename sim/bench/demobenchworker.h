@@ -22,7 +22,7 @@ public:
 
     // Starts the buses; ready() follows once every CAN bus has connected (failed() if one
     // does not within SimCanBus::ConnectTimeoutMs).
-    Error build(int address);
+    Error build(int address, double resonanceHz = 0.0);
     QList<ConnectionSettings> connections() const { return m_connections; }
     QStringList describe() const { return m_descriptions; }
 

@@ -30,8 +30,8 @@ Error addDevices(Bus *bus, const SimBenchOptions &o, std::unique_ptr<Device> (*m
 {
     for (int address : std::as_const(o.addresses)) {
         Error e;
-        const SimDeviceSpec spec{address,      o.bauds.value(address, o.baud), o.bitrate, o.framing,
-                                 o.demoMotion, [bus] { return bus->nowUs(); }};
+        const SimDeviceSpec spec{address,      o.bauds.value(address, o.baud), o.bitrate,    o.framing,
+                                 o.demoMotion, [bus] { return bus->nowUs(); }, o.resonanceHz};
         std::unique_ptr<Device> device = make(spec, &e);
         if (!device)
             return e;

@@ -23,8 +23,9 @@ struct SimBenchOptions
     QString framing;      // shuoke: rtu | ascii | can | plc
     int latencyUs = -1;   // drive reply latency; -1: device default
     FaultSettings faults;
-    QString stateFile;       // load at start (if it exists), save at stop
-    bool demoMotion = false; // drives move on their own (demo bench)
+    QString stateFile;        // load at start (if it exists), save at stop
+    bool demoMotion = false;  // drives move on their own (demo bench)
+    double resonanceHz = 0.0; // > 0: the closed-loop drives carry a compliant load resonating here
 
     static int defaultAddress(Family family); // servo-can 1, servo-modbus 1, shuoke 1
     static int defaultBaud(Family family);    // servo-modbus 19200, shuoke 9600

@@ -22,6 +22,7 @@ struct SimDeviceSpec
     QString framing;               // the family's framing id; empty: the link's default
     bool demoMotion = false;       // move on its own (a slow demo profile)
     std::function<qint64()> clock; // the bus's clock (µs)
+    double resonanceHz = 0.0;      // > 0: a compliant load resonating here (closed-loop drives)
 };
 
 // The simulator of one family: the drives it makes on a serial bus and on a CAN bus (null

@@ -10,7 +10,8 @@ constexpr double Pi = 3.14159265358979323846;
 constexpr double Dt = MotorModel::StepSeconds;
 
 // Noise channels used by the model itself.
-enum NoiseChannel { CurrentNoise = 0, VoltageNoise = 1, ErrorNoise = 2 };
+enum NoiseChannel { CurrentNoise = 0, VoltageNoise = 1, ErrorNoise = 2, DisturbanceNoise = 3 };
+constexpr int LoopSubsteps = 10; // ServoLoop substeps per model step (0.1 ms)
 
 // Keeps the integration well defined whatever a drive configures.
 MotorModel::Config sanitized(MotorModel::Config c)
@@ -47,7 +48,31 @@ MotorModel::MotorModel(const Config &config)
     : m_config(sanitized(config))
 {
     m_temperature = m_config.ambientTemperature;
+    configureLoop();
     updateOutputs();
+}
+
+void MotorModel::configureLoop()
+{
+    ServoLoop::Plant p;
+    p.countsPerRev = m_config.countsPerRev;
+    p.inertia = m_config.inertia;
+    p.viscousFriction = m_config.viscousFriction;
+    p.coulombFriction = m_config.coulombFriction;
+    p.loadTorque = m_config.loadTorque;
+    p.peakTorque = m_config.peakTorque;
+    p.torqueLagSeconds = m_config.torqueLagSeconds;
+    p.loadInertia = m_config.loadInertia;
+    p.resonanceHz = m_config.resonanceHz;
+    p.disturbance = m_config.disturbanceTorque;
+    m_loop.configure(p, m_config.gains);
+}
+
+bool MotorModel::atRest() const
+{
+    if (m_speed != 0.0 || m_mode != Mode::Idle)
+        return false;
+    return !loopActive() || (!m_quickStop && m_loop.isSettled(m_pos));
 }
 
 // --- time ---------------------------------------------------------------------------------
@@ -60,8 +85,7 @@ void MotorModel::advanceTo(double seconds)
     if (target <= m_step)
         return;
     qint64 remaining = target - m_step;
-    const bool atRest = m_speed == 0.0 && m_mode == Mode::Idle;
-    if (atRest && remaining > 1) {
+    if (atRest() && remaining > 1) {
         fastForwardIdle(remaining - 1);
         remaining = 1;
     }
@@ -81,6 +105,7 @@ void MotorModel::fastForwardIdle(qint64 steps)
 
 void MotorModel::step()
 {
+    const double p0 = m_pos;
     const double v0 = m_speed;
     double v1 = v0;
     bool finished = false;
@@ -117,8 +142,50 @@ void MotorModel::step()
         m_speed = v1;
         m_accel = (v1 - v0) / Dt;
     }
+    if (loopActive())
+        stepLoop(p0, v0);
     updateOutputs();
     heat(Dt);
+}
+
+// The shaft follows the reference the profile just moved through (linear in between).
+void MotorModel::stepLoop(double pos0, double v0)
+{
+    // Speed mode and the stop after it run the speed loop alone (as a drive in speed
+    // control does); moves and holding run the position loop around it.
+    const bool speedControl = m_quickStop || m_mode == Mode::Speed || m_mode == Mode::Stopping;
+    if (!speedControl && m_speedControlled) {
+        // Speed control just ended: hold the whole count the shaft is at, as a drive does.
+        m_pos = std::round(m_loop.position());
+        m_targetPos = m_pos;
+        pos0 = m_pos;
+    }
+    m_speedControlled = speedControl;
+    const double accel = (m_speed - v0) / Dt;
+    for (int i = 1; i <= LoopSubsteps; ++i) {
+        const double f = double(i) / LoopSubsteps;
+        const double noise = noiseAt((m_step - 1) * LoopSubsteps + i, DisturbanceNoise);
+        if (speedControl)
+            m_loop.step(m_loop.position(), m_quickStop ? 0.0 : v0 + (m_speed - v0) * f, noise, false,
+                        m_quickStop ? 0.0 : accel);
+        else
+            m_loop.step(pos0 + (m_pos - pos0) * f, v0 + (m_speed - v0) * f, noise, true, accel);
+    }
+    if (speedControl && !m_quickStop) {
+        // Speed control: the position reference is wherever the shaft is.
+        m_pos = m_loop.position();
+    } else if (m_quickStop) {
+        // Braked without the position loop; where the shaft comes to rest it stays.
+        m_pos = m_loop.position();
+        m_targetPos = m_pos;
+        if (std::abs(m_loop.speed()) * 60.0 < m_config.countsPerRev) { // below 1 r/min: hold here
+            m_quickStop = false;
+            m_speedControlled = false;
+            m_pos = m_targetPos = std::round(m_loop.position());
+        }
+    } else if (m_speed == 0.0 && m_mode == Mode::Idle && m_loop.isSettled(m_pos)) {
+        m_loop.settleAt(m_pos);
+    }
 }
 
 double MotorModel::rampToward(double v, double target) const
@@ -184,6 +251,8 @@ void MotorModel::finishMove()
         const double shift = static_cast<double>(m_homePosition) - m_pos;
         m_pos += shift;
         m_targetPos += shift;
+        if (loopActive())
+            m_loop.shift(shift);
     }
 }
 
@@ -193,7 +262,11 @@ void MotorModel::updateOutputs()
     const double toRad = 2.0 * Pi / m_config.countsPerRev;
     const double t = time();
 
-    if (m_enabled) {
+    if (loopActive()) {
+        m_cleanCurrent = m_config.torqueConstant > 0.0 ? m_loop.torque() / m_config.torqueConstant : 0.0;
+        m_current = m_cleanCurrent + m_config.currentNoise * noiseAt(m_step, CurrentNoise);
+        m_posError = m_pos - m_loop.position();
+    } else if (m_enabled) {
         const double omega = v1 * toRad;
         const double alpha = m_accel * toRad;
         const double torque = m_config.inertia * alpha + m_config.loadTorque + m_config.viscousFriction * omega
@@ -239,8 +312,29 @@ double MotorModel::noiseSample(int channel) const
 
 void MotorModel::setConfig(const Config &config)
 {
+    const bool wasActive = loopActive();
     m_config = sanitized(config);
+    configureLoop();
+    if (loopActive() && !wasActive)
+        m_loop.engage(m_pos, m_speed);
     updateOutputs();
+}
+
+MotorModel::Config MotorModel::closedLoopConfig(Config config, double resonanceHz)
+{
+    config.closedLoop = true;
+    if (resonanceHz > 0.0) {
+        config.loadInertia = 0.2 * config.inertia;
+        config.resonanceHz = resonanceHz;
+        config.disturbanceTorque = 0.05;
+    }
+    return config;
+}
+
+void MotorModel::setGains(const ServoLoop::Gains &gains)
+{
+    m_loop.setGains(gains);
+    m_config.gains = m_loop.gains();
 }
 
 void MotorModel::setMaxSpeed(double countsPerSecond)
@@ -261,6 +355,7 @@ void MotorModel::setDeceleration(double v)
 void MotorModel::setLoadTorque(double newtonMetres)
 {
     m_config.loadTorque = newtonMetres;
+    configureLoop();
 }
 
 // --- commands -----------------------------------------------------------------------------
@@ -272,12 +367,26 @@ bool MotorModel::enable()
     if (!m_enabled) {
         m_enabled = true;
         m_mode = m_speed != 0.0 ? Mode::Stopping : Mode::Idle;
+        m_quickStop = false;
+        m_speedControlled = false;
+        if (loopActive()) {
+            m_loop.engage(m_pos, m_speed);
+            if (m_speed == 0.0) // hold the nearest whole count (position commands are counts)
+                m_pos = m_targetPos = std::round(m_pos);
+        }
     }
     return true;
 }
 
 void MotorModel::disable()
 {
+    if (loopActive()) {
+        // The shaft coasts on from where the loop left it.
+        m_pos = m_loop.position();
+        m_speed = m_loop.speed();
+        m_quickStop = false;
+        m_speedControlled = false;
+    }
     m_enabled = false;
     m_mode = Mode::Idle;
     m_homing = false;
@@ -330,6 +439,11 @@ void MotorModel::emergencyStop()
     m_speed = 0.0;
     m_accel = 0.0;
     m_mode = Mode::Idle;
+    if (loopActive()) {
+        // The reference stops at once; the loop brakes the shaft at its torque limit.
+        m_pos = m_loop.position();
+        m_quickStop = true;
+    }
     updateOutputs();
 }
 
@@ -345,9 +459,11 @@ bool MotorModel::startHoming(qint64 switchPosition, double speed, qint64 homePos
 
 void MotorModel::setPosition(qint64 counts)
 {
-    const double shift = static_cast<double>(counts) - m_pos;
+    const double shift = static_cast<double>(counts) - positionExact();
     m_pos += shift;
     m_targetPos += shift;
+    if (loopActive())
+        m_loop.shift(shift);
 }
 
 void MotorModel::injectAlarm(int code)
@@ -367,12 +483,21 @@ void MotorModel::clearAlarm()
 
 bool MotorModel::isMoving() const
 {
-    return m_speed != 0.0 || m_mode != Mode::Idle;
+    if (m_speed != 0.0 || m_mode != Mode::Idle)
+        return true;
+    // Closed loop: still braking, or turning faster than 1 r/min (a disturbance at rest
+    // keeps the shaft trembling without moving it).
+    // Closed loop: still braking, turning faster than 1 r/min, or not yet within half a count of
+    // the reference: in position, the position reads the target
+    // (a disturbance at rest trembles the shaft without moving it).
+    return loopActive()
+        && (m_quickStop || std::abs(m_loop.speed()) * 60.0 > m_config.countsPerRev
+            || std::abs(m_loop.position() - m_pos) >= 0.5);
 }
 
 qint64 MotorModel::position() const
 {
-    return std::llround(m_pos);
+    return std::llround(positionExact());
 }
 qint64 MotorModel::targetPosition() const
 {
@@ -384,11 +509,11 @@ qint64 MotorModel::positionError() const
 }
 qint64 MotorModel::commandPosition() const
 {
-    return std::llround(m_pos + m_posError);
+    return loopActive() ? std::llround(m_pos) : std::llround(m_pos + m_posError);
 }
 double MotorModel::speedRpm() const
 {
-    return m_speed * 60.0 / m_config.countsPerRev;
+    return speed() * 60.0 / m_config.countsPerRev;
 }
 
 double MotorModel::targetSpeed() const

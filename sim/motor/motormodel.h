@@ -1,5 +1,7 @@
 #pragma once
 
+#include "sim/motor/servoloop.h"
+
 #include <QtGlobal>
 
 namespace dd {
@@ -22,6 +24,15 @@ namespace dd {
 //
 // Commands return false and change nothing while the drive is disabled or alarmed; a drive
 // whose protocol says "this command enables the servo" calls enable() first.
+//
+// Closed loop (Config::closedLoop, what the simulated drives use). The profile above is
+// then the *reference*: a ServoLoop (position P, speed PI, torque lag, optionally a
+// compliant second inertia) makes the shaft follow it in 0.1 ms substeps, and position(),
+// speed(), torque, current and the following error are the shaft's. The gains are the
+// simulator's own model (docs/tuning.md). When the reference rests and the shaft has
+// settled within 0.05 count it is snapped onto it, so that moves still end exactly on their
+// target and rest costs nothing. Without closedLoop the shaft is the profile itself, with
+// a following error proportional to speed and acceleration.
 class MotorModel
 {
 public:
@@ -51,6 +62,14 @@ public:
         double voltageNoise = 0.3;          // V, uniform ± on the bus voltage
         double positionErrorNoise = 0.6;    // counts, uniform ± on the following error when enabled
         quint64 seed = 1;                   // noise seed
+        // --- the closed loop (closedLoop = true) ---
+        bool closedLoop = false;
+        ServoLoop::Gains gains;
+        double peakTorque = 3.8;          // N·m, torque limit of the loop
+        double torqueLagSeconds = 5.0e-4; // current-loop time constant
+        double loadInertia = 0.0;         // kg·m², second inertia on a compliant coupling
+        double resonanceHz = 0.0;         // > 0 with loadInertia > 0: the coupling's resonance
+        double disturbanceTorque = 0.0;   // N·m, uniform ± noise torque (excites a resonance)
     };
 
     enum class Mode {
@@ -79,6 +98,12 @@ public:
     void setAcceleration(double countsPerSecond2);
     void setDeceleration(double countsPerSecond2);
     void setLoadTorque(double newtonMetres);
+    void setGains(const ServoLoop::Gains &gains); // closed loop: takes effect at once
+    const ServoLoop::Gains &gains() const { return m_loop.gains(); }
+    // The simulated drives' closed loop, with a compliant load resonating at `resonanceHz`
+    // (0: rigid) and a disturbance torque on it that keeps exciting the resonance.
+    static Config closedLoopConfig(Config config, double resonanceHz = 0.0);
+    bool isClosedLoop() const { return m_config.closedLoop; }
 
     // --- commands -----------------------------------------------------------------------
     bool enable();  // false while alarmed; a coasting shaft is braked to rest
@@ -113,14 +138,15 @@ public:
     bool isHomed() const { return m_homed; }
 
     qint64 position() const; // counts (rounded)
-    double positionExact() const { return m_pos; }
-    qint64 targetPosition() const;                  // target of the last move (counts)
-    qint64 positionError() const;                   // following error, counts (grows with speed and acceleration)
-    qint64 commandPosition() const;                 // position + following error
-    double speed() const { return m_speed; }        // counts/s, signed
-    double speedRpm() const;                        // r/min, signed
-    double targetSpeed() const;                     // where the speed loop is heading now (counts/s)
-    double acceleration() const { return m_accel; } // counts/s² over the last substep
+    double positionExact() const { return loopActive() ? m_loop.position() : m_pos; }
+    qint64 targetPosition() const;  // target of the last move (counts)
+    qint64 positionError() const;   // following error, counts (grows with speed and acceleration)
+    qint64 commandPosition() const; // position + following error
+    double speed() const { return loopActive() ? m_loop.speed() : m_speed; } // counts/s, signed
+    double speedRpm() const;                                                 // r/min, signed
+    double targetSpeed() const; // where the speed loop is heading now (counts/s)
+    double acceleration() const { return loopActive() ? m_loop.acceleration() : m_accel; } // counts/s²
+    double referencePosition() const { return m_pos; } // closed loop: where the profile is
     double moveSpeed() const { return m_moveSpeed; }
 
     double torque() const;                               // N·m, signed (torqueConstant × current)
@@ -134,6 +160,10 @@ public:
     double noiseSample(int channel) const;
 
 private:
+    bool loopActive() const { return m_config.closedLoop && m_enabled; }
+    void configureLoop();
+    void stepLoop(double pos0, double v0);
+    bool atRest() const;
     void step();
     void fastForwardIdle(qint64 steps);
     double rampToward(double v, double target) const;
@@ -164,6 +194,10 @@ private:
     double m_busVoltage = 0.0;
     double m_temperature = 0.0;
     double m_posError = 0.0;
+
+    ServoLoop m_loop;
+    bool m_quickStop = false;       // closed loop: braking the speed, the position loop off
+    bool m_speedControlled = false; // closed loop: the last substeps ran the speed loop alone
 };
 
 } // namespace dd

@@ -34,8 +34,21 @@ qint32 clampToInt32(double v)
 SimServoCanDrive::SimServoCanDrive(int station, const MotorModel::Config &motor)
     : m_station(sc::isValidStation(station) ? station : 1)
     , m_params(defaultParameters(m_station))
-    , m_motor(motor)
+    , m_motor(MotorModel::closedLoopConfig(motor))
 {
+    applyLoopGainParameters(
+        loopGainParameters(), [this](int i) { return qint64(parameter(i)); }, &m_motor);
+}
+
+const QList<LoopGainParameter> &SimServoCanDrive::loopGainParameters()
+{
+    using R = LoopGainParameter::Role;
+    static const QList<LoopGainParameter> table = {
+        {60, R::SpeedKp, 30, 1, 1000},      {61, R::SpeedKi, 30, 0, 5000},
+        {62, R::PositionKp, 60, 0, 1000},   {63, R::SpeedFeedforward, 100, 0, 100},
+        {64, R::Acceleration, 6, 1, 32767}, {65, R::TorqueFeedforward, 100, 0, 100},
+    };
+    return table;
 }
 
 SimServoCanDrive::Parameters SimServoCanDrive::defaultParameters(int station)
@@ -43,6 +56,8 @@ SimServoCanDrive::Parameters SimServoCanDrive::defaultParameters(int station)
     Parameters p{};
     for (int i = 0; i < sc::kParameterCount; ++i)
         p[static_cast<size_t>(i)] = static_cast<qint16>((i * 37 + 11) % 4000 - 1000);
+    for (const LoopGainParameter &g : loopGainParameters())
+        p[static_cast<size_t>(g.index)] = static_cast<qint16>(g.defaultValue);
     p[sc::kParamControlMode] = 8;
     p[sc::kParamCommMode] = 1;
     p[sc::kParamStation] = static_cast<qint16>(station);
@@ -117,6 +132,8 @@ void SimServoCanDrive::advanceTo(qint64 nowUs)
     if (nowUs < m_nowUs)
         return;
     m_nowUs = nowUs;
+    applyLoopGainParameters(
+        loopGainParameters(), [this](int i) { return qint64(parameter(i)); }, &m_motor);
     m_motor.advanceTo(double(nowUs) / 1e6);
     if (m_disableAtRest && !m_motor.isMoving()) {
         m_motor.disable();
@@ -376,7 +393,8 @@ bool SimServoCanDrive::loadState(const QJsonObject &state, QString *error)
 
 std::unique_ptr<SimCanDevice> SimServoCanDrive::create(const SimDeviceSpec &spec, Error *)
 {
-    return std::make_unique<SimServoCanDrive>(spec.address);
+    return std::make_unique<SimServoCanDrive>(spec.address,
+                                              MotorModel::closedLoopConfig(MotorModel::Config(), spec.resonanceHz));
 }
 
 } // namespace dd

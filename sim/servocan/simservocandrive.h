@@ -5,6 +5,7 @@
 
 #include "core/protocol/servocan/servocan.h"
 #include "sim/bus/simcandevice.h"
+#include "sim/motor/loopgainparameter.h"
 #include "sim/motor/motormodel.h"
 
 #include <QJsonObject>
@@ -41,6 +42,12 @@ namespace dd {
 // 0x50 redefines the position; 0x81 clears the alarm (the servo stays disabled).
 // Nothing is echoed: only 0x12 is answered.
 //
+// Closed loop (the simulator's own model, docs/tuning.md; the seed names no gain
+// parameter): P60 speed-loop gain (Hz, default 30), P61 speed-loop integral gain (1/s, 30),
+// P62 position-loop gain (1/s, 60), P63 speed feed-forward (%, 100), P64 acceleration of the
+// speed and move profiles (r/min per ms, 6), P65 torque (acceleration) feed-forward (%, 100).
+// loopGainParameters() lists them.
+//
 // Read values (0x12): speed r/min; position, position command, position error in counts;
 // temperature °C; torque and torque command in % of rated; current in 0.01 A; speed command
 // r/min; rotor position 0..countsPerRev-1; inputs as set by setInputs(); outputs bit 0 ready
@@ -66,11 +73,14 @@ public:
         quint64 watchdogTrips = 0;
     };
 
+    // The motor runs the closed loop (MotorModel::closedLoopConfig()) whatever `motor` says.
     explicit SimServoCanDrive(int station, const MotorModel::Config &motor = MotorModel::Config());
     // The family's entry in the simulator table (sim/bench/simfamilies.h).
     static std::unique_ptr<SimCanDevice> create(const SimDeviceSpec &spec, Error *error);
 
     static Parameters defaultParameters(int station);
+    // Which parameters the simulated closed loop reads (the simulator's model, not a drive's).
+    static const QList<LoopGainParameter> &loopGainParameters();
 
     // SimCanDevice
     QList<CanFrameData> onCanFrame(const CanFrameData &frame, qint64 nowUs) override;

@@ -60,7 +60,7 @@ SimServoModbusDrive::SimServoModbusDrive(const Config &config)
     : m_config(config)
     , m_baud(config.baud)
     , m_address(config.address)
-    , m_motor(config.motor)
+    , m_motor(MotorModel::closedLoopConfig(config.motor, config.resonanceHz))
 {
     m_params = factoryDefaults(config);
     m_params[servomodbus::AddressParameter] = static_cast<quint16>(config.address);
@@ -79,7 +79,19 @@ SimServoModbusDrive::ParameterArray SimServoModbusDrive::factoryDefaults(const C
     a[servomodbus::FirmwareParameter] = config.firmware;
     a[4] = 0; // PA4: control mode
     a[servomodbus::AddressParameter] = 1;
+    for (const LoopGainParameter &g : loopGainParameters())
+        a[size_t(g.index)] = static_cast<quint16>(g.defaultValue);
     return a;
+}
+
+const QList<LoopGainParameter> &SimServoModbusDrive::loopGainParameters()
+{
+    using R = LoopGainParameter::Role;
+    static const QList<LoopGainParameter> table = {
+        {5, R::SpeedKp, 40, 1, 1000},          {6, R::SpeedKi, 30, 0, 5000},           {7, R::PositionKp, 60, 0, 1000},
+        {8, R::SpeedFeedforward, 100, 0, 100}, {9, R::TorqueFeedforward, 100, 0, 100},
+    };
+    return table;
 }
 
 QString SimServoModbusDrive::describe() const
@@ -102,6 +114,8 @@ void SimServoModbusDrive::advanceTo(qint64 nowUs)
         return;
     m_nowUs = nowUs;
     updateDemo(nowUs);
+    applyLoopGainParameters(
+        loopGainParameters(), [this](int n) { return qint64(qint16(parameter(n))); }, &m_motor);
     m_motor.advanceTo(double(nowUs) / 1e6);
     if (m_ee && !m_eeFinished && nowUs >= m_eeDoneAtUs) {
         applyEe(*m_ee);
@@ -417,6 +431,7 @@ std::unique_ptr<SimSerialDevice> SimServoModbusDrive::create(const SimDeviceSpec
     c.address = spec.address;
     c.baud = spec.baud;
     c.demoMotion = spec.demoMotion;
+    c.resonanceHz = spec.resonanceHz;
     return std::make_unique<SimServoModbusDrive>(c);
 }
 

@@ -5,6 +5,7 @@
 #include "core/protocol/servomodbus/servomodbus.h"
 #include "sim/bench/simfamilies.h"
 #include "sim/bus/simserialdevice.h"
+#include "sim/motor/loopgainparameter.h"
 #include "sim/motor/motormodel.h"
 
 #include <QJsonObject>
@@ -49,7 +50,8 @@ public:
         qint64 eeBusyUs = 300000;          // how long a legacy EE operation runs
         bool exceptionAddressFixed = true; // seed: exception replies carry address 0x01
         servomodbus::PositionPairRule positionRule = servomodbus::PositionPairRule::BinaryWords;
-        bool demoMotion = false; // run a slow back-and-forth speed profile
+        bool demoMotion = false;  // run a slow back-and-forth speed profile
+        double resonanceHz = 0.0; // > 0: a compliant load resonating here
         MotorModel::Config motor;
     };
 
@@ -81,6 +83,11 @@ public:
     quint16 backupParameter(int n) const;
     const ParameterArray &parameters() const { return m_params; }
     static ParameterArray factoryDefaults(const Config &config);
+    // Which parameters the simulated closed loop reads (the simulator's model, docs/tuning.md;
+    // the seed names no gain parameter): PA5 speed-loop gain (Hz, 40), PA6 speed-loop integral
+    // gain (1/s, 30), PA7 position-loop gain (1/s, 60), PA8 speed feed-forward (%, 100), PA9
+    // torque (acceleration) feed-forward (%, 100).
+    static const QList<LoopGainParameter> &loopGainParameters();
     quint16 monitorRegister(int reg) const;
 
     // The drive's side of the world.

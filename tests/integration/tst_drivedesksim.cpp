@@ -69,7 +69,7 @@ private slots:
         QCOMPARE(p.exitCode(), 0);
         const QString help = QString::fromUtf8(p.readAllStandardOutput());
         for (const char *opt : {"--family", "--address", "--pty", "--link", "--can", "--baud", "--bitrate", "--framing",
-                                "--latency-ms", "--drop", "--corrupt", "--seed", "--state"})
+                                "--latency-ms", "--drop", "--corrupt", "--seed", "--state", "--resonance-hz"})
             QVERIFY2(help.contains(QLatin1String(opt)), opt);
     }
 
@@ -88,6 +88,12 @@ private slots:
         QTest::newRow("bad drop") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"),
                                                  QStringLiteral("--pty"), QStringLiteral("--drop"),
                                                  QStringLiteral("1.5")};
+        QTest::newRow("resonance 0 Hz") << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"),
+                                                       QStringLiteral("--pty"), QStringLiteral("--resonance-hz"),
+                                                       QStringLiteral("0")};
+        QTest::newRow("resonance not a number")
+            << QStringList{QStringLiteral("--family"), QStringLiteral("servo-modbus"), QStringLiteral("--pty"),
+                           QStringLiteral("--resonance-hz"), QStringLiteral("eighty")};
         QTest::newRow("can family on pty")
             << QStringList{QStringLiteral("--family"), QStringLiteral("servo-can"), QStringLiteral("--pty")};
         QTest::newRow("framing on servo")

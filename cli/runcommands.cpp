@@ -1,0 +1,170 @@
+#include "cli/runcommands.h"
+
+#include "core/tuning/spectrum.h"
+
+#include <QJsonArray>
+#include <cmath>
+
+namespace dd {
+
+namespace {
+// "12.3 ms", "9.1 %", "—" for a metric without value.
+QString shown(const Metric &m, const QString &key)
+{
+    if (!m.value)
+        return QStringLiteral("—");
+    const double v = *m.value;
+    if (key == QLatin1String("overshoot"))
+        return QStringLiteral("%1 %").arg(v, 0, 'f', 1);
+    if (key.startsWith(QLatin1String("rise")) || key.startsWith(QLatin1String("settling"))
+        || key == QLatin1String("sampleInterval"))
+        return QStringLiteral("%1 ms").arg(v * 1000.0, 0, 'f', 1);
+    return QString::number(v, 'g', 4);
+}
+
+// The metrics a parameter change is judged by, as the example reads.
+const QStringList &comparedKeys()
+{
+    static const QStringList k = {QStringLiteral("overshoot"), QStringLiteral("settlingTime2"),
+                                  QStringLiteral("riseTime")};
+    return k;
+}
+} // namespace
+
+bool RunsCommand::prepare(const CliInvocation &inv, QString *error)
+{
+    if (!expectArguments(inv, 1, 64, tr("RUN.ddrun [RUN2.ddrun ...]"), error))
+        return false;
+    for (const QString &path : inv.positionals) {
+        TuningRun run;
+        if (Error e = TuningRun::load(path, &run)) {
+            *error = e.message;
+            return false;
+        }
+        m_runs.append(run);
+    }
+    return true;
+}
+
+void RunsCommand::start()
+{
+    QJsonArray runs;
+    QStringList lines;
+    QString header = QStringLiteral("%1").arg(QString(), -20);
+    for (const TuningRun &r : std::as_const(m_runs))
+        header += QStringLiteral("%1").arg(r.label.left(18), -20);
+    lines << header;
+    for (const QString &k : StepMetrics::keys()) {
+        QString row = QStringLiteral("%1").arg(k, -20);
+        for (const TuningRun &r : std::as_const(m_runs))
+            row += QStringLiteral("%1").arg(shown(r.metrics.byKey(k), k), -20);
+        lines << row;
+    }
+    for (const TuningRun &r : std::as_const(m_runs)) {
+        QJsonArray tuning;
+        for (const TuningSnapshotEntry &e : r.tuning)
+            tuning.append(QJsonObject{{QStringLiteral("key"), e.key},
+                                      {QStringLiteral("role"), e.role},
+                                      {QStringLiteral("value"), double(e.value)}});
+        runs.append(QJsonObject{{QStringLiteral("run"), r.label},
+                                {QStringLiteral("test"), r.test},
+                                {QStringLiteral("metrics"), r.metrics.valuesJson()},
+                                {QStringLiteral("notes"), QJsonArray::fromStringList(r.metrics.notes())},
+                                {QStringLiteral("tuning"), tuning}});
+    }
+    // Parameter differences between consecutive runs, with what they did to the metrics.
+    QJsonArray differences;
+    for (int i = 1; i < m_runs.size(); ++i) {
+        const TuningRun &a = m_runs.at(i - 1), &b = m_runs.at(i);
+        QStringList changes;
+        QJsonArray params;
+        for (const TuningSnapshotEntry &eb : b.tuning) {
+            for (const TuningSnapshotEntry &ea : a.tuning) {
+                if (ea.index == eb.index && ea.value != eb.value) {
+                    changes << QStringLiteral("%1 %2 → %3").arg(eb.key).arg(ea.value).arg(eb.value);
+                    params.append(QJsonObject{{QStringLiteral("key"), eb.key},
+                                              {QStringLiteral("role"), eb.role},
+                                              {QStringLiteral("from"), double(ea.value)},
+                                              {QStringLiteral("to"), double(eb.value)}});
+                }
+            }
+        }
+        QStringList effects;
+        for (const QString &k : comparedKeys())
+            effects << QStringLiteral("%1 %2 → %3").arg(k, shown(a.metrics.byKey(k), k), shown(b.metrics.byKey(k), k));
+        const QString what = changes.isEmpty() ? tr("no tuning parameter differs") : changes.join(QStringLiteral(", "));
+        lines << QStringLiteral("%1 → %2: %3: %4").arg(a.label, b.label, what, effects.join(QStringLiteral(", ")));
+        differences.append(QJsonObject{{QStringLiteral("from"), a.label},
+                                       {QStringLiteral("to"), b.label},
+                                       {QStringLiteral("parameters"), params}});
+    }
+    succeed({{QStringLiteral("runs"), runs}, {QStringLiteral("differences"), differences}},
+            lines.join(QLatin1Char('\n')));
+}
+
+bool SpectrumCommand::prepare(const CliInvocation &inv, QString *error)
+{
+    if (!expectArguments(inv, 2, 2, tr("RUN.ddrun CHANNEL"), error))
+        return false;
+    if (inv.has(QStringLiteral("peaks"))) {
+        bool ok = false;
+        m_peaks = inv.value(QStringLiteral("peaks")).toInt(&ok);
+        if (!ok || m_peaks < 1 || m_peaks > 100) {
+            *error = tr("--peaks must be a whole number from 1 to 100, not \"%1\".")
+                         .arg(inv.value(QStringLiteral("peaks")));
+            return false;
+        }
+    }
+    if (inv.has(QStringLiteral("from"))) {
+        bool ok = false;
+        m_fromHz = inv.value(QStringLiteral("from")).toDouble(&ok);
+        if (!ok || !std::isfinite(m_fromHz) || m_fromHz < 0.0) {
+            *error = tr("--from must be a frequency ≥ 0 Hz, not \"%1\".").arg(inv.value(QStringLiteral("from")));
+            return false;
+        }
+    }
+    if (Error e = TuningRun::load(inv.positionals.at(0), &m_run)) {
+        *error = e.message;
+        return false;
+    }
+    m_channel = inv.positionals.at(1);
+    if (!m_run.capture.channels.contains(m_channel)) {
+        *error = tr("%1 has no channel \"%2\" (it has %3).")
+                     .arg(inv.positionals.at(0), m_channel, m_run.capture.channels.join(QStringLiteral(", ")));
+        return false;
+    }
+    return true;
+}
+
+void SpectrumCommand::start()
+{
+    QString why;
+    const Spectrum s = Spectrum::compute(m_run.capture, m_channel, m_peaks, &why, m_fromHz);
+    if (s.isEmpty()) {
+        fail({ErrorCode::InvalidArgument, why}, {}, CliExit::Usage);
+        return;
+    }
+    QJsonArray peaks;
+    QStringList lines;
+    lines << tr("Spectrum of %1: %2 points at %3 Hz, %4 window, resolution %5 Hz")
+                 .arg(m_channel)
+                 .arg(s.points)
+                 .arg(s.sampleRate, 0, 'f', 1)
+                 .arg(s.window)
+                 .arg(s.resolutionHz, 0, 'f', 3);
+    for (const Spectrum::Peak &p : s.peaks) {
+        peaks.append(QJsonObject{{QStringLiteral("hz"), p.hz}, {QStringLiteral("magnitude"), p.magnitude}});
+        lines << QStringLiteral("  %1 Hz  %2").arg(p.hz, 8, 'f', 2).arg(p.magnitude, 0, 'g', 4);
+    }
+    lines << s.notes;
+    succeed({{QStringLiteral("channel"), m_channel},
+             {QStringLiteral("window"), s.window},
+             {QStringLiteral("resolutionHz"), s.resolutionHz},
+             {QStringLiteral("sampleRate"), s.sampleRate},
+             {QStringLiteral("points"), s.points},
+             {QStringLiteral("peaks"), peaks},
+             {QStringLiteral("notes"), QJsonArray::fromStringList(s.notes)}},
+            lines.join(QLatin1Char('\n')));
+}
+
+} // namespace dd

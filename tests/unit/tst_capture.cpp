@@ -1,0 +1,339 @@
+#include "core/tuning/capturerecorder.h"
+#include "core/tuning/spectrum.h"
+#include "core/tuning/stepmetrics.h"
+#include "core/tuning/tuningrun.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <cmath>
+
+using namespace dd;
+
+namespace {
+constexpr double Pi = 3.14159265358979323846;
+
+CaptureSettings settings(const QString &trigger, double pre, double duration,
+                         CaptureSettings::Mode mode = CaptureSettings::Mode::Single)
+{
+    CaptureSettings s;
+    TriggerSpec::parse(trigger, &s.trigger);
+    s.prePercent = pre;
+    s.durationS = duration;
+    s.mode = mode;
+    return s;
+}
+
+// A capture of y(t) (t >= 0 after the step at 0, y = 0 before) sampled every dt.
+CaptureData synthetic(const std::function<double(double)> &y, double dt, double pre, double post)
+{
+    CaptureData c;
+    c.channels = {QStringLiteral("speed")};
+    c.columns.resize(1);
+    for (int i = -int(std::round(pre / dt)); i * dt <= post + 1e-12; ++i) {
+        const double t = i * dt;
+        c.time.append(t);
+        c.columns[0].append(t < 0 ? 0.0 : y(t));
+        if (t < 0)
+            ++c.preTriggerSamples;
+    }
+    c.interval = IntervalStats::of(c.time);
+    return c;
+}
+
+// The exact answer, found on a fine grid.
+double firstTimeAt(const std::function<double(double)> &y, double level)
+{
+    for (double t = 0.0; t < 100.0; t += 1e-6)
+        if (y(t) >= level)
+            return t;
+    return NAN;
+}
+double settleTime(const std::function<double(double)> &y, double band, double until)
+{
+    double last = 0.0;
+    for (double t = 0.0; t < until; t += 1e-6)
+        if (std::abs(y(t) - 1.0) > band)
+            last = t;
+    return last;
+}
+
+TuningRun sampleRun()
+{
+    TuningRun run;
+    run.created = QDateTime::fromString(QStringLiteral("2026-11-25T21:00:00.000Z"), Qt::ISODateWithMs);
+    run.family = QStringLiteral("servo-can");
+    run.address = 1;
+    run.linkKind = QStringLiteral("can");
+    run.linkDescription = QStringLiteral("virtualcan:can0 1000000 bit/s");
+    run.test = QStringLiteral("velocity-step");
+    run.testParameters = {{QStringLiteral("speed"), 300}, {QStringLiteral("duration"), 0.2}};
+    run.settings = settings(QStringLiteral("motion"), 20, 0.25);
+    run.capture = synthetic([](double t) { return 300.0 * (1 - std::exp(-t / 0.01)); }, 0.001, 0.05, 0.2);
+    run.capture.channels << QStringLiteral("current");
+    run.capture.columns.append(QVector<double>(run.capture.time.size(), 1.25));
+    run.capture.columns[1][3] = NAN; // a value not read
+    run.capture.triggerSource = QStringLiteral("motion");
+    run.units = {QStringLiteral("r/min"), QStringLiteral("A")};
+    StepMetrics::Input in;
+    in.target = 300.0;
+    run.metrics = StepMetrics::compute(run.capture, in);
+    run.metricsChannel = QStringLiteral("speed");
+    run.tuning = {{60, QStringLiteral("P60"), QStringLiteral("speed-kp"), 30},
+                  {61, QStringLiteral("P61"), QStringLiteral("speed-ki"), 30}};
+    run.notes = QStringLiteral("first try, 轻载");
+    return run;
+}
+} // namespace
+
+class TestCapture : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void levelTriggerAtTheRightSampleWithExactPreTrigger()
+    {
+        // 1 kHz samples of a ramp crossing 500 at sample 700; 25 % of 0.2 s before it.
+        CaptureRecorder r;
+        r.arm(settings(QStringLiteral("rise:speed:500"), 25, 0.2), {QStringLiteral("speed")});
+        bool done = false;
+        int i = 0;
+        for (; i < 2000 && !done; ++i)
+            done = r.feed(i * 0.001, {double(i) - 200.0}); // crosses 500 at i = 700
+        QVERIFY(done);
+        const CaptureData d = r.take();
+        QCOMPARE(d.preTriggerSamples, 50);    // exactly 0.05 s at 1 ms
+        QCOMPARE(d.columns[0].at(50), 500.0); // the first sample at or above the level is time 0
+        QCOMPARE(d.columns[0].at(49), 499.0);
+        QCOMPARE(d.time.at(50), 0.0);
+        QCOMPARE(d.time.size(), 50 + 151); // 0 .. 0.15 s inclusive
+        QVERIFY(std::abs(d.time.first() + 0.05) < 1e-9);
+        QVERIFY(std::abs(d.time.last() - 0.15) < 1e-9);
+        QVERIFY(d.gaps.isEmpty());
+        QCOMPARE(d.triggerSource, QStringLiteral("rise:speed:500"));
+    }
+
+    void triggerWaitsForThePreTriggerWindow()
+    {
+        // The level is already crossed while the window fills: only a later crossing counts.
+        CaptureRecorder r;
+        r.arm(settings(QStringLiteral("either:speed:0"), 50, 0.1), {QStringLiteral("speed")});
+        bool done = false;
+        for (int i = 0; i < 1000 && !done; ++i)
+            done = r.feed(i * 0.001, {std::sin(2 * Pi * 20 * i * 0.001 + 0.1)}); // 20 Hz: crosses every 25 ms
+        const CaptureData d = r.take();
+        QCOMPARE(d.preTriggerSamples, 50);
+        QVERIFY(d.time.first() >= -0.05 - 1e-9);
+    }
+
+    void externalAndTimeoutTriggers()
+    {
+        CaptureRecorder r;
+        r.arm(settings(QStringLiteral("motion"), 10, 0.1), {QStringLiteral("speed")});
+        for (int i = 0; i < 30; ++i)
+            r.feed(i * 0.002, {0.0});
+        r.trigger(0.0595, QStringLiteral("motion")); // between two samples
+        bool done = false;
+        for (int i = 30; i < 200 && !done; ++i)
+            done = r.feed(i * 0.002, {1.0});
+        const CaptureData d = r.take();
+        QCOMPARE(d.preTriggerSamples, 5); // 0.05 .. 0.058: the samples in the 10 ms before 0.0595
+        QVERIFY(d.time.at(5) > 0.0);
+        QCOMPARE(d.triggerSource, QStringLiteral("motion"));
+
+        CaptureRecorder a;
+        a.arm(settings(QStringLiteral("rise:speed:5"), 0, 0.05, CaptureSettings::Mode::Auto),
+              {QStringLiteral("speed")});
+        done = false;
+        for (int i = 0; i < 2000 && !done; ++i)
+            done = a.feed(i * 0.001, {0.0});
+        QVERIFY(done);
+        QCOMPARE(a.take().triggerSource, QStringLiteral("timeout"));
+    }
+
+    void gapsAreRecorded()
+    {
+        CaptureRecorder r;
+        r.arm(settings(QStringLiteral("now"), 0, 0.2), {QStringLiteral("speed")});
+        bool done = false;
+        for (int i = 0; i < 400 && !done; ++i)
+            if (i < 50 || i > 80)
+                done = r.feed(i * 0.001, {1.0});
+        const CaptureData d = r.take();
+        QCOMPARE(d.gaps.size(), 1);
+        QVERIFY(std::abs(d.gaps.first().from - 0.049) < 1e-9);
+        QVERIFY(std::abs(d.gaps.first().to - 0.081) < 1e-9);
+    }
+
+    void metricsOfAFirstOrderResponse()
+    {
+        const double tau = 0.02, dt = 0.001;
+        auto y = [tau](double t) { return 1.0 - std::exp(-t / tau); };
+        StepMetrics::Input in;
+        in.target = 1.0;
+        const StepMetrics m = StepMetrics::compute(synthetic(y, dt, 0.02, 0.3), in);
+        QVERIFY(m.riseTime.value && m.settlingTime2.value && m.settlingTime5.value);
+        QVERIFY(std::abs(*m.riseTime.value - tau * std::log(9.0)) <= dt);
+        QVERIFY(std::abs(*m.settlingTime2.value - tau * std::log(50.0)) <= dt);
+        QVERIFY(std::abs(*m.settlingTime5.value - tau * std::log(20.0)) <= dt);
+        QCOMPARE(*m.overshoot.value, 0.0);
+        QVERIFY(std::abs(*m.steadyStateError.value) < 1e-4);
+        QVERIFY(std::abs(*m.sampleInterval.value - dt) < 1e-12);
+        QCOMPARE(m.riseTime.resolution, dt);
+        QVERIFY(!m.peakTorque.value);
+        QVERIFY(m.peakTorque.reason.contains(QLatin1String("torque")));
+    }
+
+    void metricsOfASecondOrderResponse()
+    {
+        const double zeta = 0.3, wn = 2 * Pi * 10, dt = 0.001;
+        const double wd = wn * std::sqrt(1 - zeta * zeta), phi = std::acos(zeta);
+        auto y = [=](double t) {
+            return 1.0 - std::exp(-zeta * wn * t) / std::sqrt(1 - zeta * zeta) * std::sin(wd * t + phi);
+        };
+        StepMetrics::Input in;
+        in.target = 1.0;
+        const StepMetrics m = StepMetrics::compute(synthetic(y, dt, 0.05, 1.0), in);
+        const double rise = firstTimeAt(y, 0.9) - firstTimeAt(y, 0.1);
+        const double overshoot = 100.0 * std::exp(-Pi * zeta / std::sqrt(1 - zeta * zeta));
+        QVERIFY(std::abs(*m.riseTime.value - rise) <= dt);
+        // The sampled peak is within the change over one interval of the true one.
+        QVERIFY2(std::abs(*m.overshoot.value - overshoot) <= m.overshoot.resolution + 0.1,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(*m.overshoot.value).arg(overshoot)));
+        QVERIFY(std::abs(*m.settlingTime2.value - settleTime(y, 0.02, 1.0)) <= dt);
+        QVERIFY(std::abs(*m.settlingTime5.value - settleTime(y, 0.05, 1.0)) <= dt);
+    }
+
+    void slowSamplingSaysSoInsteadOfANumber()
+    {
+        // Shuoke over RTU samples at ~18 Hz: a 5 ms rise cannot be measured.
+        auto y = [](double t) { return 1.0 - std::exp(-t / 0.002); };
+        StepMetrics::Input in;
+        in.target = 1.0;
+        const StepMetrics m = StepMetrics::compute(synthetic(y, 1.0 / 18, 0.2, 2.0), in);
+        QVERIFY(!m.riseTime.value);
+        QVERIFY(!m.overshoot.value);
+        QVERIFY(m.riseTime.reason.contains(QLatin1String("not resolvable")));
+        QVERIFY(m.valuesJson().value(QStringLiteral("riseTime")).isNull());
+        QVERIFY(m.notes().join(QLatin1Char('\n')).contains(QLatin1String("riseTime: ")));
+        QVERIFY(m.sampleInterval.value);
+    }
+
+    void spectrumFindsASine()
+    {
+        QVector<double> t, v;
+        for (int i = 0; i < 2000; ++i) { // 2 s at 800 Hz with a little jitter
+            t.append(i / 800.0 + ((i * 7919) % 13 - 6) * 1e-5);
+            v.append(3.0 + 2.0 * std::sin(2 * Pi * 80.0 * t.last()) + 0.3 * std::sin(2 * Pi * 230.0 * t.last()));
+        }
+        QString error;
+        const Spectrum s = Spectrum::compute(t, v, 3, &error);
+        QVERIFY2(!s.isEmpty(), qPrintable(error));
+        QCOMPARE(s.window, QStringLiteral("Hann"));
+        QVERIFY(std::abs(s.resolutionHz - 0.4) < 0.01);
+        QVERIFY(s.peaks.size() >= 2);
+        QVERIFY(std::abs(s.peaks.at(0).hz - 80.0) < s.resolutionHz);
+        QVERIFY(std::abs(s.peaks.at(0).magnitude - 2.0) < 0.3);
+        QVERIFY(std::abs(s.peaks.at(1).hz - 230.0) < s.resolutionHz);
+        QVERIFY(Spectrum::compute(t.mid(0, 10), v.mid(0, 10), 3, &error).isEmpty());
+    }
+
+    void runFilesRoundTrip()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("a.ddrun"));
+        const TuningRun run = sampleRun();
+        QVERIFY(!run.save(path));
+        TuningRun back;
+        const Error e = TuningRun::load(path, &back);
+        QVERIFY2(!e, qPrintable(e.message));
+        QCOMPARE(back.toJson(), run.toJson());
+        QCOMPARE(back.capture.preTriggerSamples, 50);
+        QVERIFY(std::isnan(back.capture.columns[1][3]));
+        QCOMPARE(back.tuning.at(0).role, QStringLiteral("speed-kp"));
+        QCOMPARE(back.label, QStringLiteral("a"));
+        QCOMPARE(*back.metrics.riseTime.value, *run.metrics.riseTime.value);
+        QCOMPARE(back.notes, run.notes);
+    }
+
+    void badRunFilesRefused_data()
+    {
+        QTest::addColumn<QString>("pointer"); // field path "a.b" or "a.b[3]"
+        QTest::addColumn<QJsonValue>("value");
+        QTest::addColumn<QString>("word");
+        QTest::newRow("format") << "format" << QJsonValue("drivedesk-backup") << "not a DriveDesk run file";
+        QTest::newRow("version") << "formatVersion" << QJsonValue(2) << "version 2";
+        QTest::newRow("family") << "drive.family" << QJsonValue("servo-x") << "servo-x";
+        QTest::newRow("test type") << "test.type" << QJsonValue("bump") << "bump";
+        QTest::newRow("trigger") << "trigger.expression" << QJsonValue("rise:speed") << "trigger.expression";
+        QTest::newRow("pre") << "trigger.prePercent" << QJsonValue(150) << "prePercent";
+        QTest::newRow("pre count") << "trigger.preTriggerSamples" << QJsonValue(7) << "preTriggerSamples";
+        QTest::newRow("time back") << "samples.time[10]" << QJsonValue(-1.0) << "time[10]";
+        QTest::newRow("value type") << "samples.speed[4]" << QJsonValue("fast") << "speed[4]";
+        QTest::newRow("column length") << "samples.current" << QJsonValue(QJsonArray{1, 2}) << "samples.current";
+        QTest::newRow("unknown column") << "samples.torque" << QJsonValue(QJsonArray{}) << "samples.torque";
+        QTest::newRow("metric") << "metrics.riseTime" << QJsonValue("quick") << "riseTime";
+        QTest::newRow("tuning role") << "tuning[0].role" << QJsonValue("speed-gain") << "speed-gain";
+        QTest::newRow("tuning value") << "tuning[1].value" << QJsonValue(1.5) << "whole number";
+        QTest::newRow("unknown field") << "extra" << QJsonValue(1) << "extra";
+        QTest::newRow("created") << "created" << QJsonValue("yesterday") << "yesterday";
+    }
+
+    void badRunFilesRefused()
+    {
+        QFETCH(QString, pointer);
+        QFETCH(QJsonValue, value);
+        QFETCH(QString, word);
+        QJsonObject root = sampleRun().toJson();
+        // Set root[pointer] = value (one or two levels, an optional [index] at the end).
+        const QStringList parts = pointer.split(QLatin1Char('.'));
+        std::function<void(QJsonObject &, int)> set = [&](QJsonObject &o, int level) {
+            QString name = parts.at(level);
+            int index = -1;
+            if (name.endsWith(QLatin1Char(']'))) {
+                index = name.section(QLatin1Char('['), 1).chopped(1).toInt();
+                name = name.section(QLatin1Char('['), 0, 0);
+            }
+            if (level + 1 < parts.size()) {
+                QJsonObject inner = o.value(name).toObject();
+                set(inner, level + 1);
+                o.insert(name, inner);
+            } else if (index >= 0) {
+                QJsonArray a = o.value(name).toArray();
+                if (a.at(index).isObject()) {
+                    QJsonObject e = a.at(index).toObject();
+                    e.insert(parts.last().section(QLatin1Char('.'), -1), value);
+                    a.replace(index, e);
+                } else {
+                    a.replace(index, value);
+                }
+                o.insert(name, a);
+            } else {
+                o.insert(name, value);
+            }
+        };
+        if (pointer.startsWith(QLatin1String("tuning["))) {
+            const int index = pointer.mid(7, 1).toInt();
+            QJsonArray a = root.value(QStringLiteral("tuning")).toArray();
+            QJsonObject e = a.at(index).toObject();
+            e.insert(pointer.section(QLatin1Char('.'), 1), value);
+            a.replace(index, e);
+            root.insert(QStringLiteral("tuning"), a);
+        } else {
+            set(root, 0);
+        }
+        TuningRun out = sampleRun();
+        out.notes = QStringLiteral("unchanged");
+        const Error e = TuningRun::fromBytes(QJsonDocument(root).toJson(), QStringLiteral("bad.ddrun"), &out);
+        QVERIFY(e.isError());
+        QVERIFY2(e.message.contains(word), qPrintable(e.message));
+        QVERIFY2(e.message.startsWith(QLatin1String("bad.ddrun")), qPrintable(e.message));
+        QCOMPARE(out.notes, QStringLiteral("unchanged")); // nothing changed
+        QVERIFY(
+            TuningRun::fromBytes("{ not json", QStringLiteral("x.ddrun"), &out).message.contains(QLatin1String("JSON")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCapture)
+#include "tst_capture.moc"

@@ -7,6 +7,7 @@
 #include "core/link/linkreply.h"
 #include "core/link/seriallink.h"
 #include "sim/bus/ptyendpoint.h"
+#include "tests/support/requiretool.h"
 
 using namespace dd;
 
@@ -45,11 +46,7 @@ class TestSerialLink : public QObject
 {
     Q_OBJECT
 private slots:
-    void initTestCase()
-    {
-        if (!PtyEndpoint::isSupported())
-            QSKIP("no pseudo-terminals on this system");
-    }
+    void initTestCase() { DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this system"); }
 
     // A reply of the right shape that was already waiting (unread) when the request went out
     // answers an earlier question: it must not be taken for this request's answer.

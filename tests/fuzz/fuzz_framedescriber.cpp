@@ -38,8 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     while (in.remaining() > 0) {
         const quint8 h = in.byte();
         const size_t length = in.byte();
-        const FrameDescriber::Origin origin =
-            (h & 1) ? FrameDescriber::Origin::Drive : FrameDescriber::Origin::Host;
+        const FrameDescriber::Origin origin = (h & 1) ? FrameDescriber::Origin::Drive : FrameDescriber::Origin::Host;
         if (h & 16)
             describer->reset();
         QString text;

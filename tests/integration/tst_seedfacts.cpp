@@ -29,6 +29,7 @@
 #include <QElapsedTimer>
 #include <QTimer>
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 
@@ -71,7 +72,13 @@ QByteArray withCrc(QByteArray frame)
     return frame;
 }
 
-constexpr int kReplyDelayMs = 25; // > the wire time of request and reply at 9600 baud
+// A reply leaves after the wire time of request and reply at 9600 baud (10 bits a character;
+// much sooner would be "impossibly early" for the links), at least 12 ms: short, so that a
+// gap shorter than 50 ms between two commands would show.
+int replyDelayMs(qsizetype requestBytes, qsizetype replyBytes)
+{
+    return std::max(12, int((requestBytes + replyBytes) * 10 * 1000 / 9600) + 1);
+}
 
 // The drive's end of a pty, played by the test: whole request frames (by `frameLength`, 0 =
 // incomplete) are recorded with their arrival time and answered by `answer`.
@@ -101,7 +108,8 @@ struct SerialPeer
                 // and reply (the links discard an answer faster than that as stale).
                 const QByteArray reply = answer(frame);
                 if (!reply.isEmpty())
-                    QTimer::singleShot(kReplyDelayMs, &pty, [this, reply] { pty.write(reply); });
+                    QTimer::singleShot(replyDelayMs(frame.size(), reply.size()), &pty,
+                                       [this, reply] { pty.write(reply); });
             }
         });
         return true;

@@ -292,6 +292,36 @@ def json_loaders():
           '"text":{"en":"x","zh":"y"}}]}'.encode('utf-8'))
 
 
+def framedescriber():
+    """[family: 0 servo-can, 1 servo-modbus, 2 shuoke][framing: 0 rtu 1 ascii 2 plc 3 can]
+    [options], then frames [h][length][CAN: id u32][bytes] (tests/fuzz/fuzz_framedescriber.cpp)."""
+    def serial(frame, drive=False, repair=False, reset=False):
+        return bytes([(1 if drive else 0) | (8 if repair else 0) | (16 if reset else 0), len(frame)]) + frame
+
+    def can(can_id, frame, drive=False, extended=False):
+        return bytes([2 | (1 if drive else 0) | (4 if extended else 0), len(frame)]) + u32(can_id) + frame
+
+    t = 'fuzz_framedescriber'
+    write(t, 'servo-can-traffic', bytes([0, 3, 0])
+          + can(0x64, h('00080000000000ff')) + can(0x64, h('00108800000000ff'), True)
+          + can(0x64, h('00200064000000ff')) + can(0x64, h('0012fa4b000000ff'))
+          + can(0x64, h('0012fa4b000000ff'), True) + can(0x64, h('00050e00000000ff'), True)
+          + can(0x64, h('0008000000'), extended=True))
+    read = with_crc(h('010300640014'))
+    reply = with_crc(bytes([1, 3, 40]) + bytes(range(40)))
+    write(t, 'servo-modbus-request-reply', bytes([1, 0, 0]) + serial(read) + serial(reply, True)
+          + serial(h('0183020000'), True, repair=True)
+          + serial(with_crc(h('0110006400020400010002')))
+          + serial(reply, True, reset=True))
+    write(t, 'shuoke-rtu', bytes([2, 0, 0]) + serial(with_crc(h('012800'))) + serial(with_crc(h('012804a0860100')), True)
+          + serial(with_crc(h('01a80101')), True) + serial(h('0128'), True))
+    write(t, 'shuoke-ascii', bytes([2, 1, 1]) + serial(b':01280029\r\n') + serial(b':012804A086010054\r\n', True)
+          + serial(b':0122010226\r\n'))
+    write(t, 'shuoke-plc', bytes([2, 2, 2]) + serial(with_crc(h('010300280002'))) + serial(with_crc(h('010304a0860100')), True))
+    write(t, 'shuoke-can', bytes([2, 3, 0]) + can(1, h('0128000000000000')) + can(1, h('012804a086010000'), True)
+          + can(0, h('2100000000000000')) + can(1, h('01'), True, extended=True))
+
+
 def main():
     # Only generated files are replaced; crash reproducers (not "seed-*") stay.
     if os.path.isdir(CORPUS):
@@ -304,6 +334,7 @@ def main():
     modbus()
     shuoke()
     json_loaders()
+    framedescriber()
     for target in sorted(os.listdir(CORPUS)):
         print('%-28s %3d files' % (target, len(os.listdir(os.path.join(CORPUS, target)))))
 

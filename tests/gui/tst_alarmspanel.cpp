@@ -2,6 +2,7 @@
 // code and its text from the alarm dictionary (the user's table, in the UI language), Clear
 // clears it in the drive, the history keeps both with times; servo-modbus cannot clear.
 #include "tests/gui/panelrig.h"
+#include "tests/support/requiretool.h"
 #include "ui/panels/alarms/alarmspanel.h"
 
 #include <QCanBus>
@@ -68,8 +69,8 @@ private slots:
 
     void injectedAlarmShowsAndClears()
     {
-        if (!QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")))
-            QSKIP("Qt's virtualcan plugin is not installed");
+        DD_REQUIRE_TOOL(QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")),
+                        "Qt's virtualcan plugin is not installed");
         PanelRig rig;
         SimBenchOptions o;
         o.family = Family::ServoCan;

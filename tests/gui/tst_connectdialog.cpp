@@ -2,6 +2,7 @@
 // a USB adapter), CAN plugins and interfaces are listed, settings round-trip and persist,
 // and "detect" tries the families in the documented order.
 #include "sim/bus/ptyendpoint.h"
+#include "tests/support/requiretool.h"
 #include "ui/bus/connectdialog.h"
 #include "ui/bus/serialportwatcher.h"
 
@@ -46,8 +47,7 @@ private slots:
 
     void listsPtyAfterHotPlug()
     {
-        if (!PtyEndpoint::isSupported())
-            QSKIP("no pseudo-terminals on this system");
+        DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this system");
         ConnectDialog dialog;
         dialog.show();
         QVERIFY(QTest::qWaitForWindowExposed(&dialog));
@@ -84,8 +84,8 @@ private slots:
 
     void listsCanPluginsAndInterfaces()
     {
-        if (!QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")))
-            QSKIP("Qt's virtualcan plugin is not installed");
+        DD_REQUIRE_TOOL(QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")),
+                        "Qt's virtualcan plugin is not installed");
         ConnectDialog dialog;
         ConnectRequest r;
         r.settings.can = QStringLiteral("virtualcan:can1");

@@ -4,6 +4,7 @@
 #include "core/drive/drivehub.h"
 #include "core/trend/trendrecorder.h"
 #include "sim/bench/demobench.h"
+#include "tests/support/requiretool.h"
 #include "ui/bus/bustreewidget.h"
 #include "ui/bus/connectioncontroller.h"
 #include "ui/bus/drivedirectory.h"
@@ -70,8 +71,8 @@ private slots:
         QCoreApplication::setOrganizationName(QStringLiteral("DriveDeskTest"));
         QCoreApplication::setApplicationName(QStringLiteral("tst_demobench"));
         QSettings().setValue(QStringLiteral("language"), QStringLiteral("en"));
-        if (!QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")))
-            QSKIP("Qt's virtualcan plugin is not installed");
+        DD_REQUIRE_TOOL(QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")),
+                        "Qt's virtualcan plugin is not installed");
     }
 
     void benchRunsOnItsOwnThread()
@@ -169,29 +170,61 @@ private slots:
         w.workspace()->setPreferredPanel(QStringLiteral("overview"));
         QVERIFY(!trend->isActive());
 
-        // STOP: a servo-can drive in motion stops when F12 is pressed anywhere in the window.
+        // STOP: the servo-can and the shuoke drive in motion stop when F12 is pressed anywhere
+        // in the window (servo-modbus has no stop command).
         const int can = connectionOf(dir, Family::ServoCan);
+        const int shuoke = connectionOf(dir, Family::Shuoke);
         QVERIFY(can);
-        bool moved = false;
-        w.hub()->run(
-            can, 1, [](Drive &d) { return d.moveRelative(100000000, 300); },
-            [&moved](const DriveResult &r) { moved = r.ok(); });
+        QVERIFY(shuoke);
+        int moving = 0;
+        for (int id : {can, shuoke})
+            w.hub()->run(
+                id, 1, [](Drive &d) { return d.moveRelative(100000000, 300); },
+                [&moving](const DriveResult &r) { moving += r.ok() ? 1 : 0; });
         QVERIFY(waitFor(
             dir, SIGNAL(statusChanged(int, int, dd::DriveStatus)),
-            [&] { return moved && dir->info(can, 1).status.running; }, 5000));
+            [&] { return moving == 2 && dir->info(can, 1).status.running && dir->info(shuoke, 1).status.running; },
+            5000));
+        QVERIFY(dir->info(can, 1).status.enabled);
         QSignalSpy traffic(w.hub(), &DriveHub::trafficRecorded);
         QSignalSpy stop(w.stopAction(), &QAction::triggered);
         QTest::keyClick(w.busTree(), Qt::Key_F12);
         QCOMPARE(stop.count(), 1);
+        // The drives say they stand still (servo-can: its heartbeat state; shuoke: its status
+        // reply), and the servo-can drive is disabled (STOP sends "stop and disable").
         QVERIFY(waitFor(
-            dir, SIGNAL(statusChanged(int, int, dd::DriveStatus)), [&] { return !dir->info(can, 1).status.running; },
+            dir, SIGNAL(statusChanged(int, int, dd::DriveStatus)),
+            [&] {
+                return !dir->info(can, 1).status.running && !dir->info(can, 1).status.enabled
+                    && !dir->info(shuoke, 1).status.running;
+            },
             2000));
-        bool stopFrameSent = false;
-        for (const QList<QVariant> &args : std::as_const(traffic))
-            if (args.at(0).toInt() == can
-                && args.at(1).value<TrafficRecord>().direction == TrafficRecord::Direction::Tx)
-                stopFrameSent = true;
-        QVERIFY(stopFrameSent);
+        // The stop frames themselves, written by hand from the seeds (not by the codecs):
+        // servo-can station 1, ID 0x65, command 0x28 "stop and disable"; shuoke RTU
+        // emergency stop 0x3C, to the drive (address 1) and broadcast (address 0), CRC-16/MODBUS
+        // low byte first.
+        const QByteArray canStop = QByteArray::fromHex("01280000000000FF");
+        const QByteArray shuokeStop = QByteArray::fromHex("013C003100");
+        const QByteArray shuokeBroadcastStop = QByteArray::fromHex("003C0060C0");
+        bool canStopSent = false;
+        bool shuokeStopSent = false;
+        QStringList shuokeSent; // for the failure message
+        for (const QList<QVariant> &args : std::as_const(traffic)) {
+            const TrafficRecord rec = args.at(1).value<TrafficRecord>();
+            if (rec.direction != TrafficRecord::Direction::Tx)
+                continue;
+            if (args.at(0).toInt() == can && rec.isCan && rec.canId == 0x65 && rec.bytes == canStop)
+                canStopSent = true;
+            if (args.at(0).toInt() == shuoke) {
+                shuokeSent << QString::fromLatin1(rec.bytes.toHex(' '));
+                if (rec.bytes == shuokeStop || rec.bytes == shuokeBroadcastStop)
+                    shuokeStopSent = true;
+            }
+        }
+        QVERIFY2(canStopSent, "no 0x28 stop frame to servo-can station 1");
+        QVERIFY2(shuokeStopSent,
+                 qPrintable(QStringLiteral("no 0x3C emergency stop to the shuoke drive; sent: ")
+                            + shuokeSent.join(QStringLiteral(" | "))));
 
         // Disconnecting everything empties the tree.
         w.connections()->disconnectAll();

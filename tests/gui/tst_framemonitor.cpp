@@ -6,6 +6,7 @@
 #include "core/drive/drivereply.h"
 #include "core/protocol/servocan/servocan.h"
 #include "tests/gui/simbenchthread.h"
+#include "tests/support/requiretool.h"
 #include "ui/framemonitor/framemonitordock.h"
 #include "ui/framemonitor/framemonitorfilter.h"
 #include "ui/framemonitor/framemonitormodel.h"
@@ -242,8 +243,8 @@ private slots:
 
     void dockInMainWindowShowsLiveTraffic()
     {
-        if (!QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")))
-            QSKIP("Qt's virtualcan plugin is not installed");
+        DD_REQUIRE_TOOL(QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")),
+                        "Qt's virtualcan plugin is not installed");
         SimBenchThread sim;
         SimBenchOptions o;
         o.family = Family::ServoCan;

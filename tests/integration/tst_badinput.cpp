@@ -20,6 +20,7 @@
 #include "sim/servocan/simservocandrive.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
 #include "tests/integration/faultcheck.h"
+#include "tests/support/requiretool.h"
 
 #include <limits>
 #include <memory>
@@ -78,8 +79,7 @@ private slots:
 
 void TestBadInput::servoModbus()
 {
-    if (!PtyEndpoint::isSupported())
-        QSKIP("no pseudo-terminals on this platform");
+    DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this platform");
     auto *pty = new PtyEndpoint;
     QVERIFY(!pty->open().isError());
     SimSerialBus bus(pty);

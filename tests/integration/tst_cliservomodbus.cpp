@@ -8,6 +8,7 @@
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simserialbus.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
+#include "tests/support/requiretool.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -58,8 +59,7 @@ QStringList TestCliServoModbus::args(std::initializer_list<const char *> words) 
 void TestCliServoModbus::initTestCase()
 {
     ensureCoreResources();
-    if (!PtyEndpoint::isSupported())
-        QSKIP("no pseudo-terminals on this system");
+    DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this system");
     auto *endpoint = new PtyEndpoint;
     const Error e = endpoint->open();
     QVERIFY2(!e, qPrintable(e.message));

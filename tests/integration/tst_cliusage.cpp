@@ -207,14 +207,16 @@ void TestCliUsage::badBackupFiles_data()
     file.setValues(values);
     QByteArray good;
     QVERIFY(!file.toJson(dd::ParameterDictionary::bundled(dd::Family::ServoModbus), &good));
-    QVERIFY(good.contains("\"300\"") || good.contains("300"));
+    QVERIFY(good.contains("\"value\": 300"));
 
+    // One value changed, the checksum left as it was.
     QByteArray badChecksum = good;
-    badChecksum.replace("300", "301");
-    QTest::newRow("not json") << QByteArray("{ this is not json") << QStringList{} << "";
-    QTest::newRow("empty") << QByteArray() << QStringList{} << "";
-    QTest::newRow("checksum") << badChecksum << QStringList{} << "";
-    QTest::newRow("truncated") << good.left(good.size() / 2) << QStringList{} << "";
+    badChecksum.replace("\"value\": 300", "\"value\": 301");
+    QVERIFY(badChecksum != good);
+    QTest::newRow("not json") << QByteArray("{ this is not json") << QStringList{} << "b.json is not valid JSON";
+    QTest::newRow("empty") << QByteArray() << QStringList{} << "(is the file empty or truncated?)";
+    QTest::newRow("checksum") << badChecksum << QStringList{} << "the checksum does not match the values";
+    QTest::newRow("truncated") << good.left(good.size() / 2) << QStringList{} << "(is the file empty or truncated?)";
 
     dd::BackupFile other = file;
     other.setFamily(dd::Family::ServoCan);
@@ -244,6 +246,7 @@ void TestCliUsage::badBackupFiles()
         const CliRun r = runCli(all);
         QVERIFY2(r.exitCode == 2,
                  qPrintable(QStringLiteral("%1: exit %2: %3").arg(command).arg(r.exitCode).arg(r.text())));
+        QVERIFY(!message.isEmpty());
         QVERIFY2(r.err.contains(message.toUtf8()), r.err.constData());
         QCOMPARE(r.txFrames(), 0);
     }

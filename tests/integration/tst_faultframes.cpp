@@ -15,6 +15,7 @@
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simserialbus.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
+#include "tests/support/requiretool.h"
 
 #include <memory>
 
@@ -147,8 +148,7 @@ private:
 
 void TestFaultFrames::initTestCase()
 {
-    if (!PtyEndpoint::isSupported())
-        QSKIP("no pseudo-terminals on this platform");
+    DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this platform");
     m_pty = new PtyEndpoint;
     const Error pe = m_pty->open();
     QVERIFY2(!pe.isError(), qPrintable(pe.message));

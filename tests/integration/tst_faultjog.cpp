@@ -211,8 +211,15 @@ void TestFaultJog::silentWhileHeldOrReleased()
     QCOMPARE(m_sim7->stats().watchdogTrips, trips7 + 1);
     qInfo("silent mid-jog: host ended the held jog after %lld ms; both axes at rest after %lld ms",
           static_cast<long long>(heldEndedAfter), static_cast<long long>(restAfter));
-    QVERIFY2(heldEndedAfter < 600, "offline detection (200 ms) plus the stop confirmation (150 ms)");
-    QVERIFY2(restAfter < 3000, "2 s watchdog plus deceleration");
+    // The guarantees: offline after 200 ms without a heartbeat (checked every 50 ms), then
+    // 150 ms for a stop confirmation, plus one keep-alive period (100 ms) for a late timer
+    // (measured 304-402 ms in 20 runs on a loaded machine); the axes stop by the drives' own
+    // 2 s watchdogs (the last keep-alive came at most one period before the silence), not
+    // sooner, and decelerate (measured 1967-2079 ms).
+    QVERIFY2(heldEndedAfter <= 200 + 50 + 150 + 100,
+             qPrintable(QStringLiteral("the host ended the jog after %1 ms").arg(heldEndedAfter)));
+    QVERIFY2(restAfter >= 2000 - 100 && restAfter < 3000,
+             qPrintable(QStringLiteral("at rest after %1 ms: the 2 s watchdog plus deceleration").arg(restAfter)));
 }
 
 // The drive is silent and nobody renews the lease; the lease runs out before the tracker

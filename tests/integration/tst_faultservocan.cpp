@@ -49,6 +49,7 @@ private slots:
     void simulatorLeavesTheBusMidBackup();
 
 private:
+    bool openBackend(int retries);
     ServoCanDrive *drive() { return m_backend->servoDrive(1); }
     qint64 value(int p) const { return m_sim->parameter(p); }
     void scramble(std::mt19937 &rng);
@@ -77,13 +78,24 @@ void TestFaultServoCan::init()
     m_sim = static_cast<SimServoCanDrive *>(m_bus->addDevice(std::make_unique<SimServoCanDrive>(1)));
     const QString busError = test::connectSimCanBus(m_bus.get(), m_hub->interfaceName(0));
     QVERIFY2(busError.isEmpty(), qPrintable(busError));
+    QVERIFY(openBackend(-1));
+}
+
+// The host side; retries -1: the default (2).
+bool TestFaultServoCan::openBackend(int retries)
+{
+    m_backend.reset();
     ConnectionSettings cs;
     cs.family = Family::ServoCan;
-    cs.can = QStringLiteral("virtualcan:") + m_hub->interfaceName(0); // timeout 50 ms, 2 retries
+    cs.can = QStringLiteral("virtualcan:") + m_hub->interfaceName(0); // timeout 50 ms
+    cs.retries = retries;
     m_backend = std::make_unique<ServoCanBackend>();
     Error oe;
-    QVERIFY2(m_backend->open(cs, nullptr, &oe), qPrintable(oe.message));
-    QVERIFY(waitUntil([this] { return m_backend->tracker()->isOnline(1); }, 3000));
+    if (!m_backend->open(cs, nullptr, &oe)) {
+        qWarning() << oe.message;
+        return false;
+    }
+    return waitUntil([this] { return m_backend->tracker()->isOnline(1); }, 3000);
 }
 
 void TestFaultServoCan::cleanup()
@@ -110,11 +122,16 @@ void TestFaultServoCan::backupUnderFaults_data()
     QTest::addColumn<QString>("faults");
     QTest::addColumn<bool>("confirmReads");
     QTest::addColumn<int>("rounds");
-    QTest::newRow("drop 10%") << "drop=0.10,seed=31" << false << 5;
-    QTest::newRow("corrupt 10%") << "corrupt=0.10,seed=32" << true << 4;
+    QTest::addColumn<int>("retries");     // -1: the default, 2
+    QTest::addColumn<int>("minComplete"); // measured on a loaded 2-core machine: docs/reliability.md
+    // 10 % of the replies lost: with 2 retries a read is lost with p^3 = 1/1000, one
+    // 220-read backup in five fails (measured 2-5 of 5); on such a bus the user raises the
+    // retries (the message says so), as this row does: p^4, about one backup in fifty.
+    QTest::newRow("drop 10%") << "drop=0.10,seed=31" << false << 5 << 3 << 4;
+    QTest::newRow("corrupt 10%") << "corrupt=0.10,seed=32" << true << 4 << -1 << 3; // 4 of 4 in 6 runs
     // 0..55 ms extra: about one frame in eleven arrives after the 50 ms timeout.
-    QTest::newRow("late 9%") << "jitter=55,seed=33" << false << 3;
-    QTest::newRow("mixed 5%") << "drop=0.05,corrupt=0.05,jitter=52,seed=34" << true << 3;
+    QTest::newRow("late 9%") << "jitter=55,seed=33" << false << 3 << -1 << 2;                        // 3 of 3 in 6 runs
+    QTest::newRow("mixed 5%") << "drop=0.05,corrupt=0.05,jitter=52,seed=34" << true << 3 << -1 << 2; // 3 of 3
 }
 
 void TestFaultServoCan::backupUnderFaults()
@@ -122,6 +139,10 @@ void TestFaultServoCan::backupUnderFaults()
     QFETCH(QString, faults);
     QFETCH(bool, confirmReads);
     QFETCH(int, rounds);
+    QFETCH(int, retries);
+    QFETCH(int, minComplete);
+    if (retries >= 0)
+        QVERIFY(openBackend(retries));
     drive()->setConfirmReads(confirmReads);
     m_sim->faults().setSettings(*FaultSettings::parse(faults));
     CanLink *link = m_backend->link();
@@ -166,10 +187,8 @@ void TestFaultServoCan::backupUnderFaults()
           static_cast<unsigned long long>(link->timeoutCount()), static_cast<unsigned long long>(link->retryCount()),
           static_cast<long long>(slowest));
     QVERIFY2(link->retryCount() > 0, "the faults were felt");
-    // With 2 retries a read is lost with p^3 (10 % drops: 1 in 1000), a 220-read backup
-    // then fails about one time in five: the guarantee above is what must always hold; that
-    // retries work at all shows here.
-    QVERIFY2(ok >= 1, "retries make backups complete despite the faults");
+    // Every completed backup held exactly the drive's values (checked above: 0 wrong).
+    QVERIFY2(ok >= minComplete, qPrintable(QStringLiteral("%1 of %2 backups complete").arg(ok).arg(rounds)));
 }
 
 void TestFaultServoCan::silentMidBackup()

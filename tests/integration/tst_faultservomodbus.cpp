@@ -16,6 +16,7 @@
 #include "sim/bus/simserialbus.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
 #include "tests/integration/faultcheck.h"
+#include "tests/support/requiretool.h"
 
 #include <QDir>
 #include <QTemporaryDir>
@@ -111,8 +112,7 @@ private:
 
 void TestFaultServoModbus::initTestCase()
 {
-    if (!PtyEndpoint::isSupported())
-        QSKIP("no pseudo-terminals on this platform");
+    DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this platform");
     QVERIFY(m_dir.isValid());
 }
 
@@ -120,18 +120,20 @@ void TestFaultServoModbus::backupUnderFaults_data()
 {
     QTest::addColumn<QString>("faults");
     QTest::addColumn<int>("rounds");
+    QTest::addColumn<int>("minComplete"); // measured on a loaded 2-core machine: docs/reliability.md
     // The response allowance is 30 ms beyond the wire time (about 1 ms here); a jitter of
     // 0..34 ms makes about one reply in ten arrive after its request timed out.
-    QTest::newRow("drop 10%") << "drop=0.10,seed=21" << 8;
-    QTest::newRow("corrupt 10%") << "corrupt=0.10,seed=22" << 8;
-    QTest::newRow("late 10%") << "jitter=34,seed=23" << 8;
-    QTest::newRow("mixed 5%") << "drop=0.05,corrupt=0.05,jitter=32,seed=24" << 8;
+    QTest::newRow("drop 10%") << "drop=0.10,seed=21" << 8 << 7;                        // measured 8 of 8 in 9 runs
+    QTest::newRow("corrupt 10%") << "corrupt=0.10,seed=22" << 8 << 7;                  // 8 of 8 in 9 runs
+    QTest::newRow("late 10%") << "jitter=34,seed=23" << 8 << 4;                        // 5-8 of 8
+    QTest::newRow("mixed 5%") << "drop=0.05,corrupt=0.05,jitter=32,seed=24" << 8 << 6; // 7-8 of 8
 }
 
 void TestFaultServoModbus::backupUnderFaults()
 {
     QFETCH(QString, faults);
     QFETCH(int, rounds);
+    QFETCH(int, minComplete);
     Bench b;
     QVERIFY(b.open(30));
     b.sim->faults().setSettings(*FaultSettings::parse(faults));
@@ -177,13 +179,18 @@ void TestFaultServoModbus::backupUnderFaults()
           static_cast<unsigned long long>(link->checksumErrorCount()),
           static_cast<unsigned long long>(link->lateReplyCount()), static_cast<long long>(slowest));
     QVERIFY2(link->retryCount() > 0, "the faults were felt");
-    QVERIFY2(ok >= 1, "retries make backups complete despite the faults");
+    // Every completed backup held exactly the drive's values (checked above: 0 wrong); the
+    // retries make nearly all complete.
+    QVERIFY2(ok >= minComplete, qPrintable(QStringLiteral("%1 of %2 backups complete").arg(ok).arg(rounds)));
 }
 
 void TestFaultServoModbus::silentMidBackup()
 {
     Bench b;
-    QVERIFY(b.open(30));
+    // An allowance a loaded machine does not exceed by itself: the exact outcome below needs
+    // every reply before the silence in time (at 30 ms, replies came late without any fault
+    // while other builds ran, and a late acknowledgement made a write "not written").
+    QVERIFY(b.open(100));
     // A backup identifies the drive (PA2, PA51: two requests), then reads PA0..19, PA20..39,
     // PA40..59: silent after the first of these.
     int replies = 0;
@@ -205,13 +212,20 @@ void TestFaultServoModbus::silentMidBackup()
 void TestFaultServoModbus::silentMidRestore()
 {
     Bench b;
-    QVERIFY(b.open(30));
+    // An allowance a loaded machine does not exceed by itself: the exact outcome below needs
+    // every reply before the silence in time (at 30 ms, replies came late without any fault
+    // while other builds ran, and a late acknowledgement made a write "not written").
+    QVERIFY(b.open(100));
     QMap<int, qint64> old;
     const BackupFile file = restoreFile(b, &old);
     int writes = 0;
     connect(b.bus.get(), &SimSerialBus::replyWritten, this, [&](const QByteArray &reply) {
-        if (quint8(reply.at(1)) == 0x10 && ++writes == 4) // four writes answered, then power loss
+        if (quint8(reply.at(1)) == 0x10 && ++writes == 4) { // four writes answered, then power loss
             b.sim->faults().setSilent(true);
+            // Silent now: the requests that follow may time out quickly (the one waiting for
+            // this answer keeps its 100 ms).
+            b.backend->link()->setResponseTimeoutMs(30);
+        }
     });
     const RestoreOutcome o = restoreFrom(b.drive(), file);
     QVERIFY2(o.finished, "a restore must never hang");

@@ -55,7 +55,7 @@ private slots:
     void adapterGoneMidJog();
 
 private:
-    bool setUp(int timeoutMs = 30);
+    bool setUp(int timeoutMs = 30, int retries = -1);
     SimShuokeDrive &sim() { return m_sim->drive(); }
 
     QTemporaryDir m_dir;
@@ -64,7 +64,7 @@ private:
     ShuokeDrive *m_drive = nullptr;
 };
 
-bool TestFaultShuoke::setUp(int timeoutMs)
+bool TestFaultShuoke::setUp(int timeoutMs, int retries)
 {
     SimShuokeDrive::Config c;
     c.powerUpWindowMs = 0;
@@ -74,6 +74,7 @@ bool TestFaultShuoke::setUp(int timeoutMs)
     s.framing = QStringLiteral("rtu");
     s.baud = 38400;
     s.timeoutMs = timeoutMs;
+    s.retries = retries;
     s.options = {{QStringLiteral("shuoke.minGapMs"), 0}, {QStringLiteral("shuoke.model"), QStringLiteral("M6505")}};
     m_bench = ShuokeSerialBench::create({c}, s);
     if (!m_bench)
@@ -86,18 +87,30 @@ bool TestFaultShuoke::setUp(int timeoutMs)
 void TestFaultShuoke::backupUnderFaults_data()
 {
     QTest::addColumn<QString>("faults");
-    QTest::newRow("drop 10%") << "drop=0.10,seed=41";
-    QTest::newRow("corrupt 10%") << "corrupt=0.10,seed=42";
-    // A reply needs about 6 ms of wire and turnaround at 38400 baud; the allowance is 30 ms
-    // beyond the wire time: 0..29 ms extra makes about one in ten late (more on a loaded machine).
-    QTest::newRow("late 10%") << "jitter=29,seed=43";
-    QTest::newRow("mixed 5%") << "drop=0.05,corrupt=0.05,jitter=27,seed=44";
+    QTest::addColumn<int>("timeoutMs");   // the response allowance beyond the wire time
+    QTest::addColumn<int>("retries");     // -1: the default, 2
+    QTest::addColumn<int>("minComplete"); // of 4; measured: docs/reliability.md
+    // Lost and damaged replies: an allowance a loaded test machine does not exceed by itself
+    // (at 30 ms, replies came late without any injected delay while other builds ran), so that
+    // these rows test the faults they name. Measured 4 of 4 in 7 runs each.
+    QTest::newRow("drop 10%") << "drop=0.10,seed=41" << 100 << -1 << 3;
+    QTest::newRow("corrupt 10%") << "corrupt=0.10,seed=42" << 100 << -1 << 3;
+    // Late replies: 0..66 ms extra against a 60 ms allowance makes about one reply in ten
+    // late by injection, and the loaded machine's own latency adds to it: with the default
+    // 2 retries 1-3 of 4 backups completed (a third of the attempts late); the user's remedy
+    // is a longer timeout or more retries: 4 here. The row proves the replies were late
+    // (counted below) and that none was taken for a later request (every value exact).
+    QTest::newRow("late 10%") << "jitter=66,seed=43" << 60 << 4 << 3;
+    QTest::newRow("mixed 5%") << "drop=0.05,corrupt=0.05,jitter=63,seed=44" << 60 << 4 << 3;
 }
 
 void TestFaultShuoke::backupUnderFaults()
 {
     QFETCH(QString, faults);
-    QVERIFY(setUp());
+    QFETCH(int, timeoutMs);
+    QFETCH(int, retries);
+    QFETCH(int, minComplete);
+    QVERIFY(setUp(timeoutMs, retries));
     m_sim->faults().setSettings(*FaultSettings::parse(faults));
     std::mt19937 rng(5);
     const int rounds = 4;
@@ -126,11 +139,23 @@ void TestFaultShuoke::backupUnderFaults()
             QCOMPARE(*loaded.values().value(p), sim().setting(quint8(p)));
     }
     const SimSerialBusStats &s = m_bench->bus()->stats();
-    qInfo("%s: %d of %d backups complete; %llu replies dropped, %llu corrupted", qPrintable(faults), ok, rounds,
-          static_cast<unsigned long long>(s.framesDropped), static_cast<unsigned long long>(s.framesCorrupted));
-    // Late answers: how many backups complete depends on the machine's own latency on top of
-    // the injected one; every failure then says to raise the timeout (checked above).
-    QVERIFY2(ok >= 1 || faults.startsWith(QLatin1String("jitter")), "retries make backups complete despite the faults");
+    // Late replies: bytes the host's link received while no request waited for them (after
+    // the request they answer timed out), dropped with the note "unsolicited or late bytes".
+    int late = 0;
+    for (const TrafficRecord &r : m_bench->records())
+        if (r.direction == TrafficRecord::Direction::Discarded && r.note.contains(QLatin1String("late")))
+            ++late;
+    qInfo("%s: %d of %d backups complete; %llu replies dropped, %llu corrupted; late reply bytes discarded %d times",
+          qPrintable(faults), ok, rounds, static_cast<unsigned long long>(s.framesDropped),
+          static_cast<unsigned long long>(s.framesCorrupted), late);
+    // The faults were felt: the "late" rows prove that replies came after their timeout.
+    if (faults.contains(QLatin1String("drop")) || faults.contains(QLatin1String("corrupt")))
+        QVERIFY(s.framesDropped + s.framesCorrupted > 0);
+    if (faults.startsWith(QLatin1String("jitter")))
+        QVERIFY2(late > 0, "no reply came after its timeout: the row tests nothing late");
+    // Every completed backup held exactly the drive's values (checked above, 0 wrong); with
+    // the retries nearly all complete (measured: docs/reliability.md).
+    QVERIFY2(ok >= minComplete, qPrintable(QStringLiteral("%1 of %2 backups complete").arg(ok).arg(rounds)));
 }
 
 void TestFaultShuoke::silentMidBackup()
@@ -159,7 +184,9 @@ void TestFaultShuoke::silentMidBackup()
 
 void TestFaultShuoke::silentMidRestore()
 {
-    QVERIFY(setUp());
+    // The base backup and the writes before the silence must not fail by the loaded machine's
+    // own latency (at 30 ms they did: the restore then selected nothing).
+    QVERIFY(setUp(100));
     const BackupOutcome base = backupToFile(m_drive, m_dir.filePath(QStringLiteral("base.json")));
     QVERIFY2(!base.error.isError(), qPrintable(base.error.message));
     BackupFile file = base.file;

@@ -5,6 +5,7 @@
 #include <QTemporaryDir>
 
 #include "sim/bus/ptyendpoint.h"
+#include "tests/support/requiretool.h"
 
 using namespace dd;
 
@@ -12,11 +13,7 @@ class TestPtyEndpoint : public QObject
 {
     Q_OBJECT
 private slots:
-    void initTestCase()
-    {
-        if (!PtyEndpoint::isSupported())
-            QSKIP("no pseudo-terminals on this system");
-    }
+    void initTestCase() { DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this system"); }
 
     void bytesFlowBothWays()
     {

@@ -7,6 +7,7 @@
 #include "core/link/linkreply.h"
 #include "core/link/seriallink.h"
 #include "sim/bus/ptyendpoint.h"
+#include "tests/support/requiretool.h"
 
 using namespace dd;
 
@@ -45,11 +46,7 @@ class TestSerialLink : public QObject
 {
     Q_OBJECT
 private slots:
-    void initTestCase()
-    {
-        if (!PtyEndpoint::isSupported())
-            QSKIP("no pseudo-terminals on this system");
-    }
+    void initTestCase() { DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this system"); }
 
     // A reply of the right shape that was already waiting (unread) when the request went out
     // answers an earlier question: it must not be taken for this request's answer.
@@ -127,10 +124,12 @@ private slots:
             const qint64 apart = commandAt[i] - commandAt[i - 1];
             QVERIFY2(apart >= 30000, qPrintable(QString::number(apart)));
         }
-        // 30 ms + the 2 ms allowance + the answer's 2 ms, and timer rounding: well under
-        // what counting from the reply's end plus a second gap would give.
+        // 30 ms + the 2 ms allowance + the answer's 2 ms, and timer rounding; under what counting
+        // from the reply's end plus a second gap would give (>= 62 ms). Measured 50-52 ms while
+        // other builds loaded the machine (the old bound, 45 ms, failed there every time).
         const qint64 mean = (commandAt.last() - commandAt.first()) / (commandAt.size() - 1);
-        QVERIFY2(mean < 45000, qPrintable(QString::number(mean)));
+        qInfo("commands %lld us apart on average", static_cast<long long>(mean));
+        QVERIFY2(mean < 60000, qPrintable(QString::number(mean)));
     }
 };
 

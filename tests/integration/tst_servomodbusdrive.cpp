@@ -14,6 +14,7 @@
 #include "sim/bus/simserialbus.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
 #include "tests/support/replywait.h"
+#include "tests/support/requiretool.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -120,11 +121,7 @@ class TestServoModbusDrive : public QObject
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
-        if (!PtyEndpoint::isSupported())
-            QSKIP("no pseudo-terminals on this platform");
-    }
+    void initTestCase() { DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this platform"); }
 
     void identityReadsFirmwareAndAddress()
     {

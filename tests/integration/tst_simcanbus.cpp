@@ -6,6 +6,7 @@
 
 #include "core/link/wiretime.h"
 #include "sim/bus/simcanbus.h"
+#include "tests/support/requiretool.h"
 
 #include <memory>
 
@@ -117,8 +118,8 @@ private slots:
     void initTestCase()
     {
         QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.virtualcan.info=false"));
-        if (!QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")))
-            QSKIP("Qt's virtualcan plugin is not installed");
+        DD_REQUIRE_TOOL(QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")),
+                        "Qt's virtualcan plugin is not installed");
         QTcpServer probe;
         QVERIFY(probe.listen(QHostAddress::LocalHost, 0));
         m_interface = QStringLiteral("tcp://127.0.0.1:%1/can1").arg(probe.serverPort());

@@ -7,6 +7,7 @@
 #include "core/protocol/modbus/crc16.h"
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simserialbus.h"
+#include "tests/support/requiretool.h"
 
 #include <memory>
 
@@ -139,8 +140,7 @@ class TestSimSerialBus : public QObject
 private slots:
     void init()
     {
-        if (!PtyEndpoint::isSupported())
-            QSKIP("no pseudo-terminals on this system");
+        DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this system");
         auto *pty = new PtyEndpoint;
         const Error err = pty->open();
         QVERIFY2(!err, qPrintable(err.message));

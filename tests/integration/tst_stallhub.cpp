@@ -216,11 +216,14 @@ void TestStallHub::keepAliveSurvivesABlockedGuiThread()
     QVERIFY(waitUntil([this, blockEnd] { return m_sim->times(sc::Command::KeepAlive).last() > blockEnd; }, 1000));
 
     const QList<qint64> t = m_sim->times(sc::Command::KeepAlive);
+    // The guarantee is the gap (<= 150 ms, period 100 ms), from the last keep-alive before the
+    // block to the first after it; a count would fail on one allowed late frame.
     double maxGap = 0;
     int during = 0;
     qint64 prev = -1;
-    for (qint64 x : t) {
-        if (x < blockStart - 150'000'000) // from the last one before the block on
+    for (int k = 0; k < t.size(); ++k) {
+        const qint64 x = t.at(k);
+        if (k + 1 < t.size() && t.at(k + 1) < blockStart) // from the last one before the block on
             continue;
         if (x >= blockStart && x <= blockEnd)
             ++during;
@@ -230,7 +233,7 @@ void TestStallHub::keepAliveSurvivesABlockedGuiThread()
     }
     qInfo("GUI thread blocked %.0f ms: %d keep-alives meanwhile, max gap %.1f ms", ms(blockEnd - blockStart), during,
           maxGap);
-    QVERIFY2(during >= 9, "the keep-alive went on while the GUI thread was blocked");
+    QVERIFY2(prev > blockEnd, "the gap is measured across the whole block");
     QVERIFY2(maxGap <= 150, qPrintable(QStringLiteral("keep-alive gap %1 ms").arg(maxGap)));
     QVERIFY(m_sim->onDrive([](SimServoCanDrive &d) { return d.isHostOnline(); }));
 }
@@ -248,8 +251,8 @@ void TestStallHub::jogLeaseStopsTheAxisWhenTheGuiBlocks()
     renew.setTimerType(Qt::PreciseTimer);
     qint64 lastRenew = 0;
     connect(&renew, &QTimer::timeout, this, [&] {
+        lastRenew = steadyNs(); // before the renewal leaves: the lease cannot end sooner than 300 ms after
         m_hub->renewJogLease(id, 1);
-        lastRenew = steadyNs();
     });
     const DriveResult jog = run(id, [](Drive &d) { return d.jog(300); });
     QVERIFY2(jog.ok(), qPrintable(jog.error.message));
@@ -270,7 +273,9 @@ void TestStallHub::jogLeaseStopsTheAxisWhenTheGuiBlocks()
     QVERIFY2(!stops.isEmpty(), "the I/O thread must stop the axis while the GUI is blocked");
     const double delay = ms(stops.first() - lastBeforeBlock);
     qInfo("jog lease: stop on the wire %.1f ms after the last renewal", delay);
-    QVERIFY2(delay >= 295 && delay <= 400, qPrintable(QStringLiteral("stop after %1 ms").arg(delay)));
+    // The guarantee: not before the 300 ms lease has run out, and on the wire within the lease
+    // plus one keep-alive period (100 ms: one late timer or frame allowed).
+    QVERIFY2(delay >= 299 && delay <= 300 + 100, qPrintable(QStringLiteral("stop after %1 ms").arg(delay)));
     // Decelerating already, at rest soon.
     QVERIFY(m_sim->onDrive([](SimServoCanDrive &d) { return d.motor().speedRpm(); }) < 300);
     QVERIFY(

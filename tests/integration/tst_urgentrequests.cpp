@@ -14,6 +14,7 @@
 #include "core/protocol/modbus/modbusrtuparser.h"
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/virtualcanhub.h"
+#include "tests/support/requiretool.h"
 
 #include <QSignalSpy>
 #include <QTimer>
@@ -78,8 +79,7 @@ private slots:
 
 void TestUrgentRequests::initTestCase()
 {
-    if (!PtyEndpoint::isSupported())
-        QSKIP("no pseudo-terminals on this platform");
+    DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this platform");
 }
 
 void TestUrgentRequests::serialLinkSendsUrgentRightAfterTheOneOnTheWire()

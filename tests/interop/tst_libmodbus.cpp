@@ -7,6 +7,7 @@
 #include "core/link/modbuslink.h"
 #include "sim/bus/ptyendpoint.h"
 #include "tests/support/replywait.h"
+#include "tests/support/requiretool.h"
 
 #include <QProcess>
 
@@ -69,10 +70,9 @@ private slots:
     void initTestCase()
     {
 #ifndef DD_MODBUS_SERVER
-        QSKIP("the libmodbus test server was not built (libmodbus-dev missing)");
+        DD_REQUIRE_TOOL(false, "the libmodbus test server was not built (libmodbus-dev missing)");
 #else
-        if (!PtyEndpoint::isSupported())
-            QSKIP("no pseudo-terminals on this platform");
+        DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this platform");
         m_serverEnd = new PtyEndpoint(this);
         m_hostEnd = new PtyEndpoint(this);
         QVERIFY(!m_serverEnd->open().isError());

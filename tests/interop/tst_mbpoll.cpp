@@ -5,6 +5,7 @@
 #include "sim/bus/ptyendpoint.h"
 #include "sim/bus/simserialbus.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
+#include "tests/support/requiretool.h"
 
 #include <QProcess>
 #include <QRegularExpression>
@@ -73,10 +74,8 @@ private slots:
     void initTestCase()
     {
         m_mbpoll = QStandardPaths::findExecutable(QStringLiteral("mbpoll"));
-        if (m_mbpoll.isEmpty())
-            QSKIP("mbpoll is not installed (apt install mbpoll)");
-        if (!PtyEndpoint::isSupported())
-            QSKIP("no pseudo-terminals on this platform");
+        DD_REQUIRE_TOOL(!m_mbpoll.isEmpty(), "mbpoll is not installed (apt install mbpoll)");
+        DD_REQUIRE_TOOL(PtyEndpoint::isSupported(), "no pseudo-terminals on this platform");
         m_pty = new PtyEndpoint;
         QVERIFY(!m_pty->open().isError());
         m_bus = new SimSerialBus(m_pty, this);

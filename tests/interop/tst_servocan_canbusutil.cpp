@@ -13,10 +13,10 @@
 // meets another process's virtualcan bus on the fixed port 35468.
 #include <QtTest>
 
-#include "core/protocol/servocan/servocan.h"
 #include "sim/bus/simcanbus.h"
 #include "sim/bus/virtualcanhub.h"
 #include "sim/servocan/simservocandrive.h"
+#include "tests/support/requiretool.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -28,22 +28,36 @@
 #include <memory>
 
 using namespace dd;
-namespace sc = dd::servocan;
 
 namespace {
 
 constexpr int kStation = 3; // ID 0x067
 
-// "0x067 + 8 data bytes" as canbusutil prints a frame: the ID in hex, then the bytes in
-// upper-case hex separated by spaces (the exact column layout is not relied on).
-QRegularExpression framePattern(const CanFrameData &f)
+// Every frame below is written by hand from the seed (ID 0x64 + station; b0 station, b1
+// command, b2..b6 payload, b7 0xFF; int32 little-endian in b3..b6), never by the project's
+// servo-can encoder, so a misreading shared by codec and simulator cannot pass.
+//
+// "067" and "03 10 88 00 00 00 00 FF" as canbusutil prints a frame: the ID in hex, then the
+// bytes in upper-case hex separated by spaces (the exact column layout is not relied on).
+QRegularExpression onWire(const char *id, const char *bytes)
 {
-    QStringList bytes;
-    for (char c : f.data)
-        bytes << QStringLiteral("%1").arg(quint8(c), 2, 16, QLatin1Char('0')).toUpper();
-    return QRegularExpression(QStringLiteral("\\b0*%1\\b.*\\b%2\\b")
-                                  .arg(QString::number(f.id, 16).toUpper(), bytes.join(QStringLiteral("\\s+"))),
+    const QString b = QString::fromLatin1(bytes).split(QLatin1Char(' ')).join(QStringLiteral("\\s+"));
+    return QRegularExpression(QStringLiteral("\\b0*%1\\b.*\\b%2\\b").arg(QLatin1String(id), b),
                               QRegularExpression::CaseInsensitiveOption);
+}
+
+// An idle heartbeat (cmd 0x10, state 0x88) of station 3 at `position`, bytes spelled out.
+QRegularExpression idleHeartbeatAt(qint32 position)
+{
+    const auto u = quint32(position);
+    const QByteArray pos = QStringLiteral("%1 %2 %3 %4")
+                               .arg(u & 0xFF, 2, 16, QLatin1Char('0'))
+                               .arg((u >> 8) & 0xFF, 2, 16, QLatin1Char('0'))
+                               .arg((u >> 16) & 0xFF, 2, 16, QLatin1Char('0'))
+                               .arg(u >> 24, 2, 16, QLatin1Char('0'))
+                               .toUpper()
+                               .toLatin1();
+    return onWire("67", QByteArray("03 10 88 " + pos + " FF").constData());
 }
 
 } // namespace
@@ -63,7 +77,7 @@ private slots:
 private:
     QProcess *startListener();
     bool waitForOutput(QProcess *p, const QRegularExpression &re, int ms);
-    bool send(const CanFrameData &frame);
+    bool send(const char *bytes); // to station 3, ID 0x067
 
     QString m_tool;
     std::unique_ptr<VirtualCanHub> m_hub;
@@ -79,8 +93,8 @@ void TestServoCanCanbusutil::initTestCase()
     m_tool = QLibraryInfo::path(QLibraryInfo::BinariesPath) + QStringLiteral("/canbusutil");
     if (!QFileInfo::exists(m_tool))
         m_tool = QStandardPaths::findExecutable(QStringLiteral("canbusutil"));
-    if (m_tool.isEmpty() || !QFileInfo::exists(m_tool))
-        QSKIP("canbusutil not installed (Debian: libqt6serialbus6-bin)");
+    DD_REQUIRE_TOOL(!m_tool.isEmpty() && QFileInfo::exists(m_tool),
+                    "canbusutil not installed (Debian: libqt6serialbus6-bin)");
     m_hub = std::make_unique<VirtualCanHub>();
     QVERIFY(m_hub->start());
     m_bus = std::make_unique<SimCanBus>();
@@ -131,9 +145,9 @@ bool TestServoCanCanbusutil::waitForOutput(QProcess *p, const QRegularExpression
     return false;
 }
 
-bool TestServoCanCanbusutil::send(const CanFrameData &frame)
+bool TestServoCanCanbusutil::send(const char *bytes)
 {
-    return m_sender->writeFrame(QCanBusFrame(frame.id, frame.data));
+    return m_sender->writeFrame(QCanBusFrame(0x64 + kStation, QByteArray::fromHex(bytes)));
 }
 
 void TestServoCanCanbusutil::listenerPrintsHeartbeats()
@@ -141,19 +155,19 @@ void TestServoCanCanbusutil::listenerPrintsHeartbeats()
     QProcess *l = startListener();
     QVERIFY(l->waitForStarted(5000));
     // Idle heartbeat of station 3 at position 0: 067 03 10 88 00 00 00 00 FF.
-    QVERIFY(waitForOutput(l, framePattern(sc::heartbeat(kStation, 0x88, 0)), 5000));
+    QVERIFY(waitForOutput(l, onWire("67", "03 10 88 00 00 00 00 FF"), 5000));
 }
 
 void TestServoCanCanbusutil::readRequestIsAnswered()
 {
     QProcess *l = startListener();
-    QVERIFY(waitForOutput(l, framePattern(sc::heartbeat(kStation, 0x88, 0)), 5000)); // connected
+    QVERIFY(waitForOutput(l, onWire("67", "03 10 88 00 00 00 00 FF"), 5000)); // connected
     // 0x12 / 0xFA read of P75 (station number): the reply carries 3 in b5..b6.
-    QVERIFY(send(sc::readParameter(kStation, 75)));
-    QVERIFY(waitForOutput(l, framePattern(sc::readParameter(kStation, 75)), 5000)); // the request
-    QVERIFY(waitForOutput(l, framePattern(sc::readReplyParameter(kStation, 75, kStation)), 5000));
+    QVERIFY(send("03 12 FA 4B 00 00 00 FF"));
+    QVERIFY(waitForOutput(l, onWire("67", "03 12 FA 4B 00 00 00 FF"), 5000)); // the request
+    QVERIFY(waitForOutput(l, onWire("67", "03 12 FA 4B 00 03 00 FF"), 5000)); // P75 = 3
     // Bus voltage (0xAB): int32 in b3..b6, about 310 V.
-    QVERIFY(send(sc::read(kStation, sc::ReadType::BusVoltage)));
+    QVERIFY(send("03 12 AB 00 00 00 00 FF"));
     QVERIFY(waitForOutput(
         l,
         QRegularExpression(QStringLiteral("\\b0*67\\b.*\\b03\\s+12\\s+AB\\s+3[0-9A-F]\\s+01\\s+00\\s+00\\s+FF"),
@@ -164,11 +178,12 @@ void TestServoCanCanbusutil::readRequestIsAnswered()
 void TestServoCanCanbusutil::writeThenReadBack()
 {
     QProcess *l = startListener();
-    QVERIFY(waitForOutput(l, framePattern(sc::heartbeat(kStation, 0x88, 0)), 5000));
-    QVERIFY(send(sc::writeParameter(kStation, 42, -2)));
+    QVERIFY(waitForOutput(l, onWire("67", "03 10 88 00 00 00 00 FF"), 5000));
+    // 0x15, b2 = 0x01 write parameter, b3 = index 42 (0x2A), b4 = 0, b5..b6 = -2 (FE FF).
+    QVERIFY(send("03 15 01 2A 00 FE FF FF"));
     QTRY_COMPARE_WITH_TIMEOUT(m_sim->parameter(42), qint16(-2), 3000);
-    QVERIFY(send(sc::readParameter(kStation, 42)));
-    QVERIFY(waitForOutput(l, framePattern(sc::readReplyParameter(kStation, 42, -2)), 5000)); // ... FE FF FF
+    QVERIFY(send("03 12 FA 2A 00 00 00 FF"));
+    QVERIFY(waitForOutput(l, onWire("67", "03 12 FA 2A 00 FE FF FF"), 5000));
 }
 
 void TestServoCanCanbusutil::jogStopsByWatchdogWithoutKeepAlive()
@@ -177,9 +192,9 @@ void TestServoCanCanbusutil::jogStopsByWatchdogWithoutKeepAlive()
     // keep-alive: the drive runs, then its 2 s watchdog stops it and keeps it enabled. The
     // heartbeats canbusutil prints show it running (state 00), then idle (88) again.
     QProcess *l = startListener();
-    QVERIFY(waitForOutput(l, framePattern(sc::heartbeat(kStation, 0x88, 0)), 5000));
+    QVERIFY(waitForOutput(l, onWire("67", "03 10 88 00 00 00 00 FF"), 5000));
     const quint64 trips = m_sim->stats().watchdogTrips;
-    QVERIFY(send(sc::runSpeed(kStation, 100)));
+    QVERIFY(send("03 20 00 64 00 00 00 FF"));
     QTRY_VERIFY_WITH_TIMEOUT(qAbs(m_sim->motor().speedRpm() - 100) < 1, 2000);
     QElapsedTimer t;
     t.start();
@@ -193,7 +208,7 @@ void TestServoCanCanbusutil::jogStopsByWatchdogWithoutKeepAlive()
                           1000));
     const qint32 pos = static_cast<qint32>(m_sim->motor().position());
     QVERIFY(pos > 0);
-    QVERIFY(waitForOutput(l, framePattern(sc::heartbeat(kStation, 0x88, pos)), 2000));
+    QVERIFY(waitForOutput(l, idleHeartbeatAt(pos), 2000));
 }
 
 QTEST_GUILESS_MAIN(TestServoCanCanbusutil)

@@ -254,12 +254,15 @@ private slots:
     void everySingleBitFlipIsCaught()
     {
         const QByteArray good = hex("012504e80300003895");
+        QVERIFY(decodeRtu(good).ok()); // else every flip "is caught" by a decoder that takes nothing
         for (int i = 0; i < good.size(); ++i) {
             for (int bit = 0; bit < 8; ++bit) {
                 QByteArray bad = good;
                 bad[i] = static_cast<char>(bad[i] ^ (1 << bit));
+                // CRC-16 detects every single-bit error: no flipped frame may decode at all (to
+                // another frame no more than to this one).
                 const Decoded<Frame> d = decodeRtu(bad);
-                QVERIFY2(!d.ok() || *d.value != *decodeRtu(good).value, qPrintable(bad.toHex()));
+                QVERIFY2(!d.ok(), qPrintable(bad.toHex()));
             }
         }
     }

@@ -3,9 +3,16 @@
 // text that is gone (vanished / obsolete). Chinese is a first-class language: a string
 // that reaches the user untranslated is a bug, so the lupdate target's new entries must be
 // translated before a branch is merged.
+// stringsInTheSourcesAreInTheTs runs lupdate itself (on the sources the build's lupdate
+// target reads, into a temporary copy of the .ts): a tr() string added to the code without
+// running lupdate fails here, not only after someone remembers to run it.
+#include "tests/support/requiretool.h"
+
 #include <QFile>
+#include <QProcess>
 #include <QRegularExpression>
 #include <QSet>
+#include <QTemporaryDir>
 #include <QXmlStreamReader>
 #include <QtTest>
 
@@ -80,6 +87,7 @@ class TestTranslationFile : public QObject
 
 private slots:
     void chineseIsComplete();
+    void stringsInTheSourcesAreInTheTs();
 };
 
 void TestTranslationFile::chineseIsComplete()
@@ -114,6 +122,59 @@ void TestTranslationFile::chineseIsComplete()
                             .arg(problems.size())
                             .arg(path)
                         + problems.join(QStringLiteral("\n  "))));
+}
+
+void TestTranslationFile::stringsInTheSourcesAreInTheTs()
+{
+    // Set by tests/CMakeLists.txt when the GUI (and with it the lupdate target) is built.
+    const QString lupdate = qEnvironmentVariable("DRIVEDESK_LUPDATE");
+    const QString project = qEnvironmentVariable("DRIVEDESK_LUPDATE_PROJECT");
+    DD_REQUIRE_TOOL(!lupdate.isEmpty() && QFile::exists(lupdate), "lupdate not found (the GUI is not built)");
+    // The project file Qt's CMake API writes for the lupdate target: set(lupdate_sources "a;b;...").
+    QFile pf(project);
+    QVERIFY2(pf.open(QIODevice::ReadOnly), qPrintable(project + QStringLiteral(": ") + pf.errorString()));
+    const QString text = QString::fromUtf8(pf.readAll());
+    const QRegularExpressionMatch sources = QRegularExpression(QStringLiteral("set\\(lupdate_sources \"([^\"]*)\"\\)"))
+                                                .match(text);
+    const QRegularExpressionMatch includes =
+        QRegularExpression(QStringLiteral("set\\(lupdate_include_paths \"([^\"]*)\"\\)")).match(text);
+    QVERIFY2(sources.hasMatch(), qPrintable(project));
+    const QStringList files = sources.captured(1).split(QLatin1Char(';'), Qt::SkipEmptyParts);
+    QVERIFY(files.size() > 100);
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString ts = dir.filePath(QStringLiteral("drivedesk_zh_CN.ts"));
+    QVERIFY(QFile::copy(
+        qEnvironmentVariable("DRIVEDESK_SOURCE_DIR") + QStringLiteral("/translations/drivedesk_zh_CN.ts"), ts));
+    QFile::setPermissions(ts, QFile::ReadOwner | QFile::WriteOwner);
+    QFile list(dir.filePath(QStringLiteral("sources.lst")));
+    QVERIFY(list.open(QIODevice::WriteOnly));
+    for (const QString &i : includes.captured(1).split(QLatin1Char(';'), Qt::SkipEmptyParts))
+        list.write((QStringLiteral("-I") + i + QLatin1Char('\n')).toUtf8());
+    for (const QString &f : files)
+        list.write((f + QLatin1Char('\n')).toUtf8());
+    list.close();
+    // The options of the lupdate target (ui/CMakeLists.txt).
+    QProcess p;
+    p.start(lupdate,
+            {QStringLiteral("-locations"), QStringLiteral("none"), QStringLiteral("-no-ui-lines"),
+             QStringLiteral("-no-sort"), QStringLiteral("-silent"), QLatin1Char('@') + list.fileName(),
+             QStringLiteral("-ts"), ts});
+    QVERIFY(p.waitForFinished(120000));
+    QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, p.readAllStandardError().constData());
+
+    QString error;
+    QStringList missing;
+    for (const TsMessage &m : readTs(ts, &error))
+        if (!m.type.isEmpty())
+            missing << QStringLiteral("%1: %2 \"%3\"").arg(m.type, m.context, m.source.left(70));
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QVERIFY2(missing.isEmpty(),
+             qPrintable(QStringLiteral("%1 string(s) of the sources are not (or no longer) in the .ts: run the "
+                                       "drivedesk_ui_lupdate target and translate:\n  ")
+                            .arg(missing.size())
+                        + missing.join(QStringLiteral("\n  "))));
 }
 
 QTEST_APPLESS_MAIN(TestTranslationFile)

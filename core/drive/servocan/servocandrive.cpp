@@ -342,6 +342,11 @@ DriveReply *ServoCanDrive::readStatus()
         s.position = values->value(ReadType::Position);
         s.positionValid = true;
         s.running = heartbeatFresh ? m_tracker->station(m_station).running() : values->value(ReadType::Speed) != 0;
+        // The reads can be older than the heartbeat: a move that ended meanwhile was reported
+        // at rest at the position read while it still moved, short of its end. At rest by
+        // the heartbeat but moving by the read: the heartbeat's position is the one at rest.
+        if (heartbeatFresh && !s.running && values->value(ReadType::Speed) != 0)
+            s.position = m_tracker->station(m_station).position;
         s.alarmCode = values->value(ReadType::AlarmCode);
         updateStatus(s);
         reply->setStatus(status());

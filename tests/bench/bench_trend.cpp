@@ -163,6 +163,14 @@ int main(int argc, char **argv)
             render();
         });
         const int points = int(view.plot()->series().value(0).points.size());
+        const int width = int(view.plot()->plotRect().width());
+        const qint64 to = rec.lastTimeUs();
+        const qint64 from = to - qint64(window) * 1000000;
+        const Timing decimateMs = medianMs(runs, [&] {
+            for (const TrendChannel &c : channels)
+                (void)TrendPlotBuilder::build(*rec.buffer(c.id), from, to, width, 0);
+        });
+        std::printf("(decimation alone, 8 channels to %d px: %s)\n", width, fmt(decimateMs).constData());
         std::printf("| %d s | %d | %s | %s | %s |\n", window, points, fmt(updateMs).constData(),
                     fmt(renderMs).constData(), fmt(bothMs).constData());
         std::fflush(stdout);

@@ -2608,12 +2608,48 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>偏移 +</translation>
     </message>
     <message>
-        <source>The plot shows value × scale + offset; readouts and exports show the real value.</source>
-        <translation>曲线显示“数值 × 比例 + 偏移”；读数和导出为实际值。</translation>
+        <source>Axis, scale…</source>
+        <translation>坐标轴、缩放…</translation>
     </message>
     <message>
-        <source>Show %1 in the plot</source>
-        <translation>在曲线中显示 %1</translation>
+        <source>The selected channel&apos;s axis, scale and offset (also: right click a channel)</source>
+        <translation>所选通道的坐标轴、缩放和偏移（也可右键单击通道）</translation>
+    </message>
+    <message>
+        <source>%1 — on the %2 axis. Right click: axis, scale and offset.</source>
+        <translation>%1 — 位于%2坐标轴。右键单击：坐标轴、缩放和偏移。</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>左</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>右</translation>
+    </message>
+    <message>
+        <source>Left axis</source>
+        <translation>左坐标轴</translation>
+    </message>
+    <message>
+        <source>Right axis</source>
+        <translation>右坐标轴</translation>
+    </message>
+    <message>
+        <source>Scale and offset…</source>
+        <translation>缩放和偏移…</translation>
+    </message>
+    <message>
+        <source>Reset scale and offset</source>
+        <translation>重置缩放和偏移</translation>
+    </message>
+    <message>
+        <source>Scale and offset: %1</source>
+        <translation>缩放和偏移：%1</translation>
+    </message>
+    <message>
+        <source>The plot draws value × scale + offset; readouts and exports show the real value.</source>
+        <translation>曲线绘制 数值 × 缩放 + 偏移；读数和导出均为实际值。</translation>
     </message>
 </context>
 <context>
@@ -2667,40 +2703,56 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>10 分钟</translation>
     </message>
     <message>
-        <source>Sample &amp;rate:</source>
-        <translation>采样频率(&amp;R)：</translation>
-    </message>
-    <message>
         <source> Hz</source>
         <translation> Hz</translation>
     </message>
     <message>
-        <source>How often the drive is read</source>
-        <translation>读取驱动器的频率</translation>
+        <source>Stop recording</source>
+        <translation>停止记录</translation>
     </message>
     <message>
-        <source>Export CSV</source>
-        <translation>导出 CSV</translation>
+        <source>Record</source>
+        <translation>记录</translation>
     </message>
     <message>
-        <source>Save the checked channels&apos; real values as CSV</source>
-        <translation>将勾选通道的实际值保存为 CSV</translation>
+        <source>Recording: the drive is sampled whatever tab or drive is shown</source>
+        <translation>正在记录：无论显示哪个选项卡或驱动器，都会持续采样该驱动器</translation>
     </message>
     <message>
-        <source>Whole recording…</source>
-        <translation>全部记录…</translation>
+        <source>Start recording the checked channels</source>
+        <translation>开始记录勾选的通道</translation>
     </message>
     <message>
-        <source>Visible window…</source>
-        <translation>当前窗口…</translation>
+        <source>&amp;Rate:</source>
+        <translation>采样率(&amp;R)：</translation>
     </message>
     <message>
-        <source>Export PNG…</source>
-        <translation>导出 PNG…</translation>
+        <source>How often the drive is read; the default is what the link can carry</source>
+        <translation>读取驱动器的频率；默认值为链路所能承载的速率</translation>
     </message>
     <message>
-        <source>Save the plot as an image</source>
-        <translation>将曲线保存为图片</translation>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <source>Save the checked channels&apos; real values as CSV, or the plot as an image</source>
+        <translation>将勾选通道的实际值保存为 CSV，或将曲线保存为图像</translation>
+    </message>
+    <message>
+        <source>CSV, whole recording…</source>
+        <translation>CSV，整段记录…</translation>
+    </message>
+    <message>
+        <source>CSV, visible window…</source>
+        <translation>CSV，可见窗口…</translation>
+    </message>
+    <message>
+        <source>Plot as PNG…</source>
+        <translation>曲线图存为 PNG…</translation>
+    </message>
+    <message>
+        <source>Plot as SVG…</source>
+        <translation>曲线图存为 SVG…</translation>
     </message>
 </context>
 <context>
@@ -2721,13 +2773,13 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>This drive reports no live channels.</source>
         <translation>该驱动器没有报告实时通道。</translation>
     </message>
+    <message>
+        <source>%1, address %2</source>
+        <translation>%1，地址 %2</translation>
+    </message>
 </context>
 <context>
     <name>dd::TrendView</name>
-    <message>
-        <source>Drag to zoom, right click to zoom out</source>
-        <translation>拖动可放大，右键单击可缩小</translation>
-    </message>
     <message>
         <source>Time [s]</source>
         <translation>时间 [s]</translation>
@@ -2735,10 +2787,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Scaled value</source>
         <translation>缩放后的数值</translation>
-    </message>
-    <message>
-        <source>Point at the plot to read values.</source>
-        <translation>将鼠标指向曲线可读取数值。</translation>
     </message>
     <message>
         <source>t = %1 s</source>
@@ -2767,10 +2815,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>已达记录上限：最早的采样点已丢弃</translation>
     </message>
     <message>
-        <source>view paused, still recording</source>
-        <translation>显示已暂停，仍在记录</translation>
-    </message>
-    <message>
         <source>Cannot save the plot image %1: %2. Check that the folder exists and is writable.</source>
         <translation>无法保存曲线图片 %1：%2。请检查文件夹是否存在且可写。</translation>
     </message>
@@ -2783,10 +2827,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>CSV 文件 (*.csv)</translation>
     </message>
     <message>
-        <source>Export CSV</source>
-        <translation>导出 CSV</translation>
-    </message>
-    <message>
         <source>Export plot as PNG</source>
         <translation>将曲线导出为 PNG</translation>
     </message>
@@ -2795,8 +2835,84 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>PNG 图片 (*.png)</translation>
     </message>
     <message>
-        <source>Export PNG</source>
-        <translation>导出 PNG</translation>
+        <source>Drag: zoom · wheel: zoom time (Shift: pan) · click: cursor A, Shift+click: cursor B · +/−, ←/→, Home: zoom, pan, reset · Esc: remove cursors</source>
+        <translation>拖动：缩放 · 滚轮：缩放时间（Shift：平移）· 单击：光标 A，Shift+单击：光标 B · +/−、←/→、Home：缩放、平移、复位 · Esc：移除光标</translation>
+    </message>
+    <message>
+        <source>%1 (left)</source>
+        <translation>%1（左）</translation>
+    </message>
+    <message>
+        <source>%1 (right)</source>
+        <translation>%1（右）</translation>
+    </message>
+    <message>
+        <source>no unit</source>
+        <translation>无单位</translation>
+    </message>
+    <message>
+        <source>Point at the plot to read values; click to set cursor A, Shift+click for B.</source>
+        <translation>指向曲线可读取数值；单击设置光标 A，Shift+单击设置光标 B。</translation>
+    </message>
+    <message>
+        <source>A: %1 s</source>
+        <translation>A：%1 s</translation>
+    </message>
+    <message>
+        <source>B: %1 s</source>
+        <translation>B：%1 s</translation>
+    </message>
+    <message>
+        <source>Δt = %1 s</source>
+        <translation>Δt = %1 s</translation>
+    </message>
+    <message>
+        <source>Δ %1: %2</source>
+        <translation>Δ %1：%2</translation>
+    </message>
+    <message>
+        <source>Δ %1: %2 %3</source>
+        <translation>Δ %1：%2 %3</translation>
+    </message>
+    <message>
+        <source>recording</source>
+        <translation>正在记录</translation>
+    </message>
+    <message>
+        <source>view paused</source>
+        <translation>视图已暂停</translation>
+    </message>
+    <message>
+        <source>DriveDesk trend</source>
+        <translation>DriveDesk 趋势图</translation>
+    </message>
+    <message>
+        <source>DriveDesk trend: %1</source>
+        <translation>DriveDesk 趋势图：%1</translation>
+    </message>
+    <message>
+        <source>Recorded %1, window %2 s to %3 s</source>
+        <translation>记录于 %1，窗口 %2 s 至 %3 s</translation>
+    </message>
+    <message>
+        <source>Channels: %1</source>
+        <translation>通道：%1</translation>
+    </message>
+    <message>
+        <source>Export plot as SVG</source>
+        <translation>将曲线图导出为 SVG</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>SVG 图像 (*.svg)</translation>
+    </message>
+    <message>
+        <source>CSV saved to %1.</source>
+        <translation>CSV 已保存到 %1。</translation>
+    </message>
+    <message>
+        <source>Plot saved to %1.</source>
+        <translation>曲线图已保存到 %1。</translation>
     </message>
 </context>
 <context>

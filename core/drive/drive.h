@@ -60,6 +60,15 @@ public:
     virtual DriveReply *writeParameters(const QList<ParameterWrite> &writes);
     // Live values: fills reply->samples() for the channel ids asked for.
     virtual DriveReply *readChannels(const QStringList &channelIds);
+    // The least time one readChannels(channelIds) takes on the wire, in µs: its requests
+    // and replies at the link's speed, the pauses the protocol imposes and a typical drive
+    // latency (1 ms serial, 200 µs CAN: the simulator's). 1e6 / this is the most readings a
+    // second the link carries: the trend's default rate. 0 when unknown.
+    virtual double channelReadUs(const QStringList &channelIds) const
+    {
+        Q_UNUSED(channelIds);
+        return 0.0;
+    }
     // Alarms.
     virtual DriveReply *readAlarm();
     virtual DriveReply *clearAlarm();

@@ -32,6 +32,10 @@ namespace dd {
 // - Values use the shortest text that reads back to the same double: plain decimals for
 //   0 and magnitudes in [1e-6, 1e15) ("1500", "0.1", "-2.5"), exponent form otherwise
 //   ("1e+20"); non-finite values are written "nan", "inf", "-inf".
+// - A gap in a recording (TrendRecorder::appendGap(): link lost, drive silent, recording
+//   stopped) is a row whose cells are "nan" at the time the gap began: spreadsheet and
+//   plotting tools (pandas, gnuplot, matplotlib) break the line there instead of joining
+//   the samples either side. Empty cells still mean "not sampled in this reading".
 //
 // Two ways to write:
 // - save(): a whole snapshot, atomically (QSaveFile: the file appears complete or not at

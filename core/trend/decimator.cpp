@@ -106,7 +106,25 @@ QList<TrendSample> Decimator::minMax(const SampleBuffer &buffer, qint64 fromUs, 
     out.reserve(std::min<qsizetype>(end - i, 2 * w.n));
     while (i < end) {
         const qint64 bucketEnd = w.endOf(w.bucketOf(buffer.timeAt(i)));
-        const qsizetype j = std::min(end, buffer.lowerBound(bucketEnd));
+        // The first sample at or after bucketEnd, galloping from i: the search stays in the
+        // memory just read (a binary search over the whole buffer misses the cache on
+        // every step: ~2 µs per bucket on 600k samples).
+        qsizetype lo = i;
+        qsizetype step = 1;
+        qsizetype hi = i + 1;
+        while (hi < end && buffer.timeAt(hi) < bucketEnd) {
+            lo = hi;
+            step *= 2;
+            hi = std::min(end, hi + step);
+        }
+        while (lo < hi) { // first index in [lo, hi] with time >= bucketEnd (hi: end or such)
+            const qsizetype mid = lo + (hi - lo) / 2;
+            if (buffer.timeAt(mid) < bucketEnd)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        const qsizetype j = lo;
         const SampleBuffer::Extremes e = buffer.extremes(i, j);
         if (e.minIndex >= 0) {
             if (e.minIndex == e.maxIndex) {

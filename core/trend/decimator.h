@@ -23,9 +23,10 @@ class SampleBuffer;
 // A bucket with at most two samples keeps them all, so when the data is sparser than two
 // samples per bucket the output equals the input window: decimation is lossless there.
 // Pure functions. Over a list: a scan, O(samples in the window). Over a SampleBuffer,
-// two strategies with exactly the same result: Scan, or Summaries (per non-empty bucket
-// O(log n) plus SampleBuffer::extremes() over the block summaries, so a 10-minute window
-// at 1 kHz costs about as much as a few seconds of raw samples). Auto scans when buckets
+// two strategies with exactly the same result: Scan, or Summaries (per non-empty bucket a
+// galloping search from the bucket's start, O(log samples per bucket) in memory just
+// read, plus SampleBuffer::extremes() over the block summaries, so a 10-minute window at
+// 1 kHz costs about as much as a few seconds of raw samples). Auto scans when buckets
 // hold fewer than ~256 samples on average, where the summaries do not pay off.
 class Decimator
 {

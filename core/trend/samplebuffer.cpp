@@ -27,11 +27,17 @@ bool SampleBuffer::append(qint64 timeUs, double value)
         }
         m_times.push_back(timeUs);
         m_values.push_back(value);
+        if (std::isnan(value))
+            m_gaps.push_back(timeUs);
         summarize(static_cast<qint64>(m_dropped) + m_size, value);
         ++m_size;
         return true;
     }
     // Full: overwrite the oldest sample.
+    if (std::isnan(m_values[static_cast<size_t>(m_head)]) && !m_gaps.empty())
+        m_gaps.pop_front();
+    if (std::isnan(value))
+        m_gaps.push_back(timeUs);
     m_times[static_cast<size_t>(m_head)] = timeUs;
     m_values[static_cast<size_t>(m_head)] = value;
     m_head = m_head + 1 == m_capacity ? 0 : m_head + 1;
@@ -131,6 +137,7 @@ void SampleBuffer::clear()
     std::vector<qint64>().swap(m_times);
     std::vector<double>().swap(m_values);
     std::vector<Block>().swap(m_blocks);
+    m_gaps.clear();
     m_head = 0;
     m_size = 0;
     m_dropped = 0;
@@ -159,6 +166,42 @@ void SampleBuffer::setCapacity(qsizetype capacity)
     m_size = keep;
     m_dropped += static_cast<quint64>(skip);
     rebuildSummaries();
+    rebuildGaps();
+}
+
+void SampleBuffer::rebuildGaps()
+{
+    m_gaps.clear();
+    for (qsizetype i = 0; i < m_size; ++i)
+        if (std::isnan(valueAt(i)))
+            m_gaps.push_back(timeAt(i));
+}
+
+std::vector<qint64> SampleBuffer::gapTimes(qint64 fromUs, qint64 toUs) const
+{
+    std::vector<qint64> out;
+    if (toUs < fromUs)
+        return out;
+    auto it = std::lower_bound(m_gaps.cbegin(), m_gaps.cend(), fromUs);
+    for (; it != m_gaps.cend() && *it <= toUs; ++it)
+        out.push_back(*it);
+    return out;
+}
+
+std::optional<double> SampleBuffer::lineValueAt(qint64 timeUs) const
+{
+    if (m_size == 0 || timeUs < firstTimeUs() || timeUs > lastTimeUs())
+        return std::nullopt;
+    const qsizetype after = upperBound(timeUs); // first sample later than timeUs
+    const qsizetype before = after - 1;         // >= 0: timeUs >= firstTimeUs()
+    const double v0 = valueAt(before);
+    if (timeAt(before) == timeUs || after == m_size)
+        return std::isnan(v0) ? std::nullopt : std::optional<double>(v0);
+    const double v1 = valueAt(after);
+    if (std::isnan(v0) || std::isnan(v1))
+        return std::nullopt;
+    const double f = static_cast<double>(timeUs - timeAt(before)) / static_cast<double>(timeAt(after) - timeAt(before));
+    return v0 + (v1 - v0) * f;
 }
 
 qsizetype SampleBuffer::memoryBytes() const

@@ -3,6 +3,7 @@
 #include "core/trend/trendsample.h"
 
 #include <QList>
+#include <deque>
 #include <optional>
 #include <vector>
 
@@ -25,7 +26,12 @@ namespace dd {
 // For fast decimation of long windows the buffer also keeps, per block of BlockSize
 // consecutive samples, the block's smallest and largest sample (0.5 byte per sample):
 // extremes() over a range reads whole blocks from these summaries and only scans the
-// partial blocks at its ends, O(BlockSize + n / BlockSize). Not thread-safe.
+// partial blocks at its ends, O(BlockSize + n / BlockSize).
+//
+// Gaps: a NaN value marks a gap (the recording lost the drive at that time: link lost,
+// drive silent, recording stopped). The plot breaks the line there and the CSV writes
+// "nan"; lookups and extremes skip it. The times of the NaN samples kept are indexed
+// (gapTimes()) so a plot finds them without scanning. Not thread-safe.
 class SampleBuffer
 {
 public:
@@ -75,6 +81,14 @@ public:
     // Extremes of the samples with index in [begin, end).
     Extremes extremes(qsizetype begin, qsizetype end) const;
 
+    // Times of the gap markers (NaN samples) with fromUs <= time <= toUs, oldest first.
+    std::vector<qint64> gapTimes(qint64 fromUs, qint64 toUs) const;
+    qsizetype gapCount() const { return static_cast<qsizetype>(m_gaps.size()); }
+    // The value the plotted line has at timeUs: linear between the samples either side
+    // (the sample itself at its exact time); nullopt outside the recording and inside a gap
+    // (either neighbour is a gap marker).
+    std::optional<double> lineValueAt(qint64 timeUs) const;
+
 private:
     struct Block
     {
@@ -96,6 +110,8 @@ private:
     std::vector<qint64> m_times;
     std::vector<double> m_values;
     std::vector<Block> m_blocks; // ring: block b at b % blockSlots()
+    std::deque<qint64> m_gaps;   // times of the NaN samples kept, oldest first
+    void rebuildGaps();
     qsizetype blockSlots() const { return m_capacity / BlockSize + 2; }
     qsizetype m_capacity;
     qsizetype m_head = 0; // physical index of the oldest sample (0 until the ring wraps)

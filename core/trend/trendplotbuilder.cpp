@@ -23,21 +23,43 @@ TrendPlotBuilder::Result TrendPlotBuilder::build(const SampleBuffer &buffer, qin
         // Subtract in integers first: doubles lose µs beyond ~285 years but not differences.
         return QPointF(static_cast<double>(s.timeUs - originUs) * 1e-6, s.value * scale + offset);
     };
-    r.points.reserve(inside.size() + 2);
+    QList<TrendSample> line;
+    line.reserve(inside.size() + 2);
     const qsizetype before = buffer.lowerBound(fromUs) - 1;
     if (edges && before >= 0 && !std::isnan(buffer.valueAt(before)))
-        r.points.append(map(buffer.at(before)));
+        line.append(buffer.at(before));
+    line.append(inside);
+    const qsizetype after = buffer.upperBound(toUs);
+    if (edges && after < buffer.size() && !std::isnan(buffer.valueAt(after)))
+        line.append(buffer.at(after));
     double lo = std::numeric_limits<double>::infinity();
     double hi = -std::numeric_limits<double>::infinity();
     for (const TrendSample &s : inside) {
-        const QPointF p = map(s);
-        lo = std::min(lo, p.y());
-        hi = std::max(hi, p.y());
-        r.points.append(p);
+        const double y = s.value * scale + offset;
+        lo = std::min(lo, y);
+        hi = std::max(hi, y);
     }
-    const qsizetype after = buffer.upperBound(toUs);
-    if (edges && after < buffer.size() && !std::isnan(buffer.valueAt(after)))
-        r.points.append(map(buffer.at(after)));
+    // Gap markers between the first and the last point, walked in step with the points.
+    const std::vector<qint64> gaps = line.isEmpty() ? std::vector<qint64>()
+                                                    : buffer.gapTimes(line.first().timeUs, line.last().timeUs);
+    auto gap = gaps.cbegin();
+    r.points.reserve(line.size() + static_cast<qsizetype>(gaps.size()));
+    for (qsizetype i = 0; i < line.size(); ++i) {
+        const qint64 t = line.at(i).timeUs;
+        if (i > 0) {
+            bool broken = false;
+            while (gap != gaps.cend() && *gap <= t) {
+                broken = broken || *gap >= line.at(i - 1).timeUs;
+                ++gap;
+            }
+            if (broken)
+                r.points.append(QPointF(static_cast<double>(t - originUs) * 1e-6, std::nan("")));
+        } else {
+            while (gap != gaps.cend() && *gap < t)
+                ++gap;
+        }
+        r.points.append(map(line.at(i)));
+    }
     if (!inside.isEmpty()) {
         r.yMin = lo;
         r.yMax = hi;

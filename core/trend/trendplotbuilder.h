@@ -13,12 +13,16 @@ namespace dd {
 // value × scale + offset. At most 2 × widthPx points: the window gets widthPx - 1
 // buckets (≤ 2 points each) and the two edge points make up the rest (below 2 px: one
 // bucket, no edge points).
+// Gaps: where the buffer holds a gap marker (a NaN sample, see SampleBuffer) between two
+// consecutive points, a point with y = NaN is put between them: the view breaks the line
+// there instead of drawing a ramp across the gap. Break points are extra to the bound
+// above (one per gap in the window).
 class TrendPlotBuilder
 {
 public:
     struct Result
     {
-        QList<QPointF> points;
+        QList<QPointF> points; // y = NaN: a break (a gap in the recording)
         // Range of y over the points inside the window (edge points excluded);
         // yMin > yMax when the window holds no sample.
         double yMin = 0.0;

@@ -1,6 +1,7 @@
 #include "core/trend/trendrecorder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace dd {
@@ -106,6 +107,26 @@ int TrendRecorder::appendSamples(qint64 timeUs, const QMap<QString, double> &val
     for (auto it = values.cbegin(); it != values.cend(); ++it)
         n += append(it.key(), timeUs, it.value()) ? 1 : 0;
     return n;
+}
+
+int TrendRecorder::appendGap(qint64 timeUs)
+{
+    int n = 0;
+    for (auto &b : m_buffers) {
+        if (b->isEmpty() || std::isnan(b->valueAt(b->size() - 1)))
+            continue; // nothing to break yet, or already broken
+        b->append(std::max(timeUs, b->lastTimeUs()), std::numeric_limits<double>::quiet_NaN());
+        ++n;
+    }
+    if (n > 0)
+        ++m_revision;
+    return n;
+}
+
+std::optional<double> TrendRecorder::lineValueAt(const QString &channelId, qint64 timeUs) const
+{
+    const SampleBuffer *b = buffer(channelId);
+    return b ? b->lineValueAt(timeUs) : std::nullopt;
 }
 
 void TrendRecorder::clear()

@@ -8,6 +8,7 @@
 #include <QObject>
 #include <QStringList>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace dd {
@@ -47,6 +48,13 @@ public:
     // All values of one reading (e.g. DriveReply::samples()) at the same time; returns
     // how many were recorded.
     int appendSamples(qint64 timeUs, const QMap<QString, double> &values);
+    // Marks a gap at timeUs in every channel (a NaN sample, see SampleBuffer): the
+    // recording lost the drive there (link lost, drive silent, recording stopped). A
+    // channel whose newest sample is later gets the mark at that sample's time; a channel
+    // whose newest sample already is a gap gets none. Returns how many channels got one.
+    int appendGap(qint64 timeUs);
+    // The value of a channel's plotted line at timeUs (SampleBuffer::lineValueAt()).
+    std::optional<double> lineValueAt(const QString &channelId, qint64 timeUs) const;
     void clear();
 
     bool isPaused() const { return m_paused; }

@@ -3,16 +3,15 @@
 #include "core/trend/trendrecorder.h"
 #include "ui/panels/trend/trendchannelpanel.h"
 #include "ui/panels/trend/trendcontrols.h"
+#include "ui/panels/trend/trendplot.h"
 #include "ui/panels/trend/trendview.h"
 
-#include <QChart>
-#include <QChartView>
-#include <QCheckBox>
 #include <QDoubleSpinBox>
-#include <QLineSeries>
+#include <QListWidget>
+#include <QMenu>
 #include <QPushButton>
 #include <QTemporaryDir>
-#include <QValueAxis>
+#include <QToolButton>
 #include <cmath>
 
 using namespace dd;
@@ -46,11 +45,6 @@ void feed(TrendRecorder &rec, int first, int n)
     }
 }
 
-QValueAxis *axisX(TrendView &v)
-{
-    return qobject_cast<QValueAxis *>(v.chart()->axes(Qt::Horizontal).value(0));
-}
-
 QStringList readLines(const QString &path)
 {
     QFile f(path);
@@ -62,6 +56,11 @@ QStringList readLines(const QString &path)
     return lines;
 }
 
+int breaks(const QList<QPointF> &points)
+{
+    return int(std::count_if(points.cbegin(), points.cend(), [](const QPointF &p) { return std::isnan(p.y()); }));
+}
+
 } // namespace
 
 class TestTrendView : public QObject
@@ -71,26 +70,43 @@ private:
     std::unique_ptr<TrendRecorder> m_rec;
     std::unique_ptr<TrendView> m_view;
 
-    void makeView(int samples)
+    void makeView(int samples, QList<TrendChannel> channels = fourChannels())
     {
         m_view.reset();
         m_rec = std::make_unique<TrendRecorder>();
-        m_rec->setChannels(fourChannels());
+        m_rec->setChannels(channels);
         feed(*m_rec, 0, samples);
         m_view = std::make_unique<TrendView>(m_rec.get());
-        m_view->resize(1200, 700);
+        m_view->resize(1000, 600);
         m_view->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
         m_view->refreshNow();
     }
 
-    int plotWidth() const { return static_cast<int>(m_view->chart()->plotArea().width()); }
+    TrendPlot *plot() const { return m_view->plot(); }
+    QList<QPointF> points(const QString &id) const
+    {
+        const TrendPlot::Series *s = plot()->seriesById(id);
+        return s ? s->points : QList<QPointF>();
+    }
+    int plotWidth() const { return static_cast<int>(plot()->plotRect().width()); }
 
 private slots:
     void cleanup()
     {
         m_view.reset();
         m_rec.reset();
+    }
+
+    void theLayoutGivesThePlotMostOfTheTab()
+    {
+        makeView(1000);
+        const QRect plotBox = plot()->geometry();
+        QVERIFY2(plotBox.width() * plotBox.height() > 0.5 * m_view->width() * m_view->height(),
+                 qPrintable(QStringLiteral("%1x%2").arg(plotBox.width()).arg(plotBox.height())));
+        // The channel list is compact: no spin boxes per row.
+        QVERIFY(m_view->findChildren<QDoubleSpinBox *>().size() == 1); // the sample rate only
+        QVERIFY(m_view->channelPanel()->width() <= 220);
     }
 
     void seriesStayWithinTwoPointsPerPixel_data()
@@ -110,165 +126,224 @@ private slots:
         QVERIFY2(width > 100, qPrintable(QString::number(width)));
         const qint64 inWindow = std::min<qint64>(qint64(window) * 1000, 100000);
         for (const TrendChannel &c : fourChannels()) {
-            QLineSeries *s = m_view->series(c.id);
-            QVERIFY(s);
-            QVERIFY2(s->count() <= 2 * width,
-                     qPrintable(QStringLiteral("%1: %2 points for %3 px").arg(c.id).arg(s->count()).arg(width)));
-            QVERIFY(s->count() > 0);
-            QVERIFY(s->count() < inWindow); // actually decimated
+            const QList<QPointF> pts = points(c.id);
+            QVERIFY2(pts.size() <= 2 * width, qPrintable(QStringLiteral("%1: %2 points").arg(c.id).arg(pts.size())));
+            QVERIFY(pts.size() > 0);
+            QVERIFY(pts.size() < inWindow); // actually decimated
         }
-        // The window follows the newest sample.
-        QCOMPARE(axisX(*m_view)->max() - axisX(*m_view)->min(), double(window));
-        if (window <= 100)
-            QCOMPARE(axisX(*m_view)->max(), 99.999);
+        QCOMPARE(plot()->timeMax() - plot()->timeMin(), double(window));
+        if (window < 100)
+            QCOMPARE(plot()->timeMax(), 99.999); // follows the newest sample
     }
 
-    void peaksSurviveDecimation()
+    // Issue 10 #1: a gap in the recording is a gap in the plot and the CSV, not a ramp.
+    void gapsAreDrawnAndExportedAsGaps()
     {
-        m_rec = std::make_unique<TrendRecorder>();
-        m_rec->setChannels(fourChannels().mid(0, 1));
-        for (int i = 0; i < 100000; ++i)
-            m_rec->append(Speed, T0 + qint64(i) * 1000, i == 54321 ? 9999.0 : 100.0);
-        m_view = std::make_unique<TrendView>(m_rec.get());
-        m_view->resize(900, 500);
-        m_view->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
-        m_view->setWindowSeconds(600);
+        makeView(0, {fourChannels().at(1)});
+        m_rec->append(Torque, T0, 0.0);
+        m_rec->append(Torque, T0 + 1000000, 0.0);
+        m_rec->appendGap(T0 + 1500000); // the link was lost
+        m_rec->append(Torque, T0 + 8000000, 8.0);
+        m_rec->append(Torque, T0 + 9000000, 8.0);
         m_view->refreshNow();
-        const QList<QPointF> pts = m_view->series(Speed)->points();
-        QVERIFY(pts.size() <= 2 * plotWidth());
-        QVERIFY(pts.contains(QPointF(54.321, 9999.0)));
+        const QList<QPointF> pts = points(Torque);
+        QCOMPARE(breaks(pts), 1);
+        // No segment of the drawn line crosses the gap.
+        for (int i = 1; i < pts.size(); ++i)
+            if (!std::isnan(pts.at(i).y()) && !std::isnan(pts.at(i - 1).y()))
+                QVERIFY2(!(pts.at(i - 1).x() < 1.5 && pts.at(i).x() > 1.5), "a ramp across the gap");
+        // The readout in the gap says there is no value (not an interpolated 4 %).
+        m_view->setHoverTime(4.0);
+        QVERIFY2(m_view->cursorReadout().contains(QStringLiteral("Torque: –")), qPrintable(m_view->cursorReadout()));
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("gap.csv"));
+        QVERIFY(!m_view->exportCsv(csv, TrendView::ExportRange::WholeRecording));
+        QCOMPARE(readLines(csv),
+                 (QStringList{QStringLiteral("time_s,torque [%]"), QStringLiteral("0.000000,0"),
+                              QStringLiteral("1.000000,0"), QStringLiteral("1.500000,nan"),
+                              QStringLiteral("8.000000,8"), QStringLiteral("9.000000,8")}));
+    }
+
+    // Issue 10 #1: the readout shows the value at the cursor (the line), not the next sample.
+    void hoverReadsTheLine()
+    {
+        makeView(0, {fourChannels().at(1)});
+        m_rec->append(Torque, T0, 0.0);
+        m_rec->append(Torque, T0 + 2000000, 8.0);
+        m_view->refreshNow();
+        m_view->setHoverTime(0.5);
+        QVERIFY2(m_view->cursorReadout().contains(QStringLiteral("Torque: 2.0 %")),
+                 qPrintable(m_view->cursorReadout()));
+        // The mouse does the same.
+        const QRectF r = plot()->plotRect();
+        QTest::mouseMove(plot(), QPoint(int(plot()->xAtTime(1.0)), int(r.center().y())));
+        QTRY_VERIFY2(!m_view->cursorReadout().contains(QStringLiteral("t = 0.500")),
+                     qPrintable(m_view->cursorReadout()));
+        const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("t = ([0-9.]+) s   Torque: ([0-9.]+) %"))
+                                              .match(m_view->cursorReadout());
+        QVERIFY2(m.hasMatch(), qPrintable(m_view->cursorReadout()));
+        const double t = m.captured(1).toDouble();
+        QVERIFY(std::fabs(t - 1.0) < 0.05);
+        QCOMPARE(m.captured(2), QString::number(4.0 * t, 'f', 1)); // on the line from 0 to 8 over 2 s
+    }
+
+    void twoCursorsGiveDeltas()
+    {
+        makeView(0, {fourChannels().at(0), fourChannels().at(1)});
+        m_rec->append(Speed, T0, 100.0);
+        m_rec->append(Torque, T0, 1.0);
+        m_rec->append(Speed, T0 + 4000000, 500.0);
+        m_rec->append(Torque, T0 + 4000000, 9.0);
+        m_view->refreshNow();
+        m_view->setMarker(0, 1.0);
+        m_view->setMarker(1, 3.0);
+        const QString text = m_view->markerReadout();
+        QVERIFY2(text.contains(QStringLiteral("Δt = 2.000 s")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Δ Speed: 200 r/min")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Δ Torque: 4.0 %")), qPrintable(text));
+        QCOMPARE(plot()->marker(1), std::optional<double>(3.0));
+        // Click places A, Shift+click B; Esc removes both.
+        const int y = int(plot()->plotRect().center().y());
+        QTest::mouseClick(plot(), Qt::LeftButton, {}, QPoint(int(plot()->xAtTime(2.0)), y));
+        QVERIFY(std::fabs(*m_view->marker(0) - 2.0) < 0.05);
+        QTest::mouseClick(plot(), Qt::LeftButton, Qt::ShiftModifier, QPoint(int(plot()->xAtTime(2.5)), y));
+        QVERIFY(std::fabs(*m_view->marker(1) - 2.5) < 0.05);
+        plot()->setFocus();
+        QTest::keyClick(plot(), Qt::Key_Escape);
+        QVERIFY(!m_view->marker(0) && !m_view->marker(1));
+    }
+
+    // Different units: their own axes, left and right, assignable; readable ticks.
+    void channelsWithDifferentUnitsGetTheirOwnAxes()
+    {
+        makeView(20000);
+        QCOMPARE(m_view->channelAxis(Speed), int(TrendPlot::Left));
+        QCOMPARE(m_view->channelAxis(Torque), int(TrendPlot::Right));
+        QVERIFY(plot()->valueAxis(TrendPlot::Left).used);
+        QVERIFY(plot()->valueAxis(TrendPlot::Right).used);
+        QCOMPARE(plot()->valueAxis(TrendPlot::Left).title, QStringLiteral("Speed [r/min]"));
+        // Each axis fits its own data: speed spans thousands, torque tens.
+        QVERIFY(plot()->valueAxis(TrendPlot::Left).max >= 1400);
+        QVERIFY(plot()->valueAxis(TrendPlot::Right).max < 400);
+        // Ticks on round steps, labelled without noise digits.
+        for (int axis : {-1, 0, 1}) {
+            const QList<double> ticks = plot()->ticks(axis);
+            QVERIFY(ticks.size() >= 2);
+            const double step = ticks.at(1) - ticks.at(0);
+            const double mantissa = step / std::pow(10.0, std::floor(std::log10(step)));
+            QVERIFY2(std::fabs(mantissa - 1) < 1e-6 || std::fabs(mantissa - 2) < 1e-6 || std::fabs(mantissa - 5) < 1e-6,
+                     qPrintable(QString::number(step)));
+            for (double t : ticks)
+                QVERIFY2(TrendPlot::tickLabel(t, step).size() <= 7, qPrintable(TrendPlot::tickLabel(t, step)));
+        }
+        QCOMPARE(TrendPlot::tickLabel(194.45700001, 50), QStringLiteral("194"));
+        QCOMPARE(TrendPlot::tickLabel(0.30000000000000004, 0.1), QStringLiteral("0.3"));
+        // Assignable, from the channel's menu.
+        QMenu *menu = m_view->channelPanel()->menuFor(Torque);
+        menu->findChild<QAction *>(QStringLiteral("leftAxis"))->trigger();
+        QCOMPARE(m_view->channelAxis(Torque), int(TrendPlot::Left));
+        m_view->setChannelVisible(Current, false);
+        m_view->setChannelVisible(Bus, false);
+        m_view->refreshNow();
+        QVERIFY(!plot()->valueAxis(TrendPlot::Right).used);
+        QCOMPARE(plot()->valueAxis(TrendPlot::Left).title, QStringLiteral("r/min, %"));
+    }
+
+    void shownChannelsHaveDistinctColours()
+    {
+        QList<TrendChannel> many;
+        for (int i = 0; i < 14; ++i)
+            many.append({QStringLiteral("c%1").arg(i), QStringLiteral("Channel %1").arg(i), QStringLiteral("V"), 0});
+        makeView(0, many);
+        for (const TrendChannel &c : many)
+            m_view->setChannelVisible(c.id, true);
+        QSet<QRgb> seen;
+        for (const TrendChannel &c : many)
+            seen.insert(m_view->channelColor(c.id).rgb());
+        QCOMPARE(seen.size(), many.size());
+    }
+
+    // Issue 10 #6: a long channel name does not widen the view or get cut in the legend.
+    void longNamesNeitherWidenNorCut()
+    {
+        const QString longName = QStringLiteral("Status bits (running, left limit, origin, right limit, enable)");
+        makeView(0, {{QStringLiteral("status"), longName, QString(), 0}, fourChannels().at(0)});
+        m_view->setChannelVisible(QStringLiteral("status"), true);
+        m_view->refreshNow();
+        QVERIFY2(m_view->minimumSizeHint().width() <= 700,
+                 qPrintable(QString::number(m_view->minimumSizeHint().width())));
+        QVERIFY(m_view->channelPanel()->item(QStringLiteral("status"))->toolTip().contains(longName));
+        QVERIFY(plot()->legendTexts().first().startsWith(longName)); // wrapped, not cut
+    }
+
+    void zoomAndPanByMouseAndKeyboard()
+    {
+        makeView(60000);
+        QCOMPARE(plot()->timeMax(), 59.999);
+        plot()->setFocus();
+        QTest::keyClick(plot(), Qt::Key_Plus);
+        QVERIFY(m_view->isZoomed());
+        QVERIFY(m_rec->isPaused());
+        QVERIFY(plot()->timeMax() - plot()->timeMin() < 30.0 * 0.85);
+        const double before = plot()->timeMin();
+        QTest::keyClick(plot(), Qt::Key_Left);
+        QVERIFY(plot()->timeMin() < before);
+        QTest::keyClick(plot(), Qt::Key_Home);
+        QVERIFY(!m_view->isZoomed());
+        QCOMPARE(plot()->timeMax() - plot()->timeMin(), 30.0);
+        // Drag a rectangle: time and values zoom.
+        const QRectF r = plot()->plotRect();
+        const QPoint a(int(r.left() + r.width() * 0.5), int(r.top() + 10));
+        const QPoint b(int(r.left() + r.width() * 0.7), int(r.bottom() - 10));
+        QTest::mousePress(plot(), Qt::LeftButton, {}, a);
+        QTest::mouseMove(plot(), (a + b) / 2);
+        QTest::mouseMove(plot(), b);
+        QTest::mouseRelease(plot(), Qt::LeftButton, {}, b);
+        QVERIFY(m_view->isZoomed());
+        QVERIFY(plot()->timeMax() - plot()->timeMin() < 30.0 * 0.25);
+        QVERIFY(m_view->visibleFromUs() > T0 + 40000000);
+        // The wheel zooms out around the pointer; reset shows the window again.
+        QWheelEvent wheel(QPointF(r.center()), plot()->mapToGlobal(r.center()), {}, QPoint(0, -120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        const double span = plot()->timeMax() - plot()->timeMin();
+        QApplication::sendEvent(plot(), &wheel);
+        QVERIFY(plot()->timeMax() - plot()->timeMin() > span);
+        m_view->controls()->findChild<QPushButton *>()->setFocus();
+        m_view->resetZoom();
+        QVERIFY(!m_view->isZoomed());
     }
 
     void pauseFreezesViewButKeepsRecording()
     {
         makeView(20000);
-        QCOMPARE(axisX(*m_view)->max(), 19.999 + 10.001); // young recording: [0, 30] grows
+        QCOMPARE(plot()->timeMax(), 30.0 - 0.0); // young recording: [0, 30] grows
         feed(*m_rec, 20000, 20000);
         m_view->refreshNow();
-        QCOMPARE(axisX(*m_view)->max(), 39.999);
-
+        QCOMPARE(plot()->timeMax(), 39.999);
         m_view->controls()->pauseButton()->click();
         QVERIFY(m_rec->isPaused());
-        QCOMPARE(m_view->controls()->pauseButton()->text(), QStringLiteral("Resume"));
         feed(*m_rec, 40000, 5000);
         m_view->refreshNow();
         QCOMPARE(m_rec->buffer(Speed)->size(), 45000); // still recording
-        QCOMPARE(axisX(*m_view)->max(), 39.999);       // view frozen
-        QVERIFY(m_view->series(Speed)->points().last().x() <= 40.0);
-
+        QCOMPARE(plot()->timeMax(), 39.999);           // view frozen
         m_view->controls()->pauseButton()->click();
-        QVERIFY(!m_rec->isPaused());
         m_view->refreshNow();
-        QCOMPARE(axisX(*m_view)->max(), 44.999);
+        QCOMPARE(plot()->timeMax(), 44.999);
     }
 
-    void zoomPausesAndResets()
-    {
-        makeView(60000);
-        QValueAxis *x = axisX(*m_view);
-        const double span = x->max() - x->min();
-        const QRectF plot = m_view->chart()->plotArea();
-        m_view->chart()->zoomIn(
-            QRectF(plot.left() + plot.width() * 0.25, plot.top(), plot.width() * 0.1, plot.height()));
-        QVERIFY(m_view->isZoomed());
-        QVERIFY(m_rec->isPaused());
-        m_view->refreshNow();
-        const double zoomedMin = x->min();
-        const double zoomedSpan = x->max() - x->min();
-        QVERIFY2(zoomedSpan < span * 0.2, qPrintable(QString::number(zoomedSpan)));
-        // Re-decimated at full resolution for the zoomed range: ~3 s at 1 kHz is more
-        // samples than pixels, so the series is dense but still bounded.
-        const QList<QPointF> pts = m_view->series(Torque)->points();
-        QVERIFY(pts.size() <= 2 * plotWidth());
-        QVERIFY(pts.size() > plotWidth());
-        QVERIFY(pts.at(1).x() >= zoomedMin);
-
-        // New samples do not move a zoomed view.
-        feed(*m_rec, 60000, 1000);
-        m_view->refreshNow();
-        QCOMPARE(x->min(), zoomedMin);
-
-        m_view->resetZoom();
-        QVERIFY(!m_view->isZoomed());
-        QVERIFY(m_rec->isPaused()); // still paused: the window ending where it paused
-        QCOMPARE(x->max() - x->min(), 30.0);
-        QCOMPARE(x->max(), 59.999);
-
-        m_view->chart()->zoomIn(QRectF(plot.left() + 10, plot.top() + 10, 100, 100));
-        QVERIFY(m_view->isZoomed());
-        m_rec->setPaused(false); // resume drops the zoom
-        QVERIFY(!m_view->isZoomed());
-        m_view->refreshNow();
-        QCOMPARE(x->max(), 60.999);
-    }
-
-    void rubberBandDragZooms()
-    {
-        makeView(60000);
-        QWidget *vp = m_view->chartView()->viewport();
-        const QRectF plot = m_view->chart()->plotArea();
-        const auto toViewport = [&](const QPointF &chartPos) {
-            return m_view->chartView()->mapFromScene(m_view->chart()->mapToScene(chartPos));
-        };
-        const QPoint a = toViewport(plot.topLeft() + QPointF(plot.width() * 0.4, 5));
-        const QPoint b = toViewport(plot.topLeft() + QPointF(plot.width() * 0.6, plot.height() - 5));
-        QTest::mousePress(vp, Qt::LeftButton, Qt::NoModifier, a);
-        QTest::mouseMove(vp, (a + b) / 2);
-        QTest::mouseMove(vp, b);
-        QTest::mouseRelease(vp, Qt::LeftButton, Qt::NoModifier, b);
-        QVERIFY(m_view->isZoomed());
-        QVERIFY(m_rec->isPaused());
-        QTRY_VERIFY(m_view->visibleToUs() - m_view->visibleFromUs() < 8000000); // ~6 s of 30
-        QVERIFY(m_view->visibleFromUs() > T0 + 36000000);
-        // Right click zooms out again (still zoomed relative to the window, still paused).
-        QTest::mouseClick(vp, Qt::RightButton, Qt::NoModifier, (a + b) / 2);
-        QTRY_VERIFY(m_view->visibleToUs() - m_view->visibleFromUs() > 8000000);
-        QVERIFY(m_rec->isPaused());
-    }
-
-    void cursorReadout()
-    {
-        makeView(30000);
-        const QRectF plot = m_view->chart()->plotArea();
-        const QPointF scene = m_view->chart()->mapToScene(plot.center());
-        const QPoint pos = m_view->chartView()->mapFromScene(scene);
-        QTest::mouseMove(m_view->chartView()->viewport(), pos);
-        const QString text = m_view->cursorReadout();
-        QVERIFY2(text.contains(QStringLiteral("t = ")), qPrintable(text));
-        QVERIFY2(
-            text.contains(QStringLiteral("Bus voltage: ") + QLocale().toString(311.5, 'f', 1) + QStringLiteral(" V")),
-            qPrintable(text));
-        QVERIFY(text.contains(QStringLiteral("Speed: ")));
-        // t at the middle of the [0, 30] s window, to a pixel.
-        const double t = QLocale().toDouble(text.section(QStringLiteral("t = "), 1).section(QLatin1Char(' '), 0, 0));
-        QVERIFY2(std::fabs(t - 15.0) < 30.0 / plot.width() * 2, qPrintable(text));
-        // Hidden channels are not read out.
-        m_view->setChannelVisible(Bus, false);
-        m_view->setCursorPosition(pos);
-        QVERIFY(!m_view->cursorReadout().contains(QStringLiteral("Bus voltage")));
-        // Outside the plot area: no cursor.
-        m_view->setCursorPosition(QPoint(1, 1));
-        QVERIFY(!m_view->cursorReadout().contains(QStringLiteral("t = ")));
-    }
-
-    void exportsParse()
+    void exportsWriteAndSayWhere()
     {
         makeView(50000);
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString all = dir.filePath(QStringLiteral("all.csv"));
-        QVERIFY(!m_view->exportCsv(all, TrendView::ExportRange::WholeRecording));
+        QVERIFY(m_view->exportFile(TrendView::ExportKind::CsvWhole, all));
+        QVERIFY2(m_view->message().contains(QDir::toNativeSeparators(all)), qPrintable(m_view->message()));
         QStringList lines = readLines(all);
         QCOMPARE(lines.size(), 1 + 50000);
         QCOMPARE(lines.first(), QStringLiteral("time_s,speed [r/min],torque [%],current [A],bus-voltage [V]"));
-        QCOMPARE(lines.at(1).section(QLatin1Char(','), 0, 0), QStringLiteral("0.000000"));
         QCOMPARE(lines.last().section(QLatin1Char(','), 0, 0), QStringLiteral("49.999000"));
-        QCOMPARE(lines.last().section(QLatin1Char(','), 4, 4), QStringLiteral("311.5"));
-        for (const QString &l : lines.mid(1, 100))
-            QCOMPARE(l.count(QLatin1Char(',')), 4);
 
-        // Visible window of the checked channels only: the last 30 s.
         m_view->setChannelVisible(Torque, false);
         m_view->setChannelVisible(Current, false);
         m_view->refreshNow();
@@ -277,69 +352,78 @@ private slots:
         lines = readLines(win);
         QCOMPARE(lines.first(), QStringLiteral("time_s,speed [r/min],bus-voltage [V]"));
         QCOMPARE(lines.size(), 1 + 30001); // 19.999 .. 49.999 s inclusive
-        QCOMPARE(lines.at(1).section(QLatin1Char(','), 0, 0), QStringLiteral("19.999000"));
 
+        m_view->setDriveTitle(QStringLiteral("Servo (Modbus), address 1"));
+        const QStringList block = m_view->titleBlock();
+        QVERIFY(block.join(QLatin1Char('\n')).contains(QStringLiteral("Servo (Modbus), address 1")));
+        QVERIFY(block.join(QLatin1Char('\n')).contains(QStringLiteral("Speed [r/min]")));
+        QVERIFY(block.join(QLatin1Char('\n')).contains(QStringLiteral("Bus voltage [V]")));
         const QString png = dir.filePath(QStringLiteral("plot.png"));
-        QVERIFY(!m_view->exportPng(png));
-        QImage image(png);
-        QVERIFY(!image.isNull());
-        QCOMPARE(image.size(), m_view->chartView()->size() * m_view->chartView()->devicePixelRatio());
+        QVERIFY(m_view->exportFile(TrendView::ExportKind::Png, png));
+        const QImage image(png);
+        QCOMPARE(image.width(), plot()->width());
+        QVERIFY(image.height() > plot()->height()); // the title block on top
+        const QString svg = dir.filePath(QStringLiteral("plot.svg"));
+        QVERIFY(m_view->exportFile(TrendView::ExportKind::Svg, svg));
+        QFile svgFile(svg);
+        QVERIFY(svgFile.open(QIODevice::ReadOnly));
+        const QByteArray svgText = svgFile.readAll();
+        QVERIFY(svgText.startsWith("<?xml") || svgText.contains("<svg"));
+        QVERIFY(svgText.contains("Servo (Modbus), address 1"));
 
-        const Error e = m_view->exportPng(dir.filePath(QStringLiteral("no/such/dir/p.png")));
-        QCOMPARE(e.code, ErrorCode::FileError);
+        QVERIFY(!m_view->exportFile(TrendView::ExportKind::Png, dir.filePath(QStringLiteral("no/such/dir/x.png"))));
+        QVERIFY(m_view->message().contains(QStringLiteral("Cannot save")));
     }
 
-    void channelVisibilityAndScale()
-    {
-        makeView(10000);
-        QCheckBox *box = m_view->channelPanel()->checkBox(Speed);
-        QVERIFY(box);
-        QVERIFY(box->isChecked());
-        box->click();
-        QVERIFY(!m_view->isChannelVisible(Speed));
-        QVERIFY(!m_view->series(Speed)->isVisible());
-        QCOMPARE(m_view->series(Speed)->count(), 0);
-        box->click();
-        QVERIFY(m_view->series(Speed)->count() > 0);
-
-        // Scale and offset apply to the plot only.
-        m_view->setChannelScale(Bus, 0.5, 10.0);
-        const QList<QPointF> pts = m_view->series(Bus)->points();
-        QVERIFY(!pts.isEmpty());
-        for (const QPointF &p : pts)
-            QCOMPARE(p.y(), 311.5 * 0.5 + 10.0);
-        QVERIFY(m_view->series(Bus)->name().contains(QStringLiteral("×")));
-        QVERIFY(m_view->cursorReadout().isEmpty() == false);
-    }
-
-    void sampleRateControlOnlySignals()
+    void channelListAndMenu()
     {
         makeView(10);
-        QSignalSpy spy(m_view.get(), &TrendView::sampleRateChanged);
+        QListWidgetItem *item = m_view->channelPanel()->item(Speed);
+        QVERIFY(item);
+        QCOMPARE(item->checkState(), Qt::Checked);
+        item->setCheckState(Qt::Unchecked);
+        QVERIFY(!m_view->isChannelVisible(Speed));
+        QVERIFY(!plot()->seriesById(Speed));
+        item->setCheckState(Qt::Checked);
+        QVERIFY(plot()->seriesById(Speed));
+        m_view->setChannelScale(Bus, 0.5, 10.0);
+        for (const QPointF &p : points(Bus))
+            QCOMPARE(p.y(), 311.5 * 0.5 + 10.0);
+        QVERIFY(plot()->seriesById(Bus)->label.contains(QStringLiteral("×")));
+        QMenu *menu = m_view->channelPanel()->menuFor(Bus);
+        QAction *reset = menu->findChild<QAction *>(QStringLiteral("resetScale"));
+        QVERIFY(reset && reset->isEnabled());
+        reset->trigger();
+        QCOMPARE(points(Bus).first().y(), 311.5);
+    }
+
+    void sampleRateAndRecordOnlySignal()
+    {
+        makeView(10);
+        QSignalSpy rate(m_view.get(), &TrendView::sampleRateChanged);
+        QSignalSpy record(m_view.get(), &TrendView::recordToggled);
         m_view->setSampleRate(50.0);
-        QCOMPARE(spy.count(), 0);
-        QCOMPARE(m_view->sampleRate(), 50.0);
-        auto *spin = m_view->controls()->findChild<QDoubleSpinBox *>();
-        QVERIFY(spin);
-        spin->setValue(200.0);
-        QCOMPARE(spy.count(), 1);
-        QCOMPARE(spy.first().at(0).toDouble(), 200.0);
+        m_view->setRecording(true);
+        QCOMPARE(rate.count(), 0);
+        QCOMPARE(record.count(), 0);
+        QCOMPARE(m_view->controls()->recordButton()->text(), QStringLiteral("Stop recording"));
+        m_view->controls()->recordButton()->click();
+        QCOMPARE(record.count(), 1);
+        QCOMPARE(record.first().at(0).toBool(), false);
         QCOMPARE(m_rec->buffer(Speed)->size(), 10); // the view never feeds the recorder
     }
 
     void followsChannelChanges()
     {
-        makeView(1000);
-        m_rec->addChannel(
-            {QStringLiteral("position-error"), QStringLiteral("Position error"), QStringLiteral("pulse"), 0});
-        QVERIFY(m_view->series(QStringLiteral("position-error")));
-        QCOMPARE(m_view->chart()->series().size(), 5);
-        m_rec->setChannels(fourChannels().mid(0, 2));
-        QCOMPARE(m_view->chart()->series().size(), 2);
-        QVERIFY(!m_view->series(Bus));
-        m_rec->clear();
-        m_view->refreshNow();
-        QCOMPARE(m_view->series(Speed)->count(), 0);
+        makeView(100);
+        QList<TrendChannel> chans = fourChannels();
+        chans.append({QStringLiteral("position-error"), QStringLiteral("Following error"), QStringLiteral("pulse"), 0});
+        m_rec->setChannels(chans);
+        QVERIFY(m_view->channelPanel()->item(QStringLiteral("position-error")));
+        QCOMPARE(m_view->channelPanel()->list()->count(), 5);
+        m_rec->setChannels({chans.at(0), chans.at(4)});
+        QCOMPARE(m_view->channelPanel()->list()->count(), 2);
+        QVERIFY(!plot()->seriesById(Bus));
     }
 };
 

@@ -1,5 +1,7 @@
 #include <QtTest>
 
+#include <limits>
+
 #include "core/trend/samplebuffer.h"
 #include "tests/support/trendsamplestring.h"
 
@@ -9,6 +11,49 @@ class TestSampleBuffer : public QObject
 {
     Q_OBJECT
 private slots:
+    // The cursor reads the line, not the nearest or the next sample; a gap reads as none.
+    void lineValueFollowsTheLineAndGaps()
+    {
+        SampleBuffer b;
+        QVERIFY(!b.lineValueAt(0));
+        b.append(0, 0.0);
+        b.append(1000, 10.0);
+        b.append(2000, std::numeric_limits<double>::quiet_NaN());
+        b.append(5000, 40.0);
+        b.append(6000, 20.0);
+        QCOMPARE(*b.lineValueAt(0), 0.0);
+        QCOMPARE(*b.lineValueAt(900), 9.0); // nearest would say 10, "next" too
+        QCOMPARE(*b.lineValueAt(1000), 10.0);
+        QVERIFY(!b.lineValueAt(1500)); // between a sample and a gap marker
+        QVERIFY(!b.lineValueAt(2000));
+        QVERIFY(!b.lineValueAt(4000));
+        QCOMPARE(*b.lineValueAt(5500), 30.0);
+        QCOMPARE(*b.lineValueAt(6000), 20.0);
+        QVERIFY(!b.lineValueAt(6001));
+        QVERIFY(!b.lineValueAt(-1));
+    }
+
+    void gapTimesAreIndexedAndEvicted()
+    {
+        SampleBuffer b(4);
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        b.append(0, nan);
+        b.append(10, 1);
+        b.append(20, nan);
+        b.append(30, 1);
+        QCOMPARE(b.gapTimes(0, 30), (std::vector<qint64>{0, 20}));
+        QCOMPARE(b.gapTimes(5, 30), (std::vector<qint64>{20}));
+        b.append(40, 1); // evicts the gap at 0
+        QCOMPARE(b.gapCount(), 1);
+        QCOMPARE(b.gapTimes(0, 100), (std::vector<qint64>{20}));
+        b.setCapacity(2); // keeps 30, 40
+        QCOMPARE(b.gapCount(), 0);
+        b.append(50, nan);
+        QCOMPARE(b.gapTimes(0, 100), (std::vector<qint64>{50}));
+        b.clear();
+        QCOMPARE(b.gapCount(), 0);
+    }
+
     void appendAndIndex()
     {
         SampleBuffer b(10);

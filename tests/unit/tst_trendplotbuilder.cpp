@@ -3,6 +3,8 @@
 #include "core/trend/samplebuffer.h"
 #include "core/trend/trendplotbuilder.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 using namespace dd;
@@ -11,6 +13,34 @@ class TestTrendPlotBuilder : public QObject
 {
     Q_OBJECT
 private slots:
+    // A gap marker between two samples breaks the line (a NaN point between them): the
+    // plot must not draw a ramp across a time the drive was not heard.
+    void gapsBreakTheLine()
+    {
+        SampleBuffer b;
+        b.append(0, 0.0);
+        b.append(1000000, 0.0);
+        b.append(2000000, std::numeric_limits<double>::quiet_NaN()); // link lost
+        b.append(9000000, 8.0);
+        b.append(10000000, 8.0);
+        const auto r = TrendPlotBuilder::build(b, 0, 10000000, 200, 0);
+        QCOMPARE(r.points.size(), 5);
+        QCOMPARE(r.points.at(1), QPointF(1.0, 0.0));
+        QCOMPARE(r.points.at(2).x(), 9.0);
+        QVERIFY(std::isnan(r.points.at(2).y()));
+        QCOMPARE(r.points.at(3), QPointF(9.0, 8.0));
+        QCOMPARE(r.yMin, 0.0);
+        QCOMPARE(r.yMax, 8.0);
+        // Decimated (1 bucket per 5 s) the break stays.
+        const auto coarse = TrendPlotBuilder::build(b, 0, 10000000, 3, 0);
+        QVERIFY(std::any_of(coarse.points.cbegin(), coarse.points.cend(),
+                            [](const QPointF &p) { return std::isnan(p.y()); }));
+        // A window after the gap has no break.
+        const auto later = TrendPlotBuilder::build(b, 9000000, 10000000, 200, 0);
+        for (const QPointF &p : later.points)
+            QVERIFY(!std::isnan(p.y()));
+    }
+
     void mapsAndAddsEdgePoints()
     {
         SampleBuffer b;

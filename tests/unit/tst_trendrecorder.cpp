@@ -1,5 +1,6 @@
 #include <QtTest>
 
+#include "core/trend/csvwriter.h"
 #include "core/trend/trendrecorder.h"
 
 #include <QSignalSpy>
@@ -16,6 +17,28 @@ private:
     }
 
 private slots:
+    void gapsMarkEveryChannelOnce()
+    {
+        TrendRecorder rec;
+        rec.setChannels(
+            {{QStringLiteral("a"), {}, {}, 0}, {QStringLiteral("b"), {}, {}, 0}, {QStringLiteral("c"), {}, {}, 0}});
+        rec.append(QStringLiteral("a"), 100, 1);
+        rec.append(QStringLiteral("b"), 300, 2); // later than the gap's time
+        const quint64 rev = rec.revision();
+        QCOMPARE(rec.appendGap(200), 2); // c has nothing to break
+        QVERIFY(rec.revision() != rev);
+        QCOMPARE(rec.buffer(QStringLiteral("a"))->gapTimes(0, 1000), (std::vector<qint64>{200}));
+        QCOMPARE(rec.buffer(QStringLiteral("b"))->gapTimes(0, 1000), (std::vector<qint64>{300}));
+        QCOMPARE(rec.appendGap(400), 0); // already broken: one mark per outage
+        QVERIFY(!rec.lineValueAt(QStringLiteral("a"), 150));
+        rec.append(QStringLiteral("a"), 500, 3);
+        QCOMPARE(*rec.lineValueAt(QStringLiteral("a"), 500), 3.0);
+        // The CSV writes the gap as a row of "nan".
+        const QByteArray csv = CsvWriter::toCsv(rec.snapshotAll({QStringLiteral("a"), QStringLiteral("b")}));
+        QVERIFY2(csv.contains("0.000100,nan,\n"), csv.constData());
+        QVERIFY2(csv.contains("0.000200,,2\n0.000200,,nan\n"), csv.constData());
+    }
+
     void appendsToKnownChannelsOnly()
     {
         TrendRecorder rec;

@@ -67,6 +67,7 @@ public:
     DriveReply *readParameters(const QList<int> &indices) override;
     DriveReply *writeParameters(const QList<ParameterWrite> &writes) override;
     DriveReply *readChannels(const QStringList &channelIds) override;
+    double channelReadUs(const QStringList &channelIds) const override;
     DriveReply *readAlarm() override;
     DriveReply *clearAlarm() override;
     DriveReply *setEnabled(bool on) override;

@@ -6,8 +6,10 @@
 #include "core/drive/servocan/servocanstationtracker.h"
 #include "core/drive/writeverification.h"
 #include "core/link/canlink.h"
+#include "core/link/wiretime.h"
 
 #include <QDateTime>
+#include <algorithm>
 
 #include <limits>
 #include <memory>
@@ -127,6 +129,18 @@ void ServoCanDrive::writeOne(const ParameterWrite &w, int attempt, DriveReply *r
 }
 
 // ---- Live values --------------------------------------------------------------------------
+
+double ServoCanDrive::channelReadUs(const QStringList &channelIds) const
+{
+    if (!m_link)
+        return 0.0;
+    // One request and one reply frame (standard, 8 data bytes) per channel, all sent at
+    // once: the bus carries 2n frames, and the last reply cannot come before n requests,
+    // the drive's latency and one reply.
+    const double frame = WireTime::canFrameUs(8, false, m_link->settings().bitrate);
+    const double n = channelIds.isEmpty() ? 1.0 : double(channelIds.size());
+    return std::max(2.0 * n * frame, (n + 1.0) * frame + 200.0);
+}
 
 DriveReply *ServoCanDrive::readChannels(const QStringList &channelIds)
 {

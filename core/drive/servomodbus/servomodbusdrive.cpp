@@ -2,6 +2,7 @@
 
 #include "core/drive/servomodbus/servomodbuschannels.h"
 #include "core/drive/writeverification.h"
+#include "core/link/wiretime.h"
 
 #include "core/link/modbusbatch.h"
 #include "core/link/modbuslink.h"
@@ -325,6 +326,23 @@ DriveReply *ServoModbusDrive::readParameters(const QList<int> &indices)
         },
         [reply](int done, int total) { reply->reportProgress(done, total); });
     return reply;
+}
+
+double ServoModbusDrive::channelReadUs(const QStringList &channelIds) const
+{
+    if (!m_link)
+        return 0.0;
+    QList<quint16> regs;
+    for (const QString &id : channelIds.isEmpty() ? ServoModbusChannels::ids() : channelIds)
+        regs += ServoModbusChannels::registers(id);
+    const qint32 baud = m_link->settings().baud;
+    const int bits = m_link->settings().bitsPerChar;
+    double us = 0.0;
+    // Per 0x03 request: 8 request bytes, 5 + 2n reply bytes, the drive's latency and the
+    // t3.5 silence before the next request.
+    for (const servomodbus::RegisterRange &r : servomodbus::planRegisterReads(regs))
+        us += WireTime::serialBytesUs(8 + 5 + 2 * r.count, baud, bits) + 1000.0 + WireTime::modbusSilenceUs(baud, bits);
+    return us;
 }
 
 DriveReply *ServoModbusDrive::readChannels(const QStringList &channelIds)

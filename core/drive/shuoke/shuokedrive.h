@@ -68,6 +68,7 @@ public:
     DriveReply *readParameters(const QList<int> &indices) override;
     DriveReply *writeParameters(const QList<ParameterWrite> &writes) override;
     DriveReply *readChannels(const QStringList &channelIds) override;
+    double channelReadUs(const QStringList &channelIds) const override;
     DriveReply *readAlarm() override;
     DriveReply *moveRelative(qint64 distance, qint32 speed) override;
     DriveReply *moveAbsolute(qint64 target, qint32 speed) override;

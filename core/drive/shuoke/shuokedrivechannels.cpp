@@ -1,10 +1,13 @@
 // ShuokeDrive: monitor channels (see shuokedrive.h).
 #include "core/drive/shuoke/shuokedrive.h"
 
+#include "core/drive/shuoke/shuokecantransport.h"
+#include "core/link/wiretime.h"
 #include "core/protocol/shuoke/shuokevalues.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <algorithm>
 #include <memory>
 
 namespace dd {
@@ -122,6 +125,26 @@ void ShuokeDrive::fillSamples(DriveReply *reply, const QStringList &ids, const Q
             reply->setSample(id, *v);
         }
     }
+}
+
+double ShuokeDrive::channelReadUs(const QStringList &channelIds) const
+{
+    if (!m_transport)
+        return 0.0;
+    QStringList ids = channelIds;
+    if (ids.isEmpty())
+        for (const ChannelInfo &c : channels())
+            ids.append(c.id);
+    const double commands = double(std::max<qsizetype>(1, channelCommands(ids).size()));
+    if (const auto *can = qobject_cast<const ShuokeCanTransport *>(m_transport.data()))
+        return commands * (2.0 * WireTime::canFrameUs(8, false, can->bitrate()) + 200.0);
+    // Serial: a query is 5 bytes out and up to 9 back, and the seed's rule leaves
+    // minGapMs (50 ms) between commands.
+    const int baud = m_transport->baud();
+    if (baud <= 0)
+        return 0.0;
+    const double transaction = WireTime::serialBytesUs(14, baud) + 1000.0;
+    return commands * std::max(transaction, 1000.0 * m_transport->options().minGapMs);
 }
 
 DriveReply *ShuokeDrive::readChannels(const QStringList &channelIds)

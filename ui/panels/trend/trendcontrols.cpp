@@ -15,17 +15,25 @@ namespace dd {
 
 TrendControls::TrendControls(QWidget *parent)
     : QWidget(parent)
+    , m_recordButton(new QPushButton(this))
     , m_pauseButton(new QPushButton(this))
     , m_resetZoomButton(new QPushButton(this))
     , m_windowLabel(new QLabel(this))
     , m_windowCombo(new QComboBox(this))
     , m_rateLabel(new QLabel(this))
     , m_rateSpin(new QDoubleSpinBox(this))
-    , m_exportCsvButton(new QToolButton(this))
+    , m_exportButton(new QToolButton(this))
     , m_exportAllAction(nullptr)
     , m_exportWindowAction(nullptr)
-    , m_exportPngButton(new QPushButton(this))
+    , m_exportPngAction(nullptr)
+    , m_exportSvgAction(nullptr)
 {
+    m_recordButton->setObjectName(QStringLiteral("trendRecord"));
+    m_recordButton->setCheckable(true);
+    connect(m_recordButton, &QPushButton::toggled, this, [this](bool on) {
+        retranslateUi();
+        emit recordToggled(on);
+    });
     m_pauseButton->setCheckable(true);
     connect(m_pauseButton, &QPushButton::toggled, this, [this](bool on) {
         m_pauseButton->setText(on ? tr("Resume") : tr("Pause"));
@@ -48,33 +56,42 @@ TrendControls::TrendControls(QWidget *parent)
     m_rateLabel->setBuddy(m_rateSpin);
     connect(m_rateSpin, &QDoubleSpinBox::valueChanged, this, &TrendControls::sampleRateChanged);
 
-    m_exportCsvButton->setPopupMode(QToolButton::InstantPopup);
-    auto *csvMenu = new QMenu(m_exportCsvButton);
-    m_exportAllAction = csvMenu->addAction(QString());
-    m_exportWindowAction = csvMenu->addAction(QString());
-    m_exportCsvButton->setMenu(csvMenu);
+    m_exportButton->setObjectName(QStringLiteral("trendExport"));
+    m_exportButton->setPopupMode(QToolButton::InstantPopup);
+    auto *menu = new QMenu(m_exportButton);
+    m_exportAllAction = menu->addAction(QString());
+    m_exportWindowAction = menu->addAction(QString());
+    menu->addSeparator();
+    m_exportPngAction = menu->addAction(QString());
+    m_exportSvgAction = menu->addAction(QString());
+    m_exportButton->setMenu(menu);
     connect(m_exportAllAction, &QAction::triggered, this, [this] { emit exportCsvRequested(true); });
     connect(m_exportWindowAction, &QAction::triggered, this, [this] { emit exportCsvRequested(false); });
-    connect(m_exportPngButton, &QPushButton::clicked, this, &TrendControls::exportPngRequested);
+    connect(m_exportPngAction, &QAction::triggered, this, &TrendControls::exportPngRequested);
+    connect(m_exportSvgAction, &QAction::triggered, this, &TrendControls::exportSvgRequested);
 
     auto *row = new QHBoxLayout(this);
     row->setContentsMargins(0, 0, 0, 0);
+    row->addWidget(m_recordButton);
     row->addWidget(m_pauseButton);
     row->addWidget(m_resetZoomButton);
-    row->addSpacing(12);
+    row->addSpacing(8);
     row->addWidget(m_windowLabel);
     row->addWidget(m_windowCombo);
-    row->addSpacing(12);
+    row->addSpacing(8);
     row->addWidget(m_rateLabel);
     row->addWidget(m_rateSpin);
     row->addStretch(1);
-    row->addWidget(m_exportCsvButton);
-    row->addWidget(m_exportPngButton);
+    row->addWidget(m_exportButton);
     retranslateUi();
 }
 
 void TrendControls::retranslateUi()
 {
+    m_recordButton->setText(m_recordButton->isChecked() ? tr("Stop recording") : tr("Record"));
+    m_recordButton->setToolTip(m_recordButton->isChecked()
+                                   ? tr("Recording: the drive is sampled whatever tab or drive is shown")
+                                   : tr("Start recording the checked channels"));
     m_pauseButton->setText(m_pauseButton->isChecked() ? tr("Resume") : tr("Pause"));
     m_pauseButton->setToolTip(tr("Freeze the plot; recording continues in the background"));
     m_resetZoomButton->setText(tr("Reset zoom"));
@@ -83,15 +100,15 @@ void TrendControls::retranslateUi()
     const QStringList names{tr("10 s"), tr("30 s"), tr("1 min"), tr("2 min"), tr("5 min"), tr("10 min")};
     for (int i = 0; i < m_windowCombo->count() && i < names.size(); ++i)
         m_windowCombo->setItemText(i, names.at(i));
-    m_rateLabel->setText(tr("Sample &rate:"));
+    m_rateLabel->setText(tr("&Rate:"));
     m_rateSpin->setSuffix(tr(" Hz"));
-    m_rateSpin->setToolTip(tr("How often the drive is read"));
-    m_exportCsvButton->setText(tr("Export CSV"));
-    m_exportCsvButton->setToolTip(tr("Save the checked channels' real values as CSV"));
-    m_exportAllAction->setText(tr("Whole recording…"));
-    m_exportWindowAction->setText(tr("Visible window…"));
-    m_exportPngButton->setText(tr("Export PNG…"));
-    m_exportPngButton->setToolTip(tr("Save the plot as an image"));
+    m_rateSpin->setToolTip(tr("How often the drive is read; the default is what the link can carry"));
+    m_exportButton->setText(tr("Export"));
+    m_exportButton->setToolTip(tr("Save the checked channels' real values as CSV, or the plot as an image"));
+    m_exportAllAction->setText(tr("CSV, whole recording…"));
+    m_exportWindowAction->setText(tr("CSV, visible window…"));
+    m_exportPngAction->setText(tr("Plot as PNG…"));
+    m_exportSvgAction->setText(tr("Plot as SVG…"));
 }
 
 void TrendControls::changeEvent(QEvent *event)
@@ -138,6 +155,18 @@ void TrendControls::setPaused(bool paused)
     const QSignalBlocker block(m_pauseButton);
     m_pauseButton->setChecked(paused);
     m_pauseButton->setText(paused ? tr("Resume") : tr("Pause"));
+}
+
+void TrendControls::setRecording(bool recording)
+{
+    const QSignalBlocker block(m_recordButton);
+    m_recordButton->setChecked(recording);
+    retranslateUi();
+}
+
+bool TrendControls::isRecording() const
+{
+    return m_recordButton->isChecked();
 }
 
 void TrendControls::setZoomed(bool zoomed)

@@ -11,8 +11,10 @@ class QToolButton;
 
 namespace dd {
 
-// The tool row above a trend plot: pause/resume, reset zoom, time window, sample rate and
-// the export buttons. Only emits what the user asked for; TrendView acts on it.
+// The tool row above a trend plot: record / stop, pause / resume the view, reset zoom,
+// time window, sample rate and the export menu (CSV of the whole recording or the visible
+// window, PNG, SVG). Only emits what the user asked for; TrendView and its owner act on it.
+// Compact so that it fits the tab at 1280 px in either language.
 class TrendControls : public QWidget
 {
     Q_OBJECT
@@ -26,18 +28,24 @@ public:
     double sampleRate() const;
     void setSampleRate(double hz); // emits nothing
 
-    void setPaused(bool paused); // button state only; emits nothing
-    void setZoomed(bool zoomed); // enables "Reset zoom"
+    void setPaused(bool paused);       // button state only; emits nothing
+    void setZoomed(bool zoomed);       // enables "Reset zoom"
+    void setRecording(bool recording); // button state only; emits nothing
+    bool isRecording() const;
 
     QPushButton *pauseButton() const { return m_pauseButton; }
+    QPushButton *recordButton() const { return m_recordButton; }
+    QToolButton *exportButton() const { return m_exportButton; }
 
 signals:
+    void recordToggled(bool recording);
     void pauseToggled(bool paused);
     void resetZoomClicked();
     void windowChanged(int seconds);
     void sampleRateChanged(double hz);
     void exportCsvRequested(bool wholeRecording);
     void exportPngRequested();
+    void exportSvgRequested();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -45,16 +53,18 @@ protected:
 private:
     void retranslateUi();
 
+    QPushButton *m_recordButton;
     QPushButton *m_pauseButton;
     QPushButton *m_resetZoomButton;
     QLabel *m_windowLabel;
     QComboBox *m_windowCombo;
     QLabel *m_rateLabel;
     QDoubleSpinBox *m_rateSpin;
-    QToolButton *m_exportCsvButton;
+    QToolButton *m_exportButton;
     QAction *m_exportAllAction;
     QAction *m_exportWindowAction;
-    QPushButton *m_exportPngButton;
+    QAction *m_exportPngAction;
+    QAction *m_exportSvgAction;
 };
 
 } // namespace dd

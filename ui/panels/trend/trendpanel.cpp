@@ -3,42 +3,54 @@
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
 #include "core/drive/driveresult.h"
+#include "core/protocol/familytraits.h"
 #include "core/trend/trendrecorder.h"
+#include "ui/bus/driveinfo.h"
 #include "ui/panels/trend/trendview.h"
 
+#include <QDateTime>
 #include <QLabel>
 #include <QPointer>
-#include <QScrollArea>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <memory>
 
 namespace dd {
+
+namespace {
+
+// Sample times on the drives' clock (µs since the epoch) when a reply has none, and for gaps.
+qint64 nowUs()
+{
+    return QDateTime::currentMSecsSinceEpoch() * 1000;
+}
+
+} // namespace
 
 TrendPanel::TrendPanel(const DriveContext &context, QWidget *parent)
     : DrivePanel(context, parent)
     , m_recorder(new TrendRecorder(this))
 {
     m_view = new TrendView(m_recorder, this);
-    m_view->setSampleRate(DefaultRateHz);
+    m_view->setSampleRate(m_defaultRateHz);
     m_unavailable = new QLabel(this);
     m_unavailable->setAlignment(Qt::AlignCenter);
     m_unavailable->setWordWrap(true);
-    // The view's minimum width (plot + channel list) must not squeeze the bus tree on every
-    // tab: in a narrow window the trend scrolls instead.
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidget(m_view);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_unavailable);
-    layout->addWidget(scroll, 1);
-    m_scroll = scroll;
+    layout->addWidget(m_view, 1);
 
-    m_clock.start();
     m_timer.setTimerType(Qt::PreciseTimer);
     connect(&m_timer, &QTimer::timeout, this, &TrendPanel::sample);
-    connect(m_view, &TrendView::sampleRateChanged, this, &TrendPanel::setRate);
-    setRate(DefaultRateHz);
+    connect(m_view, &TrendView::sampleRateChanged, this, [this](double hz) {
+        m_userRate = true;
+        setRate(hz);
+    });
+    connect(m_view, &TrendView::recordToggled, this, &TrendPanel::setRecording);
+    connect(m_view, &TrendView::fileWritten, this, &DrivePanel::fileUsed);
+    setRate(m_defaultRateHz);
     retranslate();
     updateState();
 }
@@ -55,8 +67,41 @@ void TrendPanel::setRate(double hz)
     m_timer.setInterval(qMax(1, int(1000.0 / qMax(0.1, hz))));
 }
 
-void TrendPanel::activeChanged(bool)
+double TrendPanel::rateForReadUs(double readUs)
 {
+    if (!(readUs > 0.0))
+        return FallbackRateHz;
+    const double hz = std::min(1000.0, 1e6 / readUs);
+    const double unit = std::pow(10.0, std::floor(std::log10(hz)) - 1); // two digits
+    return std::max(0.1, std::floor(hz / unit) * unit);
+}
+
+void TrendPanel::setRecording(bool recording)
+{
+    m_started = m_started || recording;
+    if (recording == m_recording) {
+        m_view->setRecording(recording);
+        return;
+    }
+    m_recording = recording;
+    ++m_run;
+    m_inFlight = false;
+    if (!recording)
+        markGap(); // a later recording must not join this one with a ramp
+    m_view->setRecording(recording);
+    updateState();
+}
+
+void TrendPanel::markGap()
+{
+    m_recorder->appendGap(nowUs());
+}
+
+void TrendPanel::activeChanged(bool active)
+{
+    // The first look at the tab starts the recording; after that only the user stops it.
+    if (active && !m_started && m_channelsSet && driveInfo().capabilities.testFlag(Capability::Monitor))
+        setRecording(true);
     updateState();
 }
 
@@ -75,15 +120,30 @@ void TrendPanel::driveInfoChanged(const DriveInfo &info)
         for (const ChannelInfo &c : info.channels)
             m_view->setChannelVisible(c.id, shown.contains(c.id));
         m_channelsSet = true;
+    } else if (m_channelsSet) {
+        for (const ChannelInfo &c : info.channels) // names follow the language
+            m_recorder->addChannel(TrendChannel::fromInfo(c));
     }
-    updateState();
+    updateDriveTitle();
+    activeChanged(isActive());
+}
+
+void TrendPanel::updateDriveTitle()
+{
+    const DriveInfo &info = driveInfo();
+    QString title = tr("%1, address %2").arg(familyTraits(context().family).displayName()).arg(context().address);
+    if (!info.identity.model.isEmpty())
+        title += QStringLiteral(", ") + info.identity.model;
+    if (!info.identity.link.isEmpty())
+        title += QStringLiteral(" (") + info.identity.link + QLatin1Char(')');
+    m_view->setDriveTitle(title);
 }
 
 void TrendPanel::updateState()
 {
     const bool capable = driveInfo().capabilities.testFlag(Capability::Monitor);
     const bool ready = capable && m_channelsSet;
-    m_scroll->setVisible(ready);
+    m_view->setVisible(ready);
     m_unavailable->setVisible(!ready);
     if (!driveInfo().valid)
         m_unavailable->setText(tr("Reading the drive's identity…"));
@@ -91,10 +151,13 @@ void TrendPanel::updateState()
         m_unavailable->setText(tr("This drive offers no live values: %1").arg(driveInfo().reason(Capability::Monitor)));
     else if (!m_channelsSet)
         m_unavailable->setText(tr("This drive reports no live channels."));
-    if (ready && isActive())
-        m_timer.start();
-    else
+    // Recording does not depend on the tab or the drive shown (isActive()).
+    if (ready && m_recording) {
+        if (!m_timer.isActive())
+            m_timer.start();
+    } else {
         m_timer.stop();
+    }
 }
 
 QStringList TrendPanel::channelsToRead() const
@@ -108,20 +171,42 @@ QStringList TrendPanel::channelsToRead() const
 
 void TrendPanel::sample()
 {
-    if (m_inFlight || !context().isValid())
+    if (m_inFlight || !context().isValid() || !m_recording)
         return; // the link is slower than the rate: skip rather than queue
     const QStringList ids = channelsToRead();
     if (ids.isEmpty())
         return;
     m_inFlight = true;
     QPointer<TrendPanel> self(this);
+    const quint64 run = m_run;
+    // The first reading also asks what the link carries (on the I/O thread, where the drive
+    // lives; read here only after the reply, which the hub's queued callback orders).
+    auto readUs = std::make_shared<double>(0.0);
+    const bool askRate = !m_rateKnown;
     context().hub->run(
-        context().connectionId, context().address, [ids](Drive &d) { return d.readChannels(ids); },
-        [self](const DriveResult &r) {
+        context().connectionId, context().address,
+        [ids, readUs, askRate](Drive &d) {
+            if (askRate)
+                *readUs = d.channelReadUs(ids);
+            return d.readChannels(ids);
+        },
+        [self, run, readUs](const DriveResult &r) {
             if (!self)
                 return;
+            if (*readUs > 0.0 && !self->m_rateKnown) {
+                self->m_rateKnown = true;
+                self->m_defaultRateHz = rateForReadUs(*readUs);
+                if (!self->m_userRate) {
+                    self->setRate(self->m_defaultRateHz);
+                    self->m_view->setSampleRate(self->m_defaultRateHz);
+                }
+            }
+            if (run != self->m_run)
+                return; // stopped (or restarted) since: not this recording's sample
             self->m_inFlight = false;
             if (!r.ok()) {
+                // Link lost or drive silent: a gap, drawn and exported as such.
+                self->markGap();
                 if (!self->m_failing) // once per outage, not at the sample rate
                     self->reportResult(r);
                 self->m_failing = true;
@@ -129,14 +214,31 @@ void TrendPanel::sample()
             }
             self->m_failing = false;
             // The drive's time stamp when it gives one (µs since the epoch), else ours.
-            const qint64 t = r.sampleTimeUs > 0 ? r.sampleTimeUs : self->m_clock.nsecsElapsed() / 1000;
+            const qint64 t = r.sampleTimeUs > 0 ? r.sampleTimeUs : nowUs();
             self->m_recorder->appendSamples(t, r.samples);
         });
+}
+
+void TrendPanel::refreshChannelNames()
+{
+    if (!context().isValid() || !m_channelsSet)
+        return;
+    // Channel names come from the drive, translated when read: read them again.
+    QPointer<TrendPanel> self(this);
+    fetchDriveInfo(context().hub, context().connectionId, context().address,
+                   [self](const DriveInfo &info, const Error &) {
+                       if (!self) // the channels are known even when the identity read fails
+                           return;
+                       for (const ChannelInfo &c : info.channels)
+                           self->m_recorder->addChannel(TrendChannel::fromInfo(c));
+                   });
 }
 
 void TrendPanel::retranslate()
 {
     updateState();
+    updateDriveTitle();
+    refreshChannelNames();
 }
 
 } // namespace dd

@@ -6,27 +6,24 @@
 #include "core/trend/trendrecorder.h"
 #include "ui/panels/trend/trendchannelpanel.h"
 #include "ui/panels/trend/trendcontrols.h"
+#include "ui/panels/trend/trendplot.h"
 
-#include <QChart>
-#include <QChartView>
-#include <QCoreApplication>
+#include <QBuffer>
 #include <QDateTime>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QEvent>
 #include <QFileDialog>
-#include <QGraphicsLineItem>
+#include <QFileInfo>
 #include <QHBoxLayout>
+#include <QImage>
 #include <QLabel>
-#include <QLegendMarker>
-#include <QLineSeries>
 #include <QLocale>
-#include <QMessageBox>
-#include <QMouseEvent>
+#include <QPainter>
 #include <QSaveFile>
-#include <QScrollArea>
-#include <QStyle>
+#include <QSvgGenerator>
 #include <QVBoxLayout>
-#include <QValueAxis>
+#include <climits>
 #include <cmath>
 
 namespace dd {
@@ -36,18 +33,30 @@ namespace {
 constexpr int RefreshIntervalMs = 40;         // 25 Hz
 constexpr int SlowestRefreshIntervalMs = 200; // 5 Hz on a machine too slow for 25
 
-// Distinguishable on white and in grey-scale print; repeats after eight channels.
+// Distinguishable on white and in grey-scale print.
 const QList<QColor> &seriesColors()
 {
     static const QList<QColor> colors{QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c),
                                       QColor(0xff, 0x7f, 0x0e), QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
-                                      QColor(0x17, 0xbe, 0xcf), QColor(0x7f, 0x7f, 0x7f)};
+                                      QColor(0x17, 0xbe, 0xcf), QColor(0x7f, 0x7f, 0x7f), QColor(0xe3, 0x77, 0xc2),
+                                      QColor(0xbc, 0xbd, 0x22)};
     return colors;
 }
 
 qint64 secondsToUs(double s)
 {
     return static_cast<qint64>(std::llround(s * 1e6));
+}
+
+// The range an axis shows for data spanning [lo, hi]: fitted with hysteresis, then widened
+// to whole ticks so the labels are round.
+std::pair<double, double> niceRange(double lo, double hi, const std::pair<double, double> &current)
+{
+    const auto fitted = TrendAxisScale::fitValueRange(lo, hi, current.first, current.second);
+    if (fitted == current)
+        return current;
+    const double step = TrendAxisScale::niceStep((fitted.second - fitted.first) / 5.0);
+    return {std::floor(fitted.first / step) * step, std::ceil(fitted.second / step) * step};
 }
 
 } // namespace
@@ -59,13 +68,16 @@ TrendView::TrendView(TrendRecorder *recorder, QWidget *parent)
     buildUi();
     m_timer.setInterval(RefreshIntervalMs);
     connect(&m_timer, &QTimer::timeout, this, &TrendView::refreshNow);
-    connect(m_recorder, &TrendRecorder::channelsChanged, this, &TrendView::rebuildSeries);
+    connect(m_recorder, &TrendRecorder::channelsChanged, this, &TrendView::onChannelsChanged);
     connect(m_recorder, &TrendRecorder::pausedChanged, this, &TrendView::onPausedChanged);
     connect(m_recorder, &TrendRecorder::cleared, this, [this] {
         dropZoom();
+        m_markers = {};
+        m_plot->setMarker(0, std::nullopt);
+        m_plot->setMarker(1, std::nullopt);
         invalidate();
     });
-    rebuildSeries();
+    onChannelsChanged();
     onPausedChanged(m_recorder->isPaused());
     retranslateUi();
 }
@@ -74,58 +86,8 @@ TrendView::~TrendView() = default;
 
 void TrendView::buildUi()
 {
-    buildChart();
-    buildControls();
-    buildChannelPanel();
-    m_readout = new QLabel(this);
-    m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_status = new QLabel(this);
-
-    auto *plotRow = new QHBoxLayout;
-    plotRow->addWidget(m_chartView, 1);
-    plotRow->addWidget(m_panelScroll);
-    auto *bottom = new QHBoxLayout;
-    bottom->addWidget(m_readout, 1);
-    bottom->addWidget(m_status);
-    auto *layout = new QVBoxLayout(this);
-    layout->addWidget(m_controls);
-    layout->addLayout(plotRow, 1);
-    layout->addLayout(bottom);
-}
-
-void TrendView::buildChart()
-{
-    m_chart = new QChart;
-    m_chart->setAnimationOptions(QChart::NoAnimation);
-    m_chart->legend()->setAlignment(Qt::AlignTop);
-    m_axisX = new QValueAxis(m_chart);
-    m_axisY = new QValueAxis(m_chart);
-    m_axisX->setLabelFormat(QStringLiteral("%g"));
-    m_axisX->setTickType(QValueAxis::TicksDynamic); // round times while the axis scrolls
-    m_axisX->setTickAnchor(0.0);
-    m_axisX->setTickInterval(5.0);
-    m_axisY->setLabelFormat(QStringLiteral("%g"));
-    m_chart->addAxis(m_axisX, Qt::AlignBottom);
-    m_chart->addAxis(m_axisY, Qt::AlignLeft);
-    connect(m_axisX, &QValueAxis::rangeChanged, this, &TrendView::onAxisRangeChanged);
-    connect(m_axisY, &QValueAxis::rangeChanged, this, &TrendView::onAxisRangeChanged);
-
-    m_chartView = new QChartView(m_chart, this);
-    m_chartView->setRenderHint(QPainter::Antialiasing, false);
-    m_chartView->setRubberBand(QChartView::RectangleRubberBand);
-    m_chartView->setMinimumSize(320, 200);
-    m_chartView->viewport()->setMouseTracking(true);
-    m_chartView->viewport()->installEventFilter(this);
-
-    m_cursorLine = new QGraphicsLineItem(m_chart);
-    m_cursorLine->setPen(QPen(QColor(0x40, 0x40, 0x40), 1, Qt::DashLine));
-    m_cursorLine->setZValue(1000);
-    m_cursorLine->hide();
-}
-
-void TrendView::buildControls()
-{
     m_controls = new TrendControls(this);
+    connect(m_controls, &TrendControls::recordToggled, this, &TrendView::recordToggled);
     connect(m_controls, &TrendControls::pauseToggled, m_recorder, &TrendRecorder::setPaused);
     connect(m_controls, &TrendControls::resetZoomClicked, this, &TrendView::resetZoom);
     connect(m_controls, &TrendControls::windowChanged, this, &TrendView::onWindowChanged);
@@ -133,38 +95,80 @@ void TrendView::buildControls()
     connect(m_controls, &TrendControls::exportCsvRequested, this, [this](bool whole) {
         exportCsvInteractive(whole ? ExportRange::WholeRecording : ExportRange::VisibleWindow);
     });
-    connect(m_controls, &TrendControls::exportPngRequested, this, &TrendView::exportPngInteractive);
-}
+    connect(m_controls, &TrendControls::exportPngRequested, this, [this] { exportImageInteractive(false); });
+    connect(m_controls, &TrendControls::exportSvgRequested, this, [this] { exportImageInteractive(true); });
 
-void TrendView::buildChannelPanel()
-{
+    m_plot = new TrendPlot(this);
+    m_plot->setObjectName(QStringLiteral("trendPlot"));
+    connectPlot();
+
     m_panel = new TrendChannelPanel(this);
-    connect(m_panel, &TrendChannelPanel::visibilityChanged, this, [this](const QString &id, bool) {
-        updateSeriesName(id);
+    connect(m_panel, &TrendChannelPanel::visibilityChanged, this, [this] {
+        assignColors();
         invalidate();
         refreshNow();
     });
     connect(m_panel, &TrendChannelPanel::scaleChanged, this, [this](const QString &id) {
-        updateSeriesName(id);
-        m_zoomY = false; // the scaled data moved: fit the value axis again
+        m_zoomY[static_cast<size_t>(channelAxis(id))].reset(); // the scaled data moved: fit again
         invalidate();
         refreshNow();
     });
-    auto *panelScroll = new QScrollArea(this);
-    panelScroll->setWidget(m_panel);
-    panelScroll->setWidgetResizable(true);
-    panelScroll->setFrameShape(QFrame::NoFrame);
-    panelScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    m_panelScroll = panelScroll;
+    connect(m_panel, &TrendChannelPanel::axisChanged, this, [this] {
+        m_zoomY = {};
+        invalidate();
+        refreshNow();
+    });
+
+    const auto wrapping = [this] {
+        auto *l = new QLabel(this);
+        l->setWordWrap(true);
+        l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        l->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+        return l;
+    };
+    m_readout = wrapping();
+    m_markerReadout = wrapping();
+    m_message = wrapping();
+    m_status = wrapping();
+    m_status->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+
+    auto *plotRow = new QHBoxLayout;
+    plotRow->addWidget(m_plot, 1);
+    plotRow->addWidget(m_panel);
+    auto *bottom = new QHBoxLayout;
+    bottom->addWidget(m_message, 3);
+    bottom->addWidget(m_status, 2);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_controls);
+    layout->addLayout(plotRow, 1);
+    layout->addWidget(m_readout);
+    layout->addWidget(m_markerReadout);
+    layout->addLayout(bottom);
+}
+
+void TrendView::connectPlot()
+{
+    connect(m_plot, &TrendPlot::hoverMoved, this, [this](double t) { setHoverTime(t); });
+    connect(m_plot, &TrendPlot::hoverLeft, this, [this] { setHoverTime(std::nullopt); });
+    connect(m_plot, &TrendPlot::markerPlaced, this, &TrendView::setMarker);
+    connect(m_plot, &TrendPlot::markersCleared, this, [this] {
+        setMarker(0, std::nullopt);
+        setMarker(1, std::nullopt);
+    });
+    connect(m_plot, &TrendPlot::zoomToRect, this, &TrendView::zoomToRect);
+    connect(m_plot, &TrendPlot::zoomBy, this, &TrendView::zoomAround);
+    connect(m_plot, &TrendPlot::panBy, this, &TrendView::pan);
+    connect(m_plot, &TrendPlot::resetRequested, this, &TrendView::resetZoom);
 }
 
 void TrendView::retranslateUi()
 {
-    m_chartView->setToolTip(tr("Drag to zoom, right click to zoom out"));
-    m_axisX->setTitleText(tr("Time [s]"));
-    for (const TrendChannel &c : std::as_const(m_channels))
-        updateSeriesName(c.id);
-    updateCursor();
+    m_plot->setToolTip(tr("Drag: zoom · wheel: zoom time (Shift: pan) · click: cursor A, Shift+click: "
+                          "cursor B · +/−, ←/→, Home: zoom, pan, reset · Esc: remove cursors"));
+    m_plot->setTimeTitle(tr("Time [s]"));
+    invalidate();
+    refreshNow();
+    updateReadouts();
     updateStatus();
 }
 
@@ -200,8 +204,7 @@ void TrendView::setWindowSeconds(int seconds)
 
 void TrendView::onWindowChanged()
 {
-    // The user asked for a window: show it (zoom off).
-    resetZoom();
+    resetZoom(); // the user asked for a window: show it
 }
 
 double TrendView::sampleRate() const
@@ -212,6 +215,12 @@ double TrendView::sampleRate() const
 void TrendView::setSampleRate(double hz)
 {
     m_controls->setSampleRate(hz);
+}
+
+void TrendView::setRecording(bool recording)
+{
+    m_controls->setRecording(recording);
+    updateStatus();
 }
 
 bool TrendView::isChannelVisible(const QString &id) const
@@ -229,79 +238,89 @@ void TrendView::setChannelScale(const QString &id, double scale, double offset)
     m_panel->setChannelScale(id, scale, offset);
 }
 
-void TrendView::rebuildSeries()
+void TrendView::setChannelAxis(const QString &id, int axis)
 {
-    ++m_updatingAxes;
-    m_chart->removeAllSeries();
-    m_series.clear();
+    m_panel->setChannelAxis(id, axis);
+}
+
+int TrendView::channelAxis(const QString &id) const
+{
+    return m_panel->settings(id).axis;
+}
+
+void TrendView::onChannelsChanged()
+{
     m_channels = m_recorder->channels();
-    QList<QColor> colors;
-    for (const TrendChannel &c : std::as_const(m_channels)) {
-        if (!m_colors.contains(c.id)) {
-            const QList<QColor> used = m_colors.values();
-            QColor pick = seriesColors().at(m_colors.size() % seriesColors().size());
-            for (const QColor &p : seriesColors()) {
-                if (!used.contains(p)) {
-                    pick = p;
-                    break;
-                }
-            }
-            m_colors.insert(c.id, pick);
-        }
-        colors.append(m_colors.value(c.id));
-        auto *s = new QLineSeries;
-        s->setPen(QPen(m_colors.value(c.id), 1));
-        m_chart->addSeries(s);
-        s->attachAxis(m_axisX);
-        s->attachAxis(m_axisY);
-        m_series.insert(c.id, s);
-    }
-    --m_updatingAxes;
-    m_panel->setChannels(m_channels, colors);
-    m_panelScroll->setMinimumWidth(m_panel->sizeHint().width()
-                                   + m_panelScroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent));
-    for (const TrendChannel &c : std::as_const(m_channels))
-        updateSeriesName(c.id);
+    m_panel->setChannels(m_channels);
+    assignColors();
     invalidate();
     refreshNow();
 }
 
-void TrendView::updateSeriesName(const QString &id)
+void TrendView::assignColors()
 {
-    QLineSeries *s = m_series.value(id);
-    if (!s)
-        return;
-    const TrendChannelPanel::Settings st = m_panel->settings(id);
-    QString name = m_recorder->channel(id).label();
+    // No two shown channels alike: a shown channel keeps its colour unless an earlier shown
+    // one has it; then it takes the first free one of the palette (then generated hues).
+    QList<QColor> taken;
+    const auto freeColor = [&taken] {
+        for (const QColor &c : seriesColors())
+            if (!taken.contains(c))
+                return c;
+        for (int i = 0;; ++i) {
+            const QColor c = QColor::fromHsv((i * 47 + 15) % 360, 200, 170 + (i % 3) * 30);
+            if (!taken.contains(c))
+                return c;
+        }
+    };
+    for (const TrendChannel &c : std::as_const(m_channels)) {
+        if (!m_panel->settings(c.id).visible)
+            continue;
+        if (!m_colors.contains(c.id) || taken.contains(m_colors.value(c.id)))
+            m_colors.insert(c.id, freeColor());
+        taken.append(m_colors.value(c.id));
+    }
+    for (const TrendChannel &c : std::as_const(m_channels))
+        if (!m_colors.contains(c.id)) // hidden: a colour for the list, checked again when shown
+            m_colors.insert(c.id, freeColor());
+    m_panel->setColors(m_colors);
+}
+
+QString TrendView::seriesLabel(const TrendChannel &c) const
+{
+    const TrendChannelPanel::Settings st = m_panel->settings(c.id);
+    QString name = c.label();
     const QLocale locale;
     if (st.scale != 1.0)
         name += QStringLiteral(" ×") + locale.toString(st.scale, 'g', 6);
     if (st.offset != 0.0)
         name += (st.offset > 0 ? QStringLiteral(" + ") : QStringLiteral(" − "))
             + locale.toString(std::fabs(st.offset), 'g', 6);
-    s->setName(name);
-    s->setVisible(st.visible);
-    const auto markers = m_chart->legend()->markers(s);
-    for (QLegendMarker *m : markers)
-        m->setVisible(st.visible);
-
-    // Name the value axis after the channel when only one unscaled channel is shown.
-    QStringList shown;
-    bool scaled = false;
-    for (const TrendChannel &c : std::as_const(m_channels)) {
-        const TrendChannelPanel::Settings cs = m_panel->settings(c.id);
-        if (cs.visible) {
-            shown.append(c.label());
-            scaled = scaled || cs.scale != 1.0 || cs.offset != 0.0;
-        }
-    }
-    m_axisY->setTitleText(shown.size() == 1 && !scaled ? shown.first() : tr("Scaled value"));
+    return st.axis == 0 ? tr("%1 (left)").arg(name) : tr("%1 (right)").arg(name);
 }
 
-int TrendView::plotWidthPx() const
+QString TrendView::axisTitle(int axis) const
 {
-    const int w = static_cast<int>(m_chart->plotArea().width());
-    return w >= 2 ? w : std::max(2, m_chartView->viewport()->width());
+    // The unit(s) of the channels on the axis; the channel's label when it is alone.
+    QStringList labels;
+    QStringList units;
+    bool scaled = false;
+    for (const TrendChannel &c : std::as_const(m_channels)) {
+        const TrendChannelPanel::Settings st = m_panel->settings(c.id);
+        if (!st.visible || st.axis != axis)
+            continue;
+        labels.append(c.label());
+        const QString unit = c.unit.isEmpty() ? tr("no unit") : c.unit;
+        if (!units.contains(unit))
+            units.append(unit);
+        scaled = scaled || st.scale != 1.0 || st.offset != 0.0;
+    }
+    if (labels.isEmpty())
+        return QString();
+    if (scaled)
+        return tr("Scaled value");
+    if (labels.size() == 1)
+        return labels.first();
+    return units.join(QStringLiteral(", "));
 }
 
 void TrendView::computeWindow(qint64 *fromUs, qint64 *toUs) const
@@ -323,14 +342,21 @@ void TrendView::computeWindow(qint64 *fromUs, qint64 *toUs) const
     }
 }
 
+bool TrendView::isDrawn(qint64 fromUs, qint64 toUs, int width) const
+{
+    const bool live = !m_recorder->isPaused() && !m_zoomed;
+    return m_drawn && fromUs == m_drawnFrom && toUs == m_drawnTo && width == m_drawnWidth
+        && m_stateVersion == m_drawnState && (!live || m_recorder->revision() == m_drawnRevision);
+}
+
 void TrendView::refreshNow()
 {
     qint64 from = 0;
     qint64 to = 0;
     computeWindow(&from, &to);
-    const int width = plotWidthPx();
+    const int width = std::max(2, static_cast<int>(m_plot->plotRect().width()));
     if (isDrawn(from, to, width))
-        return; // a frozen view only changes when its window, size or settings change
+        return;
     QElapsedTimer cost;
     cost.start();
     m_drawn = true;
@@ -342,108 +368,92 @@ void TrendView::refreshNow()
     m_viewFromUs = from;
     m_viewToUs = to;
 
-    // Qt Charts strokes a series' whole outline on every geometry change (replace() and
-    // every axis range change), so: build all point lists, empty the series (cheap) if an
-    // axis moves, move the axes, then replace() each series once.
-    double yMin = std::numeric_limits<double>::infinity();
-    double yMax = -std::numeric_limits<double>::infinity();
-    ++m_updatingAxes;
-    const SeriesPoints updates = decimate(from, to, width, &yMin, &yMax);
-    moveAxes(from, to, yMin, yMax, updates);
-    for (const auto &u : updates)
-        u.first->replace(u.second); // never append() in a loop: quadratic in Qt Charts
-    --m_updatingAxes;
-    updateCursor();
+    std::array<double, 2> lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    std::array<double, 2> hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+    std::array<bool, 2> used{false, false};
+    QList<TrendPlot::Series> series;
+    const qint64 origin = m_recorder->originUs();
+    for (const TrendChannel &c : std::as_const(m_channels)) {
+        const TrendChannelPanel::Settings st = m_panel->settings(c.id);
+        const SampleBuffer *buf = m_recorder->buffer(c.id);
+        if (!st.visible || !buf)
+            continue;
+        const size_t a = st.axis == 0 ? 0 : 1;
+        used[a] = true;
+        TrendPlotBuilder::Result r = TrendPlotBuilder::build(*buf, from, to, width, origin, st.scale, st.offset);
+        if (r.hasData()) {
+            lo[a] = std::min(lo[a], r.yMin);
+            hi[a] = std::max(hi[a], r.yMax);
+        }
+        series.append(TrendPlot::Series{c.id, seriesLabel(c), m_colors.value(c.id), int(a), std::move(r.points)});
+    }
+    for (size_t a = 0; a < 2; ++a) {
+        if (m_zoomY[a])
+            m_axisRange[a] = *m_zoomY[a];
+        else if (lo[a] <= hi[a])
+            m_axisRange[a] = niceRange(lo[a], hi[a], m_axisRange[a]);
+        TrendPlot::ValueAxis axis;
+        axis.used = used[a];
+        axis.min = m_axisRange[a].first;
+        axis.max = m_axisRange[a].second;
+        axis.title = axisTitle(int(a));
+        m_plot->setValueAxis(int(a), axis);
+    }
+    m_plot->setTimeRange(double(from - origin) * 1e-6, double(to - origin) * 1e-6);
+    m_plot->setSeries(series);
+    updateReadouts();
     updateStatus();
     // Keep redrawing under ~25 % of the GUI thread: slow down on a slow machine (the
-    // render that follows costs about as much again), speed up again when it is fast.
+    // paint that follows costs about as much again), speed up again when it is fast.
     const int interval = std::clamp(int(cost.elapsed()) * 4, RefreshIntervalMs, SlowestRefreshIntervalMs);
     if (interval != m_timer.interval())
         m_timer.setInterval(interval);
 }
 
-bool TrendView::isDrawn(qint64 fromUs, qint64 toUs, int width) const
+void TrendView::enterZoom(qint64 fromUs, qint64 toUs)
 {
-    const bool live = !m_recorder->isPaused() && !m_zoomed;
-    return m_drawn && fromUs == m_drawnFrom && toUs == m_drawnTo && width == m_drawnWidth
-        && m_stateVersion == m_drawnState && (!live || m_recorder->revision() == m_drawnRevision);
-}
-
-TrendView::SeriesPoints TrendView::decimate(qint64 fromUs, qint64 toUs, int width, double *yMin, double *yMax)
-{
-    SeriesPoints updates;
-    for (const TrendChannel &c : std::as_const(m_channels)) {
-        QLineSeries *s = m_series.value(c.id);
-        const SampleBuffer *buf = m_recorder->buffer(c.id);
-        const TrendChannelPanel::Settings st = m_panel->settings(c.id);
-        if (!s || !buf)
-            continue;
-        if (!st.visible) {
-            if (s->count() > 0)
-                s->clear();
-            continue;
-        }
-        TrendPlotBuilder::Result r = TrendPlotBuilder::build(*buf, fromUs, toUs, width, m_recorder->originUs(),
-                                                             st.scale, st.offset);
-        if (r.hasData()) {
-            *yMin = std::min(*yMin, r.yMin);
-            *yMax = std::max(*yMax, r.yMax);
-        }
-        updates.append({s, std::move(r.points)});
-    }
-    return updates;
-}
-
-void TrendView::moveAxes(qint64 fromUs, qint64 toUs, double yMin, double yMax, const SeriesPoints &updates)
-{
-    const double o = static_cast<double>(m_recorder->originUs());
-    const double xMin = (static_cast<double>(fromUs) - o) * 1e-6;
-    const double xMax = (static_cast<double>(toUs) - o) * 1e-6;
-    std::optional<std::pair<double, double>> yRange;
-    if (m_zoomY)
-        yRange = std::make_pair(m_zoomYMin, m_zoomYMax);
-    else if (yMin <= yMax)
-        yRange = TrendAxisScale::fitValueRange(yMin, yMax, m_axisY->min(), m_axisY->max());
-    const bool yMoves = yRange && (yRange->first != m_axisY->min() || yRange->second != m_axisY->max());
-    if (xMin != m_axisX->min() || xMax != m_axisX->max() || yMoves) {
-        for (const auto &u : updates) {
-            if (u.first->count() > 0)
-                u.first->clear();
-        }
-    }
-    const double step = TrendAxisScale::niceStep((xMax - xMin) / 6.0);
-    if (step != m_axisX->tickInterval())
-        m_axisX->setTickInterval(step);
-    m_axisX->setRange(xMin, xMax);
-    if (yMoves) {
-        m_axisY->setRange(yRange->first, yRange->second);
-        if (!m_zoomY)
-            m_axisY->applyNiceNumbers();
-    }
-}
-
-void TrendView::onAxisRangeChanged()
-{
-    if (m_updatingAxes > 0)
-        return; // our own refresh
-    // The user zoomed (rubber band or right click): freeze on the axes' ranges.
-    const qint64 origin = m_recorder->originUs();
+    if (toUs <= fromUs)
+        toUs = fromUs + 1000; // 1 ms at least
     m_zoomed = true;
-    m_zoomFromUs = origin + secondsToUs(m_axisX->min());
-    m_zoomToUs = std::max(m_zoomFromUs, origin + secondsToUs(m_axisX->max()));
-    m_zoomY = true;
-    m_zoomYMin = m_axisY->min();
-    m_zoomYMax = m_axisY->max();
+    m_zoomFromUs = fromUs;
+    m_zoomToUs = toUs;
     m_controls->setZoomed(true);
     if (!m_recorder->isPaused()) {
-        // No redraw from onPausedChanged() now: QChart is between setting the two axes.
         m_handlingZoom = true;
-        m_recorder->setPaused(true);
+        m_recorder->setPaused(true); // zooming stops following
         m_handlingZoom = false;
     }
     invalidate();
-    // Redraw with full resolution for the new range once the zoom has set both axes.
-    QTimer::singleShot(0, this, &TrendView::refreshNow);
+    refreshNow();
+}
+
+void TrendView::zoomTime(qint64 fromUs, qint64 toUs)
+{
+    enterZoom(fromUs, toUs);
+}
+
+void TrendView::zoomAround(double factor, double anchorS)
+{
+    const qint64 anchor = usAt(anchorS);
+    const qint64 from = anchor - qint64(std::llround(double(anchor - m_viewFromUs) * factor));
+    const qint64 to = anchor + qint64(std::llround(double(m_viewToUs - anchor) * factor));
+    enterZoom(from, to);
+}
+
+void TrendView::pan(double fraction)
+{
+    const qint64 shift = qint64(std::llround(double(m_viewToUs - m_viewFromUs) * fraction));
+    enterZoom(m_viewFromUs + shift, m_viewToUs + shift);
+}
+
+void TrendView::zoomToRect(const QRectF &r)
+{
+    for (int a = 0; a < 2; ++a) {
+        if (m_plot->valueAxis(a).used)
+            m_zoomY[static_cast<size_t>(a)] = std::make_pair(m_plot->valueAtY(a, r.bottom()),
+                                                             m_plot->valueAtY(a, r.top()));
+    }
+    enterZoom(usAt(m_plot->timeAtX(r.left())), usAt(m_plot->timeAtX(r.right())));
 }
 
 void TrendView::resetZoom()
@@ -456,7 +466,7 @@ void TrendView::resetZoom()
 void TrendView::dropZoom()
 {
     m_zoomed = false;
-    m_zoomY = false;
+    m_zoomY = {};
     m_controls->setZoomed(false);
 }
 
@@ -470,73 +480,75 @@ void TrendView::onPausedChanged(bool paused)
         refreshNow();
 }
 
-bool TrendView::eventFilter(QObject *watched, QEvent *event)
+qint64 TrendView::usAt(double seconds) const
 {
-    if (watched == m_chartView->viewport()) {
-        if (event->type() == QEvent::MouseMove)
-            setCursorPosition(static_cast<QMouseEvent *>(event)->position().toPoint());
-        else if (event->type() == QEvent::Leave)
-            hideCursor();
+    return m_recorder->originUs() + secondsToUs(seconds);
+}
+
+QString TrendView::valueText(const TrendChannel &c, std::optional<double> v) const
+{
+    const QString value = v ? QLocale().toString(*v, 'f', c.decimals) : tr("–");
+    const QString name = c.name.isEmpty() ? c.id : c.name;
+    return c.unit.isEmpty() ? tr("%1: %2").arg(name, value) : tr("%1: %2 %3").arg(name, value, c.unit);
+}
+
+void TrendView::setHoverTime(std::optional<double> timeS)
+{
+    m_hover = timeS;
+    m_plot->setHoverTime(timeS);
+    updateReadouts();
+}
+
+void TrendView::setMarker(int which, std::optional<double> timeS)
+{
+    m_markers[static_cast<size_t>(which)] = timeS;
+    m_plot->setMarker(which, timeS);
+    updateReadouts();
+}
+
+void TrendView::updateReadouts()
+{
+    const QLocale locale;
+    if (!m_hover) {
+        m_readout->setText(tr("Point at the plot to read values; click to set cursor A, Shift+click for B."));
+    } else {
+        const qint64 tUs = usAt(*m_hover);
+        QStringList parts{tr("t = %1 s").arg(locale.toString(*m_hover, 'f', 3))};
+        for (const TrendChannel &c : std::as_const(m_channels)) {
+            if (m_panel->settings(c.id).visible)
+                parts.append(valueText(c, m_recorder->lineValueAt(c.id, tUs)));
+        }
+        m_readout->setText(parts.join(QStringLiteral("   ")));
     }
-    return QWidget::eventFilter(watched, event);
-}
 
-void TrendView::setCursorPosition(const QPoint &viewportPos)
-{
-    m_cursorPos = viewportPos;
-    updateCursor();
-}
-
-void TrendView::hideCursor()
-{
-    m_cursorPos.reset();
-    updateCursor();
-}
-
-std::optional<double> TrendView::timeAtViewportX(int x) const
-{
-    const QRectF plot = m_chart->plotArea();
-    const QPointF chartPos = m_chart->mapFromScene(m_chartView->mapToScene(QPoint(x, 0)));
-    if (plot.width() <= 0 || chartPos.x() < plot.left() || chartPos.x() > plot.right())
-        return std::nullopt;
-    const double f = (chartPos.x() - plot.left()) / plot.width();
-    return m_axisX->min() + f * (m_axisX->max() - m_axisX->min());
-}
-
-void TrendView::updateCursor()
-{
-    const QRectF plot = m_chart->plotArea();
-    std::optional<double> t;
-    if (m_cursorPos) {
-        const QPointF chartPos = m_chart->mapFromScene(m_chartView->mapToScene(*m_cursorPos));
-        if (plot.contains(chartPos))
-            t = timeAtViewportX(m_cursorPos->x());
-    }
-    if (!t) {
-        m_cursorLine->hide();
-        m_readout->setText(tr("Point at the plot to read values."));
+    const auto &a = m_markers[0];
+    const auto &b = m_markers[1];
+    if (!a && !b) {
+        m_markerReadout->clear();
+        m_markerReadout->hide();
         return;
     }
-    const double x = m_chart->mapFromScene(m_chartView->mapToScene(*m_cursorPos)).x();
-    m_cursorLine->setLine(x, plot.top(), x, plot.bottom());
-    m_cursorLine->show();
-
-    const QLocale locale;
-    const qint64 tUs = m_recorder->originUs() + secondsToUs(*t);
-    QStringList parts{tr("t = %1 s").arg(locale.toString(*t, 'f', 3))};
-    for (const TrendChannel &c : std::as_const(m_channels)) {
-        if (!m_panel->settings(c.id).visible)
-            continue;
-        const SampleBuffer *buf = m_recorder->buffer(c.id);
-        QString value = tr("–");
-        if (buf && !buf->isEmpty() && tUs >= buf->firstTimeUs() && tUs <= buf->lastTimeUs()) {
-            if (const auto s = buf->nearest(tUs))
-                value = locale.toString(s->value, 'f', c.decimals);
+    QStringList parts;
+    if (a)
+        parts.append(tr("A: %1 s").arg(locale.toString(*a, 'f', 3)));
+    if (b)
+        parts.append(tr("B: %1 s").arg(locale.toString(*b, 'f', 3)));
+    if (a && b) {
+        parts.append(tr("Δt = %1 s").arg(locale.toString(*b - *a, 'f', 3)));
+        for (const TrendChannel &c : std::as_const(m_channels)) {
+            if (!m_panel->settings(c.id).visible)
+                continue;
+            const auto va = m_recorder->lineValueAt(c.id, usAt(*a));
+            const auto vb = m_recorder->lineValueAt(c.id, usAt(*b));
+            const std::optional<double> d = va && vb ? std::optional<double>(*vb - *va) : std::nullopt;
+            const QString name = c.name.isEmpty() ? c.id : c.name;
+            const QString value = d ? locale.toString(*d, 'f', c.decimals) : tr("–");
+            parts.append(c.unit.isEmpty() ? tr("Δ %1: %2").arg(name, value)
+                                          : tr("Δ %1: %2 %3").arg(name, value, c.unit));
         }
-        const QString name = c.name.isEmpty() ? c.id : c.name;
-        parts.append(c.unit.isEmpty() ? tr("%1: %2").arg(name, value) : tr("%1: %2 %3").arg(name, value, c.unit));
     }
-    m_readout->setText(parts.join(QStringLiteral("   ")));
+    m_markerReadout->setText(parts.join(QStringLiteral("   ")));
+    m_markerReadout->show();
 }
 
 QString TrendView::cursorReadout() const
@@ -544,18 +556,36 @@ QString TrendView::cursorReadout() const
     return m_readout->text();
 }
 
+QString TrendView::markerReadout() const
+{
+    return m_markerReadout->text();
+}
+
+QString TrendView::message() const
+{
+    return m_message->text();
+}
+
+void TrendView::showMessage(const QString &text, bool problem)
+{
+    m_message->setText(text);
+    m_message->setStyleSheet(problem ? QStringLiteral("color: #b00020;") : QString());
+}
+
 void TrendView::updateStatus()
 {
     qsizetype n = 0;
     for (const TrendChannel &c : std::as_const(m_channels)) {
         if (const SampleBuffer *b = m_recorder->buffer(c.id))
-            n += b->size();
+            n += b->size() - b->gapCount();
     }
     QString text = tr("%Ln sample(s) recorded", nullptr, static_cast<int>(std::min<qsizetype>(n, INT_MAX)));
+    if (m_controls->isRecording())
+        text += QStringLiteral(" · ") + tr("recording");
     if (m_recorder->droppedCount() > 0)
         text += QStringLiteral(" · ") + tr("recording limit reached: oldest samples dropped");
     if (m_recorder->isPaused())
-        text += QStringLiteral(" · ") + tr("view paused, still recording");
+        text += QStringLiteral(" · ") + tr("view paused");
     m_status->setText(text);
 }
 
@@ -578,14 +608,80 @@ Error TrendView::exportCsv(const QString &path, ExportRange range) const
     return CsvWriter::save(path, snap);
 }
 
+QStringList TrendView::titleBlock() const
+{
+    const QLocale locale;
+    QStringList lines;
+    lines.append(m_driveTitle.isEmpty() ? tr("DriveDesk trend") : tr("DriveDesk trend: %1").arg(m_driveTitle));
+    const QDateTime start = QDateTime::fromMSecsSinceEpoch(m_recorder->originUs() / 1000);
+    lines.append(tr("Recorded %1, window %2 s to %3 s")
+                     .arg(locale.toString(start, QLocale::ShortFormat),
+                          locale.toString(double(m_viewFromUs - m_recorder->originUs()) * 1e-6, 'f', 3),
+                          locale.toString(double(m_viewToUs - m_recorder->originUs()) * 1e-6, 'f', 3)));
+    QStringList channels;
+    for (const TrendChannel &c : std::as_const(m_channels))
+        if (m_panel->settings(c.id).visible)
+            channels.append(seriesLabel(c));
+    lines.append(tr("Channels: %1").arg(channels.join(QStringLiteral("; "))));
+    return lines;
+}
+
+int TrendView::titleBlockHeight(int width) const
+{
+    const QFontMetrics fm(m_plot->font());
+    const QRect r = fm.boundingRect(QRect(0, 0, width - 12, 10000), Qt::TextWordWrap,
+                                    titleBlock().join(QLatin1Char('\n')));
+    return r.height() + 12;
+}
+
+void TrendView::renderExport(QPainter *painter, const QSize &size) const
+{
+    const int head = titleBlockHeight(size.width());
+    painter->fillRect(QRect(QPoint(0, 0), size), Qt::white);
+    painter->setFont(m_plot->font());
+    painter->setPen(Qt::black);
+    painter->drawText(QRect(6, 6, size.width() - 12, head - 6), Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop,
+                      titleBlock().join(QLatin1Char('\n')));
+    m_plot->render(painter, QRectF(0, head, m_plot->width(), m_plot->height()));
+}
+
 Error TrendView::exportPng(const QString &path) const
 {
-    const QPixmap image = m_chartView->grab();
+    const QSize size(m_plot->width(), m_plot->height() + titleBlockHeight(m_plot->width()));
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    {
+        QPainter p(&image);
+        renderExport(&p, size);
+    }
     QSaveFile file(path);
     if (image.isNull() || !file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit()) {
         return Error{ErrorCode::FileError,
-                     tr("Cannot save the plot image %1: %2. Check that the folder exists and "
-                        "is writable.")
+                     tr("Cannot save the plot image %1: %2. Check that the folder exists and is writable.")
+                         .arg(path, file.errorString()),
+                     0};
+    }
+    return Error::none();
+}
+
+Error TrendView::exportSvg(const QString &path) const
+{
+    const QSize size(m_plot->width(), m_plot->height() + titleBlockHeight(m_plot->width()));
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    {
+        QSvgGenerator svg;
+        svg.setOutputDevice(&buffer);
+        svg.setSize(size);
+        svg.setViewBox(QRect(QPoint(0, 0), size));
+        svg.setTitle(titleBlock().value(0));
+        svg.setDescription(titleBlock().join(QLatin1Char('\n')));
+        QPainter p(&svg);
+        renderExport(&p, size);
+    }
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(buffer.data()) != buffer.size() || !file.commit()) {
+        return Error{ErrorCode::FileError,
+                     tr("Cannot save the plot image %1: %2. Check that the folder exists and is writable.")
                          .arg(path, file.errorString()),
                      0};
     }
@@ -602,19 +698,37 @@ QString TrendView::askSavePath(const QString &title, const QString &suffix, cons
 void TrendView::exportCsvInteractive(ExportRange range)
 {
     const QString path = askSavePath(tr("Export trend as CSV"), QStringLiteral("csv"), tr("CSV files (*.csv)"));
-    if (path.isEmpty())
-        return;
-    if (const Error e = exportCsv(path, range))
-        QMessageBox::warning(this, tr("Export CSV"), e.message);
+    if (!path.isEmpty())
+        exportFile(range == ExportRange::WholeRecording ? ExportKind::CsvWhole : ExportKind::CsvWindow, path);
 }
 
-void TrendView::exportPngInteractive()
+void TrendView::exportImageInteractive(bool svg)
 {
-    const QString path = askSavePath(tr("Export plot as PNG"), QStringLiteral("png"), tr("PNG images (*.png)"));
-    if (path.isEmpty())
-        return;
-    if (const Error e = exportPng(path))
-        QMessageBox::warning(this, tr("Export PNG"), e.message);
+    const QString path = svg ? askSavePath(tr("Export plot as SVG"), QStringLiteral("svg"), tr("SVG images (*.svg)"))
+                             : askSavePath(tr("Export plot as PNG"), QStringLiteral("png"), tr("PNG images (*.png)"));
+    if (!path.isEmpty())
+        exportFile(svg ? ExportKind::Svg : ExportKind::Png, path);
+}
+
+bool TrendView::exportFile(ExportKind kind, const QString &path)
+{
+    Error e;
+    switch (kind) {
+    case ExportKind::CsvWhole: e = exportCsv(path, ExportRange::WholeRecording); break;
+    case ExportKind::CsvWindow: e = exportCsv(path, ExportRange::VisibleWindow); break;
+    case ExportKind::Png: e = exportPng(path); break;
+    case ExportKind::Svg: e = exportSvg(path); break;
+    }
+    if (e) {
+        showMessage(e.message, true);
+        return false;
+    }
+    const QString shown = QDir::toNativeSeparators(QFileInfo(path).absoluteFilePath());
+    showMessage(kind == ExportKind::CsvWhole || kind == ExportKind::CsvWindow ? tr("CSV saved to %1.").arg(shown)
+                                                                              : tr("Plot saved to %1.").arg(shown),
+                false);
+    emit fileWritten(path);
+    return true;
 }
 
 } // namespace dd

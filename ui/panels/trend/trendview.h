@@ -4,51 +4,51 @@
 #include "core/trend/trendchannel.h"
 
 #include <QHash>
-#include <QPoint>
 #include <QPointF>
 #include <QTimer>
 #include <QWidget>
+#include <array>
 #include <optional>
 
-class QChart;
-class QChartView;
-class QGraphicsLineItem;
 class QLabel;
-class QLineSeries;
-class QValueAxis;
+class QPainter;
 
 namespace dd {
 
 class TrendChannelPanel;
 class TrendControls;
+class TrendPlot;
 class TrendRecorder;
 
 // Live trend plot of a TrendRecorder (which it does not own and never feeds: the owner's
 // sampler appends to the recorder).
 //
-// - One QLineSeries per channel on a shared value axis; each channel has a scale and an
-//   offset (TrendChannelPanel) so channels of different magnitude fit together. The time
-//   axis is in seconds since the recording's origin.
+// - The plot (TrendPlot) takes most of the tab; the channels are a compact checkable list
+//   beside it (TrendChannelPanel) whose per-channel menu sets the value axis (left or
+//   right) and a scale and offset. Each axis fits its own channels; ticks sit on 1-2-5
+//   steps. No two shown channels share a colour.
 // - A refresh timer (25 Hz, only while shown; slower, down to 5 Hz, if a refresh takes
 //   over 10 ms) min/max-decimates the visible window to the plot width (TrendPlotBuilder)
-//   and calls QXYSeries::replace() once per series: at most two points per pixel column.
-//   A frozen (paused or zoomed) view is redrawn only when its window, size or settings
-//   change.
+//   and repaints. A frozen (paused or zoomed) view is redrawn only when its window, size
+//   or settings change. Gaps in the recording (TrendRecorder::appendGap) are drawn as
+//   gaps, never as a ramp.
 // - Window 10 s … 10 min; following the newest sample unless paused. Pause freezes the
 //   view while the recorder keeps recording; resume jumps back to live and drops zoom.
-// - Zoom: drag a rectangle (right click zooms out); zooming pauses following. "Reset zoom"
-//   shows the selected window again.
-// - Cursor: a vertical line under the mouse and a readout of every shown channel's real
-//   value (the sample nearest in time).
-// - Export: CSV of the shown channels (whole recording or the visible window, real values,
-//   CsvWriter format) and PNG of the plot.
-// - The sample-rate box only emits sampleRateChanged(); the owner applies it.
-// No OpenGL (it crashes under the offscreen platform and buys nothing at ≤ 2 points/px).
+// - Zoom and pan (TrendPlot's mouse and keys); zooming pauses following; "Reset zoom",
+//   Home or a double click shows the selected window again.
+// - Hover readout: every shown channel's value where the pointer is, read off the line
+//   (interpolated between the samples either side; "–" in a gap). Cursors A and B (click,
+//   Shift + click): their times, Δt and each channel's Δvalue.
+// - Export: CSV of the shown channels (whole recording or visible window, real values,
+//   CsvWriter format; the view says where it wrote), PNG and SVG of the plot with a title
+//   block (drive, date, channels with units and axes).
+// - The record button and the sample-rate box only emit; the owner records.
 class TrendView : public QWidget
 {
     Q_OBJECT
 public:
     enum class ExportRange { WholeRecording, VisibleWindow };
+    enum class ExportKind { CsvWhole, CsvWindow, Png, Svg };
 
     explicit TrendView(TrendRecorder *recorder, QWidget *parent = nullptr);
     ~TrendView() override;
@@ -59,14 +59,22 @@ public:
     void setWindowSeconds(int seconds); // the nearest choice
 
     double sampleRate() const;
-    void setSampleRate(double hz); // shows the rate the owner uses; emits nothing
+    void setSampleRate(double hz);     // shows the rate the owner uses; emits nothing
+    void setRecording(bool recording); // shows the owner's state; emits nothing
 
     bool isChannelVisible(const QString &id) const;
     void setChannelVisible(const QString &id, bool visible);
     void setChannelScale(const QString &id, double scale, double offset = 0.0);
+    void setChannelAxis(const QString &id, int axis); // TrendPlot::Left / Right
+    int channelAxis(const QString &id) const;
+    QColor channelColor(const QString &id) const { return m_colors.value(id); }
 
     bool isZoomed() const { return m_zoomed; }
     void resetZoom();
+    // Shows [fromUs, toUs] (recorder time) and stops following; value axes keep fitting.
+    void zoomTime(qint64 fromUs, qint64 toUs);
+    void zoomAround(double factor, double anchorS); // factor < 1 zooms in
+    void pan(double fraction);                      // of the window; > 0: later
 
     // The time window drawn by the last refresh, in recorder time (µs).
     qint64 visibleFromUs() const { return m_viewFromUs; }
@@ -74,77 +82,80 @@ public:
     // Decimate and redraw now if anything changed (the timer calls this).
     void refreshNow();
 
+    // For the export's title block: which drive ("servo-modbus 1 · ASD-B2 …").
+    void setDriveTitle(const QString &title) { m_driveTitle = title; }
     Error exportCsv(const QString &path, ExportRange range) const;
     Error exportPng(const QString &path) const;
+    Error exportSvg(const QString &path) const;
+    // What the Export menu does once a path is chosen: writes, then says where (message())
+    // or why not, and emits fileWritten(path) on success.
+    bool exportFile(ExportKind kind, const QString &path);
+    // The title block's lines (drive, date, channels with units).
+    QStringList titleBlock() const;
 
-    // Cursor at a position of chartView()->viewport(); hidden outside the plot area.
-    void setCursorPosition(const QPoint &viewportPos);
-    void hideCursor();
+    // Hover: the readout of every shown channel at a time (s since the origin).
+    void setHoverTime(std::optional<double> timeS);
     QString cursorReadout() const;
+    // Cursors A (0) and B (1), s since the origin.
+    void setMarker(int which, std::optional<double> timeS);
+    std::optional<double> marker(int which) const { return m_markers[static_cast<size_t>(which)]; }
+    QString markerReadout() const;
+    // The last message (export written, export failed), for the user and the tests.
+    QString message() const;
 
     TrendControls *controls() const { return m_controls; }
     TrendChannelPanel *channelPanel() const { return m_panel; }
-    QChart *chart() const { return m_chart; }
-    QChartView *chartView() const { return m_chartView; }
-    QLineSeries *series(const QString &id) const { return m_series.value(id); }
+    TrendPlot *plot() const { return m_plot; }
 
 signals:
     void sampleRateChanged(double hz);
+    void recordToggled(bool recording);
+    void fileWritten(const QString &path);
 
 protected:
-    bool eventFilter(QObject *watched, QEvent *event) override;
     void showEvent(QShowEvent *event) override;
     void hideEvent(QHideEvent *event) override;
     void changeEvent(QEvent *event) override;
 
 private:
-    // The point lists of a refresh, one per visible series.
-    using SeriesPoints = QList<std::pair<QLineSeries *, QList<QPointF>>>;
-
     void buildUi();
-    void buildChart();
-    void buildControls();
-    void buildChannelPanel();
+    void connectPlot();
     void retranslateUi();
     void onWindowChanged();
-    void rebuildSeries();
-    void updateSeriesName(const QString &id);
+    void onChannelsChanged();
+    void assignColors();
     void computeWindow(qint64 *fromUs, qint64 *toUs) const;
-    // Whether the last refresh drew this window at this width with nothing changed since.
     bool isDrawn(qint64 fromUs, qint64 toUs, int width) const;
-    // The decimated points of the visible channels (hidden ones are emptied) and their
-    // value range (widened into *yMin, *yMax).
-    SeriesPoints decimate(qint64 fromUs, qint64 toUs, int width, double *yMin, double *yMax);
-    // Sets the axes to the window and the value range; empties the series first if an axis
-    // moves.
-    void moveAxes(qint64 fromUs, qint64 toUs, double yMin, double yMax, const SeriesPoints &updates);
-    int plotWidthPx() const;
-    void onAxisRangeChanged();
+    QString seriesLabel(const TrendChannel &c) const;
+    QString axisTitle(int axis) const;
+    void enterZoom(qint64 fromUs, qint64 toUs);
+    void zoomToRect(const QRectF &widgetRect);
     void dropZoom();
     void onPausedChanged(bool paused);
-    void updateCursor();
+    void updateReadouts();
     void updateStatus();
+    void showMessage(const QString &text, bool problem);
     void invalidate() { ++m_stateVersion; }
     QStringList exportChannelIds() const;
+    void renderExport(QPainter *painter, const QSize &size) const;
+    int titleBlockHeight(int width) const;
     QString askSavePath(const QString &title, const QString &suffix, const QString &filter);
     void exportCsvInteractive(ExportRange range);
-    void exportPngInteractive();
-    std::optional<double> timeAtViewportX(int x) const;
+    void exportImageInteractive(bool svg);
+    qint64 usAt(double seconds) const;
+    QString valueText(const TrendChannel &c, std::optional<double> v) const;
 
     TrendRecorder *m_recorder;
     QList<TrendChannel> m_channels;
-    QHash<QString, QLineSeries *> m_series;
     QHash<QString, QColor> m_colors;
+    QString m_driveTitle;
 
-    QChart *m_chart = nullptr;
-    QChartView *m_chartView = nullptr;
-    QValueAxis *m_axisX = nullptr;
-    QValueAxis *m_axisY = nullptr;
-    QGraphicsLineItem *m_cursorLine = nullptr;
+    TrendPlot *m_plot = nullptr;
     TrendChannelPanel *m_panel = nullptr;
     TrendControls *m_controls = nullptr;
-    QWidget *m_panelScroll = nullptr;
     QLabel *m_readout = nullptr;
+    QLabel *m_markerReadout = nullptr;
+    QLabel *m_message = nullptr;
     QLabel *m_status = nullptr;
     QTimer m_timer;
 
@@ -152,14 +163,13 @@ private:
     bool m_zoomed = false;
     qint64 m_zoomFromUs = 0;
     qint64 m_zoomToUs = 0;
-    bool m_zoomY = false;
-    double m_zoomYMin = 0.0;
-    double m_zoomYMax = 1.0;
-    int m_updatingAxes = 0;
+    std::array<std::optional<std::pair<double, double>>, 2> m_zoomY;
+    std::array<std::pair<double, double>, 2> m_axisRange{std::make_pair(0.0, 1.0), std::make_pair(0.0, 1.0)};
     bool m_handlingZoom = false;
     qint64 m_viewFromUs = 0;
     qint64 m_viewToUs = 0;
-    std::optional<QPoint> m_cursorPos;
+    std::optional<double> m_hover;
+    std::array<std::optional<double>, 2> m_markers;
 
     // What the last refresh drew, to skip refreshes that would change nothing.
     quint64 m_stateVersion = 0;

@@ -1,11 +1,13 @@
 #include "cli/backupcommands.h"
 
 #include "cli/clidescribe.h"
+#include "cli/clijournal.h"
 #include "core/protocol/familytraits.h"
 
 #include "core/drive/drive.h"
 #include "core/drive/parametertransfer.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/verificationjournal.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -72,6 +74,7 @@ void BackupCommand::start()
         file.setLink(link);
         if (Error e = file.save(m_path, m_transfer->dictionary()))
             return fail(e, {}, CliExit::DriveFailed);
+        CliJournal::backup(context(), QStringLiteral("backup"), m_path, BackupFile::checksum(file.values()));
         const int n = file.values().size();
         succeed({{QStringLiteral("file"), m_path},
                  {QStringLiteral("parameters"), n},
@@ -229,6 +232,11 @@ void RestoreCommand::report(const Error &error)
                      tr("%1 -> %2  %3").arg(optionalText(e.driveValue), optionalText(e.fileValue), state)});
     }
     const QJsonObject json = reportJson(selected);
+    if (!r.dryRun && !r.selected.isEmpty()) {
+        const QString checksum = BackupFile::checksum(m_file.values());
+        CliJournal::verification(context(), VerificationJournal::fromRestore(r, dict, m_path, checksum));
+        CliJournal::backup(context(), QStringLiteral("restore"), m_path, checksum);
+    }
 
     if (error) {
         if (!r.selected.isEmpty() && !out()->isJson())

@@ -33,6 +33,9 @@ public:
     // chatter stays off (QT_LOGGING_RULES in the environment still overrides this); with the
     // simulator also virtualcan's expected warnings about its private hub.
     static void configureLogging(bool sim);
+    // Whether the command line asks for a command that needs a QGuiApplication (report); main()
+    // then makes one on the offscreen platform, so that no display is needed.
+    static bool needsGuiApplication(const QStringList &arguments);
 
 private:
     // Speaks the language of --lang (English with --json); false after saying that --lang

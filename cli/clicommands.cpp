@@ -6,6 +6,7 @@
 #include "cli/monitorcommand.h"
 #include "cli/motioncommands.h"
 #include "cli/paramcommands.h"
+#include "cli/reportcommand.h"
 #include "cli/scancommand.h"
 
 namespace dd {
@@ -22,6 +23,11 @@ CliOptionSpec valued(const char *name, QChar shortName = {})
 }
 
 } // namespace
+
+bool CliCommands::needsGui(const QString &name)
+{
+    return name == QLatin1String("report"); // fonts and QPdfWriter
+}
 
 QList<CliCommandSpec> CliCommands::specs()
 {
@@ -42,6 +48,9 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("clear-alarm"), {}},
         {QStringLiteral("home"), {flag("positive"), flag("no-wait")}},
         {QStringLiteral("channels"), {}},
+        {QStringLiteral("report"),
+         {valued("output", QLatin1Char('o')), flag("all"), valued("runs"), valued("header"), valued("json-out"),
+          valued("page-size")}},
     };
 }
 
@@ -79,6 +88,8 @@ CliCommand *CliCommands::create(const QString &name, CliContext *context)
         return new EnableCommand(context);
     if (name == QLatin1String("clear-alarm"))
         return new ClearAlarmCommand(context);
+    if (name == QLatin1String("report"))
+        return new ReportCommand(context);
     Q_UNREACHABLE();
     return nullptr;
 }

@@ -74,7 +74,9 @@ QString CliHelp::commandList()
               "  enable on|off                  servo enable on or off\n"
               "  clear-alarm                    clear the alarm and check that it is gone\n"
               "  home [--positive] [--no-wait]  homing, negative direction first\n"
-              "  channels                       the monitor channels this drive offers\n");
+              "  channels                       the monitor channels this drive offers\n")
+        + tr("  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]\n"
+             "                                 the commissioning record (PDF and JSON)\n");
 }
 
 QString CliHelp::exitCodes()
@@ -181,6 +183,16 @@ QString CliHelp::command(const QString &name)
     if (name == QLatin1String("channels"))
         return tr("Usage: drivedesk-cli [OPTIONS] channels\n"
                   "The monitor channels this drive offers, with units.\n");
+    if (name == QLatin1String("report"))
+        return tr("Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--header FILE.json]\n"
+                  "                     [--json-out RECORD.json] [--page-size a4|letter]\n"
+                  "The commissioning record of the drive at --address (--all: of every drive a scan\n"
+                  "of the link finds): identity, firmware, link, the parameters that differ from the\n"
+                  "dictionary's defaults (all of them in the appendix), the last restore or write\n"
+                  "verification, alarms, link health and backup files, as a PDF in the language of\n"
+                  "--lang, and the same as JSON whose SHA-256 the PDF prints (docs/record.md).\n"
+                  "--header: machine, customer, site, engineer, notes from a JSON file.\n"
+                  "--runs RUN.ddrun,...: tuning runs (not supported by this build yet).\n");
     return general();
 }
 

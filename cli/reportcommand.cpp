@@ -148,8 +148,8 @@ void ReportCommand::collectNext()
         return writeRecord();
     Drive *d = context()->connection->drive(m_addresses.first());
     if (!d)
-        return fail({ErrorCode::InvalidArgument, tr("There can be no drive at address %1 on this link.")
-                                                     .arg(m_addresses.first())});
+        return fail({ErrorCode::InvalidArgument,
+                     tr("There can be no drive at address %1 on this link.").arg(m_addresses.first())});
     if (context()->dictionary && d->dictionary() != context()->dictionary)
         d->setDictionary(context()->dictionary);
     m_collector->collect(d, RecordCollector::linkSettingsJson(context()->globals.connection));
@@ -189,9 +189,9 @@ void ReportCommand::writeRecord()
                                   {QStringLiteral("firmware"), d.firmware},
                                   {QStringLiteral("nonDefault"), int(d.nonDefault().size())},
                                   {QStringLiteral("verification"),
-                                   d.verification.isEmpty() ? QStringLiteral("none")
-                                                            : d.verification.passed() ? QStringLiteral("verified")
-                                                                                      : QStringLiteral("failed")}});
+                                   d.verification.isEmpty()      ? QStringLiteral("none")
+                                       : d.verification.passed() ? QStringLiteral("verified")
+                                                                 : QStringLiteral("failed")}});
         if (!d.verification.isEmpty() && !d.verification.passed())
             ++failed;
     }
@@ -202,7 +202,8 @@ void ReportCommand::writeRecord()
         text += QLatin1Char('\n') + tr("JSON: %1").arg(m_jsonPath);
     text += QLatin1Char('\n') + tr("SHA-256 of the JSON: %1").arg(sha);
     if (failed)
-        text += QLatin1Char('\n') + tr("%n drive(s) failed their last verification; the record says so.", nullptr, failed);
+        text += QLatin1Char('\n')
+            + tr("%n drive(s) failed their last verification; the record says so.", nullptr, failed);
     QJsonArray skipped;
     for (const QString &s : std::as_const(m_skipped))
         skipped.append(s);

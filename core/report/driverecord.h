@@ -23,11 +23,11 @@ struct DriveRecord
     int address = 0;
     QString firmware;
     QString model;
-    QString link;             // "/dev/ttyUSB0 @ 115200"
-    QJsonObject linkSettings; // scalar values: port, baud, framing, can, bitrate
-    QString readError;        // why the parameters could not (all) be read; "" when they were
+    QString link;                      // "/dev/ttyUSB0 @ 115200"
+    QJsonObject linkSettings;          // scalar values: port, baud, framing, can, bitrate
+    QString readError;                 // why the parameters could not (all) be read; "" when they were
     QList<RecordParameter> parameters; // every parameter of the dictionary, ascending index
-    RecordVerification verification;  // the last restore or write; empty when none is known
+    RecordVerification verification;   // the last restore or write; empty when none is known
     QList<RecordAlarm> alarms;
     LinkHealth linkHealth;
     QList<RunRecord> runs;
@@ -39,8 +39,7 @@ struct DriveRecord
     int withoutDefault() const;
     // The parameters of `dictionary` with `values` (index -> value) read from the drive, in
     // the language of `locale`.
-    void setParameters(const ParameterDictionary &dictionary, const QMap<int, qint64> &values,
-                       const QLocale &locale);
+    void setParameters(const ParameterDictionary &dictionary, const QMap<int, qint64> &values, const QLocale &locale);
 };
 
 } // namespace dd

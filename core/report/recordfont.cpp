@@ -8,10 +8,10 @@ namespace dd {
 QString RecordFont::cjkFamily()
 {
     static const QString chosen = [] {
-        const QStringList preferred = {QStringLiteral("Noto Sans CJK SC"), QStringLiteral("Source Han Sans SC"),
-                                       QStringLiteral("Noto Sans SC"),     QStringLiteral("WenQuanYi Micro Hei"),
+        const QStringList preferred = {QStringLiteral("Noto Sans CJK SC"),  QStringLiteral("Source Han Sans SC"),
+                                       QStringLiteral("Noto Sans SC"),      QStringLiteral("WenQuanYi Micro Hei"),
                                        QStringLiteral("WenQuanYi Zen Hei"), QStringLiteral("Droid Sans Fallback"),
-                                       QStringLiteral("AR PL UMing CN"),   QStringLiteral("Noto Serif CJK SC")};
+                                       QStringLiteral("AR PL UMing CN"),    QStringLiteral("Noto Serif CJK SC")};
         const QStringList families = QFontDatabase::families(QFontDatabase::SimplifiedChinese);
         for (const QString &p : preferred)
             for (const QString &f : families)

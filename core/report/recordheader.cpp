@@ -40,10 +40,11 @@ Error RecordHeader::loadFromJson(const QByteArray &json, const QString &sourceNa
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError)
-        return {ErrorCode::Malformed, tr("%1 is not valid JSON (at byte %2: %3).")
-                                          .arg(sourceName)
-                                          .arg(parseError.offset)
-                                          .arg(parseError.errorString())};
+        return {ErrorCode::Malformed,
+                tr("%1 is not valid JSON (at byte %2: %3).")
+                    .arg(sourceName)
+                    .arg(parseError.offset)
+                    .arg(parseError.errorString())};
     if (!doc.isObject())
         return {ErrorCode::Malformed,
                 tr("%1: a header file is one JSON object, e.g. {\"machine\": \"Press 3\", \"engineer\": \"Li Wei\"}.")
@@ -55,22 +56,26 @@ Error RecordHeader::loadFromJson(const QByteArray &json, const QString &sourceNa
     for (auto it = root.begin(); it != root.end(); ++it) {
         const int at = int(names.indexOf(it.key()));
         if (at < 0)
-            return {ErrorCode::Malformed, tr("%1: unknown field \"%2\"; a header has the fields %3.")
-                                              .arg(sourceName, it.key(), names.join(QLatin1String(", ")))};
+            return {ErrorCode::Malformed,
+                    tr("%1: unknown field \"%2\"; a header has the fields %3.")
+                        .arg(sourceName, it.key(), names.join(QLatin1String(", ")))};
         if (!it.value().isString())
-            return {ErrorCode::Malformed, tr("%1: the field \"%2\" must be text (a JSON string).").arg(sourceName, it.key())};
+            return {ErrorCode::Malformed,
+                    tr("%1: the field \"%2\" must be text (a JSON string).").arg(sourceName, it.key())};
         const QString text = it.value().toString();
         const int limit = it.key() == QLatin1String("notes") ? MaxNotesLength : MaxFieldLength;
         if (text.size() > limit)
-            return {ErrorCode::Malformed, tr("%1: the field \"%2\" is %3 characters long; at most %4 are allowed.")
-                                              .arg(sourceName, it.key())
-                                              .arg(text.size())
-                                              .arg(limit)};
+            return {ErrorCode::Malformed,
+                    tr("%1: the field \"%2\" is %3 characters long; at most %4 are allowed.")
+                        .arg(sourceName, it.key())
+                        .arg(text.size())
+                        .arg(limit)};
         for (QChar c : text)
             if (c.category() == QChar::Other_Control && c != QLatin1Char('\n') && c != QLatin1Char('\t'))
                 return {ErrorCode::Malformed,
                         tr("%1: the field \"%2\" holds a control character (U+%3).")
-                            .arg(sourceName, it.key(), QString::number(c.unicode(), 16).rightJustified(4, QLatin1Char('0')))};
+                            .arg(sourceName, it.key(),
+                                 QString::number(c.unicode(), 16).rightJustified(4, QLatin1Char('0')))};
         *fields[at] = text;
     }
     *this = read;

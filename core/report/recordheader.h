@@ -26,7 +26,7 @@ public:
     QString customer;
     QString site;
     QString engineer;
-    QString notes; // several lines
+    QString notes;     // several lines
     QDateTime created; // UTC, whole seconds
     QString toolVersion;
     QString computer;

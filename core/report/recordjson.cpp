@@ -37,13 +37,13 @@ QJsonValue verificationJson(const RecordVerification &v)
         return QJsonValue(QJsonValue::Null);
     QJsonArray entries;
     for (const RecordVerification::Entry &e : v.entries)
-        entries.append(QJsonObject{{QStringLiteral("index"), e.index},
-                                   {QStringLiteral("key"), e.key},
-                                   {QStringLiteral("requested"), double(e.requested)},
-                                   {QStringLiteral("readBack"), e.hasReadBack ? QJsonValue(double(e.readBack))
-                                                                              : QJsonValue(QJsonValue::Null)},
-                                   {QStringLiteral("outcome"), e.outcome},
-                                   {QStringLiteral("message"), e.message}});
+        entries.append(QJsonObject{
+            {QStringLiteral("index"), e.index},
+            {QStringLiteral("key"), e.key},
+            {QStringLiteral("requested"), double(e.requested)},
+            {QStringLiteral("readBack"), e.hasReadBack ? QJsonValue(double(e.readBack)) : QJsonValue(QJsonValue::Null)},
+            {QStringLiteral("outcome"), e.outcome},
+            {QStringLiteral("message"), e.message}});
     return QJsonObject{{QStringLiteral("kind"), v.kind},
                        {QStringLiteral("when"), time(v.when)},
                        {QStringLiteral("sourceFile"), v.sourceFile},
@@ -57,9 +57,8 @@ QJsonObject runJson(const RunRecord &run)
 {
     QJsonArray metrics;
     for (const RunRecord::Metric &m : run.metrics)
-        metrics.append(QJsonObject{{QStringLiteral("name"), m.name},
-                                   {QStringLiteral("value"), m.value},
-                                   {QStringLiteral("unit"), m.unit}});
+        metrics.append(QJsonObject{
+            {QStringLiteral("name"), m.name}, {QStringLiteral("value"), m.value}, {QStringLiteral("unit"), m.unit}});
     QJsonArray snapshot;
     for (const RunRecord::SnapshotValue &s : run.snapshot)
         snapshot.append(QJsonObject{{QStringLiteral("key"), s.key},
@@ -69,9 +68,9 @@ QJsonObject runJson(const RunRecord &run)
     const QJsonValue plot = run.plot.isNull() ? QJsonValue(QJsonValue::Null)
                                               : QJsonValue(QJsonObject{{QStringLiteral("width"), run.plot.width()},
                                                                        {QStringLiteral("height"), run.plot.height()}});
-    return {{QStringLiteral("title"), run.title},   {QStringLiteral("file"), run.file},
+    return {{QStringLiteral("title"), run.title},     {QStringLiteral("file"), run.file},
             {QStringLiteral("when"), time(run.when)}, {QStringLiteral("metrics"), metrics},
-            {QStringLiteral("snapshot"), snapshot}, {QStringLiteral("plot"), plot}};
+            {QStringLiteral("snapshot"), snapshot},   {QStringLiteral("plot"), plot}};
 }
 
 QJsonObject driveJson(const DriveRecord &d)

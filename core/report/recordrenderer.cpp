@@ -43,10 +43,35 @@ QString orDash(const QString &text)
 // A table whose first row is a <thead>: QTextDocument repeats it on every page it spans.
 QString tableStart(const QStringList &headers)
 {
-    QString html = QStringLiteral("<table class=\"grid\" width=\"100%\" cellspacing=\"0\" cellpadding=\"3\"><thead><tr>");
+    QString html = QStringLiteral(
+        "<table class=\"grid\" width=\"100%\" cellspacing=\"0\" cellpadding=\"3\"><thead><tr>");
     for (const QString &h : headers)
         html += QStringLiteral("<th>%1</th>").arg(esc(h));
     return html + QStringLiteral("</tr></thead>");
+}
+
+// A long table as consecutive tables of at most ChunkRows rows, each with the header row and
+// the same column widths (percent), so that they read as one. QTextDocument lays a table
+// out in time that grows much faster than its rows (8 x 220 rows in one table each: ~5 s;
+// in chunks: a fraction); a chunk that runs over a page break still repeats its header.
+constexpr int ChunkRows = 30;
+
+QString chunkedTable(const QStringList &headers, const QList<int> &widthsPercent, const QStringList &rows)
+{
+    QString head = QStringLiteral("<thead><tr>");
+    for (int c = 0; c < headers.size(); ++c)
+        head += QStringLiteral("<th width=\"%1%\">%2</th>").arg(widthsPercent.value(c)).arg(esc(headers.at(c)));
+    head += QStringLiteral("</tr></thead>");
+    QString html;
+    for (int start = 0; start < rows.size(); start += ChunkRows) {
+        html += QStringLiteral("<table class=\"grid\" width=\"100%\" cellspacing=\"0\" cellpadding=\"3\" "
+                               "style=\"margin-top: 0px; margin-bottom: 0px\">")
+            + head;
+        for (int r = start; r < qMin(start + ChunkRows, int(rows.size())); ++r)
+            html += rows.at(r);
+        html += QStringLiteral("</table>");
+    }
+    return html;
 }
 
 const char *StyleSheet = "body { } h1 { font-size: 17pt; margin-bottom: 4px; } h2 { font-size: 13pt; margin-top: 0px; }"
@@ -74,10 +99,8 @@ QPageSize::PageSizeId RecordRenderer::defaultPageSize(const QLocale &locale)
     case QLocale::Philippines:
     case QLocale::Chile:
     case QLocale::Colombia:
-    case QLocale::Venezuela:
-        return QPageSize::Letter;
-    default:
-        return QPageSize::A4;
+    case QLocale::Venezuela: return QPageSize::Letter;
+    default: return QPageSize::A4;
     }
 }
 
@@ -140,8 +163,8 @@ QString RecordRenderer::summarySection() const
         if (!warning.isEmpty())
             html += QStringLiteral("<p class=\"fail\">%1</p>").arg(warning);
     }
-    html += tableStart({tr("Drive"), tr("Firmware"), tr("Model"), tr("Link"), tr("Changed"), tr("Verification"),
-                        tr("Alarms")});
+    html += tableStart(
+        {tr("Drive"), tr("Firmware"), tr("Model"), tr("Link"), tr("Changed"), tr("Verification"), tr("Alarms")});
     for (const DriveRecord &d : m_record.drives) {
         QString verification;
         if (d.verification.isEmpty())
@@ -182,7 +205,8 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number, int) cons
     row(tr("Link settings"), orDash(settings.join(QLatin1String(", "))));
     html += QStringLiteral("</table>");
     if (!d.readError.isEmpty())
-        html += QStringLiteral("<p class=\"fail\">%1</p>").arg(esc(tr("Parameters not (all) read: %1").arg(d.readError)));
+        html += QStringLiteral("<p class=\"fail\">%1</p>")
+                    .arg(esc(tr("Parameters not (all) read: %1").arg(d.readError)));
 
     // Parameters that differ from the defaults.
     const QList<RecordParameter> changed = d.nonDefault();
@@ -191,12 +215,13 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number, int) cons
     if (changed.isEmpty()) {
         html += QStringLiteral("<p>%1</p>").arg(esc(tr("No parameter read differs from its default.")));
     } else {
-        html += tableStart({tr("Index"), tr("Parameter"), tr("Name"), tr("Value"), tr("Default"), tr("Unit")});
+        QStringList rows;
         for (const RecordParameter &p : changed)
-            html += QStringLiteral("<tr>") + cell(QString::number(p.index)) + cell(esc(p.key)) + cell(esc(p.name))
-                + cell(QStringLiteral("<b>%1</b>").arg(optionalNumber(p.value))) + cell(optionalNumber(p.defaultValue))
-                + cell(esc(p.unit)) + QStringLiteral("</tr>");
-        html += QStringLiteral("</table>");
+            rows << QStringLiteral("<tr>") + cell(QString::number(p.index)) + cell(esc(p.key)) + cell(esc(p.name))
+                    + cell(QStringLiteral("<b>%1</b>").arg(optionalNumber(p.value)))
+                    + cell(optionalNumber(p.defaultValue)) + cell(esc(p.unit)) + QStringLiteral("</tr>");
+        html += chunkedTable({tr("Index"), tr("Parameter"), tr("Name"), tr("Value"), tr("Default"), tr("Unit")},
+                             {8, 12, 42, 13, 13, 12}, rows);
     }
     if (const int n = d.withoutDefault())
         html += QStringLiteral("<p class=\"note\">%1</p>")
@@ -218,7 +243,8 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number, int) cons
                    ? QStringLiteral("<span class=\"ok\">%1</span>")
                          .arg(esc(tr("%n parameter(s) written and verified.", nullptr, int(v.entries.size()))))
                    : QStringLiteral("<span class=\"fail\">%1</span>")
-                         .arg(esc(tr("%1 of %2 parameter(s) NOT verified.").arg(v.failedCount()).arg(v.entries.size()))));
+                         .arg(esc(
+                             tr("%1 of %2 parameter(s) NOT verified.").arg(v.failedCount()).arg(v.entries.size()))));
         html += QStringLiteral("<p>%1</p>").arg(line);
         if (!v.sourceFile.isEmpty())
             html += QStringLiteral("<p>%1 <span class=\"mono\">%2</span></p>")
@@ -227,9 +253,9 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number, int) cons
             html += tableStart({tr("Parameter"), tr("Written"), tr("Read back"), tr("Result")});
             for (const RecordVerification::Entry &e : v.entries) {
                 const QString result = e.isVerified()
-                    ? QStringLiteral("<span class=\"ok\">%1</span>").arg(esc(e.outcome == QLatin1String("verified")
-                                                                                 ? tr("verified")
-                                                                                 : tr("written (write-only)")))
+                    ? QStringLiteral("<span class=\"ok\">%1</span>")
+                          .arg(
+                              esc(e.outcome == QLatin1String("verified") ? tr("verified") : tr("written (write-only)")))
                     : QStringLiteral("<span class=\"fail\">%1</span> %2")
                           .arg(esc(tr("FAILED (%1)").arg(e.outcome)), esc(e.message));
                 html += QStringLiteral("<tr>") + cell(esc(e.key)) + cell(QString::number(e.requested))
@@ -247,10 +273,11 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number, int) cons
     } else {
         html += tableStart({tr("Time"), tr("Code"), tr("Alarm"), tr("Seen")});
         for (const RecordAlarm &a : d.alarms) {
-            const QString seen = a.source == QLatin1String("drive") ? tr("active when the record was made")
-                                                                   : (a.cleared ? tr("cleared") : tr("in the session"));
-            html += QStringLiteral("<tr>") + cell(timeText(a.when)) + cell(QString::number(a.code)) + cell(orDash(a.text))
-                + cell(esc(seen)) + QStringLiteral("</tr>");
+            const QString seen = a.source == QLatin1String("drive")
+                ? tr("active when the record was made")
+                : (a.cleared ? tr("cleared") : tr("in the session"));
+            html += QStringLiteral("<tr>") + cell(timeText(a.when)) + cell(QString::number(a.code))
+                + cell(orDash(a.text)) + cell(esc(seen)) + QStringLiteral("</tr>");
         }
         html += QStringLiteral("</table>");
     }
@@ -309,7 +336,8 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number, int) cons
         html += tableStart({tr("Role"), tr("File"), tr("Checksum"), tr("Time")});
         for (const BackupReference &b : d.backups)
             html += QStringLiteral("<tr>")
-                + cell(esc(b.role == QLatin1String("restore") ? tr("restored onto the drive") : tr("saved from the drive")))
+                + cell(esc(b.role == QLatin1String("restore") ? tr("restored onto the drive")
+                                                              : tr("saved from the drive")))
                 + cell(esc(b.path)) + cell(QStringLiteral("<span class=\"mono\">%1</span>").arg(esc(b.checksum)))
                 + cell(timeText(b.when)) + QStringLiteral("</tr>");
         html += QStringLiteral("</table>");
@@ -328,13 +356,15 @@ QString RecordRenderer::appendixSection() const
             html += QStringLiteral("<p>%1</p>").arg(esc(tr("No parameter was read.")));
             continue;
         }
-        html += tableStart({tr("Index"), tr("Parameter"), tr("Name"), tr("Value"), tr("Default"), tr("Unit"),
-                            tr("Changed")});
+        QStringList rows;
+        rows.reserve(d.parameters.size());
         for (const RecordParameter &p : d.parameters)
-            html += QStringLiteral("<tr>") + cell(QString::number(p.index)) + cell(esc(p.key)) + cell(esc(p.name))
-                + cell(optionalNumber(p.value)) + cell(optionalNumber(p.defaultValue)) + cell(esc(p.unit))
-                + cell(p.differsFromDefault() ? QStringLiteral("<b>*</b>") : QString()) + QStringLiteral("</tr>");
-        html += QStringLiteral("</table>");
+            rows << QStringLiteral("<tr>") + cell(QString::number(p.index)) + cell(esc(p.key)) + cell(esc(p.name))
+                    + cell(optionalNumber(p.value)) + cell(optionalNumber(p.defaultValue)) + cell(esc(p.unit))
+                    + cell(p.differsFromDefault() ? QStringLiteral("<b>*</b>") : QString()) + QStringLiteral("</tr>");
+        html += chunkedTable(
+            {tr("Index"), tr("Parameter"), tr("Name"), tr("Value"), tr("Default"), tr("Unit"), tr("Changed")},
+            {8, 12, 38, 12, 12, 10, 8}, rows);
     }
     return html;
 }
@@ -417,9 +447,9 @@ Error RecordRenderer::renderPdf(QByteArray *pdf, int *pageCount) const
     writer.setPageMargins(PageMarginsMm, QPageLayout::Millimeter);
     writer.setResolution(300);
     writer.setCreator(QStringLiteral("DriveDesk %1").arg(QStringLiteral(DRIVEDESK_VERSION)));
-    writer.setTitle(tr("Commissioning record") + (m_record.header.machine.isEmpty()
-                                                      ? QString()
-                                                      : QStringLiteral(" — ") + m_record.header.machine));
+    writer.setTitle(
+        tr("Commissioning record")
+        + (m_record.header.machine.isEmpty() ? QString() : QStringLiteral(" — ") + m_record.header.machine));
     QPainter painter;
     QTextDocument doc;
     fillDocument(&doc, writer.resolution());
@@ -435,9 +465,8 @@ Error RecordRenderer::renderPdf(QByteArray *pdf, int *pageCount) const
         [](int) {},
         [this](int page, int pages) {
             return QStringList{
-                tr("DriveDesk commissioning record") + (m_record.header.machine.isEmpty()
-                                                            ? QString()
-                                                            : QStringLiteral(" — ") + m_record.header.machine),
+                tr("DriveDesk commissioning record")
+                    + (m_record.header.machine.isEmpty() ? QString() : QStringLiteral(" — ") + m_record.header.machine),
                 tr("Page %1 of %2").arg(page + 1).arg(pages), tr("Record file (JSON) SHA-256: %1").arg(m_sha256)};
         });
     if (painter.isActive())

@@ -26,8 +26,8 @@ struct RecordVerification
 
     QString kind; // "restore" or "write"
     QDateTime when;
-    QString sourceFile;         // restore: the backup file
-    QString sourceChecksum;     // restore: the backup file's checksum ("sha256:...")
+    QString sourceFile;     // restore: the backup file
+    QString sourceChecksum; // restore: the backup file's checksum ("sha256:...")
     QList<Entry> entries;
 
     bool isEmpty() const { return kind.isEmpty(); }

@@ -108,7 +108,8 @@ VerificationJournal::Entry VerificationJournal::read(Family family, int address)
     for (const QJsonValue &item : root.value(QStringLiteral("backups")).toArray()) {
         const QJsonObject o = item.toObject();
         entry.backups.append({o.value(QStringLiteral("role")).toString(), o.value(QStringLiteral("path")).toString(),
-                              o.value(QStringLiteral("checksum")).toString(), timeFrom(o.value(QStringLiteral("when")))});
+                              o.value(QStringLiteral("checksum")).toString(),
+                              timeFrom(o.value(QStringLiteral("when")))});
     }
     return entry;
 }
@@ -123,15 +124,16 @@ Error VerificationJournal::write(Family family, int address, const Entry &entry)
             entries.append(QJsonObject{{QStringLiteral("index"), e.index},
                                        {QStringLiteral("key"), e.key},
                                        {QStringLiteral("requested"), double(e.requested)},
-                                       {QStringLiteral("readBack"), e.hasReadBack ? QJsonValue(double(e.readBack))
-                                                                                  : QJsonValue(QJsonValue::Null)},
+                                       {QStringLiteral("readBack"),
+                                        e.hasReadBack ? QJsonValue(double(e.readBack)) : QJsonValue(QJsonValue::Null)},
                                        {QStringLiteral("outcome"), e.outcome},
                                        {QStringLiteral("message"), e.message}});
-        root.insert(QStringLiteral("verification"), QJsonObject{{QStringLiteral("kind"), r.kind},
-                                                                {QStringLiteral("when"), timeText(r.when)},
-                                                                {QStringLiteral("sourceFile"), r.sourceFile},
-                                                                {QStringLiteral("sourceChecksum"), r.sourceChecksum},
-                                                                {QStringLiteral("entries"), entries}});
+        root.insert(QStringLiteral("verification"),
+                    QJsonObject{{QStringLiteral("kind"), r.kind},
+                                {QStringLiteral("when"), timeText(r.when)},
+                                {QStringLiteral("sourceFile"), r.sourceFile},
+                                {QStringLiteral("sourceChecksum"), r.sourceChecksum},
+                                {QStringLiteral("entries"), entries}});
     }
     QJsonArray backups;
     for (const BackupReference &b : entry.backups)

@@ -95,8 +95,8 @@ inline CommissioningRecord fixtureRecord(int drives, int parameters, int failedD
             }
             r.verification.entries.append(e);
         }
-        r.backups.append({QStringLiteral("restore"), r.verification.sourceFile, r.verification.sourceChecksum,
-                          r.verification.when});
+        r.backups.append(
+            {QStringLiteral("restore"), r.verification.sourceFile, r.verification.sourceChecksum, r.verification.when});
         r.alarms.append({QDateTime(QDate(2026, 11, 25), QTime(12, 10, 0), Qt::UTC), 12, QStringLiteral("Overcurrent"),
                          QStringLiteral("session"), true});
         r.linkHealth = {true, QStringLiteral("this session"), 12000, 11990, 3, 2, 1};

@@ -72,12 +72,13 @@ private slots:
         QTest::addColumn<QString>("reason");
         QTest::newRow("not json") << QByteArray("{machine: 1") << QStringLiteral("not valid JSON");
         QTest::newRow("array") << QByteArray("[\"Press 3\"]") << QStringLiteral("one JSON object");
-        QTest::newRow("unknown field") << QByteArray(R"({"enginer": "Li"})") << QStringLiteral("unknown field \"enginer\"");
+        QTest::newRow("unknown field") << QByteArray(R"({"enginer": "Li"})")
+                                       << QStringLiteral("unknown field \"enginer\"");
         QTest::newRow("number") << QByteArray(R"({"machine": 3})") << QStringLiteral("\"machine\" must be text");
         QTest::newRow("too long") << QByteArray("{\"site\": \"" + QByteArray(201, 'x') + "\"}")
                                   << QStringLiteral("\"site\" is 201 characters long; at most 200");
-        QTest::newRow("control character") << QByteArray(R"({"customer": "A\u0007B"})")
-                                           << QStringLiteral("control character (U+0007)");
+        QTest::newRow("control character")
+            << QByteArray(R"({"customer": "A\u0007B"})") << QStringLiteral("control character (U+0007)");
     }
 
     void badHeaderFilesAreRefusedWithTheReason()
@@ -250,7 +251,8 @@ private slots:
         QCOMPARE(d1.value(QStringLiteral("verification")).toObject().value(QStringLiteral("passed")).toBool(), false);
         QCOMPARE(d1.value(QStringLiteral("runs")).toArray().size(), 1);
 
-        const QString schema = qEnvironmentVariable("DRIVEDESK_SOURCE_DIR") + QStringLiteral("/docs/record-schema.json");
+        const QString schema = qEnvironmentVariable("DRIVEDESK_SOURCE_DIR")
+            + QStringLiteral("/docs/record-schema.json");
         QVERIFY(QFile::exists(schema));
         // And a record that breaks the schema is caught by it (the check is real).
         QJsonObject broken = root;

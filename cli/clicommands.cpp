@@ -49,8 +49,8 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("home"), {flag("positive"), flag("no-wait")}},
         {QStringLiteral("channels"), {}},
         {QStringLiteral("report"),
-         {valued("output", QLatin1Char('o')), flag("all"), valued("runs"), valued("header"), valued("json-out"),
-          valued("page-size")}},
+         {valued("output", QLatin1Char('o')), flag("all"), valued("from"), valued("to"), valued("runs"),
+          valued("header"), valued("json-out"), valued("page-size")}},
     };
 }
 

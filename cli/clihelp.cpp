@@ -191,6 +191,7 @@ QString CliHelp::command(const QString &name)
                   "dictionary's defaults (all of them in the appendix), the last restore or write\n"
                   "verification, alarms, link health and backup files, as a PDF in the language of\n"
                   "--lang, and the same as JSON whose SHA-256 the PDF prints (docs/record.md).\n"
+                  "--all [--from A] [--to B]: the scan's address range (default: the family's).\n"
                   "--header: machine, customer, site, engineer, notes from a JSON file.\n"
                   "--runs RUN.ddrun,...: tuning runs (not supported by this build yet).\n");
     return general();

@@ -1,5 +1,6 @@
 #include "cli/reportcommand.h"
 
+#include "cli/clivalues.h"
 #include "core/drive/drive.h"
 #include "core/drive/driveconnection.h"
 #include "core/drive/familybackend.h" // driveconnection.h needs it complete (QPointer)
@@ -81,10 +82,28 @@ bool ReportCommand::prepare(const CliInvocation &inv, QString *error)
         }
     }
     m_all = inv.has(QStringLiteral("all"));
+    if ((inv.has(QStringLiteral("from")) || inv.has(QStringLiteral("to"))) && !m_all) {
+        *error = tr("report: --from and --to limit the scan of --all; without --all the record is of --address.");
+        return false;
+    }
     if (m_all) {
         const AddressRange range = context()->globals.addressRange();
         m_scan.from = range.first;
         m_scan.to = range.last;
+        for (const char *name : {"from", "to"}) {
+            const QString option = QLatin1String(name);
+            if (!inv.has(option))
+                continue;
+            const auto v = CliValues::integer(inv.value(option), range.first, range.last, QStringLiteral("--") + option,
+                                              error);
+            if (!v)
+                return false;
+            (option == QLatin1String("from") ? m_scan.from : m_scan.to) = int(*v);
+        }
+        if (m_scan.from > m_scan.to) {
+            *error = tr("report: --from %1 is above --to %2.").arg(m_scan.from).arg(m_scan.to);
+            return false;
+        }
         if (context()->globals.connection.timeoutMs > 0)
             m_scan.timeoutMs = context()->globals.connection.timeoutMs;
     } else {

@@ -9,7 +9,7 @@
 
 #include <QPageSize>
 
-// report -o RECORD.pdf [--all] [--runs RUN.ddrun,...] [--header FILE.json]
+// report -o RECORD.pdf [--all [--from A] [--to B]] [--runs RUN.ddrun,...] [--header FILE.json]
 //        [--json-out RECORD.json] [--page-size a4|letter]: the commissioning record
 // (docs/record.md) of the drive at --address, or with --all of every drive a scan of the
 // link finds.

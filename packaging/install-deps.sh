@@ -12,6 +12,7 @@ PACKAGES=(
   libmodbus-dev mbpoll
   clang libclang-rt-14-dev clang-format
   xvfb xauth fonts-noto-cjk
+  poppler-utils python3-jsonschema   # the commissioning record's tests: pdftotext, the JSON schema
 )
 
 missing=()

@@ -4593,6 +4593,37 @@ Servo enable on or off.
         <source>The %1 family talks RS485: use --port DEVICE instead of --can.</source>
         <translation>%1 系列使用 RS485 通讯：请用 --port DEVICE 代替 --can。</translation>
     </message>
+    <message>
+        <source>  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]
+                                 the commissioning record (PDF and JSON)
+</source>
+        <translation>  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]
+                                 调试记录（PDF 与 JSON）
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--header FILE.json]
+                     [--json-out RECORD.json] [--page-size a4|letter]
+The commissioning record of the drive at --address (--all: of every drive a scan
+of the link finds): identity, firmware, link, the parameters that differ from the
+dictionary&apos;s defaults (all of them in the appendix), the last restore or write
+verification, alarms, link health and backup files, as a PDF in the language of
+--lang, and the same as JSON whose SHA-256 the PDF prints (docs/record.md).
+--all [--from A] [--to B]: the scan&apos;s address range (default: the family&apos;s).
+--header: machine, customer, site, engineer, notes from a JSON file.
+--runs RUN.ddrun,...: tuning runs (not supported by this build yet).
+</source>
+        <translation>用法：drivedesk-cli [选项] report -o RECORD.pdf [--all] [--header FILE.json]
+                     [--json-out RECORD.json] [--page-size a4|letter]
+生成 --address 所指驱动器的调试记录（--all：扫描链路找到的全部驱动器）：身份、固件、
+链路、与字典默认值不同的参数（附录中列出全部参数）、最近一次恢复或写入的校验结果、
+报警、链路状况和备份文件；PDF 使用 --lang 的语言，另有内容相同的 JSON，
+PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
+--all [--from A] [--to B]：扫描的地址范围（默认：该系列的范围）。
+--header：从 JSON 文件读取机器、客户、现场、工程师、备注。
+--runs RUN.ddrun,...：调试运行记录（本版本尚不支持）。
+</translation>
+    </message>
 </context>
 <context>
     <name>dd::CliCommand</name>
@@ -5071,6 +5102,642 @@ Servo enable on or off.
         <translation>
             <numerusform>%n 个参数的回读值与写入值不同（第一个：%1：%2）。驱动器可能限制了该值或在当前状态下不接受它，或该参数为只读。</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordHeader</name>
+    <message>
+        <source>The header file %1 does not exist.</source>
+        <translation>表头文件 %1 不存在。</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a header file.</source>
+        <translation>%1 是文件夹，不是表头文件。</translation>
+    </message>
+    <message>
+        <source>The header file %1 is %2 bytes; a header file is at most %3 bytes.</source>
+        <translation>表头文件 %1 有 %2 字节；表头文件最多 %3 字节。</translation>
+    </message>
+    <message>
+        <source>Cannot read the header file %1: %2</source>
+        <translation>无法读取表头文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: a header file is at most %2 bytes.</source>
+        <translation>%1：表头文件最多 %2 字节。</translation>
+    </message>
+    <message>
+        <source>%1 is not valid JSON (at byte %2: %3).</source>
+        <translation>%1 不是有效的 JSON（第 %2 字节：%3）。</translation>
+    </message>
+    <message>
+        <source>%1: a header file is one JSON object, e.g. {&quot;machine&quot;: &quot;Press 3&quot;, &quot;engineer&quot;: &quot;Li Wei&quot;}.</source>
+        <translation>%1：表头文件是一个 JSON 对象，例如 {&quot;machine&quot;: &quot;Press 3&quot;, &quot;engineer&quot;: &quot;Li Wei&quot;}。</translation>
+    </message>
+    <message>
+        <source>%1: unknown field &quot;%2&quot;; a header has the fields %3.</source>
+        <translation>%1：未知字段 &quot;%2&quot;；表头的字段为 %3。</translation>
+    </message>
+    <message>
+        <source>%1: the field &quot;%2&quot; must be text (a JSON string).</source>
+        <translation>%1：字段 &quot;%2&quot; 必须是文本（JSON 字符串）。</translation>
+    </message>
+    <message>
+        <source>%1: the field &quot;%2&quot; is %3 characters long; at most %4 are allowed.</source>
+        <translation>%1：字段 &quot;%2&quot; 长 %3 个字符；最多允许 %4 个。</translation>
+    </message>
+    <message>
+        <source>%1: the field &quot;%2&quot; holds a control character (U+%3).</source>
+        <translation>%1：字段 &quot;%2&quot; 含有控制字符（U+%3）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordRenderer</name>
+    <message>
+        <source>%1 at address %2</source>
+        <translation>%1，地址 %2</translation>
+    </message>
+    <message>
+        <source>restore</source>
+        <translation>恢复</translation>
+    </message>
+    <message>
+        <source>parameter write</source>
+        <translation>参数写入</translation>
+    </message>
+    <message>
+        <source>VERIFICATION FAILED: %1 — the last %2 (%3): %4 of %5 parameter(s) not verified.</source>
+        <translation>校验失败：%1 — 最近一次%2（%3）：%5 个参数中有 %4 个未通过校验。</translation>
+    </message>
+    <message>
+        <source>Commissioning record</source>
+        <translation>调试记录</translation>
+    </message>
+    <message>
+        <source>Machine / project</source>
+        <translation>机器 / 项目</translation>
+    </message>
+    <message>
+        <source>Customer</source>
+        <translation>客户</translation>
+    </message>
+    <message>
+        <source>Site</source>
+        <translation>现场</translation>
+    </message>
+    <message>
+        <source>Engineer</source>
+        <translation>工程师</translation>
+    </message>
+    <message>
+        <source>Date and time</source>
+        <translation>日期和时间</translation>
+    </message>
+    <message>
+        <source>DriveDesk version</source>
+        <translation>DriveDesk 版本</translation>
+    </message>
+    <message>
+        <source>Computer</source>
+        <translation>计算机</translation>
+    </message>
+    <message>
+        <source>Record file (JSON) SHA-256</source>
+        <translation>记录文件（JSON）SHA-256</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message numerus="yes">
+        <source>Drives (%n)</source>
+        <translation>
+            <numerusform>驱动器（%n 台）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No drive is in this record.</source>
+        <translation>此记录中没有驱动器。</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>驱动器</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>链路</translation>
+    </message>
+    <message>
+        <source>Changed</source>
+        <translation>已修改</translation>
+    </message>
+    <message>
+        <source>Verification</source>
+        <translation>校验</translation>
+    </message>
+    <message>
+        <source>Alarms</source>
+        <translation>报警</translation>
+    </message>
+    <message>
+        <source>none recorded</source>
+        <translation>无记录</translation>
+    </message>
+    <message>
+        <source>verified</source>
+        <translation>已校验</translation>
+    </message>
+    <message>
+        <source>FAILED (%1)</source>
+        <translation>失败（%1）</translation>
+    </message>
+    <message>
+        <source>Drive %1 of %2: %3</source>
+        <translation>驱动器 %1/%2：%3</translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Link settings</source>
+        <translation>链路设置</translation>
+    </message>
+    <message>
+        <source>Parameters not (all) read: %1</source>
+        <translation>参数未能（全部）读取：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Parameters that differ from the defaults (%n)</source>
+        <translation>
+            <numerusform>与默认值不同的参数（%n 个）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No parameter read differs from its default.</source>
+        <translation>读取的参数均与默认值相同。</translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation>编号</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) could not be compared: the dictionary gives no default for them.</source>
+        <translation>
+            <numerusform>%n 个参数无法比较：字典中没有它们的默认值。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Every parameter with its value and default is listed in the appendix.</source>
+        <translation>附录中列出每个参数及其值和默认值。</translation>
+    </message>
+    <message>
+        <source>Last verification</source>
+        <translation>最近一次校验</translation>
+    </message>
+    <message>
+        <source>No restore or parameter write of this drive is recorded.</source>
+        <translation>没有此驱动器的恢复或参数写入记录。</translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>恢复</translation>
+    </message>
+    <message>
+        <source>Parameter write</source>
+        <translation>参数写入</translation>
+    </message>
+    <message>
+        <source>%1 on %2: </source>
+        <translation>%1，%2：</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) written and verified.</source>
+        <translation>
+            <numerusform>%n 个参数已写入并校验。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 parameter(s) NOT verified.</source>
+        <translation>%2 个参数中有 %1 个未通过校验。</translation>
+    </message>
+    <message>
+        <source>From the backup file %1, checksum</source>
+        <translation>来自备份文件 %1，校验和</translation>
+    </message>
+    <message>
+        <source>Written</source>
+        <translation>写入值</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>回读值</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>written (write-only)</source>
+        <translation>已写入（只写参数）</translation>
+    </message>
+    <message>
+        <source>No alarm was recorded.</source>
+        <translation>没有报警记录。</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>代码</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>报警</translation>
+    </message>
+    <message>
+        <source>Seen</source>
+        <translation>情况</translation>
+    </message>
+    <message>
+        <source>active when the record was made</source>
+        <translation>生成记录时仍存在</translation>
+    </message>
+    <message>
+        <source>cleared</source>
+        <translation>已清除</translation>
+    </message>
+    <message>
+        <source>in the session</source>
+        <translation>本次会话中出现</translation>
+    </message>
+    <message>
+        <source>Link health</source>
+        <translation>链路状况</translation>
+    </message>
+    <message>
+        <source>Not measured.</source>
+        <translation>未统计。</translation>
+    </message>
+    <message>
+        <source>%1: %2 frame(s) sent, %3 received, %4 discarded, %5 retries, %6 failed operation(s).</source>
+        <translation>%1：发送 %2 帧，接收 %3 帧，丢弃 %4 帧，重试 %5 次，失败操作 %6 次。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Tuning runs (%n)</source>
+        <translation>
+            <numerusform>调试运行（%n 次）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Metric</source>
+        <translation>指标</translation>
+    </message>
+    <message>
+        <source>Parameters during the run</source>
+        <translation>运行时的参数</translation>
+    </message>
+    <message>
+        <source>Backup files</source>
+        <translation>备份文件</translation>
+    </message>
+    <message>
+        <source>No backup file of this drive is recorded.</source>
+        <translation>没有此驱动器的备份文件记录。</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>用途</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <source>Checksum</source>
+        <translation>校验和</translation>
+    </message>
+    <message>
+        <source>restored onto the drive</source>
+        <translation>已恢复到驱动器</translation>
+    </message>
+    <message>
+        <source>saved from the drive</source>
+        <translation>从驱动器保存</translation>
+    </message>
+    <message>
+        <source>Appendix %1: every parameter of %2</source>
+        <translation>附录 %1：%2 的全部参数</translation>
+    </message>
+    <message>
+        <source>No parameter was read.</source>
+        <translation>没有读取到参数。</translation>
+    </message>
+    <message>
+        <source>DriveDesk commissioning record</source>
+        <translation>DriveDesk 调试记录</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>第 %1 页，共 %2 页</translation>
+    </message>
+    <message>
+        <source>Record file (JSON) SHA-256: %1</source>
+        <translation>记录文件（JSON）SHA-256：%1</translation>
+    </message>
+    <message>
+        <source>Could not draw the record&apos;s pages.</source>
+        <translation>无法绘制记录的页面。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>dd::VerificationJournal</name>
+    <message>
+        <source>Cannot create the folder %1 for the verification journal.</source>
+        <translation>无法为校验日志创建文件夹 %1。</translation>
+    </message>
+    <message>
+        <source>Cannot write the verification journal %1: %2</source>
+        <translation>无法写入校验日志 %1：%2</translation>
+    </message>
+    <message>
+        <source>not attempted: the restore stopped before this parameter</source>
+        <translation>未尝试：恢复在此参数之前已停止</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ReportCommand</name>
+    <message>
+        <source>report %1: %2 is a folder; give a file name.</source>
+        <translation>report %1：%2 是文件夹；请给出文件名。</translation>
+    </message>
+    <message>
+        <source>report %1: the folder %2 does not exist.</source>
+        <translation>report %1：文件夹 %2 不存在。</translation>
+    </message>
+    <message>
+        <source>report %1: %2 should end in .%3.</source>
+        <translation>report %1：%2 应以 .%3 结尾。</translation>
+    </message>
+    <message>
+        <source>report needs the PDF file to write: report -o RECORD.pdf.</source>
+        <translation>report 需要要写入的 PDF 文件：report -o RECORD.pdf。</translation>
+    </message>
+    <message>
+        <source>report: the PDF and the JSON file must be two different files.</source>
+        <translation>report：PDF 与 JSON 必须是两个不同的文件。</translation>
+    </message>
+    <message>
+        <source>report --runs: run files are not supported by this build yet.</source>
+        <translation>report --runs：本版本尚不支持运行记录文件。</translation>
+    </message>
+    <message>
+        <source>report --header: %1</source>
+        <translation>report --header：%1</translation>
+    </message>
+    <message>
+        <source>report --page-size: &quot;%1&quot; is not a page size; use a4 or letter.</source>
+        <translation>report --page-size：&quot;%1&quot; 不是纸张尺寸；请用 a4 或 letter。</translation>
+    </message>
+    <message>
+        <source>address %1: %2</source>
+        <translation>地址 %1：%2</translation>
+    </message>
+    <message>
+        <source>Drive %1 left out of the record: %2</source>
+        <translation>驱动器 %1 未列入记录：%2</translation>
+    </message>
+    <message>
+        <source>No Chinese font is installed: Chinese text cannot be drawn in the PDF. Install one (Debian: apt install fonts-noto-cjk).</source>
+        <translation>未安装中文字体：PDF 中无法绘制中文。请安装一个（Debian：apt install fonts-noto-cjk）。</translation>
+    </message>
+    <message>
+        <source>This family cannot scan.</source>
+        <translation>此系列不能扫描。</translation>
+    </message>
+    <message>
+        <source>No drive answered the scan; there is nothing to record.</source>
+        <translation>扫描时没有驱动器应答；没有可记录的内容。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) found; reading them.</source>
+        <translation>
+            <numerusform>找到 %n 台驱动器；正在读取。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scanning addresses %1 to %2 ...</source>
+        <translation>正在扫描地址 %1 到 %2 ...</translation>
+    </message>
+    <message>
+        <source>There can be no drive at address %1 on this link.</source>
+        <translation>此链路上不可能有地址为 %1 的驱动器。</translation>
+    </message>
+    <message>
+        <source>No drive could be read; no record was written.</source>
+        <translation>没有能读取的驱动器；未写入记录。</translation>
+    </message>
+    <message>
+        <source>while this record was made</source>
+        <translation>生成此记录期间</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Commissioning record of %n drive(s) written to %1 (%2 pages).</source>
+        <translation>
+            <numerusform>%n 台驱动器的调试记录已写入 %1（%2 页）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>JSON: %1</source>
+        <translation>JSON：%1</translation>
+    </message>
+    <message>
+        <source>SHA-256 of the JSON: %1</source>
+        <translation>JSON 的 SHA-256：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) failed their last verification; the record says so.</source>
+        <translation>
+            <numerusform>%n 台驱动器最近一次校验失败；记录中已注明。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>report: --from and --to limit the scan of --all; without --all the record is of --address.</source>
+        <translation>report：--from 和 --to 限定 --all 的扫描范围；不用 --all 时记录的是 --address 所指的驱动器。</translation>
+    </message>
+    <message>
+        <source>report: --from %1 is above --to %2.</source>
+        <translation>report：--from %1 大于 --to %2。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordAction</name>
+    <message>
+        <source>Commissioning &amp;record…</source>
+        <translation>调试记录(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>A PDF (and JSON) record of the drives: what was set, verified and measured</source>
+        <translation>驱动器的 PDF（及 JSON）记录：设置了什么、校验了什么、测量了什么</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordDialog</name>
+    <message>
+        <source>Reading drive %1 of %2 …</source>
+        <translation>正在读取驱动器 %1/%2 …</translation>
+    </message>
+    <message>
+        <source>Commissioning record</source>
+        <translation>调试记录</translation>
+    </message>
+    <message>
+        <source>Drives in the record:</source>
+        <translation>记录中的驱动器：</translation>
+    </message>
+    <message>
+        <source>Tuning runs: run files are not supported by this build yet.</source>
+        <translation>调试运行：本版本尚不支持运行记录文件。</translation>
+    </message>
+    <message>
+        <source>Machine / project:</source>
+        <translation>机器 / 项目：</translation>
+    </message>
+    <message>
+        <source>Customer:</source>
+        <translation>客户：</translation>
+    </message>
+    <message>
+        <source>Site:</source>
+        <translation>现场：</translation>
+    </message>
+    <message>
+        <source>Engineer:</source>
+        <translation>工程师：</translation>
+    </message>
+    <message>
+        <source>Notes:</source>
+        <translation>备注：</translation>
+    </message>
+    <message>
+        <source>Paper:</source>
+        <translation>纸张：</translation>
+    </message>
+    <message>
+        <source>Letter</source>
+        <translation>Letter（信纸）</translation>
+    </message>
+    <message>
+        <source>&amp;Preview</source>
+        <translation>预览(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Save PDF…</source>
+        <translation>保存 PDF(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>%1 at address %2 — %3</source>
+        <translation>%1，地址 %2 — %3</translation>
+    </message>
+    <message>
+        <source>No drive is connected: connect to the drives first (File → Connect…).</source>
+        <translation>没有连接驱动器：请先连接驱动器（文件 → 连接…）。</translation>
+    </message>
+    <message>
+        <source>Save the commissioning record</source>
+        <translation>保存调试记录</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF 文件 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Choose at least one drive for the record.</source>
+        <translation>请为记录至少选择一台驱动器。</translation>
+    </message>
+    <message>
+        <source>No drive could be read: %1</source>
+        <translation>没有能读取的驱动器：%1</translation>
+    </message>
+    <message>
+        <source>Left out: %1</source>
+        <translation>未列入：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Preview of the first %n page(s).</source>
+        <translation>
+            <numerusform>前 %n 页的预览。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %1 (%n page(s)) and %2. SHA-256 of the JSON: %3</source>
+        <translation>
+            <numerusform>已保存 %1（%n 页）和 %2。JSON 的 SHA-256：%3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No Chinese font is installed: Chinese text is missing from the PDF.</source>
+        <translation>未安装中文字体：PDF 中缺少中文文字。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordGatherer</name>
+    <message>
+        <source>%1 at address %2: %3</source>
+        <translation>%1，地址 %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordSession</name>
+    <message>
+        <source>since the connection was opened</source>
+        <translation>自连接打开以来</translation>
     </message>
 </context>
 </TS>

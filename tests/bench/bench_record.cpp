@@ -54,9 +54,10 @@ int main(int argc, char *argv[])
             best = best < 0 ? ms : qMin(best, ms);
             worst = qMax(worst, ms);
         }
-        out << (size == QPageSize::A4 ? "A4    " : "Letter") << ": JSON + PDF in " << best << " ms (worst of 3: " << worst
-            << " ms; CPU time " << cpuBest << " ms), " << pages << " pages, PDF " << QString::number(pdf.size() / 1024.0 / 1024.0, 'f', 2)
-            << " MB, JSON " << QString::number(json.size() / 1024.0, 'f', 0) << " KB\n";
+        out << (size == QPageSize::A4 ? "A4    " : "Letter") << ": JSON + PDF in " << best
+            << " ms (worst of 3: " << worst << " ms; CPU time " << cpuBest << " ms), " << pages << " pages, PDF "
+            << QString::number(pdf.size() / 1024.0 / 1024.0, 'f', 2) << " MB, JSON "
+            << QString::number(json.size() / 1024.0, 'f', 0) << " KB\n";
     }
     return 0;
 }

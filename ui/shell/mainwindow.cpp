@@ -8,6 +8,7 @@
 #include "ui/bus/scanprogresswidget.h"
 #include "ui/bus/statuspoller.h"
 #include "ui/framemonitor/framemonitordock.h"
+#include "ui/report/recordaction.h"
 #include "ui/shell/demolauncher.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/recentfiles.h"
@@ -163,6 +164,8 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_disconnectAllAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_demoAction);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(new RecordAction(this)); // File → Commissioning record… (ui/report)
     m_fileMenu->addSeparator();
     m_recentMenu = m_fileMenu->addMenu(QString());
     m_recent->setMenu(m_recentMenu);

@@ -181,7 +181,7 @@ QString RecordRenderer::summarySection() const
     return html + QStringLiteral("</table>");
 }
 
-QString RecordRenderer::driveSection(const DriveRecord &d, int number, int) const
+QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
 {
     QString html = QStringLiteral("<h2 style=\"page-break-before: always\">%1</h2>")
                        .arg(esc(tr("Drive %1 of %2: %3").arg(number).arg(m_record.drives.size()).arg(driveTitle(d))));
@@ -369,16 +369,16 @@ QString RecordRenderer::appendixSection() const
     return html;
 }
 
-QString RecordRenderer::html(int dpi) const
+QString RecordRenderer::html() const
 {
     QString html = QStringLiteral("<html><body>") + headerSection() + summarySection();
     for (int i = 0; i < m_record.drives.size(); ++i)
-        html += driveSection(m_record.drives.at(i), i + 1, dpi);
+        html += driveSection(m_record.drives.at(i), i + 1);
     html += appendixSection();
     return html + QStringLiteral("</body></html>");
 }
 
-void RecordRenderer::fillDocument(QTextDocument *doc, int dpi) const
+void RecordRenderer::fillDocument(QTextDocument *doc) const
 {
     doc->setDefaultFont(RecordFont::font(m_record.locale, BodyPointSize));
     doc->setDefaultStyleSheet(QLatin1String(StyleSheet));
@@ -390,7 +390,7 @@ void RecordRenderer::fillDocument(QTextDocument *doc, int dpi) const
                 doc->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("run:%1/%2").arg(i + 1).arg(r)),
                                  runs.at(r).plot);
     }
-    doc->setHtml(html(dpi));
+    doc->setHtml(html());
 }
 
 namespace {
@@ -452,7 +452,7 @@ Error RecordRenderer::renderPdf(QByteArray *pdf, int *pageCount) const
         + (m_record.header.machine.isEmpty() ? QString() : QStringLiteral(" — ") + m_record.header.machine));
     QPainter painter;
     QTextDocument doc;
-    fillDocument(&doc, writer.resolution());
+    fillDocument(&doc);
     const QFont footerFont = RecordFont::font(m_record.locale, 7.5);
     const QRectF body = writer.pageLayout().paintRectPixels(writer.resolution());
     const int pages = paintPages(
@@ -504,7 +504,7 @@ QList<QImage> RecordRenderer::renderImages(int dpi, int maxPages) const
     };
     QImage layoutDevice = blank();
     QTextDocument doc;
-    fillDocument(&doc, dpi);
+    fillDocument(&doc);
     QList<QImage> images;
     QImage current;
     QPainter painter;

@@ -35,16 +35,16 @@ public:
     // Pages drawn as images at `dpi` (a preview); at most maxPages.
     QList<QImage> renderImages(int dpi, int maxPages) const;
 
-    // The document body as HTML for a device of `dpi` (image widths depend on it).
-    QString html(int dpi) const;
+    // The document body as HTML (lengths in CSS pixels; QTextDocument scales them to the device).
+    QString html() const;
     // The page size for a locale: Letter where it is the custom (US, Canada, Mexico, ...), A4 elsewhere.
     static QPageSize::PageSizeId defaultPageSize(const QLocale &locale);
 
 private:
-    void fillDocument(QTextDocument *doc, int dpi) const;
+    void fillDocument(QTextDocument *doc) const;
     QString headerSection() const;
     QString summarySection() const;
-    QString driveSection(const DriveRecord &drive, int number, int dpi) const;
+    QString driveSection(const DriveRecord &drive, int number) const;
     QString appendixSection() const;
     QString driveTitle(const DriveRecord &drive) const;
     QString verificationWarning(const DriveRecord &drive) const;

@@ -75,7 +75,8 @@ private slots:
             QCOMPARE(jsonPath, dir.filePath(QStringLiteral("record.json")));
             QFile json(jsonPath);
             QVERIFY(json.open(QIODevice::ReadOnly));
-            const QString sha = QString::fromLatin1(QCryptographicHash::hash(json.readAll(), QCryptographicHash::Sha256).toHex());
+            const QString sha = QString::fromLatin1(
+                QCryptographicHash::hash(json.readAll(), QCryptographicHash::Sha256).toHex());
             QCOMPARE(saved.at(0).at(2).toString(), sha);
 
             QString error;
@@ -85,8 +86,9 @@ private slots:
             QVERIFY(text.contains(QStringLiteral("Press line 3")));
             QVERIFY(text.contains(QStringLiteral("Servo (Modbus) at address 1")));
             QVERIFY(text.contains(fx.info.identity.firmware));
-            QVERIFY2(QRegularExpression(QStringLiteral("\\b12\\s+PA12\\s+Parameter PA12\\s+4321\\b")).match(text).hasMatch(),
-                     "PA12 with its value in the appendix");
+            QVERIFY2(
+                QRegularExpression(QStringLiteral("\\b12\\s+PA12\\s+Parameter PA12\\s+4321\\b")).match(text).hasMatch(),
+                "PA12 with its value in the appendix");
 
             // No drive chosen: said, nothing read.
             dialog.driveList()->item(0)->setCheckState(Qt::Unchecked);
@@ -100,7 +102,8 @@ private slots:
         RecordDialog again(&directory, &session);
         QCOMPARE(again.findChild<QLineEdit *>(QStringLiteral("recordMachine"))->text(), QStringLiteral("Press line 3"));
         QCOMPARE(again.findChild<QLineEdit *>(QStringLiteral("recordEngineer"))->text(), QStringLiteral("Li Wei"));
-        QCOMPARE(again.findChild<QPlainTextEdit *>(QStringLiteral("recordNotes"))->toPlainText(), QStringLiteral("EE saved"));
+        QCOMPARE(again.findChild<QPlainTextEdit *>(QStringLiteral("recordNotes"))->toPlainText(),
+                 QStringLiteral("EE saved"));
     }
 };
 

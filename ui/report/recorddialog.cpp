@@ -199,7 +199,8 @@ void RecordDialog::loadSettings()
     m_site->setText(s.value(QStringLiteral("site")).toString());
     m_engineer->setText(s.value(QStringLiteral("engineer")).toString());
     m_notes->setPlainText(s.value(QStringLiteral("notes")).toString());
-    const int size = s.value(QStringLiteral("pageSize"), int(RecordRenderer::defaultPageSize(QLocale::system()))).toInt();
+    const int size = s.value(QStringLiteral("pageSize"), int(RecordRenderer::defaultPageSize(QLocale::system())))
+                         .toInt();
     m_pageSize->setCurrentIndex(qMax(0, m_pageSize->findData(size)));
 }
 
@@ -251,9 +252,9 @@ void RecordDialog::chooseFileAndSave()
     const QString folder = s.value(QStringLiteral("folder"), QDir::homePath()).toString();
     QString name = m_machine->text().trimmed();
     name.replace(QRegularExpression(QStringLiteral("[^\\w\\-]+")), QStringLiteral("-"));
-    const QString suggested = QDir(folder).filePath(
-        (name.isEmpty() ? QStringLiteral("record") : name) + QLatin1Char('-')
-        + QDate::currentDate().toString(Qt::ISODate) + QStringLiteral(".pdf"));
+    const QString suggested = QDir(folder).filePath((name.isEmpty() ? QStringLiteral("record") : name)
+                                                    + QLatin1Char('-') + QDate::currentDate().toString(Qt::ISODate)
+                                                    + QStringLiteral(".pdf"));
     QString path = QFileDialog::getSaveFileName(this, tr("Save the commissioning record"), suggested,
                                                 tr("PDF files (*.pdf)"));
     if (path.isEmpty())
@@ -271,8 +272,8 @@ void RecordDialog::start(Pending what)
     QList<QPair<int, int>> drives;
     for (int i = 0; i < m_drives->count(); ++i)
         if (m_drives->item(i)->checkState() == Qt::Checked)
-            drives.append({m_drives->item(i)->data(ConnectionRole).toInt(),
-                           m_drives->item(i)->data(AddressRole).toInt()});
+            drives.append(
+                {m_drives->item(i)->data(ConnectionRole).toInt(), m_drives->item(i)->data(AddressRole).toInt()});
     if (drives.isEmpty()) {
         const QString message = tr("Choose at least one drive for the record.");
         m_message->setText(message);

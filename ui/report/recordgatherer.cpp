@@ -79,24 +79,25 @@ void RecordGatherer::readAlarm(const QPair<int, int> &drive, DriveRecord record)
     record.linkHealth = m_session->linkHealth(drive.first);
     if (!m_directory->info(drive.first, drive.second).capabilities.testFlag(Capability::ReadAlarm))
         return done(record);
-    m_directory->hub()->run(drive.first, drive.second, [](Drive &d) { return d.readAlarm(); },
-                            [this, drive, record](const DriveResult &result) mutable {
-                                if (!result.ok())
-                                    m_session->countError(drive.first);
-                                else if (const int code = result.status.alarmCode) {
-                                    const bool known = !record.alarms.isEmpty() && record.alarms.last().code == code
-                                        && !record.alarms.last().cleared;
-                                    if (!known) {
-                                        RecordAlarm a;
-                                        a.when = QDateTime::currentDateTimeUtc();
-                                        a.code = code;
-                                        a.text = AlarmDictionary::bundled(record.family).text(code);
-                                        a.source = QStringLiteral("drive");
-                                        record.alarms.append(a);
-                                    }
-                                }
-                                done(record);
-                            });
+    m_directory->hub()->run(
+        drive.first, drive.second, [](Drive &d) { return d.readAlarm(); },
+        [this, drive, record](const DriveResult &result) mutable {
+            if (!result.ok())
+                m_session->countError(drive.first);
+            else if (const int code = result.status.alarmCode) {
+                const bool known = !record.alarms.isEmpty() && record.alarms.last().code == code
+                    && !record.alarms.last().cleared;
+                if (!known) {
+                    RecordAlarm a;
+                    a.when = QDateTime::currentDateTimeUtc();
+                    a.code = code;
+                    a.text = AlarmDictionary::bundled(record.family).text(code);
+                    a.source = QStringLiteral("drive");
+                    record.alarms.append(a);
+                }
+            }
+            done(record);
+        });
 }
 
 void RecordGatherer::done(const DriveRecord &record)

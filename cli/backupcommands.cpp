@@ -1,6 +1,7 @@
 #include "cli/backupcommands.h"
 
 #include "cli/clidescribe.h"
+#include "cli/clijournal.h"
 #include "cli/restoredescribe.h"
 #include "core/protocol/familytraits.h"
 
@@ -8,6 +9,7 @@
 #include "core/drive/parametertransfer.h"
 #include "core/fleet/defaultvalues.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/verificationjournal.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -84,6 +86,7 @@ void BackupCommand::start()
         complete(&file, context()->globals.connection, m_transfer->dictionary(), m_changedOnly);
         if (Error e = file.save(m_path, m_transfer->dictionary()))
             return fail(e, {}, CliExit::DriveFailed);
+        CliJournal::backup(context(), QStringLiteral("backup"), m_path, BackupFile::checksum(file.values()));
         const int n = file.values().size();
         succeed({{QStringLiteral("file"), m_path},
                  {QStringLiteral("parameters"), n},
@@ -251,6 +254,11 @@ void RestoreCommand::report(const Error &error)
                      {QStringLiteral("forced"), m_options.force},
                      {QStringLiteral("selected"), RestoreDescribe::selected(dict, r, &rows)}};
     RestoreDescribe::insertOutcomes(dict, r, &json);
+    if (!r.dryRun && !r.selected.isEmpty()) {
+        const QString checksum = BackupFile::checksum(m_file.values());
+        CliJournal::verification(context(), VerificationJournal::fromRestore(r, dict, m_path, checksum));
+        CliJournal::backup(context(), QStringLiteral("restore"), m_path, checksum);
+    }
 
     if (error) {
         if (!r.selected.isEmpty() && !out()->isJson()) {

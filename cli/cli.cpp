@@ -38,6 +38,14 @@ void Cli::configureLogging(bool sim, bool trace)
     QLoggingCategory::setFilterRules(rules);
 }
 
+bool Cli::needsGuiApplication(const QStringList &arguments)
+{
+    const CliParser parser(CliGlobals::optionSpecs(), CliCommands::specs());
+    CliInvocation inv;
+    QString error;
+    return parser.parse(arguments, &inv, &error) && CliCommands::needsGui(inv.command);
+}
+
 int Cli::run(const QStringList &arguments)
 {
     configureLogging(false);

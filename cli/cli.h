@@ -36,6 +36,9 @@ public:
     // which the link handles and --trace shows as a discarded frame) are shown only with
     // --trace.
     static void configureLogging(bool sim, bool trace = false);
+    // Whether the command line asks for a command that needs a QGuiApplication (report); main()
+    // then makes one on the offscreen platform, so that no display is needed.
+    static bool needsGuiApplication(const QStringList &arguments);
 
 private:
     // Speaks the language of --lang (English with --json); false after saying that --lang

@@ -11,6 +11,7 @@
 #include "cli/paramcommands.h"
 #include "cli/pingcommand.h"
 #include "cli/runcommands.h"
+#include "cli/reportcommand.h"
 #include "cli/scancommand.h"
 #include "cli/sourcediffcommand.h"
 
@@ -28,6 +29,11 @@ CliOptionSpec valued(const char *name, QChar shortName = {})
 }
 
 } // namespace
+
+bool CliCommands::needsGui(const QString &name)
+{
+    return name == QLatin1String("report"); // fonts and QPdfWriter
+}
 
 QList<CliCommandSpec> CliCommands::specs()
 {
@@ -57,6 +63,9 @@ QList<CliCommandSpec> CliCommands::specs()
           valued("output", QLatin1Char('o'))}},
         {QStringLiteral("runs"), {}},
         {QStringLiteral("spectrum"), {valued("peaks"), valued("from")}},
+        {QStringLiteral("report"),
+         {valued("output", QLatin1Char('o')), flag("all"), valued("from"), valued("to"), valued("runs"),
+          valued("header"), valued("json-out"), valued("page-size")}},
     };
 }
 
@@ -120,6 +129,8 @@ CliCommand *CliCommands::create(const QString &name, CliContext *context)
         return new EnableCommand(context);
     if (name == QLatin1String("clear-alarm"))
         return new ClearAlarmCommand(context);
+    if (name == QLatin1String("report"))
+        return new ReportCommand(context);
     Q_UNREACHABLE();
     return nullptr;
 }

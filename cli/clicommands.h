@@ -19,6 +19,8 @@ public:
     static CliCommand *create(const CliInvocation &inv, CliContext *context);
     // Whether the invocation may run without a link (a diff of files and defaults only).
     static bool worksWithoutLink(const CliInvocation &inv);
+    // Whether the command needs a QGuiApplication (report: fonts and the PDF writer).
+    static bool needsGui(const QString &name);
 };
 
 } // namespace dd

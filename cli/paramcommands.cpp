@@ -1,11 +1,13 @@
 #include "cli/paramcommands.h"
 
 #include "cli/clidescribe.h"
+#include "cli/clijournal.h"
 #include "cli/clivalues.h"
 #include "core/protocol/familytraits.h"
 
 #include "core/drive/drive.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/verificationjournal.h"
 
 namespace dd {
 
@@ -138,6 +140,7 @@ void SetCommand::start()
             rows.append({dict.label(w.index), QStringLiteral("= %1  %2").arg(w.value).arg(state)});
         }
         const QJsonObject json{{QStringLiteral("parameters"), list}};
+        CliJournal::verification(context(), VerificationJournal::fromWrites(r->writeResults(), dict));
         if (!allGood) {
             out()->line(CliDescribe::table(rows));
             Error e = r->error();

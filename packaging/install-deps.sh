@@ -13,6 +13,7 @@ PACKAGES=(
   clang libclang-rt-14-dev clang-format
   xvfb xauth fonts-noto-cjk
   help2man lintian desktop-file-utils appstream shared-mime-info bash-completion
+  poppler-utils python3-jsonschema   # the commissioning record's tests: pdftotext, the JSON schema
 )
 
 missing=()

@@ -4,10 +4,22 @@
 #include "core/common/coreresources.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
+#include <memory>
 
 int main(int argc, char *argv[])
 {
-    QCoreApplication app(argc, argv);
+    QStringList arguments;
+    for (int i = 1; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    // `report` sets text and writes a PDF: that needs Qt Gui (fonts), but never a display.
+    std::unique_ptr<QCoreApplication> app;
+    if (dd::Cli::needsGuiApplication(arguments)) {
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+        app = std::make_unique<QGuiApplication>(argc, argv);
+    } else {
+        app = std::make_unique<QCoreApplication>(argc, argv);
+    }
     QCoreApplication::setApplicationName(QStringLiteral("drivedesk-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
 

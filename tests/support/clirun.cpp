@@ -4,6 +4,7 @@
 #include <QEventLoop>
 #include <QJsonDocument>
 #include <QProcessEnvironment>
+#include <QTemporaryDir>
 #include <QTimer>
 
 #include <csignal>
@@ -54,6 +55,10 @@ QProcess *startCli(const QStringList &arguments, const QHash<QString, QString> &
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("LC_ALL"), QStringLiteral("C")); // untranslated messages
     env.insert(QStringLiteral("LANGUAGE"), QStringLiteral("en"));
+    // The CLI's own files (the verification journal, user dictionaries) stay out of the home
+    // folder: one data folder per test process, unless the test names another.
+    static QTemporaryDir dataHome;
+    env.insert(QStringLiteral("XDG_DATA_HOME"), dataHome.path());
     for (auto it = environment.begin(); it != environment.end(); ++it) {
         if (it.value().isEmpty())
             env.remove(it.key());

@@ -11,6 +11,7 @@
 #include "ui/fleet/fleetactions.h"
 #include "ui/framemonitor/framemonitordock.h"
 #include "ui/linkhealth/linkhealthdock.h"
+#include "ui/report/recordaction.h"
 #include "ui/shell/aboutdialog.h"
 #include "ui/shell/demolauncher.h"
 #include "ui/shell/languagemanager.h"
@@ -176,6 +177,8 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_disconnectAllAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_demoAction);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(new RecordAction(this)); // File → Commissioning record… (ui/report)
     m_fileMenu->addSeparator();
     m_recentMenu = m_fileMenu->addMenu(QString());
     m_recent->setMenu(m_recentMenu);

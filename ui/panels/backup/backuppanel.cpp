@@ -2,6 +2,7 @@
 
 #include "core/drive/drivehub.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/verificationjournal.h"
 #include "ui/panels/backup/backupdifftable.h"
 #include "ui/panels/backup/restorereportdialog.h"
 #include "ui/panels/backup/transferoperation.h"
@@ -173,6 +174,11 @@ void BackupPanel::onBackedUp(const DriveResult &result, const TransferOutcome &o
         return fail(result.error, tr("No backup was saved:"));
     if (Error e = outcome.backup.save(path, *outcome.dictionary))
         return fail(e, tr("No backup was saved:"));
+    // For the commissioning record (core/report/verificationjournal.h): best effort.
+    VerificationJournal().recordBackup(context().family, context().address,
+                                       {QStringLiteral("backup"), QFileInfo(path).absoluteFilePath(),
+                                        BackupFile::checksum(outcome.backup.values()),
+                                        QDateTime::currentDateTimeUtc()});
     setMessage(
         tr("Saved %n parameter(s) to %1.", nullptr, outcome.backup.values().size()).arg(QDir::toNativeSeparators(path)),
         MessageKind::Success);
@@ -324,6 +330,15 @@ void BackupPanel::onRestored(const DriveResult &result, const TransferOutcome &o
 {
     setBusy(false);
     m_report = outcome.report;
+    if (!m_report.dryRun && !m_report.selected.isEmpty()) { // for the commissioning record
+        const QString checksum = BackupFile::checksum(m_file.values());
+        VerificationJournal journal;
+        journal.recordVerification(context().family, context().address,
+                                   VerificationJournal::fromRestore(m_report, *m_dictionary, m_path, checksum));
+        journal.recordBackup(context().family, context().address,
+                             {QStringLiteral("restore"), QFileInfo(m_path).absoluteFilePath(), checksum,
+                              QDateTime::currentDateTimeUtc()});
+    }
     if (m_report.selected.isEmpty() || m_report.results.isEmpty()) {
         if (!result.ok())
             return fail(result.error, tr("Nothing was restored:"));

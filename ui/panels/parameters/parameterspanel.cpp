@@ -4,6 +4,7 @@
 #include "core/drive/drivehub.h"
 #include "core/drive/drivereply.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/verificationjournal.h"
 #include "ui/common/displaytext.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/panels/parameters/parametervaluedelegate.h"
@@ -367,6 +368,10 @@ void ParametersPanel::onWritten(const DriveResult &result, const QList<int> &req
     setBusy(false);
     m_model->applyWriteResults(result.writes, requested);
     parameters()->reportWrites(result.writes, this);
+    if (!result.writes.isEmpty()) // for the commissioning record (core/report/verificationjournal.h)
+        VerificationJournal().recordVerification(
+            context().family, context().address,
+            VerificationJournal::fromWrites(result.writes, *m_model->dictionary()));
     int verified = 0;
     int writtenOnly = 0;
     int failed = 0;

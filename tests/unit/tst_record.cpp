@@ -1,0 +1,323 @@
+// The commissioning record (core/report): header files, the JSON and its schema, the PDF as
+// a reader sees it (pdftotext), the verification journal.
+#include "core/drive/drivetypes.h"
+#include "core/params/parameterdictionary.h"
+#include "core/report/recordheader.h"
+#include "core/report/recordjson.h"
+#include "core/report/recordrenderer.h"
+#include "core/report/verificationjournal.h"
+#include "tests/support/pdftext.h"
+#include "tests/support/recordfixture.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace dd;
+
+class TestRecord : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    QString path(const QString &name) const { return m_dir.filePath(name); }
+    // Writes `record` as PDF (and JSON); returns the JSON's SHA-256.
+    QString write(const CommissioningRecord &record, const QString &pdf, QPageSize::PageSizeId size = QPageSize::A4,
+                  QByteArray *json = nullptr)
+    {
+        const QByteArray bytes = RecordJson::toJson(record);
+        const QString sha = RecordJson::sha256(bytes);
+        RecordRenderer renderer(record, sha);
+        renderer.setPageSize(size);
+        const Error e = renderer.writePdf(pdf);
+        if (e)
+            qWarning() << e.message;
+        if (json)
+            *json = bytes;
+        return e ? QString() : sha;
+    }
+    static QString text(const QString &pdf, int first = 0, int last = 0)
+    {
+        QString error;
+        const QString t = test::pdfText(pdf, first, last, &error);
+        if (t.isEmpty())
+            qWarning() << error;
+        return t;
+    }
+
+private slots:
+    void headerFileIsRead()
+    {
+        RecordHeader h;
+        const QByteArray json = R"({"machine": "Press 3", "customer": "ACME 客户", "site": "Hall B",
+                                    "engineer": "Li Wei", "notes": "line 1\nline 2"})";
+        QVERIFY(!h.loadFromJson(json, QStringLiteral("h.json")));
+        QCOMPARE(h.machine, QStringLiteral("Press 3"));
+        QCOMPARE(h.customer, QStringLiteral("ACME 客户"));
+        QCOMPARE(h.notes, QStringLiteral("line 1\nline 2"));
+        RecordHeader partial;
+        QVERIFY(!partial.loadFromJson(R"({"engineer": "Zhang"})", QStringLiteral("p.json")));
+        QCOMPARE(partial.engineer, QStringLiteral("Zhang"));
+        QVERIFY(partial.machine.isEmpty());
+    }
+
+    void badHeaderFilesAreRefusedWithTheReason_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("not json") << QByteArray("{machine: 1") << QStringLiteral("not valid JSON");
+        QTest::newRow("array") << QByteArray("[\"Press 3\"]") << QStringLiteral("one JSON object");
+        QTest::newRow("unknown field") << QByteArray(R"({"enginer": "Li"})")
+                                       << QStringLiteral("unknown field \"enginer\"");
+        QTest::newRow("number") << QByteArray(R"({"machine": 3})") << QStringLiteral("\"machine\" must be text");
+        QTest::newRow("too long") << QByteArray("{\"site\": \"" + QByteArray(201, 'x') + "\"}")
+                                  << QStringLiteral("\"site\" is 201 characters long; at most 200");
+        QTest::newRow("control character")
+            << QByteArray(R"({"customer": "A\u0007B"})") << QStringLiteral("control character (U+0007)");
+    }
+
+    void badHeaderFilesAreRefusedWithTheReason()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, reason);
+        RecordHeader h;
+        h.machine = QStringLiteral("kept");
+        const Error e = h.loadFromJson(json, QStringLiteral("bad.json"));
+        QVERIFY(e.isError());
+        QVERIFY2(e.message.contains(reason), qPrintable(e.message));
+        QVERIFY2(e.message.contains(QStringLiteral("bad.json")), qPrintable(e.message));
+        QCOMPARE(h.machine, QStringLiteral("kept")); // nothing changed
+    }
+
+    void missingOrHugeHeaderFileIsRefused()
+    {
+        RecordHeader h;
+        Error e = h.load(path(QStringLiteral("none.json")));
+        QVERIFY(e.message.contains(QStringLiteral("does not exist")));
+        QFile big(path(QStringLiteral("big.json")));
+        QVERIFY(big.open(QIODevice::WriteOnly));
+        big.write(QByteArray(RecordHeader::MaxFileSize + 1, ' '));
+        big.close();
+        e = h.load(big.fileName());
+        QVERIFY2(e.message.contains(QStringLiteral("at most")), qPrintable(e.message));
+    }
+
+    void parametersAreComparedWithTheDictionaryDefaults()
+    {
+        const QByteArray dict = R"({"format": "drivedesk-dictionary", "formatVersion": 1, "family": "servo-can",
+            "valueType": "int16", "parameters": [
+            {"index": 0, "key": "P0", "name": {"en": "Speed gain", "zh": "速度增益"}, "description": {"en": "x", "zh": "x"}, "unit": "Hz", "min": 0, "max": 1000, "default": 100, "access": "rw"},
+            {"index": 1, "key": "P1", "name": {"en": "Inertia", "zh": "惯量"}, "description": {"en": "x", "zh": "x"}, "unit": "", "min": 0, "max": 1000, "default": 5, "access": "rw"},
+            {"index": 2, "key": "P2", "name": {"en": "Filter", "zh": "滤波"}, "description": {"en": "x", "zh": "x"}, "unit": "ms", "min": 0, "max": 1000, "access": "rw"}]})";
+        ParameterDictionary d;
+        const Error loaded = d.loadFromJson(dict, QStringLiteral("d.json"));
+        QVERIFY2(!loaded, qPrintable(loaded.message));
+        DriveRecord r;
+        r.setParameters(d, {{0, 250}, {1, 5}, {2, 7}}, QLocale(QLocale::Chinese, QLocale::China));
+        QCOMPARE(r.parameters.size(), 3);
+        const QList<RecordParameter> changed = r.nonDefault();
+        QCOMPARE(changed.size(), 1);
+        QCOMPARE(changed.first().key, QStringLiteral("P0"));
+        QCOMPARE(changed.first().name, QStringLiteral("速度增益"));
+        QCOMPARE(*changed.first().value, 250);
+        QCOMPARE(*changed.first().defaultValue, 100);
+        QCOMPARE(r.withoutDefault(), 1); // P2: no default, not compared
+    }
+
+    void pdfShowsIdentitiesEveryChangedParameterAndTheChecksum()
+    {
+        const CommissioningRecord record = test::fixtureRecord(2, 60);
+        const QString pdf = path(QStringLiteral("two.pdf"));
+        const QString sha = write(record, pdf);
+        QVERIFY(!sha.isEmpty());
+        const QString t = text(pdf);
+        QVERIFY(!t.isEmpty());
+        QVERIFY(t.contains(QStringLiteral("Press line 3")));
+        QVERIFY(t.contains(QStringLiteral("ACME Stamping")));
+        QVERIFY(t.contains(QStringLiteral("Li Wei")));
+        QVERIFY(t.contains(sha));
+        for (const DriveRecord &d : record.drives) {
+            QVERIFY(t.contains(QStringLiteral("at address %1").arg(d.address)));
+            QVERIFY(t.contains(d.firmware));
+            QVERIFY(t.contains(d.model));
+            QVERIFY(!d.nonDefault().isEmpty());
+            for (const RecordParameter &p : d.nonDefault()) {
+                // index, key, name, value and default on one line of the drive's table
+                const QRegularExpression row(QStringLiteral("\\b%1\\s+%2\\s+%3\\s+%4\\s+%5\\b")
+                                                 .arg(p.index)
+                                                 .arg(p.key, p.name)
+                                                 .arg(*p.value)
+                                                 .arg(*p.defaultValue));
+                QVERIFY2(row.match(t).hasMatch(), qPrintable(p.key));
+            }
+        }
+        // The alarm history, link health and backup checksums are there too.
+        QVERIFY(t.contains(QStringLiteral("Overcurrent")));
+        QVERIFY(t.contains(QStringLiteral("12000 frame(s) sent")));
+        QVERIFY(t.contains(record.drives.first().backups.first().checksum));
+    }
+
+    void everyPageIsNumberedAndLongTablesRepeatTheirHeader()
+    {
+        const CommissioningRecord record = test::fixtureRecord(1, 220);
+        const QString pdf = path(QStringLiteral("long.pdf"));
+        QVERIFY(!write(record, pdf).isEmpty());
+        const QStringList texts = text(pdf).split(QLatin1Char('\f'), Qt::SkipEmptyParts); // one per page
+        const int pages = int(texts.size());
+        QVERIFY2(pages >= 5, qPrintable(QString::number(pages))); // summary, drive, appendix over several pages
+        for (int page = 1; page <= pages; ++page)
+            QVERIFY(texts.at(page - 1).contains(QStringLiteral("Page %1 of %2").arg(page).arg(pages)));
+        // The appendix's last page continues the table: its header row is repeated there.
+        const QString last = texts.last();
+        QVERIFY2(last.contains(QStringLiteral("P219")), qPrintable(last));
+        QVERIFY(!last.contains(QStringLiteral("Appendix")));
+        QVERIFY2(QRegularExpression(QStringLiteral("Index\\s+Parameter\\s+Name\\s+Value\\s+Default\\s+Unit"))
+                     .match(last)
+                     .hasMatch(),
+                 qPrintable(last));
+    }
+
+    void aFailedVerificationIsOnTheFirstPage()
+    {
+        const CommissioningRecord record = test::fixtureRecord(3, 40, 2);
+        const QString pdf = path(QStringLiteral("failed.pdf"));
+        QVERIFY(!write(record, pdf).isEmpty());
+        const QString first = text(pdf, 1, 1);
+        QVERIFY2(first.contains(QStringLiteral("VERIFICATION FAILED")), qPrintable(first));
+        QVERIFY(first.contains(QStringLiteral("at address 2")));
+        QVERIFY(first.contains(QStringLiteral("FAILED (1)")));
+        QCOMPARE(first.count(QStringLiteral("VERIFICATION FAILED")), 1); // drives 1 and 3 passed
+        // and the drive's own first page says so too, with the parameter
+        const QString all = text(pdf);
+        QVERIFY(all.contains(QStringLiteral("FAILED (mismatch)")));
+
+        const CommissioningRecord good = test::fixtureRecord(3, 40, 0);
+        QVERIFY(!write(good, pdf).isEmpty());
+        QVERIFY(!text(pdf, 1, 1).contains(QStringLiteral("VERIFICATION FAILED")));
+    }
+
+    void a4AndLetter()
+    {
+        const CommissioningRecord record = test::fixtureRecord(1, 10);
+        const QString a4 = path(QStringLiteral("a4.pdf"));
+        const QString letter = path(QStringLiteral("letter.pdf"));
+        QVERIFY(!write(record, a4, QPageSize::A4).isEmpty());
+        QVERIFY(!write(record, letter, QPageSize::Letter).isEmpty());
+        QVERIFY2(test::pdfInfo(a4).contains(QStringLiteral("(A4)")), qPrintable(test::pdfInfo(a4)));
+        QVERIFY2(test::pdfInfo(letter).contains(QStringLiteral("(letter)")), qPrintable(test::pdfInfo(letter)));
+        QCOMPARE(RecordRenderer::defaultPageSize(QLocale(QLocale::English, QLocale::UnitedStates)), QPageSize::Letter);
+        QCOMPARE(RecordRenderer::defaultPageSize(QLocale(QLocale::Chinese, QLocale::China)), QPageSize::A4);
+    }
+
+    void chineseTextIsEmbedded()
+    {
+        CommissioningRecord record = test::fixtureRecord(1, 10);
+        record.locale = QLocale(QLocale::Chinese, QLocale::China);
+        // Characters that double as a Kangxi radical (厂, 户, 门, ...) come out of pdftotext as the
+        // radical (Qt 6.4's PDF writer maps a shared glyph to its lowest code point; docs/record.md).
+        record.header.customer = QStringLiteral("上海机床公司");
+        record.drives[0].parameters[3].name = QStringLiteral("速度增益");
+        const QString pdf = path(QStringLiteral("zh.pdf"));
+        QVERIFY(!write(record, pdf).isEmpty());
+        const QString t = text(pdf);
+        QVERIFY2(t.contains(QStringLiteral("上海机床公司")), qPrintable(t.left(800)));
+        QVERIFY(t.contains(QStringLiteral("速度增益")));
+    }
+
+    void jsonFollowsTheSchemaAndItsHashIsPrinted()
+    {
+        const CommissioningRecord record = test::fixtureRecord(2, 30, 1, 2);
+        const QString pdf = path(QStringLiteral("j.pdf"));
+        QByteArray json;
+        const QString sha = write(record, pdf, QPageSize::A4, &json);
+        QFile file(path(QStringLiteral("j.json")));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(json);
+        file.close();
+        // Same bytes, same hash: the one the PDF prints.
+        QCOMPARE(QString::fromLatin1(QCryptographicHash::hash(json, QCryptographicHash::Sha256).toHex()), sha);
+        QVERIFY(text(pdf).contains(sha));
+        QCOMPARE(RecordJson::toJson(record), json); // deterministic
+
+        const QJsonObject root = QJsonDocument::fromJson(json).object();
+        QCOMPARE(root.value(QStringLiteral("format")).toString(), QStringLiteral("drivedesk-record"));
+        QCOMPARE(root.value(QStringLiteral("formatVersion")).toInt(), 1);
+        const QJsonObject d1 = root.value(QStringLiteral("drives")).toArray().at(0).toObject();
+        QCOMPARE(d1.value(QStringLiteral("verification")).toObject().value(QStringLiteral("passed")).toBool(), false);
+        QCOMPARE(d1.value(QStringLiteral("runs")).toArray().size(), 1);
+
+        const QString schema = qEnvironmentVariable("DRIVEDESK_SOURCE_DIR")
+            + QStringLiteral("/docs/record-schema.json");
+        QVERIFY(QFile::exists(schema));
+        // And a record that breaks the schema is caught by it (the check is real).
+        QJsonObject broken = root;
+        broken.insert(QStringLiteral("formatVersion"), 2);
+        QFile bad(path(QStringLiteral("bad.json")));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write(QJsonDocument(broken).toJson());
+        bad.close();
+
+        QProcess python;
+        python.start(QStringLiteral("python3"),
+                     {QStringLiteral("-c"),
+                      QStringLiteral("import json, sys, jsonschema\n"
+                                     "s = json.load(open(sys.argv[1]))\n"
+                                     "jsonschema.Draft202012Validator.check_schema(s)\n"
+                                     "v = jsonschema.Draft202012Validator(s)\n"
+                                     "for f in sys.argv[2:]:\n"
+                                     "    e = list(v.iter_errors(json.load(open(f))))\n"
+                                     "    print('valid' if not e else 'invalid: ' + e[0].message)\n"),
+                      schema, file.fileName(), bad.fileName()});
+        QVERIFY(python.waitForFinished(30000));
+        QVERIFY2(python.exitCode() == 0, python.readAllStandardError().constData());
+        const QList<QByteArray> verdicts = python.readAllStandardOutput().trimmed().split('\n');
+        QCOMPARE(verdicts.size(), 2);
+        QCOMPARE(verdicts.at(0), QByteArray("valid"));
+        QVERIFY2(verdicts.at(1).startsWith("invalid"), verdicts.at(1).constData());
+    }
+
+    void journalKeepsTheLastVerificationAndBackups()
+    {
+        VerificationJournal journal(path(QStringLiteral("journal")));
+        QVERIFY(journal.read(Family::ServoModbus, 3).verification.isEmpty());
+        ParameterDictionary dict;
+        QVERIFY(!dict.loadBundled(Family::ServoModbus));
+        ParameterWriteResult ok;
+        ok.index = 5;
+        ok.requested = 123;
+        ok.readBack = 123;
+        ok.written = ok.verified = true;
+        ok.outcome = WriteOutcome::Verified;
+        ParameterWriteResult bad = ok;
+        bad.index = 6;
+        bad.readBack = 12;
+        bad.verified = false;
+        bad.outcome = WriteOutcome::Mismatch;
+        bad.error = QStringLiteral("read back 12");
+        QVERIFY(!journal.recordVerification(Family::ServoModbus, 3, VerificationJournal::fromWrites({ok, bad}, dict)));
+        QVERIFY(!journal.recordBackup(Family::ServoModbus, 3,
+                                      {QStringLiteral("backup"), QStringLiteral("/x/a.json"),
+                                       QStringLiteral("sha256:") + QString(64, QLatin1Char('1')),
+                                       QDateTime::currentDateTimeUtc()}));
+        const VerificationJournal::Entry e = journal.read(Family::ServoModbus, 3);
+        QCOMPARE(e.verification.kind, QStringLiteral("write"));
+        QCOMPARE(e.verification.entries.size(), 2);
+        QCOMPARE(e.verification.entries.at(0).key, QStringLiteral("PA5"));
+        QCOMPARE(e.verification.entries.at(1).outcome, QStringLiteral("mismatch"));
+        QCOMPARE(e.verification.entries.at(1).readBack, 12);
+        QCOMPARE(e.verification.failedCount(), 1);
+        QCOMPARE(e.backups.size(), 1);
+        QCOMPARE(e.backups.first().path, QStringLiteral("/x/a.json"));
+        // another drive's journal is its own
+        QVERIFY(journal.read(Family::ServoModbus, 4).verification.isEmpty());
+        QVERIFY(journal.read(Family::ServoCan, 3).backups.isEmpty());
+    }
+};
+
+QTEST_MAIN(TestRecord)
+#include "tst_record.moc"

@@ -1,0 +1,371 @@
+#include "ui/report/recorddialog.h"
+
+#include "core/protocol/familytraits.h"
+#include "core/report/recordfont.h"
+#include "core/report/recordjson.h"
+#include "core/report/recordrenderer.h"
+#include "ui/bus/drivedirectory.h"
+#include "ui/report/recordgatherer.h"
+#include "ui/report/recordsession.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPixmap>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSplitter>
+#include <QVBoxLayout>
+
+namespace dd {
+
+namespace {
+
+constexpr int PreviewDpi = 56;
+constexpr int PreviewMaxPages = 6;
+const char *SettingsGroup = "commissioningRecord";
+constexpr int ConnectionRole = Qt::UserRole;
+constexpr int AddressRole = Qt::UserRole + 1;
+
+} // namespace
+
+RecordDialog::RecordDialog(DriveDirectory *directory, RecordSession *session, QWidget *parent)
+    : QDialog(parent)
+    , m_directory(directory)
+    , m_session(session)
+    , m_gatherer(new RecordGatherer(directory, session, this))
+{
+    setObjectName(QStringLiteral("recordDialog"));
+    buildUi();
+    fillDrives();
+    loadSettings();
+    retranslate();
+    connect(m_gatherer, &RecordGatherer::finished, this, &RecordDialog::onGathered);
+    connect(m_gatherer, &RecordGatherer::progress, this, [this](int done, int total) {
+        if (done < total)
+            m_message->setText(tr("Reading drive %1 of %2 …").arg(done + 1).arg(total));
+    });
+}
+
+void RecordDialog::buildUi()
+{
+    m_drivesLabel = new QLabel(this);
+    m_drives = new QListWidget(this);
+    m_drives->setObjectName(QStringLiteral("recordDrives"));
+    m_runsLabel = new QLabel(this);
+    m_runsLabel->setWordWrap(true);
+    m_runsLabel->setEnabled(false);
+
+    m_machine = new QLineEdit(this);
+    m_machine->setObjectName(QStringLiteral("recordMachine"));
+    m_customer = new QLineEdit(this);
+    m_customer->setObjectName(QStringLiteral("recordCustomer"));
+    m_site = new QLineEdit(this);
+    m_site->setObjectName(QStringLiteral("recordSite"));
+    m_engineer = new QLineEdit(this);
+    m_engineer->setObjectName(QStringLiteral("recordEngineer"));
+    for (QLineEdit *e : {m_machine, m_customer, m_site, m_engineer})
+        e->setMaxLength(RecordHeader::MaxFieldLength);
+    m_notes = new QPlainTextEdit(this);
+    m_notes->setObjectName(QStringLiteral("recordNotes"));
+    m_notes->setMaximumHeight(90);
+    m_pageSize = new QComboBox(this);
+    m_pageSize->setObjectName(QStringLiteral("recordPageSize"));
+    m_pageSize->addItem(QStringLiteral("A4"), int(QPageSize::A4));
+    m_pageSize->addItem(QString(), int(QPageSize::Letter));
+
+    m_machineLabel = new QLabel(this);
+    m_customerLabel = new QLabel(this);
+    m_siteLabel = new QLabel(this);
+    m_engineerLabel = new QLabel(this);
+    m_notesLabel = new QLabel(this);
+    m_pageSizeLabel = new QLabel(this);
+    auto *form = new QFormLayout;
+    form->addRow(m_machineLabel, m_machine);
+    form->addRow(m_customerLabel, m_customer);
+    form->addRow(m_siteLabel, m_site);
+    form->addRow(m_engineerLabel, m_engineer);
+    form->addRow(m_notesLabel, m_notes);
+    form->addRow(m_pageSizeLabel, m_pageSize);
+
+    auto *left = new QWidget(this);
+    auto *leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addWidget(m_drivesLabel);
+    leftLayout->addWidget(m_drives, 1);
+    leftLayout->addWidget(m_runsLabel);
+    leftLayout->addLayout(form);
+
+    auto *pages = new QWidget;
+    m_pagesLayout = new QVBoxLayout(pages);
+    m_pagesLayout->addStretch(1);
+    auto *scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("recordPreview"));
+    scroll->setWidget(pages);
+    scroll->setWidgetResizable(true);
+    scroll->setMinimumWidth(500);
+
+    auto *splitter = new QSplitter(this);
+    splitter->addWidget(left);
+    splitter->addWidget(scroll);
+    splitter->setStretchFactor(1, 1);
+
+    m_message = new QLabel(this);
+    m_message->setObjectName(QStringLiteral("recordMessage"));
+    m_message->setWordWrap(true);
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    m_buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    m_previewButton = m_buttons->addButton(QString(), QDialogButtonBox::ActionRole);
+    m_previewButton->setObjectName(QStringLiteral("recordPreviewButton"));
+    m_saveButton = m_buttons->addButton(QString(), QDialogButtonBox::ActionRole);
+    m_saveButton->setObjectName(QStringLiteral("recordSaveButton"));
+    connect(m_previewButton, &QPushButton::clicked, this, &RecordDialog::preview);
+    connect(m_saveButton, &QPushButton::clicked, this, &RecordDialog::chooseFileAndSave);
+    connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(splitter, 1);
+    layout->addWidget(m_message);
+    layout->addWidget(m_buttons);
+    resize(1100, 640);
+}
+
+void RecordDialog::retranslate()
+{
+    setWindowTitle(tr("Commissioning record"));
+    m_drivesLabel->setText(tr("Drives in the record:"));
+    m_runsLabel->setText(tr("Tuning runs: run files are not supported by this build yet."));
+    m_machineLabel->setText(tr("Machine / project:"));
+    m_customerLabel->setText(tr("Customer:"));
+    m_siteLabel->setText(tr("Site:"));
+    m_engineerLabel->setText(tr("Engineer:"));
+    m_notesLabel->setText(tr("Notes:"));
+    m_pageSizeLabel->setText(tr("Paper:"));
+    m_pageSize->setItemText(1, tr("Letter"));
+    m_previewButton->setText(tr("&Preview"));
+    m_saveButton->setText(tr("&Save PDF…"));
+    for (int i = 0; i < m_drives->count(); ++i) {
+        QListWidgetItem *item = m_drives->item(i);
+        const int id = item->data(ConnectionRole).toInt();
+        const int address = item->data(AddressRole).toInt();
+        const DriveInfo info = m_directory->info(id, address);
+        item->setText(tr("%1 at address %2 — %3")
+                          .arg(familyTraits(info.identity.family).displayName())
+                          .arg(address)
+                          .arg(m_directory->connectionSettings(id).linkName()));
+    }
+    if (m_drives->count() == 0)
+        m_message->setText(tr("No drive is connected: connect to the drives first (File → Connect…)."));
+}
+
+void RecordDialog::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QDialog::changeEvent(event);
+}
+
+void RecordDialog::fillDrives()
+{
+    for (int id : m_directory->connections())
+        for (int address : m_directory->drives(id)) {
+            auto *item = new QListWidgetItem(m_drives);
+            item->setData(ConnectionRole, id);
+            item->setData(AddressRole, address);
+            item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+            item->setCheckState(Qt::Checked);
+        }
+}
+
+void RecordDialog::loadSettings()
+{
+    QSettings s;
+    s.beginGroup(QLatin1String(SettingsGroup));
+    m_machine->setText(s.value(QStringLiteral("machine")).toString());
+    m_customer->setText(s.value(QStringLiteral("customer")).toString());
+    m_site->setText(s.value(QStringLiteral("site")).toString());
+    m_engineer->setText(s.value(QStringLiteral("engineer")).toString());
+    m_notes->setPlainText(s.value(QStringLiteral("notes")).toString());
+    const int size = s.value(QStringLiteral("pageSize"), int(RecordRenderer::defaultPageSize(QLocale::system())))
+                         .toInt();
+    m_pageSize->setCurrentIndex(qMax(0, m_pageSize->findData(size)));
+}
+
+void RecordDialog::saveSettings() const
+{
+    QSettings s;
+    s.beginGroup(QLatin1String(SettingsGroup));
+    s.setValue(QStringLiteral("machine"), m_machine->text());
+    s.setValue(QStringLiteral("customer"), m_customer->text());
+    s.setValue(QStringLiteral("site"), m_site->text());
+    s.setValue(QStringLiteral("engineer"), m_engineer->text());
+    s.setValue(QStringLiteral("notes"), m_notes->toPlainText());
+    s.setValue(QStringLiteral("pageSize"), m_pageSize->currentData().toInt());
+}
+
+void RecordDialog::done(int result)
+{
+    saveSettings();
+    QDialog::done(result);
+}
+
+int RecordDialog::previewPages() const
+{
+    return int(m_pages.size());
+}
+
+void RecordDialog::setBusy(bool busy)
+{
+    m_previewButton->setEnabled(!busy);
+    m_saveButton->setEnabled(!busy);
+    m_drives->setEnabled(!busy);
+}
+
+void RecordDialog::preview()
+{
+    start(Pending::Preview);
+}
+
+void RecordDialog::saveTo(const QString &pdfPath)
+{
+    m_savePath = pdfPath;
+    start(Pending::Save);
+}
+
+void RecordDialog::chooseFileAndSave()
+{
+    QSettings s;
+    s.beginGroup(QLatin1String(SettingsGroup));
+    const QString folder = s.value(QStringLiteral("folder"), QDir::homePath()).toString();
+    QString name = m_machine->text().trimmed();
+    name.replace(QRegularExpression(QStringLiteral("[^\\w\\-]+")), QStringLiteral("-"));
+    const QString suggested = QDir(folder).filePath((name.isEmpty() ? QStringLiteral("record") : name)
+                                                    + QLatin1Char('-') + QDate::currentDate().toString(Qt::ISODate)
+                                                    + QStringLiteral(".pdf"));
+    QString path = QFileDialog::getSaveFileName(this, tr("Save the commissioning record"), suggested,
+                                                tr("PDF files (*.pdf)"));
+    if (path.isEmpty())
+        return;
+    if (!path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive))
+        path += QStringLiteral(".pdf");
+    s.setValue(QStringLiteral("folder"), QFileInfo(path).absolutePath());
+    saveTo(path);
+}
+
+void RecordDialog::start(Pending what)
+{
+    if (m_gatherer->isBusy())
+        return;
+    QList<QPair<int, int>> drives;
+    for (int i = 0; i < m_drives->count(); ++i)
+        if (m_drives->item(i)->checkState() == Qt::Checked)
+            drives.append(
+                {m_drives->item(i)->data(ConnectionRole).toInt(), m_drives->item(i)->data(AddressRole).toInt()});
+    if (drives.isEmpty()) {
+        const QString message = tr("Choose at least one drive for the record.");
+        m_message->setText(message);
+        emit failed(message);
+        return;
+    }
+    saveSettings();
+    m_pending = what;
+    setBusy(true);
+    m_gatherer->gather(drives);
+}
+
+CommissioningRecord RecordDialog::recordOf(const QList<DriveRecord> &drives) const
+{
+    CommissioningRecord record;
+    record.locale = QLocale();
+    record.header.machine = m_machine->text().trimmed();
+    record.header.customer = m_customer->text().trimmed();
+    record.header.site = m_site->text().trimmed();
+    record.header.engineer = m_engineer->text().trimmed();
+    record.header.notes = m_notes->toPlainText().left(RecordHeader::MaxNotesLength);
+    record.header.stamp();
+    record.drives = drives;
+    return record;
+}
+
+void RecordDialog::onGathered(const QList<DriveRecord> &records, const QStringList &problems)
+{
+    setBusy(false);
+    const Pending what = std::exchange(m_pending, Pending::None);
+    if (records.isEmpty()) {
+        const QString message = tr("No drive could be read: %1").arg(problems.join(QLatin1String("; ")));
+        m_message->setText(message);
+        emit failed(message);
+        return;
+    }
+    const CommissioningRecord record = recordOf(records);
+    if (what == Pending::Preview)
+        showPreview(record);
+    else if (what == Pending::Save)
+        write(record);
+    if (!problems.isEmpty())
+        m_message->setText(m_message->text() + QLatin1Char('\n')
+                           + tr("Left out: %1").arg(problems.join(QLatin1String("; "))));
+}
+
+void RecordDialog::showPreview(const CommissioningRecord &record)
+{
+    const QByteArray json = RecordJson::toJson(record);
+    RecordRenderer renderer(record, RecordJson::sha256(json));
+    renderer.setPageSize(QPageSize::PageSizeId(m_pageSize->currentData().toInt()));
+    const QList<QImage> images = renderer.renderImages(PreviewDpi, PreviewMaxPages);
+    qDeleteAll(m_pages);
+    m_pages.clear();
+    for (const QImage &image : images) {
+        auto *label = new QLabel;
+        label->setPixmap(QPixmap::fromImage(image));
+        label->setFrameShape(QFrame::Box);
+        m_pagesLayout->insertWidget(m_pagesLayout->count() - 1, label, 0, Qt::AlignHCenter);
+        m_pages.append(label);
+    }
+    m_message->setText(tr("Preview of the first %n page(s).", nullptr, int(images.size())));
+    emit previewShown(int(images.size()));
+}
+
+void RecordDialog::write(const CommissioningRecord &record)
+{
+    const QByteArray json = RecordJson::toJson(record);
+    const QString sha = RecordJson::sha256(json);
+    RecordRenderer renderer(record, sha);
+    renderer.setPageSize(QPageSize::PageSizeId(m_pageSize->currentData().toInt()));
+    const QFileInfo info(m_savePath);
+    const QString jsonPath = info.absoluteDir().filePath(info.completeBaseName() + QStringLiteral(".json"));
+    int pages = 0;
+    Error e = renderer.writePdf(m_savePath, &pages);
+    if (!e) {
+        QSaveFile file(jsonPath);
+        if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit())
+            e = {ErrorCode::FileError, tr("Cannot write %1: %2").arg(jsonPath, file.errorString())};
+    }
+    if (e) {
+        m_message->setText(e.message);
+        emit failed(e.message);
+        return;
+    }
+    m_sha256 = sha;
+    QString text = tr("Saved %1 (%n page(s)) and %2. SHA-256 of the JSON: %3", nullptr, pages)
+                       .arg(QDir::toNativeSeparators(m_savePath), QDir::toNativeSeparators(jsonPath), sha);
+    if (RecordFont::needsCjk(record.locale) && RecordFont::cjkFamily().isEmpty())
+        text += QLatin1Char('\n') + tr("No Chinese font is installed: Chinese text is missing from the PDF.");
+    m_message->setText(text);
+    emit recordSaved(m_savePath, jsonPath, sha);
+}
+
+} // namespace dd

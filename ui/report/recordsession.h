@@ -1,0 +1,42 @@
+#pragma once
+
+#include "core/report/linkhealth.h"
+#include "core/report/recordalarm.h"
+
+#include <QHash>
+#include <QList>
+#include <QObject>
+
+namespace dd {
+
+class DriveDirectory;
+class DriveHub;
+class LinkHealthCounter;
+struct TrafficRecord;
+
+// What the GUI notes during a session for a commissioning record: the alarms every drive
+// raised and cleared (from the directory's alarm changes) and each connection's link health
+// (frames, discarded frames, retries, failed operations) since it was opened. Lives as long
+// as the main window.
+class RecordSession : public QObject
+{
+    Q_OBJECT
+public:
+    RecordSession(DriveHub *hub, DriveDirectory *directory, QObject *parent = nullptr);
+
+    QList<RecordAlarm> alarms(int connectionId, int address) const;
+    LinkHealth linkHealth(int connectionId) const;
+    // An operation on the connection failed (counted in its link health).
+    void countError(int connectionId);
+
+private:
+    void onAlarm(int connectionId, int address, int code);
+    void onTraffic(int connectionId, const TrafficRecord &record);
+    LinkHealthCounter *counter(int connectionId);
+
+    DriveDirectory *m_directory;
+    QHash<QPair<int, int>, QList<RecordAlarm>> m_alarms;
+    QHash<int, LinkHealthCounter *> m_links;
+};
+
+} // namespace dd

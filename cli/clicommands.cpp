@@ -10,8 +10,8 @@
 #include "cli/motioncommands.h"
 #include "cli/paramcommands.h"
 #include "cli/pingcommand.h"
-#include "cli/runcommands.h"
 #include "cli/reportcommand.h"
+#include "cli/runcommands.h"
 #include "cli/scancommand.h"
 #include "cli/sourcediffcommand.h"
 

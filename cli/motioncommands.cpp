@@ -235,9 +235,10 @@ void PositioningCommand::poll()
         } else {
             ++m_idlePolls;
         }
-        // At rest after having moved, or at rest for a while (a short motion may be over
-        // before the first poll).
-        if ((m_sawRunning && m_idlePolls >= 1) || (m_idlePolls >= 3 && m_clock.elapsed() >= 300)) {
+        // At rest twice after having moved (the first status at rest can carry reads taken
+        // while the axis still settled: its position would be a count off the end), or at
+        // rest for a while (a short motion may be over before the first poll).
+        if ((m_sawRunning && m_idlePolls >= 2) || (m_idlePolls >= 3 && m_clock.elapsed() >= 300)) {
             QJsonObject json = m_json;
             json.insert(QStringLiteral("finished"), true);
             if (s.positionValid)

@@ -182,7 +182,7 @@ void ReportCommand::writeRecord()
     record.locale = QLocale();
     record.header = m_header;
     record.header.stamp();
-    const LinkHealth health = m_health->health(tr("while this record was made"));
+    const RecordLinkHealth health = m_health->health(tr("while this record was made"));
     for (DriveRecord &d : m_drives) {
         d.linkHealth = health;
         record.drives.append(d);

@@ -249,6 +249,10 @@
         <source>The backup was taken from firmware %1; the drive has firmware %2. Parameters may differ between firmware versions: compare them first, then force the restore if you are sure.</source>
         <translation>备份取自固件 %1，驱动器固件为 %2。不同固件版本的参数可能不同：请先比较参数，确认无误后再强制恢复。</translation>
     </message>
+    <message>
+        <source>%1: field &quot;scope&quot; must be &quot;all&quot; or &quot;%2&quot; (found &quot;%3&quot;)</source>
+        <translation>%1：字段 "scope" 必须是 "all" 或 "%2"（实际为 "%3"）</translation>
+    </message>
 </context>
 <context>
     <name>dd::BusTreeWidget</name>
@@ -265,22 +269,6 @@
     <message>
         <source>Model: %1</source>
         <translation>型号：%1</translation>
-    </message>
-    <message>
-        <source>%1, %2</source>
-        <translation>%1，%2</translation>
-    </message>
-    <message>
-        <source>on</source>
-        <translation>使能</translation>
-    </message>
-    <message>
-        <source>off</source>
-        <translation>未使能</translation>
-    </message>
-    <message>
-        <source>%1 — %2</source>
-        <translation>%1 — %2</translation>
     </message>
     <message>
         <source>Refresh identity</source>
@@ -317,6 +305,24 @@
     <message>
         <source>%1 — %2 (%3)</source>
         <translation>%1 — %2（%3）</translation>
+    </message>
+    <message numerus="yes">
+        <source>Apply backup to %n drive(s)…</source>
+        <translation>
+            <numerusform>将备份应用到 %n 台驱动器…</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Copy parameters from drive %1 to %n drive(s)…</source>
+        <translation>
+            <numerusform>将驱动器 %1 的参数复制到 %n 台驱动器…</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Compare %n drive(s)…</source>
+        <translation>
+            <numerusform>比较 %n 台驱动器…</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -618,10 +624,6 @@
         <translation>无报警</translation>
     </message>
     <message>
-        <source>%1, %2</source>
-        <translation>%1，%2</translation>
-    </message>
-    <message>
         <source>Read parameters</source>
         <translation>读取参数</translation>
     </message>
@@ -676,6 +678,18 @@
     <message>
         <source>EEPROM operations</source>
         <translation>EEPROM 操作</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>运动中</translation>
+    </message>
+    <message>
+        <source>at rest</source>
+        <translation>静止</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
     </message>
 </context>
 <context>
@@ -1223,10 +1237,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
 <context>
     <name>dd::MainWindow</name>
     <message>
-        <source>STOP sent to all drives.</source>
-        <translation>已向所有驱动器发送停止命令。</translation>
-    </message>
-    <message>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
@@ -1237,10 +1247,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Select a drive first: %1 is opened in one of its tabs.</source>
         <translation>请先选择驱动器：%1 将在该驱动器的某个标签页中打开。</translation>
-    </message>
-    <message>
-        <source>DriveDesk — commissioning workbench</source>
-        <translation>DriveDesk — 驱动器调试工具</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1318,6 +1324,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>Main tool bar</source>
         <translation>主工具栏</translation>
     </message>
+    <message>
+        <source>Commissioning workbench</source>
+        <translation>调试工作台</translation>
+    </message>
 </context>
 <context>
     <name>dd::ModbusLink</name>
@@ -1374,10 +1384,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%2 上地址 %1 的应答与请求不符（%3）。</translation>
     </message>
     <message>
-        <source>Only a late answer to an earlier request came from address %1 on %2. The drive answers more slowly than the timeout allows: raise the timeout.</source>
-        <translation>%2 上地址 %1 只返回了对先前请求的迟到应答。驱动器的应答慢于超时设定，请加大超时时间。</translation>
-    </message>
-    <message>
         <source>The reply from address %1 on %2 failed its CRC. Check the cable shielding, the bus termination and the baud rate.</source>
         <translation>%2 上地址 %1 的应答 CRC 校验失败。请检查电缆屏蔽、总线终端电阻和波特率。</translation>
     </message>
@@ -1404,6 +1410,18 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>A frame from address %1 arrived instead: do two drives share an address, or does another master talk on the bus?</source>
         <translation>收到的是地址 %1 的帧：是否有两台驱动器使用同一地址，或总线上有另一个主站？</translation>
+    </message>
+    <message>
+        <source>A reply from address %1 on %2 reached the port before the request was written: a duplicated or late answer to an earlier request, dropped.</source>
+        <translation>来自地址 %1（%2）的应答在请求写出之前就已到达端口：这是对先前请求的重复或迟到应答，已丢弃。</translation>
+    </message>
+    <message>
+        <source>A reply from address %1 on %2 came %3 us after the request, sooner than the wire can carry request and reply at %4 baud (%5 us), while the last request to that address was still unanswered: it was dropped as that request&apos;s late answer.</source>
+        <translation>来自地址 %1（%2）的应答在请求发出后 %3 微秒即到达，早于 %4 波特率下线路传送请求和应答所需的时间（%5 微秒），而发往该地址的上一个请求尚未得到应答：该应答被视为上一个请求的迟到应答而丢弃。</translation>
+    </message>
+    <message>
+        <source>The next attempt takes a fast reply; if this was the last attempt, raise the retries (--retries).</source>
+        <translation>下一次尝试会接受快速应答；如果这已是最后一次尝试，请增加重试次数（--retries）。</translation>
     </message>
 </context>
 <context>
@@ -1620,6 +1638,30 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>STOP in the tool bar (Esc or F12) stops every drive on every connection.</source>
         <translation>工具栏上的“停止”（Esc 或 F12）会停止所有连接上的所有驱动器。</translation>
     </message>
+    <message>
+        <source>%1: sending…</source>
+        <translation>%1：正在发送…</translation>
+    </message>
+    <message>
+        <source>%1: started.</source>
+        <translation>%1：已开始。</translation>
+    </message>
+    <message>
+        <source>%1: started; its state cannot be read: %2</source>
+        <translation>%1：已开始；无法读取其状态：%2</translation>
+    </message>
+    <message>
+        <source>%1: stopped by alarm %2 at %3 %4.</source>
+        <translation>%1：因报警 %2 停在 %3 %4。</translation>
+    </message>
+    <message>
+        <source>%1: moving… position %2 %3</source>
+        <translation>%1：运动中… 位置 %2 %3</translation>
+    </message>
+    <message>
+        <source>%1: done, the axis is at rest at %2 %3.</source>
+        <translation>%1：完成，轴已静止于 %2 %3。</translation>
+    </message>
 </context>
 <context>
     <name>dd::OverviewPanel</name>
@@ -1834,6 +1876,30 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>%1: a %2 parameter needs a register</source>
         <translation>%1：%2 参数需要寄存器地址</translation>
     </message>
+    <message>
+        <source>%1 must be an object with &quot;key&quot; and &quot;role&quot;</source>
+        <translation>%1 必须是包含 "key" 和 "role" 的对象</translation>
+    </message>
+    <message>
+        <source>%1: no parameter has the key &quot;%2&quot;</source>
+        <translation>%1：没有键名为“%2”的参数</translation>
+    </message>
+    <message>
+        <source>%1: %2 is write-only; a tuning parameter must be readable</source>
+        <translation>%1：%2 为只写参数；整定参数必须可读</translation>
+    </message>
+    <message>
+        <source>%1: unknown role &quot;%2&quot; (known: %3)</source>
+        <translation>%1：未知的用途“%2”（已知：%3）</translation>
+    </message>
+    <message>
+        <source>%1: role &quot;%2&quot; is already given to tuning[%3]</source>
+        <translation>%1：用途“%2”已分配给 tuning[%3]</translation>
+    </message>
+    <message>
+        <source>%1: %2 is already in tuning[%3]</source>
+        <translation>%1：%2 已在 tuning[%3] 中</translation>
+    </message>
 </context>
 <context>
     <name>dd::ParameterDiff</name>
@@ -1930,6 +1996,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>Answers came after the timeout: the drive is slower than the response allowance (%1 ms): raise the timeout.</source>
         <translation>应答在超时之后才到达：驱动器比应答余量（%1 ms）慢，请增大超时时间。</translation>
+    </message>
+    <message>
+        <source>No reply on %1 within %2 ms but a frame of the awaited shape that came %3 us after the request, sooner than the wire can carry request and reply (%4 us), while an earlier request was still unanswered: it was dropped as that request&apos;s late answer. The next attempt accepts a fast reply; if this one was the last, raise the retries (--retries).</source>
+        <translation>%1 上在 %2 毫秒内没有应答，只收到一个符合预期格式的帧：它在请求发出后 %3 微秒即到达，早于线路传送请求和应答所需的时间（%4 微秒），而先前的一个请求尚未得到应答，因此它被视为该请求的迟到应答而丢弃。下一次尝试会接受快速应答；如果这已是最后一次尝试，请增加重试次数（--retries）。</translation>
     </message>
 </context>
 <context>
@@ -3655,10 +3725,6 @@ Restore anyway?</source>
         <translation>%1 已完成（%2 秒）：%3。</translation>
     </message>
     <message>
-        <source>The drive now works with other values: read the parameters again (Parameters tab) to see them.</source>
-        <translation>驱动器现在使用的是另一组参数值：请重新读取参数（“参数”页）查看。</translation>
-    </message>
-    <message>
         <source>This drive has no EEPROM operations.</source>
         <translation>此驱动器没有 EEPROM 操作。</translation>
     </message>
@@ -3677,6 +3743,10 @@ Restore anyway?</source>
     <message>
         <source>asks for confirmation</source>
         <translation>需要确认</translation>
+    </message>
+    <message>
+        <source>The drive now works with other values: the Parameters tab reads them again.</source>
+        <translation>驱动器现在使用其他参数值：参数页会重新读取它们。</translation>
     </message>
 </context>
 <context>
@@ -3765,10 +3835,6 @@ Restore anyway?</source>
         <translation>未写入</translation>
     </message>
     <message>
-        <source>%1 marks a value edited here that differs from the drive&apos;s</source>
-        <translation>%1 表示此处修改的值与驱动器中的值不同</translation>
-    </message>
-    <message>
         <source>Index</source>
         <translation>编号</translation>
     </message>
@@ -3807,6 +3873,22 @@ Restore anyway?</source>
     <message>
         <source>Last write</source>
         <translation>上次写入</translation>
+    </message>
+    <message>
+        <source>Written to the drive&apos;s working memory but not saved to its EEPROM (EE-Set): the drive forgets it when switched off.</source>
+        <translation>已写入驱动器的工作存储器，但尚未保存到 EEPROM（EE-Set）：驱动器断电后会丢失。</translation>
+    </message>
+    <message>
+        <source>Undone: the value the drive had before the last write. Write it to restore it on the drive (the drive has %1 now).</source>
+        <translation>已撤销：这是上次写入前驱动器中的值。写入它即可在驱动器上恢复（驱动器当前为 %1）。</translation>
+    </message>
+    <message>
+        <source>undone: not yet written back</source>
+        <translation>已撤销：尚未写回</translation>
+    </message>
+    <message>
+        <source>%1 marks a value edited here that differs from the drive&apos;s; %2 an undone write, not yet written back; %3 a value written but not saved to EEPROM</source>
+        <translation>%1 表示此处编辑的值与驱动器中的不同；%2 表示已撤销的写入，尚未写回；%3 表示已写入但未保存到 EEPROM 的值</translation>
     </message>
 </context>
 <context>
@@ -3962,6 +4044,16 @@ Write anyway?</source>
         <source>Redo</source>
         <translation>重做</translation>
     </message>
+    <message numerus="yes">
+        <source>%n value(s) changed on the drive by another tab; shown here.</source>
+        <translation>
+            <numerusform>另一个标签页在驱动器上更改了 %n 个值；已在此显示。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drive&apos;s values were replaced (EEPROM operation): reading them again.</source>
+        <translation>驱动器的参数值已被替换（EEPROM 操作）：正在重新读取。</translation>
+    </message>
 </context>
 <context>
     <name>dd::RestoreReportDialog</name>
@@ -4056,6 +4148,12 @@ Write anyway?</source>
         <source>%n parameter(s) saved to %1.</source>
         <translation>
             <numerusform>已将 %n 个参数保存到 %1。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) changed from the defaults saved to %1.</source>
+        <translation>
+            <numerusform>已将 %n 个与默认值不同的参数保存到 %1。</numerusform>
         </translation>
     </message>
 </context>
@@ -4356,41 +4454,6 @@ write each, read it back and report whether it was verified.
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] backup -o FILE
-Read every readable parameter and save them to a backup file (saved
-atomically: an interrupted backup never leaves a half-written file).
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] backup -o FILE
-读取全部可读参数并保存到备份文件（原子保存：备份中断也不会留下写了
-一半的文件）。
-</translation>
-    </message>
-    <message>
-        <source>Usage: drivedesk-cli [OPTIONS] diff FILE
-Compare the drive with a backup file, parameter by parameter. Exit code 0
-also when they differ; the output and the JSON say which differ.
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] diff FILE
-逐个参数比较驱动器与备份文件。有差异时退出码也为 0；输出和 JSON 中
-会列出哪些参数不同。
-</translation>
-    </message>
-    <message>
-        <source>Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
-Write the parameters that differ from the file and verify each by reading it
-back. The file is checked completely before anything is sent. A file from
-another family is refused; from another firmware only with --force.
---dry-run shows what would be written. On failure the report says exactly
-which parameters were written and which were not.
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
-写入与文件不同的参数，并逐个回读校验。发送任何数据之前会完整检查文件。
-其他系列的备份文件一律拒绝；其他固件版本的备份文件须加 --force。
---dry-run 只显示将写入的内容。失败时报告会准确列出哪些参数已写入、
-哪些未写入。
-</translation>
-    </message>
-    <message>
         <source>Usage: drivedesk-cli [OPTIONS] ee set|rd|ba|rs|def
 servo-modbus EEPROM operations, waiting for completion:
   set  store the parameters to EEPROM      rd   reload them from EEPROM
@@ -4524,45 +4587,6 @@ Commission servo and stepper drives from scripts.
 </translation>
     </message>
     <message>
-        <source>Link and drive:
-  --family servo-can|servo-modbus|shuoke   drive family (default: servo-can with
-                                 --can, servo-modbus otherwise)
-  --port DEVICE                  serial port, e.g. /dev/ttyUSB0 or COM3
-  --can PLUGIN:INTERFACE         CAN bus, e.g. socketcan:can0, virtualcan:can0
-  --baud N                       serial baud rate (default: the family&apos;s)
-  --bitrate N                    CAN bitrate (default: the family&apos;s)
-  --framing rtu|ascii|can|plc    shuoke framing (default: rtu on a port, can on CAN)
-  --address N                    the drive to talk to (default 1)
-  --timeout MS                   reply allowance beyond the wire time
-  --retries N                    extra attempts after a timeout
-  --dictionary FILE              parameter dictionary (names, ranges, units)
-  --option FAMILY.KEY=VALUE      a family setting where the protocol documents are
-                                 ambiguous, e.g. shuoke.checksum=twos-complement,
-                                 servo-modbus.positionRule=decimal10000 (repeatable;
-                                 see docs/cli.md)
-  --sim                          use the built-in simulator instead of hardware
-                                 (see &quot;Simulator&quot; below)
-</source>
-        <translation>连接与驱动器：
-  --family servo-can|servo-modbus|shuoke   驱动器系列（默认：有 --can 时为
-                                 servo-can，否则为 servo-modbus）
-  --port DEVICE                  串口，例如 /dev/ttyUSB0 或 COM3
-  --can PLUGIN:INTERFACE         CAN 总线，例如 socketcan:can0、virtualcan:can0
-  --baud N                       串口波特率（默认：该系列的默认值）
-  --bitrate N                    CAN 波特率（默认：该系列的默认值）
-  --framing rtu|ascii|can|plc    shuoke 帧格式（默认：串口为 rtu，CAN 为 can）
-  --address N                    要通讯的驱动器地址（站号，默认 1）
-  --timeout MS                   线路传输时间之外的应答等待余量
-  --retries N                    超时后的额外重试次数
-  --dictionary FILE              参数字典（名称、范围、单位）
-  --option FAMILY.KEY=VALUE      协议文档未明确之处的系列设置，例如
-                                 shuoke.checksum=twos-complement、
-                                 servo-modbus.positionRule=decimal10000
-                                 （可重复；见 docs/cli.md）
-  --sim                          使用内置模拟器代替硬件（见下文“模拟器”）
-</translation>
-    </message>
-    <message>
         <source>Output:
   --json                         one JSON document per command (JSON lines for
                                  monitor); failures too, with &quot;ok&quot;: false
@@ -4586,52 +4610,6 @@ Commission servo and stepper drives from scripts.
 </translation>
     </message>
     <message>
-        <source>Commands:
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 find drives: family, address, baud, firmware, state
-  info                           identity, firmware, state, alarm, capabilities
-  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
-  set PARAM=VALUE ...            validate, write, read back, report verified or not
-  backup -o FILE                 every readable parameter to a backup file
-  diff FILE                      drive against file, parameter by parameter
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 write the differences, verify each
-  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 sample live values (Ctrl-C ends)
-  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 move, and wait until the axis is at rest
-  stop [--emergency]             stop (emergency stop where the family has one)
-  enable on|off                  servo enable on or off
-  clear-alarm                    clear the alarm and check that it is gone
-  home [--positive] [--no-wait]  homing, negative direction first
-  channels                       the monitor channels this drive offers
-</source>
-        <translation>命令：
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 查找驱动器：系列、地址、波特率、固件、状态
-  info                           标识、固件、状态、报警、支持的功能
-  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
-  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
-  backup -o FILE                 将全部可读参数备份到文件
-  diff FILE                      逐个参数比较驱动器与文件
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 写入有差异的参数，并逐个校验
-  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 采样实时值（Ctrl-C 结束）
-  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 定位运动，并等待轴静止
-  stop [--emergency]             停止（该系列支持时可急停）
-  enable on|off                  伺服使能开或关
-  clear-alarm                    清除报警并确认报警已消除
-  home [--positive] [--no-wait]  回零，先向负方向
-  channels                       该驱动器提供的监控通道
-</translation>
-    </message>
-    <message>
         <source>Exit codes:
   0  success
   1  the drive or the protocol failed (timeout, exception, verify mismatch)
@@ -4643,31 +4621,6 @@ Commission servo and stepper drives from scripts.
   1  驱动器或协议出错（超时、异常应答、回读校验不一致）
   2  用法错误或输入错误（未发送任何数据）
   3  无法打开串口或总线
-</translation>
-    </message>
-    <message>
-        <source>Simulator:
-  --sim runs the command against simulated drives of --family inside this
-  process, with nothing plugged in: serial families on a pseudo-terminal,
-  CAN families on Qt&apos;s virtualcan bus. --port/--can are then not needed.
-  --sim-drives ADDR[@BAUD],...   the simulated drives (default: one at --address,
-                                 at --baud); e.g. --sim-drives 3@19200,7@38400
-  --sim-state FILE               keep the simulated drives&apos; state (parameters,
-                                 EEPROM, position, alarm) in FILE between runs
-  --sim-motion                   the simulated drives move on their own (for
-                                 monitor demos; where the family&apos;s simulator can)
-</source>
-        <translation>模拟器：
-  --sim 在本进程内对 --family 系列的模拟驱动器执行命令，无需连接任何硬件：
-  串口系列使用伪终端，CAN 系列使用 Qt 的 virtualcan 总线。此时不需要
-  --port/--can。
-  --sim-drives ADDR[@BAUD],...   模拟的驱动器（默认：在 --address 处一台，
-                                 波特率为 --baud）；
-                                 例如 --sim-drives 3@19200,7@38400
-  --sim-state FILE               在多次运行之间把模拟驱动器的状态（参数、
-                                 EEPROM、位置、报警）保存在 FILE 中
-  --sim-motion                   模拟驱动器自行运动（用于 monitor 演示；
-                                 仅限该系列的模拟器支持时）
 </translation>
     </message>
     <message>
@@ -4716,6 +4669,306 @@ Servo enable on or off.
     <message>
         <source>The %1 family talks RS485: use --port DEVICE instead of --can.</source>
         <translation>%1 系列使用 RS485 通讯：请用 --port DEVICE 代替 --can。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; works on one drive: give one --address. backup, restore and diff take several (--address 1,2,5).</source>
+        <translation>"%1" 只作用于一台驱动器：请只给一个 --address。backup、restore 和 diff 可接受多个（--address 1,2,5）。</translation>
+    </message>
+    <message>
+        <source>--sim-resonance-hz must be a frequency from 1 to 1000 Hz, not &quot;%1&quot;.</source>
+        <translation>--sim-resonance-hz 必须是 1 到 1000 Hz 之间的频率，而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>--address: %1 is given twice.</source>
+        <translation>--address：%1 重复给出。</translation>
+    </message>
+    <message>
+        <source>Link and drive:
+  --family servo-can|servo-modbus|shuoke   drive family (default: servo-can with
+                                 --can, servo-modbus otherwise)
+  --port DEVICE                  serial port, e.g. /dev/ttyUSB0 or COM3
+  --can PLUGIN:INTERFACE         CAN bus, e.g. socketcan:can0, virtualcan:can0
+  --baud N                       serial baud rate (default: the family&apos;s)
+  --bitrate N                    CAN bitrate (default: the family&apos;s)
+  --framing rtu|ascii|can|plc    shuoke framing (default: rtu on a port, can on CAN)
+  --address N                    the drive to talk to (default 1)
+  --timeout MS                   reply allowance beyond the wire time
+  --retries N                    extra attempts after a timeout
+  --dictionary FILE              parameter dictionary (names, ranges, units);
+                                 &quot;simulator&quot;: the simulator&apos;s, with its loop gains
+  --option FAMILY.KEY=VALUE      a family setting where the protocol documents are
+                                 ambiguous, e.g. shuoke.checksum=twos-complement,
+                                 servo-modbus.positionRule=decimal10000 (repeatable;
+                                 see docs/cli.md)
+  --sim                          use the built-in simulator instead of hardware
+                                 (see &quot;Simulator&quot; below)
+</source>
+        <translation>连接与驱动器：
+  --family servo-can|servo-modbus|shuoke   驱动器系列（默认：有 --can 时为
+                                 servo-can，否则为 servo-modbus）
+  --port DEVICE                  串口，例如 /dev/ttyUSB0 或 COM3
+  --can PLUGIN:INTERFACE         CAN 总线，例如 socketcan:can0、virtualcan:can0
+  --baud N                       串口波特率（默认：该系列的默认值）
+  --bitrate N                    CAN 波特率（默认：该系列的默认值）
+  --framing rtu|ascii|can|plc    shuoke 帧格式（默认：串口为 rtu，CAN 为 can）
+  --address N                    要通讯的驱动器地址（站号，默认 1）
+  --timeout MS                   线路传输时间之外的应答等待余量
+  --retries N                    超时后的额外重试次数
+  --dictionary FILE              参数字典（名称、范围、单位）；
+                                 "simulator"：模拟器的参数字典，含其环路增益
+  --option FAMILY.KEY=VALUE      协议文档未明确之处的系列设置，例如
+                                 shuoke.checksum=twos-complement、
+                                 servo-modbus.positionRule=decimal10000
+                                 （可重复；见 docs/cli.md）
+  --sim                          使用内置模拟器代替硬件（见下文“模拟器”）
+</translation>
+    </message>
+    <message>
+        <source>Commands:
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 find drives: family, address, baud, firmware, state
+  info                           identity, firmware, state, alarm, capabilities
+  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
+  set PARAM=VALUE ...            validate, write, read back, report verified or not
+  backup -o FILE [--changed-only] every readable parameter to a backup file
+  backup (--all | --address 1,2,5) -o DIR
+                                 one file per drive, FAMILY-ADDRESS.json, and index.json
+  diff FILE | diff A B           compare; A, B = FILE, drive, drive:ADDRESS or defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 write the differences, verify each
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 the same to several drives, each at its address
+  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 sample live values (Ctrl-C ends)
+  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 move, and wait until the axis is at rest
+  stop [--emergency]             stop (emergency stop where the family has one)
+  enable on|off                  servo enable on or off
+  clear-alarm                    clear the alarm and check that it is gone
+  home [--positive] [--no-wait]  homing, negative direction first
+  channels                       the monitor channels this drive offers
+  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
+          [--mode single|auto] [--timeout S] -o RUN.ddrun
+                                 triggered capture to a run file
+  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences
+  spectrum RUN.ddrun CHANNEL [--peaks N]
+                                 a channel&apos;s spectrum and its peaks
+</source>
+        <translation>命令：
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 查找驱动器：系列、地址、波特率、固件、状态
+  info                           标识、固件、状态、报警、支持的功能
+  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
+  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
+  backup -o FILE [--changed-only] 将全部可读参数备份到文件
+  backup (--all | --address 1,2,5) -o DIR
+                                 每台驱动器一个文件 FAMILY-ADDRESS.json，另有 index.json
+  diff FILE | diff A B           比较；A、B 为 FILE、drive、drive:ADDRESS 或 defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 写入有差异的参数，并逐个校验
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 同上，写入多台驱动器，各用其自己的地址
+  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 采样实时值（Ctrl-C 结束）
+  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 定位运动，并等待轴静止
+  stop [--emergency]             停止（该系列支持时可急停）
+  enable on|off                  伺服使能开或关
+  clear-alarm                    清除报警并确认报警已消除
+  home [--positive] [--no-wait]  回零，先向负方向
+  channels                       该驱动器提供的监控通道
+  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
+          [--mode single|auto] [--timeout S] -o RUN.ddrun
+                                 触发采集，保存为运行记录文件
+  runs RUN.ddrun [RUN2.ddrun ...] 并列比较指标，列出参数差异
+  spectrum RUN.ddrun CHANNEL [--peaks N]
+                                 通道的频谱及其峰值
+</translation>
+    </message>
+    <message>
+        <source>  ping [--count N]               link health: turnaround, timeouts, errors, and
+                                 the timeout and gap to use; exit 1 if no answer
+</source>
+        <translation>  ping [--count N]               链路健康：往返时间、超时、错误，以及
+                                 建议的超时和间隔；无应答时退出码为 1
+</translation>
+    </message>
+    <message>
+        <source>  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]
+                                 the commissioning record (PDF and JSON)
+</source>
+        <translation>  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]
+                                 调试记录（PDF 与 JSON）
+</translation>
+    </message>
+    <message>
+        <source>Simulator:
+  --sim runs the command against simulated drives of --family inside this
+  process, with nothing plugged in: serial families on a pseudo-terminal,
+  CAN families on Qt&apos;s virtualcan bus. --port/--can are then not needed.
+  --sim-drives ADDR[@BAUD],...   the simulated drives (default: one at --address,
+                                 at --baud); e.g. --sim-drives 3@19200,7@38400
+  --sim-state FILE               keep the simulated drives&apos; state (parameters,
+                                 EEPROM, position, alarm) in FILE between runs
+  --sim-motion                   the simulated drives move on their own (for
+                                 monitor demos; where the family&apos;s simulator can)
+  --sim-resonance-hz F           the simulated load resonates at F Hz (1..1000)
+  With --sim the simulator&apos;s dictionary is used: it names the simulator&apos;s own
+  loop gains in its &quot;tuning&quot; group (docs/tuning.md).
+</source>
+        <translation>模拟器：
+  --sim 在本进程内对 --family 系列的模拟驱动器执行命令，无需连接任何硬件：
+  串口系列使用伪终端，CAN 系列使用 Qt 的 virtualcan 总线。此时不需要
+  --port/--can。
+  --sim-drives ADDR[@BAUD],...   模拟的驱动器（默认：在 --address 处一台，
+                                 波特率为 --baud）；
+                                 例如 --sim-drives 3@19200,7@38400
+  --sim-state FILE               在多次运行之间把模拟驱动器的状态（参数、
+                                 EEPROM、位置、报警）保存在 FILE 中
+  --sim-motion                   模拟驱动器自行运动（用于 monitor 演示；
+                                 仅限该系列的模拟器支持时）
+  --sim-resonance-hz F           模拟负载在 F Hz 处发生谐振（1..1000）
+  使用 --sim 时采用模拟器的参数字典：其 "tuning" 组列出模拟器自身的
+  环路增益（docs/tuning.md）。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] backup -o FILE [--changed-only]
+       drivedesk-cli [OPTIONS] (--all | --address 1,2,5) backup -o DIR [--from A] [--to B]
+Read every readable parameter and save them to a backup file (saved
+atomically: an interrupted backup never leaves a half-written file).
+--changed-only keeps only the settings that differ from the dictionary&apos;s
+defaults (the file says so; its restore touches only those). Several drives
+(--all: every drive a scan finds): one file per drive, FAMILY-ADDRESS.json,
+and DIR/index.json; the exit code is the worst drive&apos;s.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] backup -o FILE [--changed-only]
+      drivedesk-cli [OPTIONS] (--all | --address 1,2,5) backup -o DIR [--from A] [--to B]
+读取全部可读参数并保存到备份文件（原子保存：备份中断也不会留下写了
+一半的文件）。
+--changed-only 只保存与参数字典默认值不同的设置（文件中有标记；恢复它
+只会改动这些参数）。多台驱动器（--all：扫描找到的每一台）：每台一个文件
+FAMILY-ADDRESS.json，另有 DIR/index.json；退出码取最差的那台驱动器的。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] diff FILE
+       drivedesk-cli [OPTIONS] diff A B
+Compare the drive with a backup file, or any two sources: a backup file,
+drive (the drive at --address), drive:ADDRESS or defaults. Two files need
+no link. Sources of different families are refused. Exit code as diff(1):
+0 equal, 1 different, 2 trouble (bad input, a drive that did not answer).
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] diff FILE
+      drivedesk-cli [OPTIONS] diff A B
+比较驱动器与备份文件，或任意两个来源：备份文件、drive（--address 指定的
+驱动器）、drive:地址 或 defaults（默认值）。比较两个文件无需连接。不同系列
+的来源一律拒绝。退出码同 diff(1)：0 相同，1 不同，2 出错（输入有误、驱动器
+无应答）。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+Write the parameters that differ from the file and verify each by reading it
+back. The file is checked completely before anything is sent. A file from
+another family is refused; from another firmware only with --force.
+--dry-run shows what would be written. On failure the report says exactly
+which parameters were written and which were not.
+With --all (every drive a scan finds) or --address 1,2,5 the file goes to
+each drive at its own address; communication settings are never copied
+unless --only names them. --stop-on-failure: one drive after the other,
+none after the first that fails. The exit code is the worst drive&apos;s.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+写入与文件不同的参数，并逐个回读校验。发送任何数据之前会完整检查文件。
+其他系列的备份文件一律拒绝；其他固件版本的备份文件须加 --force。
+--dry-run 只显示将写入的内容。失败时报告会准确列出哪些参数已写入、
+哪些未写入。
+使用 --all（扫描找到的每一台）或 --address 1,2,5 时，文件写入每台驱动器各自
+的地址；通信设置除非在 --only 中指明，否则从不复制。--stop-on-failure：逐台
+进行，第一台失败后不再继续。退出码取最差的那台驱动器的。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] ping [--count N]
+Ask the drive for its status N times (default 10), one request at a time, and
+report the link&apos;s health: turnaround min / median / max, timeouts, checksum
+errors, late or duplicated replies, retries, and the reply allowance (--timeout)
+and gap between requests it recommends. Exit code 1 when the drive answered none.
+</source>
+        <translation>用法：drivedesk-cli [选项] ping [--count N]
+逐个向驱动器查询 N 次状态（默认 10 次），并报告链路健康状况：
+往返时间的最小值 / 中位数 / 最大值、超时、校验错误、迟到或重复的应答、
+重试次数，以及建议的应答余量（--timeout）和请求间隔。
+驱动器一次也没有应答时退出码为 1。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre PERCENT]
+          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
+EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
+      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now (default)
+Samples as fast as the link allows; --pre is the share of the record before the
+trigger (default 0), --duration the record (default 1 s); auto captures anyway
+after --timeout seconds (default 1). Saves the samples and the drive&apos;s tuning
+parameters (read from it) to RUN.ddrun (docs/tuning.md).
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre PERCENT]
+          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
+EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
+      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now（默认）
+以连接允许的最快速度采样；--pre 为记录中触发之前部分所占的比例（默认 0），
+--duration 为记录时长（默认 1 s）；auto 模式在 --timeout 秒（默认 1）后即使
+未触发也会采集。将采样数据和驱动器的整定参数（从驱动器读取）保存到
+RUN.ddrun（docs/tuning.md）。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli runs RUN.ddrun [RUN2.ddrun ...]
+The runs&apos; metrics side by side, and the tuning parameters that differ between
+consecutive runs with what the metrics did. Reads files only.
+</source>
+        <translation>用法：drivedesk-cli runs RUN.ddrun [RUN2.ddrun ...]
+并列显示各次运行的指标，以及相邻两次运行之间不同的整定参数和指标随之
+发生的变化。只读取文件。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ]
+The channel&apos;s amplitude spectrum (Hann window; resolution stated) and its N
+highest peaks (default 5), at HZ and above with --from. Reads files only.
+</source>
+        <translation>用法：drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ]
+该通道的幅值频谱（Hann 窗；注明分辨率）及其 N 个最高峰值（默认 5 个），
+使用 --from 时只取 HZ 及以上的峰值。只读取文件。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--header FILE.json]
+                     [--json-out RECORD.json] [--page-size a4|letter]
+The commissioning record of the drive at --address (--all: of every drive a scan
+of the link finds): identity, firmware, link, the parameters that differ from the
+dictionary&apos;s defaults (all of them in the appendix), the last restore or write
+verification, alarms, link health and backup files, as a PDF in the language of
+--lang, and the same as JSON whose SHA-256 the PDF prints (docs/record.md).
+--all [--from A] [--to B]: the scan&apos;s address range (default: the family&apos;s).
+--header: machine, customer, site, engineer, notes from a JSON file.
+--runs RUN.ddrun,...: tuning runs (not supported by this build yet).
+</source>
+        <translation>用法：drivedesk-cli [选项] report -o RECORD.pdf [--all] [--header FILE.json]
+                     [--json-out RECORD.json] [--page-size a4|letter]
+生成 --address 所指驱动器的调试记录（--all：扫描链路找到的全部驱动器）：身份、固件、
+链路、与字典默认值不同的参数（附录中列出全部参数）、最近一次恢复或写入的校验结果、
+报警、链路状况和备份文件；PDF 使用 --lang 的语言，另有内容相同的 JSON，
+PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
+--all [--from A] [--to B]：扫描的地址范围（默认：该系列的范围）。
+--header：从 JSON 文件读取机器、客户、现场、工程师、备注。
+--runs RUN.ddrun,...：调试运行记录（本版本尚不支持）。
+</translation>
     </message>
 </context>
 <context>
@@ -5251,7 +5504,7 @@ then log out and log in again (or restart the computer).</source>
     </message>
     <message>
         <source>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;Commissioning and tuning workbench for servo and stepper drives over RS485 / RS232 and CAN.&lt;/p&gt;&lt;p&gt;Drive families: %2.&lt;/p&gt;&lt;p&gt;Qt %3.&lt;/p&gt;&lt;p&gt;DriveDesk is free software: you can redistribute it and modify it under the terms of the GNU General Public License, version 3 or (at your option) any later version. It comes with ABSOLUTELY NO WARRANTY. See the LICENSE file, or &lt;a href=&quot;https://www.gnu.org/licenses/gpl-3.0.html&quot;&gt;gnu.org/licenses/gpl-3.0&lt;/a&gt;.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;通过 RS485 / RS232 和 CAN 调试和整定伺服与步进驱动器的工作台。&lt;/p&gt;&lt;p&gt;驱动器系列：%2。&lt;/p&gt;&lt;p&gt;Qt %3。&lt;/p&gt;&lt;p&gt;DriveDesk 是自由软件：您可以依据 GNU 通用公共许可证第 3 版或（由您选择）任何更新的版本再发布和修改它。它不提供任何担保。详见 LICENSE 文件或 &lt;a href="https://www.gnu.org/licenses/gpl-3.0.html"&gt;gnu.org/licenses/gpl-3.0&lt;/a&gt;。&lt;/p&gt;</translation>
+        <translation>&lt;h3&gt;DriveDesk %1&lt;/h3&gt;&lt;p&gt;通过 RS485 / RS232 和 CAN 调试和整定伺服与步进驱动器的工作台。&lt;/p&gt;&lt;p&gt;驱动器系列：%2。&lt;/p&gt;&lt;p&gt;Qt %3。&lt;/p&gt;&lt;p&gt;DriveDesk 是自由软件：您可以依据 GNU 通用公共许可证第 3 版或（由您选择）任何更新的版本再发布和修改它。它不提供任何担保。详见 LICENSE 文件或 &lt;a href=&quot;https://www.gnu.org/licenses/gpl-3.0.html&quot;&gt;gnu.org/licenses/gpl-3.0&lt;/a&gt;。&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -5271,6 +5524,1577 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>No tab of this drive opens %1; it stays under File → Recent files.</source>
         <translation>这个驱动器的标签页都不能打开 %1；它保留在“文件 → 最近的文件”中。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterComparison</name>
+    <message>
+        <source>%1 is of a %2 drive and %3 of a %4 drive: parameters of different families have different meanings and are never compared.</source>
+        <translation>%1 属于 %2 驱动器，%3 属于 %4 驱动器：不同系列的参数含义不同，从不比较。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterSource</name>
+    <message>
+        <source>defaults</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>drive %1</source>
+        <translation>驱动器 %1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::Spectrum</name>
+    <message>
+        <source>channel %1 is not in the capture (it has %2)</source>
+        <translation>采集数据中没有通道 %1（有：%2）</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n gap(s) in the capture were bridged by interpolation</source>
+        <translation>
+            <numerusform>采集数据中的 %n 处间断已用插值补齐</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>a spectrum needs at least 16 samples over a time span</source>
+        <translation>频谱至少需要 16 个跨越一段时间的采样点</translation>
+    </message>
+    <message>
+        <source>the FFT could not be set up for %1 points</source>
+        <translation>无法为 %1 个点建立 FFT</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepMetrics</name>
+    <message>
+        <source>channel %1 was not captured</source>
+        <translation>未采集通道 %1</translation>
+    </message>
+    <message>
+        <source>channel %1 has no values</source>
+        <translation>通道 %1 没有数值</translation>
+    </message>
+    <message>
+        <source>fewer than two samples</source>
+        <translation>采样点少于两个</translation>
+    </message>
+    <message>
+        <source>the response channel %1 was not captured</source>
+        <translation>未采集响应通道 %1</translation>
+    </message>
+    <message>
+        <source>fewer than four samples in the step</source>
+        <translation>阶跃内的采样点少于四个</translation>
+    </message>
+    <message>
+        <source>no step: the target equals the starting value</source>
+        <translation>没有阶跃：目标值等于起始值</translation>
+    </message>
+    <message>
+        <source>the response never reached 90 % of the step</source>
+        <translation>响应从未达到阶跃的 90 %</translation>
+    </message>
+    <message>
+        <source>the rise is shorter than two sample intervals (%1 ms): not resolvable at this sample rate</source>
+        <translation>上升时间短于两个采样间隔（%1 ms）：此采样率下无法分辨</translation>
+    </message>
+    <message>
+        <source>the response did not settle within ±%1 % in the record</source>
+        <translation>记录中响应未稳定在 ±%1 % 以内</translation>
+    </message>
+    <message>
+        <source>settles within two sample intervals (%1 ms): not resolvable at this sample rate</source>
+        <translation>在两个采样间隔（%1 ms）内即稳定：此采样率下无法分辨</translation>
+    </message>
+    <message>
+        <source>metrics.%1 is missing</source>
+        <translation>缺少 metrics.%1</translation>
+    </message>
+    <message>
+        <source>resolution.%1 must be a number ≥ 0</source>
+        <translation>resolution.%1 必须是 ≥ 0 的数字</translation>
+    </message>
+    <message>
+        <source>metrics.%1 must be a number or null</source>
+        <translation>metrics.%1 必须是数字或 null</translation>
+    </message>
+    <message>
+        <source>metrics.%1 is not a known metric</source>
+        <translation>metrics.%1 不是已知的指标</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TriggerSpec</name>
+    <message>
+        <source>Unknown trigger &quot;%1&quot;: use %2.</source>
+        <translation>未知触发条件“%1”：请使用 %2。</translation>
+    </message>
+    <message>
+        <source>The trigger &quot;%1&quot; takes no channel or level.</source>
+        <translation>触发条件“%1”不带通道或电平。</translation>
+    </message>
+    <message>
+        <source>The trigger &quot;%1&quot; needs a channel and a level, e.g. %2:speed:500.</source>
+        <translation>触发条件“%1”需要通道和电平，例如 %2:speed:500。</translation>
+    </message>
+    <message>
+        <source>The trigger level &quot;%1&quot; is not a number.</source>
+        <translation>触发电平“%1”不是数字。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TuningRun</name>
+    <message>
+        <source>%1 must be an object</source>
+        <translation>%1 必须是对象</translation>
+    </message>
+    <message>
+        <source>%1 must be a string</source>
+        <translation>%1 必须是字符串</translation>
+    </message>
+    <message>
+        <source>%1 must be a number</source>
+        <translation>%1 必须是数字</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside %3 to %4</source>
+        <translation>%1 = %2 超出范围 %3 到 %4</translation>
+    </message>
+    <message>
+        <source>%1 must be a whole number</source>
+        <translation>%1 必须是整数</translation>
+    </message>
+    <message>
+        <source>%1 is not valid JSON: %2 at byte %3</source>
+        <translation>%1 不是有效的 JSON：%2（第 %3 字节）</translation>
+    </message>
+    <message>
+        <source>%1: the top level must be an object</source>
+        <translation>%1：顶层必须是对象</translation>
+    </message>
+    <message>
+        <source>%1: unknown field &quot;%2&quot;</source>
+        <translation>%1：未知字段“%2”</translation>
+    </message>
+    <message>
+        <source>%1 is not a DriveDesk run file (format must be &quot;%2&quot;)</source>
+        <translation>%1 不是 DriveDesk 运行记录文件（format 必须为“%2”）</translation>
+    </message>
+    <message>
+        <source>%1: run format version %2 is not supported (this DriveDesk reads %3)</source>
+        <translation>%1：不支持运行记录格式版本 %2（本版 DriveDesk 读取 %3）</translation>
+    </message>
+    <message>
+        <source>%1: created &quot;%2&quot; is not an ISO 8601 time</source>
+        <translation>%1：created “%2”不是 ISO 8601 时间</translation>
+    </message>
+    <message>
+        <source>%1: drive.family &quot;%2&quot; is not a known family (%3)</source>
+        <translation>%1：drive.family“%2”不是已知的驱动器系列（%3）</translation>
+    </message>
+    <message>
+        <source>%1: test.type &quot;%2&quot; is not one of %3</source>
+        <translation>%1：test.type“%2”不是 %3 之一</translation>
+    </message>
+    <message>
+        <source>%1: test.parameters must be an object</source>
+        <translation>%1：test.parameters 必须是对象</translation>
+    </message>
+    <message>
+        <source>%1: trigger.mode &quot;%2&quot; is not single, normal or auto</source>
+        <translation>%1：trigger.mode“%2”不是 single、normal 或 auto</translation>
+    </message>
+    <message>
+        <source>%1: channels must be a non-empty array</source>
+        <translation>%1：channels 必须是非空数组</translation>
+    </message>
+    <message>
+        <source>%1: each channel must be an object</source>
+        <translation>%1：每个通道都必须是对象</translation>
+    </message>
+    <message>
+        <source>%1: channel id &quot;%2&quot; is empty, &quot;time&quot; or repeated</source>
+        <translation>%1：通道 id“%2”为空、为“time”或重复</translation>
+    </message>
+    <message>
+        <source>%1: samples.%2 is not a listed channel</source>
+        <translation>%1：samples.%2 不是列出的通道</translation>
+    </message>
+    <message>
+        <source>%1: samples.time must be an array</source>
+        <translation>%1：samples.time 必须是数组</translation>
+    </message>
+    <message>
+        <source>%1: samples.time[%2] must be a number</source>
+        <translation>%1：samples.time[%2] 必须是数字</translation>
+    </message>
+    <message>
+        <source>%1: samples.time[%2] goes back in time</source>
+        <translation>%1：samples.time[%2] 时间倒退</translation>
+    </message>
+    <message>
+        <source>%1: trigger.preTriggerSamples is %2 but %3 samples are before the trigger</source>
+        <translation>%1：trigger.preTriggerSamples 为 %2，但触发前有 %3 个采样点</translation>
+    </message>
+    <message>
+        <source>%1: samples.%2 must be an array of %3 values, like samples.time</source>
+        <translation>%1：samples.%2 必须是含 %3 个值的数组，与 samples.time 相同</translation>
+    </message>
+    <message>
+        <source>%1: samples.%2[%3] must be a number or null</source>
+        <translation>%1：samples.%2[%3] 必须是数字或 null</translation>
+    </message>
+    <message>
+        <source>%1: metricsChannel &quot;%2&quot; is not a listed channel</source>
+        <translation>%1：metricsChannel“%2”不是列出的通道</translation>
+    </message>
+    <message>
+        <source>%1: metricNotes must be strings</source>
+        <translation>%1：metricNotes 必须是字符串</translation>
+    </message>
+    <message>
+        <source>%1: metricNotes must be an array of strings</source>
+        <translation>%1：metricNotes 必须是字符串数组</translation>
+    </message>
+    <message>
+        <source>%1: resolution must be an object</source>
+        <translation>%1：resolution 必须是对象</translation>
+    </message>
+    <message>
+        <source>%1: tuning must be an array</source>
+        <translation>%1：tuning 必须是数组</translation>
+    </message>
+    <message>
+        <source>%1: each tuning entry must be an object</source>
+        <translation>%1：每个 tuning 条目都必须是对象</translation>
+    </message>
+    <message>
+        <source>%1: tuning role &quot;%2&quot; is unknown</source>
+        <translation>%1：tuning 用途“%2”未知</translation>
+    </message>
+    <message>
+        <source>%1: tuning lists %2 twice</source>
+        <translation>%1：tuning 中 %2 出现了两次</translation>
+    </message>
+    <message>
+        <source>%1: gaps must be an array</source>
+        <translation>%1：gaps 必须是数组</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 MiB: not a run file</source>
+        <translation>%1 大于 %2 MiB：不是运行记录文件</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordHeader</name>
+    <message>
+        <source>The header file %1 does not exist.</source>
+        <translation>表头文件 %1 不存在。</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a header file.</source>
+        <translation>%1 是文件夹，不是表头文件。</translation>
+    </message>
+    <message>
+        <source>The header file %1 is %2 bytes; a header file is at most %3 bytes.</source>
+        <translation>表头文件 %1 有 %2 字节；表头文件最多 %3 字节。</translation>
+    </message>
+    <message>
+        <source>Cannot read the header file %1: %2</source>
+        <translation>无法读取表头文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: a header file is at most %2 bytes.</source>
+        <translation>%1：表头文件最多 %2 字节。</translation>
+    </message>
+    <message>
+        <source>%1 is not valid JSON (at byte %2: %3).</source>
+        <translation>%1 不是有效的 JSON（第 %2 字节：%3）。</translation>
+    </message>
+    <message>
+        <source>%1: a header file is one JSON object, e.g. {&quot;machine&quot;: &quot;Press 3&quot;, &quot;engineer&quot;: &quot;Li Wei&quot;}.</source>
+        <translation>%1：表头文件是一个 JSON 对象，例如 {"machine": "Press 3", "engineer": "Li Wei"}。</translation>
+    </message>
+    <message>
+        <source>%1: unknown field &quot;%2&quot;; a header has the fields %3.</source>
+        <translation>%1：未知字段 "%2"；表头的字段为 %3。</translation>
+    </message>
+    <message>
+        <source>%1: the field &quot;%2&quot; must be text (a JSON string).</source>
+        <translation>%1：字段 "%2" 必须是文本（JSON 字符串）。</translation>
+    </message>
+    <message>
+        <source>%1: the field &quot;%2&quot; is %3 characters long; at most %4 are allowed.</source>
+        <translation>%1：字段 "%2" 长 %3 个字符；最多允许 %4 个。</translation>
+    </message>
+    <message>
+        <source>%1: the field &quot;%2&quot; holds a control character (U+%3).</source>
+        <translation>%1：字段 "%2" 含有控制字符（U+%3）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordRenderer</name>
+    <message>
+        <source>%1 at address %2</source>
+        <translation>%1，地址 %2</translation>
+    </message>
+    <message>
+        <source>restore</source>
+        <translation>恢复</translation>
+    </message>
+    <message>
+        <source>parameter write</source>
+        <translation>参数写入</translation>
+    </message>
+    <message>
+        <source>VERIFICATION FAILED: %1 — the last %2 (%3): %4 of %5 parameter(s) not verified.</source>
+        <translation>校验失败：%1 — 最近一次%2（%3）：%5 个参数中有 %4 个未通过校验。</translation>
+    </message>
+    <message>
+        <source>Commissioning record</source>
+        <translation>调试记录</translation>
+    </message>
+    <message>
+        <source>Machine / project</source>
+        <translation>机器 / 项目</translation>
+    </message>
+    <message>
+        <source>Customer</source>
+        <translation>客户</translation>
+    </message>
+    <message>
+        <source>Site</source>
+        <translation>现场</translation>
+    </message>
+    <message>
+        <source>Engineer</source>
+        <translation>工程师</translation>
+    </message>
+    <message>
+        <source>Date and time</source>
+        <translation>日期和时间</translation>
+    </message>
+    <message>
+        <source>DriveDesk version</source>
+        <translation>DriveDesk 版本</translation>
+    </message>
+    <message>
+        <source>Computer</source>
+        <translation>计算机</translation>
+    </message>
+    <message>
+        <source>Record file (JSON) SHA-256</source>
+        <translation>记录文件（JSON）SHA-256</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message numerus="yes">
+        <source>Drives (%n)</source>
+        <translation>
+            <numerusform>驱动器（%n 台）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No drive is in this record.</source>
+        <translation>此记录中没有驱动器。</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>驱动器</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>链路</translation>
+    </message>
+    <message>
+        <source>Changed</source>
+        <translation>已修改</translation>
+    </message>
+    <message>
+        <source>Verification</source>
+        <translation>校验</translation>
+    </message>
+    <message>
+        <source>Alarms</source>
+        <translation>报警</translation>
+    </message>
+    <message>
+        <source>none recorded</source>
+        <translation>无记录</translation>
+    </message>
+    <message>
+        <source>verified</source>
+        <translation>已校验</translation>
+    </message>
+    <message>
+        <source>FAILED (%1)</source>
+        <translation>失败（%1）</translation>
+    </message>
+    <message>
+        <source>Drive %1 of %2: %3</source>
+        <translation>驱动器 %1/%2：%3</translation>
+    </message>
+    <message>
+        <source>Family</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Link settings</source>
+        <translation>链路设置</translation>
+    </message>
+    <message>
+        <source>Parameters not (all) read: %1</source>
+        <translation>参数未能（全部）读取：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Parameters that differ from the defaults (%n)</source>
+        <translation>
+            <numerusform>与默认值不同的参数（%n 个）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No parameter read differs from its default.</source>
+        <translation>读取的参数均与默认值相同。</translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation>编号</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) could not be compared: the dictionary gives no default for them.</source>
+        <translation>
+            <numerusform>%n 个参数无法比较：字典中没有它们的默认值。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Every parameter with its value and default is listed in the appendix.</source>
+        <translation>附录中列出每个参数及其值和默认值。</translation>
+    </message>
+    <message>
+        <source>Last verification</source>
+        <translation>最近一次校验</translation>
+    </message>
+    <message>
+        <source>No restore or parameter write of this drive is recorded.</source>
+        <translation>没有此驱动器的恢复或参数写入记录。</translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>恢复</translation>
+    </message>
+    <message>
+        <source>Parameter write</source>
+        <translation>参数写入</translation>
+    </message>
+    <message>
+        <source>%1 on %2: </source>
+        <translation>%1，%2：</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) written and verified.</source>
+        <translation>
+            <numerusform>%n 个参数已写入并校验。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 parameter(s) NOT verified.</source>
+        <translation>%2 个参数中有 %1 个未通过校验。</translation>
+    </message>
+    <message>
+        <source>From the backup file %1, checksum</source>
+        <translation>来自备份文件 %1，校验和</translation>
+    </message>
+    <message>
+        <source>Written</source>
+        <translation>写入值</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>回读值</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>written (write-only)</source>
+        <translation>已写入（只写参数）</translation>
+    </message>
+    <message>
+        <source>No alarm was recorded.</source>
+        <translation>没有报警记录。</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>代码</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>报警</translation>
+    </message>
+    <message>
+        <source>Seen</source>
+        <translation>情况</translation>
+    </message>
+    <message>
+        <source>active when the record was made</source>
+        <translation>生成记录时仍存在</translation>
+    </message>
+    <message>
+        <source>cleared</source>
+        <translation>已清除</translation>
+    </message>
+    <message>
+        <source>in the session</source>
+        <translation>本次会话中出现</translation>
+    </message>
+    <message>
+        <source>Link health</source>
+        <translation>链路状况</translation>
+    </message>
+    <message>
+        <source>Not measured.</source>
+        <translation>未统计。</translation>
+    </message>
+    <message>
+        <source>%1: %2 frame(s) sent, %3 received, %4 discarded, %5 retries, %6 failed operation(s).</source>
+        <translation>%1：发送 %2 帧，接收 %3 帧，丢弃 %4 帧，重试 %5 次，失败操作 %6 次。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Tuning runs (%n)</source>
+        <translation>
+            <numerusform>调试运行（%n 次）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Metric</source>
+        <translation>指标</translation>
+    </message>
+    <message>
+        <source>Parameters during the run</source>
+        <translation>运行时的参数</translation>
+    </message>
+    <message>
+        <source>Backup files</source>
+        <translation>备份文件</translation>
+    </message>
+    <message>
+        <source>No backup file of this drive is recorded.</source>
+        <translation>没有此驱动器的备份文件记录。</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>用途</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <source>Checksum</source>
+        <translation>校验和</translation>
+    </message>
+    <message>
+        <source>restored onto the drive</source>
+        <translation>已恢复到驱动器</translation>
+    </message>
+    <message>
+        <source>saved from the drive</source>
+        <translation>从驱动器保存</translation>
+    </message>
+    <message>
+        <source>Appendix %1: every parameter of %2</source>
+        <translation>附录 %1：%2 的全部参数</translation>
+    </message>
+    <message>
+        <source>No parameter was read.</source>
+        <translation>没有读取到参数。</translation>
+    </message>
+    <message>
+        <source>DriveDesk commissioning record</source>
+        <translation>DriveDesk 调试记录</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>第 %1 页，共 %2 页</translation>
+    </message>
+    <message>
+        <source>Record file (JSON) SHA-256: %1</source>
+        <translation>记录文件（JSON）SHA-256：%1</translation>
+    </message>
+    <message>
+        <source>Could not draw the record&apos;s pages.</source>
+        <translation>无法绘制记录的页面。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>dd::VerificationJournal</name>
+    <message>
+        <source>Cannot create the folder %1 for the verification journal.</source>
+        <translation>无法为校验日志创建文件夹 %1。</translation>
+    </message>
+    <message>
+        <source>Cannot write the verification journal %1: %2</source>
+        <translation>无法写入校验日志 %1：%2</translation>
+    </message>
+    <message>
+        <source>not attempted: the restore stopped before this parameter</source>
+        <translation>未尝试：恢复在此参数之前已停止</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CaptureCommand</name>
+    <message>
+        <source>--%1 must be a number from %2 to %3, not &quot;%4&quot;.</source>
+        <translation>--%1 必须是 %2 到 %3 之间的数字，而不是“%4”。</translation>
+    </message>
+    <message>
+        <source>CHANNEL,...</source>
+        <translation>CHANNEL,...</translation>
+    </message>
+    <message>
+        <source>Name at least one channel, e.g. speed,current.</source>
+        <translation>请至少指定一个通道，例如 speed,current。</translation>
+    </message>
+    <message>
+        <source>The motion trigger belongs to step tests: use drivedesk-cli step.</source>
+        <translation>运动触发属于阶跃测试：请使用 drivedesk-cli step。</translation>
+    </message>
+    <message>
+        <source>The trigger channel %1 must be one of the captured channels (%2).</source>
+        <translation>触发通道 %1 必须是采集的通道之一（%2）。</translation>
+    </message>
+    <message>
+        <source>--mode must be single or auto, not &quot;%1&quot;.</source>
+        <translation>--mode 必须是 single 或 auto，而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>Name the run file: -o RUN.ddrun.</source>
+        <translation>请指定运行记录文件：-o RUN.ddrun。</translation>
+    </message>
+    <message>
+        <source>This drive has no channel %1 (it has %2).</source>
+        <translation>该驱动器没有通道 %1（有：%2）。</translation>
+    </message>
+    <message>
+        <source>Armed: waiting for the trigger %1.</source>
+        <translation>已就绪：等待触发条件 %1。</translation>
+    </message>
+    <message>
+        <source>Capture cancelled before the trigger came.</source>
+        <translation>触发前已取消采集。</translation>
+    </message>
+    <message>
+        <source>%1: %2 samples (%3 before the trigger), trigger %4, interval %5 ms (%6 Hz), %7 gap(s), %8 tuning parameter(s)</source>
+        <translation>%1：%2 个采样点（触发前 %3 个），触发 %4，间隔 %5 ms（%6 Hz），%7 处间断，%8 个整定参数</translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetBackupCommand</name>
+    <message>
+        <source>backup of several drives needs the folder to write to: backup --all -o DIR.</source>
+        <translation>备份多台驱动器需要指定写入的文件夹：backup --all -o DIR。</translation>
+    </message>
+    <message>
+        <source>backup: %1 is a file; several drives are saved into a folder (-o DIR).</source>
+        <translation>backup：%1 是文件；多台驱动器的备份保存在文件夹中（-o DIR）。</translation>
+    </message>
+    <message>
+        <source>backup: the folder %1 does not exist.</source>
+        <translation>backup：文件夹 %1 不存在。</translation>
+    </message>
+    <message>
+        <source>backup: cannot create the folder %1.</source>
+        <translation>backup：无法创建文件夹 %1。</translation>
+    </message>
+    <message>
+        <source>drive %1</source>
+        <translation>驱动器 %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) -&gt; %1</source>
+        <translation>
+            <numerusform>%n 个参数 -&gt; %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>backup: cannot write %1: %2</source>
+        <translation>backup：无法写入 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) saved to %2 (index: %3).</source>
+        <translation>
+            <numerusform>%n 台驱动器中有 %1 台已保存到 %2（索引：%3）。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetCommand</name>
+    <message>
+        <source>%1: give either --all or --address, not both.</source>
+        <translation>%1：请给出 --all 或 --address，不能同时给出。</translation>
+    </message>
+    <message>
+        <source>%1: --from and --to narrow the scan of --all.</source>
+        <translation>%1：--from 和 --to 用于缩小 --all 的扫描范围。</translation>
+    </message>
+    <message>
+        <source>%1: --from %2 is above --to %3.</source>
+        <translation>%1：--from %2 大于 --to %3。</translation>
+    </message>
+    <message>
+        <source>This family cannot scan; name the drives with --address.</source>
+        <translation>该系列不能扫描；请用 --address 指定驱动器。</translation>
+    </message>
+    <message>
+        <source>Scanning addresses %1 to %2 ...</source>
+        <translation>正在扫描地址 %1 到 %2 ...</translation>
+    </message>
+    <message>
+        <source>Interrupted during the scan; nothing was done.</source>
+        <translation>扫描时被中断；未做任何操作。</translation>
+    </message>
+    <message>
+        <source>No drive answered the scan of addresses %1 to %2.</source>
+        <translation>扫描地址 %1 到 %2 时没有驱动器应答。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Found %n drive(s): %1.</source>
+        <translation>
+            <numerusform>找到 %n 台驱动器：%1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Finishing the drives under way so that their reports are complete; no further drive is started.</source>
+        <translation>正在完成进行中的驱动器，以便报告完整；不再开始新的驱动器。</translation>
+    </message>
+    <message>
+        <source>The link was lost. Check the adapter and its cable.</source>
+        <translation>连接已断开。请检查适配器及其电缆。</translation>
+    </message>
+    <message>
+        <source>drive %1: not attempted (%2)</source>
+        <translation>驱动器 %1：未尝试（%2）</translation>
+    </message>
+    <message>
+        <source>drive %1: not attempted</source>
+        <translation>驱动器 %1：未尝试</translation>
+    </message>
+    <message>
+        <source>while identifying it</source>
+        <translation>识别时</translation>
+    </message>
+    <message>
+        <source>while reading its parameters</source>
+        <translation>读取参数时</translation>
+    </message>
+    <message>
+        <source>while writing</source>
+        <translation>写入时</translation>
+    </message>
+    <message>
+        <source>before it started</source>
+        <translation>开始之前</translation>
+    </message>
+    <message>
+        <source>drive %1: FAILED %2: %3</source>
+        <translation>驱动器 %1：%2失败：%3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n of %1 drive(s) did not complete: %2.</source>
+        <translation>
+            <numerusform>%1 台驱动器中有 %n 台未完成：%2。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetRestoreCommand</name>
+    <message>
+        <source>a backup file</source>
+        <translation>一个备份文件</translation>
+    </message>
+    <message>
+        <source>drive %1: already matches the file; nothing to write.</source>
+        <translation>驱动器 %1：已与文件一致；无需写入。</translation>
+    </message>
+    <message numerus="yes">
+        <source>drive %1: %n parameter(s) would be written.</source>
+        <translation>
+            <numerusform>驱动器 %1：将写入 %n 个参数。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>drive %1: %n parameter(s) written and verified.</source>
+        <translation>
+            <numerusform>驱动器 %1：已写入并校验 %n 个参数。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Dry run on %n drive(s); nothing was sent.</source>
+        <translation>
+            <numerusform>对 %n 台驱动器试运行；未发送任何内容。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) restored from %2.</source>
+        <translation>
+            <numerusform>%n 台驱动器中有 %1 台已从 %2 恢复。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::PingCommand</name>
+    <message>
+        <source>The drive at address %1 answered none of %2 requests. Last error: %3</source>
+        <translation>地址 %1 的驱动器对 %2 个请求均未应答。最后一个错误：%3</translation>
+    </message>
+    <message>
+        <source>Answered</source>
+        <translation>已应答</translation>
+    </message>
+    <message>
+        <source>%1 of %2 (%3 requests on the wire)</source>
+        <translation>%2 个中的 %1 个（线路上共 %3 个请求）</translation>
+    </message>
+    <message>
+        <source>Turnaround</source>
+        <translation>往返时间</translation>
+    </message>
+    <message>
+        <source>min %1 ms, median %2 ms, max %3 ms</source>
+        <translation>最小 %1 毫秒，中位数 %2 毫秒，最大 %3 毫秒</translation>
+    </message>
+    <message>
+        <source>Timeouts</source>
+        <translation>超时</translation>
+    </message>
+    <message>
+        <source>Checksum errors</source>
+        <translation>校验错误</translation>
+    </message>
+    <message>
+        <source>Late or duplicated replies</source>
+        <translation>迟到或重复的应答</translation>
+    </message>
+    <message>
+        <source>Retries</source>
+        <translation>重试</translation>
+    </message>
+    <message>
+        <source>Recommended timeout</source>
+        <translation>建议超时</translation>
+    </message>
+    <message>
+        <source>--timeout %1 (reply allowance beyond the wire time, ms)</source>
+        <translation>--timeout %1（线路传输时间之外的应答余量，毫秒）</translation>
+    </message>
+    <message>
+        <source>Recommended gap</source>
+        <translation>建议间隔</translation>
+    </message>
+    <message>
+        <source>%1 ms between requests</source>
+        <translation>请求之间 %1 毫秒</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ReportCommand</name>
+    <message>
+        <source>report %1: %2 is a folder; give a file name.</source>
+        <translation>report %1：%2 是文件夹；请给出文件名。</translation>
+    </message>
+    <message>
+        <source>report %1: the folder %2 does not exist.</source>
+        <translation>report %1：文件夹 %2 不存在。</translation>
+    </message>
+    <message>
+        <source>report %1: %2 should end in .%3.</source>
+        <translation>report %1：%2 应以 .%3 结尾。</translation>
+    </message>
+    <message>
+        <source>report needs the PDF file to write: report -o RECORD.pdf.</source>
+        <translation>report 需要要写入的 PDF 文件：report -o RECORD.pdf。</translation>
+    </message>
+    <message>
+        <source>report: the PDF and the JSON file must be two different files.</source>
+        <translation>report：PDF 与 JSON 必须是两个不同的文件。</translation>
+    </message>
+    <message>
+        <source>report --runs: run files are not supported by this build yet.</source>
+        <translation>report --runs：本版本尚不支持运行记录文件。</translation>
+    </message>
+    <message>
+        <source>report --header: %1</source>
+        <translation>report --header：%1</translation>
+    </message>
+    <message>
+        <source>report --page-size: &quot;%1&quot; is not a page size; use a4 or letter.</source>
+        <translation>report --page-size："%1" 不是纸张尺寸；请用 a4 或 letter。</translation>
+    </message>
+    <message>
+        <source>report: --from and --to limit the scan of --all; without --all the record is of --address.</source>
+        <translation>report：--from 和 --to 限定 --all 的扫描范围；不用 --all 时记录的是 --address 所指的驱动器。</translation>
+    </message>
+    <message>
+        <source>report: --from %1 is above --to %2.</source>
+        <translation>report：--from %1 大于 --to %2。</translation>
+    </message>
+    <message>
+        <source>address %1: %2</source>
+        <translation>地址 %1：%2</translation>
+    </message>
+    <message>
+        <source>Drive %1 left out of the record: %2</source>
+        <translation>驱动器 %1 未列入记录：%2</translation>
+    </message>
+    <message>
+        <source>No Chinese font is installed: Chinese text cannot be drawn in the PDF. Install one (Debian: apt install fonts-noto-cjk).</source>
+        <translation>未安装中文字体：PDF 中无法绘制中文。请安装一个（Debian：apt install fonts-noto-cjk）。</translation>
+    </message>
+    <message>
+        <source>This family cannot scan.</source>
+        <translation>此系列不能扫描。</translation>
+    </message>
+    <message>
+        <source>No drive answered the scan; there is nothing to record.</source>
+        <translation>扫描时没有驱动器应答；没有可记录的内容。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) found; reading them.</source>
+        <translation>
+            <numerusform>找到 %n 台驱动器；正在读取。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scanning addresses %1 to %2 ...</source>
+        <translation>正在扫描地址 %1 到 %2 ...</translation>
+    </message>
+    <message>
+        <source>There can be no drive at address %1 on this link.</source>
+        <translation>此链路上不可能有地址为 %1 的驱动器。</translation>
+    </message>
+    <message>
+        <source>No drive could be read; no record was written.</source>
+        <translation>没有能读取的驱动器；未写入记录。</translation>
+    </message>
+    <message>
+        <source>while this record was made</source>
+        <translation>生成此记录期间</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Commissioning record of %n drive(s) written to %1 (%2 pages).</source>
+        <translation>
+            <numerusform>%n 台驱动器的调试记录已写入 %1（%2 页）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>JSON: %1</source>
+        <translation>JSON：%1</translation>
+    </message>
+    <message>
+        <source>SHA-256 of the JSON: %1</source>
+        <translation>JSON 的 SHA-256：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) failed their last verification; the record says so.</source>
+        <translation>
+            <numerusform>%n 台驱动器最近一次校验失败；记录中已注明。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::RunsCommand</name>
+    <message>
+        <source>RUN.ddrun [RUN2.ddrun ...]</source>
+        <translation>RUN.ddrun [RUN2.ddrun ...]</translation>
+    </message>
+    <message>
+        <source>no tuning parameter differs</source>
+        <translation>整定参数均无差异</translation>
+    </message>
+</context>
+<context>
+    <name>dd::SpectrumCommand</name>
+    <message>
+        <source>RUN.ddrun CHANNEL</source>
+        <translation>RUN.ddrun CHANNEL</translation>
+    </message>
+    <message>
+        <source>--peaks must be a whole number from 1 to 100, not &quot;%1&quot;.</source>
+        <translation>--peaks 必须是 1 到 100 之间的整数，而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>--from must be a frequency ≥ 0 Hz, not &quot;%1&quot;.</source>
+        <translation>--from 必须是 ≥ 0 Hz 的频率，而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>%1 has no channel &quot;%2&quot; (it has %3).</source>
+        <translation>%1 中没有通道“%2”（有：%3）。</translation>
+    </message>
+    <message>
+        <source>Spectrum of %1: %2 points at %3 Hz, %4 window, resolution %5 Hz</source>
+        <translation>%1 的频谱：%2 个点，采样率 %3 Hz，%4 窗，分辨率 %5 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>dd::SourceDiffCommand</name>
+    <message>
+        <source>diff: the address of %1</source>
+        <translation>diff：%1 的地址</translation>
+    </message>
+    <message>
+        <source>diff: %1 is neither a file nor drive, drive:ADDRESS or defaults.</source>
+        <translation>diff：%1 既不是文件，也不是 drive、drive:地址 或 defaults。</translation>
+    </message>
+    <message>
+        <source>two sources</source>
+        <translation>两个来源</translation>
+    </message>
+    <message>
+        <source>%1 is a backup of a %2 drive and %3 of a %4 drive: parameters of different families have different meanings and are never compared.</source>
+        <translation>%1 是 %2 驱动器的备份，%3 是 %4 驱动器的：不同系列的参数含义不同，从不比较。</translation>
+    </message>
+    <message>
+        <source>%1 is a backup of a %2 drive; the drives on this link are %3 drives and are never compared with another family. To talk to %2 drives add --family %2.</source>
+        <translation>%1 是 %2 驱动器的备份；此连接上是 %3 驱动器，从不与其他系列比较。要与 %2 驱动器通信，请加 --family %2。</translation>
+    </message>
+    <message>
+        <source>drive %1: %2</source>
+        <translation>驱动器 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1  %2</source>
+        <translation>%1  %2</translation>
+    </message>
+    <message>
+        <source> (communication setting)</source>
+        <translation>（通信设置）</translation>
+    </message>
+    <message>
+        <source>Firmware differs: %1 has %2, %3 has %4.
+</source>
+        <translation>固件不同：%1 为 %2，%3 为 %4。
+</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 same (%3 / %4).</source>
+        <translation>%1 个不同，%2 个相同（%3 / %4）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CompareView</name>
+    <message>
+        <source>%1 is not added: %2</source>
+        <translation>未添加 %1：%2</translation>
+    </message>
+    <message>
+        <source>The %1 dictionary gives no default values (its manual publishes none); a dictionary file of your own can add them.</source>
+        <translation>%1 参数字典没有默认值（其手册未公布）；可以用自己的字典文件添加。</translation>
+    </message>
+    <message>
+        <source>drive %1 could not be read: %2</source>
+        <translation>无法读取驱动器 %1：%2</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>%1
+firmware %2</source>
+        <translation>%1
+固件 %2</translation>
+    </message>
+    <message>
+        <source> (communication)</source>
+        <translation>（通信）</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) differ.</source>
+        <translation>
+            <numerusform>%n 个参数不同。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The firmware differs between the sources: values may mean different things.</source>
+        <translation>各来源的固件不同：数值的含义可能不同。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: drive %2</source>
+        <translation>%1：驱动器 %2</translation>
+    </message>
+    <message>
+        <source>No drive on an open link</source>
+        <translation>已打开的连接上没有驱动器</translation>
+    </message>
+    <message>
+        <source>Add a backup file</source>
+        <translation>添加备份文件</translation>
+    </message>
+    <message>
+        <source>DriveDesk backups (*.json *.ddbackup);;All files (*)</source>
+        <translation>DriveDesk 备份 (*.json *.ddbackup);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Export the comparison</source>
+        <translation>导出比较结果</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Compare parameters</source>
+        <translation>比较参数</translation>
+    </message>
+    <message>
+        <source>Add drive…</source>
+        <translation>添加驱动器…</translation>
+    </message>
+    <message>
+        <source>Add file…</source>
+        <translation>添加文件…</translation>
+    </message>
+    <message>
+        <source>Add defaults</source>
+        <translation>添加默认值</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>导出 CSV…</translation>
+    </message>
+    <message>
+        <source>Only differences</source>
+        <translation>仅显示差异</translation>
+    </message>
+    <message>
+        <source>Search parameters</source>
+        <translation>搜索参数</translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetActions</name>
+    <message>
+        <source>Co&amp;mpare parameters…</source>
+        <translation>比较参数(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>Apply a backup to several drives</source>
+        <translation>将备份应用到多台驱动器</translation>
+    </message>
+    <message>
+        <source>DriveDesk backups (*.json *.ddbackup);;All files (*)</source>
+        <translation>DriveDesk 备份 (*.json *.ddbackup);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Apply backup</source>
+        <translation>应用备份</translation>
+    </message>
+    <message>
+        <source>%1 is a backup of a %2 drive; these are %3 drives. A backup is never applied to another family.</source>
+        <translation>%1 是 %2 驱动器的备份；这些是 %3 驱动器。备份从不应用到其他系列。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::FleetApplyDialog</name>
+    <message>
+        <source>drive %1</source>
+        <translation>驱动器 %1</translation>
+    </message>
+    <message>
+        <source>Reading drive %1…</source>
+        <translation>正在读取驱动器 %1…</translation>
+    </message>
+    <message>
+        <source>Drive %1 could not be read: %2. Nothing was written.</source>
+        <translation>无法读取驱动器 %1：%2。未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Reading the drives to plan the changes; nothing is written yet…</source>
+        <translation>正在读取驱动器以规划更改；尚未写入任何内容…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Plan: %n parameter(s) to write in all. Only these are written; each is read back.</source>
+        <translation>
+            <numerusform>计划：共写入 %n 个参数。只写入这些参数，每个都会回读校验。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write to the enabled or moving drive(s) %1 anyway: a parameter changed while the axis is energised takes effect at once and can make it jerk or move.</source>
+        <translation>仍然写入已使能或正在运动的驱动器 %1：轴通电时更改的参数立即生效，可能使其抖动或运动。</translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>正在写入…</translation>
+    </message>
+    <message>
+        <source>Done: %1 verified, %2 failed, %3 not attempted.</source>
+        <translation>完成：%1 台已校验，%2 台失败，%3 台未尝试。</translation>
+    </message>
+    <message>
+        <source>reading…</source>
+        <translation>正在读取…</translation>
+    </message>
+    <message>
+        <source>already matches: nothing to write</source>
+        <translation>已一致：无需写入</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) will change</source>
+        <translation>
+            <numerusform>将更改 %n 个参数</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not planned: %1 — it will not be written</source>
+        <translation>未能规划：%1 — 不会写入</translation>
+    </message>
+    <message>
+        <source>writing…</source>
+        <translation>正在写入…</translation>
+    </message>
+    <message numerus="yes">
+        <source>verified: %n parameter(s) written and read back</source>
+        <translation>
+            <numerusform>已校验：%n 个参数已写入并回读</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>FAILED: %1 (written: %2; not written or unknown: %3)</source>
+        <translation>失败：%1（已写入：%2；未写入或未知：%3）</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>not attempted (an earlier drive failed)</source>
+        <translation>未尝试（之前的驱动器失败）</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>left alone: a communication setting (stays %1)</source>
+        <translation>保持不变：通信设置（仍为 %1）</translation>
+    </message>
+    <message>
+        <source>Apply to several drives</source>
+        <translation>应用到多台驱动器</translation>
+    </message>
+    <message>
+        <source>From %1 to the drives %2. Communication settings (address, baud rate, station number) are left alone.</source>
+        <translation>从 %1 到驱动器 %2。通信设置（地址、波特率、站号）保持不变。</translation>
+    </message>
+    <message>
+        <source>(no source yet)</source>
+        <translation>（尚无来源）</translation>
+    </message>
+    <message>
+        <source>Drive / parameter</source>
+        <translation>驱动器 / 参数</translation>
+    </message>
+    <message>
+        <source>Plan and result</source>
+        <translation>计划与结果</translation>
+    </message>
+    <message>
+        <source>Stop at the first failed drive</source>
+        <translation>在第一台失败的驱动器处停止</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>应用</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>dd::LinkHealthDock</name>
+    <message>
+        <source>%1, address %2</source>
+        <translation>%1，地址 %2</translation>
+    </message>
+    <message>
+        <source>%1 / %2 / %3 ms</source>
+        <translation>%1 / %2 / %3 毫秒</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 毫秒</translation>
+    </message>
+    <message>
+        <source>Link health</source>
+        <translation>链路健康</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>驱动器</translation>
+    </message>
+    <message>
+        <source>Requests</source>
+        <translation>请求</translation>
+    </message>
+    <message>
+        <source>Answered</source>
+        <translation>已应答</translation>
+    </message>
+    <message>
+        <source>Turnaround min / median / max</source>
+        <translation>往返时间 最小 / 中位数 / 最大</translation>
+    </message>
+    <message>
+        <source>Timeouts</source>
+        <translation>超时</translation>
+    </message>
+    <message>
+        <source>Checksum errors</source>
+        <translation>校验错误</translation>
+    </message>
+    <message>
+        <source>Late or duplicated</source>
+        <translation>迟到或重复</translation>
+    </message>
+    <message>
+        <source>Retries</source>
+        <translation>重试</translation>
+    </message>
+    <message>
+        <source>Recommended timeout</source>
+        <translation>建议超时</translation>
+    </message>
+    <message>
+        <source>Recommended gap</source>
+        <translation>建议间隔</translation>
+    </message>
+    <message>
+        <source>From the traffic seen so far. The recommended timeout is the reply allowance beyond the wire time (drivedesk-cli --timeout); the gap is the quiet time between requests that lets late replies land first.</source>
+        <translation>根据目前已观察到的通信统计。建议超时是线路传输时间之外的应答余量（drivedesk-cli --timeout）；间隔是请求之间的静默时间，让迟到的应答先到达。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordAction</name>
+    <message>
+        <source>Commissioning &amp;record…</source>
+        <translation>调试记录(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>A PDF (and JSON) record of the drives: what was set, verified and measured</source>
+        <translation>驱动器的 PDF（及 JSON）记录：设置了什么、校验了什么、测量了什么</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordDialog</name>
+    <message>
+        <source>Reading drive %1 of %2 …</source>
+        <translation>正在读取驱动器 %1/%2 …</translation>
+    </message>
+    <message>
+        <source>Commissioning record</source>
+        <translation>调试记录</translation>
+    </message>
+    <message>
+        <source>Drives in the record:</source>
+        <translation>记录中的驱动器：</translation>
+    </message>
+    <message>
+        <source>Tuning runs: run files are not supported by this build yet.</source>
+        <translation>调试运行：本版本尚不支持运行记录文件。</translation>
+    </message>
+    <message>
+        <source>Machine / project:</source>
+        <translation>机器 / 项目：</translation>
+    </message>
+    <message>
+        <source>Customer:</source>
+        <translation>客户：</translation>
+    </message>
+    <message>
+        <source>Site:</source>
+        <translation>现场：</translation>
+    </message>
+    <message>
+        <source>Engineer:</source>
+        <translation>工程师：</translation>
+    </message>
+    <message>
+        <source>Notes:</source>
+        <translation>备注：</translation>
+    </message>
+    <message>
+        <source>Paper:</source>
+        <translation>纸张：</translation>
+    </message>
+    <message>
+        <source>Letter</source>
+        <translation>Letter（信纸）</translation>
+    </message>
+    <message>
+        <source>&amp;Preview</source>
+        <translation>预览(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Save PDF…</source>
+        <translation>保存 PDF(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>%1 at address %2 — %3</source>
+        <translation>%1，地址 %2 — %3</translation>
+    </message>
+    <message>
+        <source>No drive is connected: connect to the drives first (File → Connect…).</source>
+        <translation>没有连接驱动器：请先连接驱动器（文件 → 连接…）。</translation>
+    </message>
+    <message>
+        <source>Save the commissioning record</source>
+        <translation>保存调试记录</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF 文件 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Choose at least one drive for the record.</source>
+        <translation>请为记录至少选择一台驱动器。</translation>
+    </message>
+    <message>
+        <source>No drive could be read: %1</source>
+        <translation>没有能读取的驱动器：%1</translation>
+    </message>
+    <message>
+        <source>Left out: %1</source>
+        <translation>未列入：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Preview of the first %n page(s).</source>
+        <translation>
+            <numerusform>前 %n 页的预览。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %1 (%n page(s)) and %2. SHA-256 of the JSON: %3</source>
+        <translation>
+            <numerusform>已保存 %1（%n 页）和 %2。JSON 的 SHA-256：%3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No Chinese font is installed: Chinese text is missing from the PDF.</source>
+        <translation>未安装中文字体：PDF 中缺少中文文字。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordGatherer</name>
+    <message>
+        <source>%1 at address %2: %3</source>
+        <translation>%1，地址 %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordSession</name>
+    <message>
+        <source>since the connection was opened</source>
+        <translation>自连接打开以来</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StopReporter</name>
+    <message>
+        <source>%1: stop sent, waiting for its state…</source>
+        <translation>%1：已发送停止，正在等待其状态…</translation>
+    </message>
+    <message>
+        <source>%1: stopped (the drive reports the axis at rest).</source>
+        <translation>%1：已停止（驱动器报告轴已静止）。</translation>
+    </message>
+    <message>
+        <source>%1: has no stop command; it is at rest.</source>
+        <translation>%1：没有停止命令；它处于静止状态。</translation>
+    </message>
+    <message>
+        <source>%1: has no stop command and is still moving; DriveDesk cannot stop it. Use the machine&apos;s emergency stop or switch off the drive&apos;s servo-on input.</source>
+        <translation>%1：没有停止命令且仍在运动；DriveDesk 无法停止它。请使用机器的急停，或关闭驱动器的伺服使能输入。</translation>
+    </message>
+    <message>
+        <source>%1: STOP failed: the drive still reports motion.</source>
+        <translation>%1：停止失败：驱动器仍报告在运动。</translation>
+    </message>
+    <message>
+        <source>%1: STOP failed: %2</source>
+        <translation>%1：停止失败：%2</translation>
+    </message>
+    <message>
+        <source>STOP sent; no drive is connected.</source>
+        <translation>已发送停止；没有连接任何驱动器。</translation>
+    </message>
+    <message>
+        <source>STOP: %1</source>
+        <translation>停止：%1</translation>
     </message>
 </context>
 </TS>

@@ -2,8 +2,8 @@
 
 #include "core/common/family.h"
 #include "core/report/backupreference.h"
-#include "core/report/linkhealth.h"
 #include "core/report/recordalarm.h"
+#include "core/report/recordlinkhealth.h"
 #include "core/report/recordparameter.h"
 #include "core/report/recordverification.h"
 #include "core/report/runrecord.h"
@@ -29,7 +29,7 @@ struct DriveRecord
     QList<RecordParameter> parameters; // every parameter of the dictionary, ascending index
     RecordVerification verification;   // the last restore or write; empty when none is known
     QList<RecordAlarm> alarms;
-    LinkHealth linkHealth;
+    RecordLinkHealth linkHealth;
     QList<RunRecord> runs;
     QList<BackupReference> backups;
 

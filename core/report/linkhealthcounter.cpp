@@ -25,9 +25,9 @@ void LinkHealthCounter::count(const TrafficRecord &record)
     }
 }
 
-LinkHealth LinkHealthCounter::health(const QString &scope) const
+RecordLinkHealth LinkHealthCounter::health(const QString &scope) const
 {
-    LinkHealth h = m_health;
+    RecordLinkHealth h = m_health;
     h.measured = true;
     h.scope = scope;
     return h;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/report/linkhealth.h"
+#include "core/report/recordlinkhealth.h"
 
 #include <QObject>
 
@@ -20,12 +20,12 @@ public:
 
     void countError() { ++m_health.errors; }
     // The counts so far, described by `scope`.
-    LinkHealth health(const QString &scope) const;
+    RecordLinkHealth health(const QString &scope) const;
     // Counts one traffic record (what the tap's signal calls).
     void count(const TrafficRecord &record);
 
 private:
-    LinkHealth m_health;
+    RecordLinkHealth m_health;
 };
 
 } // namespace dd

@@ -91,7 +91,7 @@ QJsonObject driveJson(const DriveRecord &d)
                                   {QStringLiteral("text"), a.text},
                                   {QStringLiteral("source"), a.source},
                                   {QStringLiteral("cleared"), a.cleared}});
-    const LinkHealth &h = d.linkHealth;
+    const RecordLinkHealth &h = d.linkHealth;
     const QJsonObject health{{QStringLiteral("measured"), h.measured},
                              {QStringLiteral("scope"), h.scope},
                              {QStringLiteral("framesSent"), double(h.framesSent)},

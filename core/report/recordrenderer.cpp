@@ -284,7 +284,7 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
 
     // Link health.
     html += QStringLiteral("<h3>%1</h3>").arg(esc(tr("Link health")));
-    const LinkHealth &h = d.linkHealth;
+    const RecordLinkHealth &h = d.linkHealth;
     if (!h.measured) {
         html += QStringLiteral("<p>%1</p>").arg(esc(tr("Not measured.")));
     } else {

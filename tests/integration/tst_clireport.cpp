@@ -80,9 +80,9 @@ void TestCliReport::recordOfEveryDriveOnTheLink()
     dictFile.close();
 
     // 2. The engineer changes a few parameters (verified writes, kept in the journal).
-    r = runCli(sim() + QStringList{"--address", "2", "set", "PA5=123", "PA6=-77"}, env());
+    r = runCli(sim() + QStringList{"--address", "2", "set", "PA10=123", "PA11=-77"}, env());
     QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
-    r = runCli(sim() + QStringList{"--address", "1", "set", "PA7=99"}, env());
+    r = runCli(sim() + QStringList{"--address", "1", "set", "PA12=99"}, env());
     QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
 
     // 3. The record of every drive on the link.
@@ -118,7 +118,7 @@ void TestCliReport::recordOfEveryDriveOnTheLink()
         QVERIFY(t.contains(o.value("firmware").toString()));
     }
     // Every parameter that differs from its default, with its value and the default.
-    const QList<std::tuple<int, QString, int>> changed{{1, "PA7", 99}, {2, "PA5", 123}, {2, "PA6", -77}};
+    const QList<std::tuple<int, QString, int>> changed{{1, "PA12", 99}, {2, "PA10", 123}, {2, "PA11", -77}};
     for (const auto &[address, key, value] : changed) {
         const int index = key.mid(2).toInt();
         const QRegularExpression row(QStringLiteral("\\b%1\\s+%2\\s+Parameter %2\\s+%3\\s+%4\\b")
@@ -136,8 +136,8 @@ void TestCliReport::recordOfEveryDriveOnTheLink()
                 keys << p.toObject().value("key").toString();
         return keys;
     };
-    QVERIFY(changedKeys(drives.at(0).toObject()).contains("PA7"));
-    QCOMPARE(changedKeys(drives.at(1).toObject()), QStringList({"PA5", "PA6"}));
+    QVERIFY(changedKeys(drives.at(0).toObject()).contains("PA12"));
+    QCOMPARE(changedKeys(drives.at(1).toObject()), QStringList({"PA10", "PA11"}));
     QCOMPARE(drives.at(1).toObject().value("nonDefault").toInt(), 2);
     // The writes were verified, and the record says when.
     const QJsonObject v2 = drives.at(1).toObject().value("verification").toObject();

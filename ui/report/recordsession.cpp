@@ -62,7 +62,7 @@ QList<RecordAlarm> RecordSession::alarms(int connectionId, int address) const
     return m_alarms.value({connectionId, address});
 }
 
-LinkHealth RecordSession::linkHealth(int connectionId) const
+RecordLinkHealth RecordSession::linkHealth(int connectionId) const
 {
     const LinkHealthCounter *c = m_links.value(connectionId);
     if (!c)

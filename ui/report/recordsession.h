@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/report/linkhealth.h"
 #include "core/report/recordalarm.h"
+#include "core/report/recordlinkhealth.h"
 
 #include <QHash>
 #include <QList>
@@ -25,7 +25,7 @@ public:
     RecordSession(DriveHub *hub, DriveDirectory *directory, QObject *parent = nullptr);
 
     QList<RecordAlarm> alarms(int connectionId, int address) const;
-    LinkHealth linkHealth(int connectionId) const;
+    RecordLinkHealth linkHealth(int connectionId) const;
     // An operation on the connection failed (counted in its link health).
     void countError(int connectionId);
 

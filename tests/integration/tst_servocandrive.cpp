@@ -372,8 +372,9 @@ void TestServoCanDrive::jogRunsAndStopStops()
     QVERIFY(waitUntil([this] { return qAbs(m_sim1->motor().speedRpm() - 300) < 1; }, 2000));
     DriveReply *sp = d->readChannels({QStringLiteral("speed")});
     QVERIFY(waitFinished(sp));
-    // The simulator's closed loop settles on the command: within 1 r/min once it got there.
-    QVERIFY2(qAbs(sp->samples().value(QStringLiteral("speed")) - 300.0) <= 1.0,
+    // The simulator's closed loop holds the command: within 5 r/min (its load and friction
+    // ripple the speed by a few r/min, as a real loop's would).
+    QVERIFY2(qAbs(sp->samples().value(QStringLiteral("speed")) - 300.0) <= 5.0,
              qPrintable(QString::number(sp->samples().value(QStringLiteral("speed")))));
     const qint64 p0 = d->status().position;
     QVERIFY(waitUntil([d, p0] { return d->status().position > p0 + 1000; }, 2000)); // heartbeats follow

@@ -171,7 +171,7 @@ private slots:
 
         // monitor: DP-SPd (register 0) and DP-trq (register 7) as pymodbus holds them
         r = cli({QStringLiteral("monitor"), QStringLiteral("speed,torque"), QStringLiteral("--rate"),
-                 QStringLiteral("20"), QStringLiteral("--duration"), QStringLiteral("0.3")});
+                 QStringLiteral("5"), QStringLiteral("--duration"), QStringLiteral("1.5")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
         const QList<QJsonObject> lines = r.jsonLines();
         QVERIFY2(lines.size() >= 2, r.out.constData());

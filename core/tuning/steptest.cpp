@@ -61,18 +61,19 @@ StepTest::StepTest(Drive *drive, QObject *parent)
     m_retry.setSingleShot(true);
     connect(&m_step, &QTimer::timeout, this, &StepTest::onStepTimer);
     connect(&m_limit, &QTimer::timeout, this, [this] {
-        abortWith(QStringLiteral("duration-limit"),
-                  {ErrorCode::Cancelled, tr("The motion was not at rest within the maximum duration of %1 s; stopped.")
-                                             .arg(m_limits.maxDurationS)});
+        abortWith(
+            QStringLiteral("duration-limit"),
+            {ErrorCode::Cancelled,
+             tr("The motion was not at rest within the maximum duration of %1 s; stopped.").arg(m_limits.maxDurationS)});
     });
     if (!drive)
         return;
     connect(&m_renew, &QTimer::timeout, drive, &Drive::renewJogLease);
     connect(drive, &Drive::alarmChanged, this, [this](int code) {
         if (code != 0 && isRunning())
-            abortWith(QStringLiteral("alarm"),
-                      {ErrorCode::DriveException, tr("The drive raised alarm %1 during the step test.").arg(code),
-                       code});
+            abortWith(
+                QStringLiteral("alarm"),
+                {ErrorCode::DriveException, tr("The drive raised alarm %1 during the step test.").arg(code), code});
     });
     connect(drive, &Drive::stopRequested, this, [this] {
         if (isRunning() && !m_ownStop && m_result.moved)
@@ -84,13 +85,16 @@ StepTest::StepTest(Drive *drive, QObject *parent)
                       {ErrorCode::Cancelled, tr("The jog lease ran out and the drive stopped the axis.")});
     });
     connect(drive, &Drive::jogEnded, this, [this](const JogEnd &end) { m_jogEnd = end.message; });
-    connect(drive, &Drive::connectionLost, this, [this](const Error &why) {
-        if (!isRunning())
-            return;
-        m_linkLost = true;
-        abortWith(QStringLiteral("link-lost"),
-                  {ErrorCode::LinkClosed, tr("The link was lost during the step test (%1).").arg(why.message)});
-    });
+    connect(drive, &Drive::connectionLost, this, &StepTest::linkLost);
+}
+
+void StepTest::linkLost(const Error &why)
+{
+    if (!isRunning())
+        return;
+    m_linkLost = true;
+    abortWith(QStringLiteral("link-lost"),
+              {ErrorCode::LinkClosed, tr("The link was lost during the step test (%1).").arg(why.message)});
 }
 
 StepTest::~StepTest() = default;
@@ -139,8 +143,9 @@ Error StepTest::check(const Drive *drive, const StepSpec &spec, const StepLimits
     needed << (spec.kind == StepSpec::Kind::Position ? Capability::MoveRelative : Capability::Jog);
     for (Capability c : needed)
         if (!drive->hasCapability(c))
-            return {ErrorCode::NotSupported, tr("This drive cannot run a %1 step: %2")
-                                                 .arg(StepSpec::kindId(spec.kind), drive->unsupportedReason(c))};
+            return {
+                ErrorCode::NotSupported,
+                tr("This drive cannot run a %1 step: %2").arg(StepSpec::kindId(spec.kind), drive->unsupportedReason(c))};
     if (spec.returnToStart && !drive->hasCapability(Capability::MoveAbsolute)
         && !drive->hasCapability(Capability::MoveRelative))
         return {ErrorCode::NotSupported,
@@ -275,8 +280,8 @@ void StepTest::arm()
     connect(m_session, &CaptureSession::captured, this, &StepTest::onCaptured);
     connect(m_session, &CaptureSession::failed, this, [this](const Error &e) {
         abortWith(QStringLiteral("capture-failed"),
-                  {e.code == ErrorCode::None ? ErrorCode::Timeout : e.code,
-                   tr("The capture failed: %1").arg(e.message), e.driveCode});
+                  {e.code == ErrorCode::None ? ErrorCode::Timeout : e.code, tr("The capture failed: %1").arg(e.message),
+                   e.driveCode});
     });
     setPhase(Phase::Arming, tr("Capturing %1 before the motion.").arg(m_channels.join(QStringLiteral(", "))));
     m_session->start(settings, m_channels);
@@ -294,9 +299,10 @@ void StepTest::sendMotion()
     m_result.positionKnown = true;
     m_result.startPosition = m_start;
     m_result.endPosition = m_start;
-    setPhase(Phase::Moving, m_spec.kind == StepSpec::Kind::Position
-                                ? tr("Moving by %1 at %2.").arg(m_spec.distance).arg(m_spec.speed)
-                                : tr("Running at %1 for %2 s.").arg(m_spec.speed).arg(m_spec.durationS));
+    setPhase(Phase::Moving,
+             m_spec.kind == StepSpec::Kind::Position
+                 ? tr("Moving by %1 at %2.").arg(m_spec.distance).arg(m_spec.speed)
+                 : tr("Running at %1 for %2 s.").arg(m_spec.speed).arg(m_spec.durationS));
     m_result.moved = true;
     m_motionClock.start();
     m_limit.start(int(std::lround(m_limits.maxDurationS * 1000.0)));
@@ -396,9 +402,10 @@ bool StepTest::checkTravel(qint64 position)
     if (!m_startKnown || std::abs(double(position - m_start)) <= double(m_limits.maxTravel))
         return true;
     abortWith(QStringLiteral("travel-limit"),
-              {ErrorCode::Cancelled, tr("The axis travelled %1 from the start, beyond the maximum travel %2; stopped.")
-                                         .arg(position - m_start)
-                                         .arg(m_limits.maxTravel)});
+              {ErrorCode::Cancelled,
+               tr("The axis travelled %1 from the start, beyond the maximum travel %2; stopped.")
+                   .arg(position - m_start)
+                   .arg(m_limits.maxTravel)});
     return false;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 
 #include "core/common/error.h"
-#include "core/tuning/stepresult.h"
-#include "core/tuning/steplimits.h"
 #include "core/tuning/capturesettings.h"
+#include "core/tuning/steplimits.h"
+#include "core/tuning/stepresult.h"
 #include "core/tuning/stepspec.h"
 
 #include <QElapsedTimer>
@@ -57,6 +57,9 @@ public:
     Error start(const StepSpec &spec, const StepLimits &limits);
     // STOP: aborts a running test (the axis is stopped, finished() follows). No-op when idle.
     void abort(const QString &reason = QString());
+    // The link went away (the drive's connectionLost() does the same): aborts without a
+    // stop command; the result says what stops the axis (the drive's watchdog or nothing).
+    void linkLost(const Error &why);
     bool isRunning() const { return m_phase != Phase::Idle && m_phase != Phase::Done; }
     Phase phase() const { return m_phase; }
     const StepSpec &spec() const { return m_spec; }

@@ -95,7 +95,8 @@ void TestStepTest::initTestCase()
     m_drive = m_backend->drive(1);
     QVERIFY(m_drive);
     // The simulator's dictionary: its "tuning" group names the loop gains (P60..P65).
-    m_drive->setDictionary(std::make_shared<ParameterDictionary>(ParameterDictionary::bundledSimulator(Family::ServoCan)));
+    m_drive->setDictionary(
+        std::make_shared<ParameterDictionary>(ParameterDictionary::bundledSimulator(Family::ServoCan)));
 }
 
 void TestStepTest::cleanupTestCase()
@@ -181,8 +182,8 @@ void TestStepTest::abortsOnAnAlarmWithTheAxisStopped()
     StepTest test(m_drive);
     QSignalSpy finished(&test, &StepTest::finished);
     QVERIFY(!test.start(velocity(300, 1.0), limits()));
-    QVERIFY(waitUntil([&] { return test.phase() == StepTest::Phase::Moving && m_sim->motor().speedRpm() > 200; },
-                      3000));
+    QVERIFY(
+        waitUntil([&] { return test.phase() == StepTest::Phase::Moving && m_sim->motor().speedRpm() > 200; }, 3000));
     m_sim->injectAlarm(9);
     QVERIFY(finished.wait(5000));
     const StepResult r = finished.first().first().value<StepResult>();
@@ -199,8 +200,8 @@ void TestStepTest::abortsOnStopWithTheAxisStopped()
     StepTest test(m_drive);
     QSignalSpy finished(&test, &StepTest::finished);
     QVERIFY(!test.start(velocity(-400, 1.0), limits()));
-    QVERIFY(waitUntil([&] { return test.phase() == StepTest::Phase::Moving && m_sim->motor().speedRpm() < -300; },
-                      3000));
+    QVERIFY(
+        waitUntil([&] { return test.phase() == StepTest::Phase::Moving && m_sim->motor().speedRpm() < -300; }, 3000));
     // STOP from anywhere (the GUI's STOP button stops the drive itself).
     DriveReply *stop = m_drive->stop();
     QVERIFY(finished.wait(5000));

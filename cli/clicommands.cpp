@@ -67,6 +67,7 @@ QList<CliCommandSpec> CliCommands::specs()
           valued("record"), valued("pre"), valued("channels"), flag("no-return"), valued("notes"),
           valued("output", QLatin1Char('o'))}},
         {QStringLiteral("runs"), {}},
+        {QStringLiteral("apply-run"), {flag("dry-run"), flag("force")}},
         {QStringLiteral("spectrum"), {valued("peaks"), valued("from")}},
         {QStringLiteral("report"),
          {valued("output", QLatin1Char('o')), flag("all"), valued("from"), valued("to"), valued("runs"),
@@ -128,6 +129,8 @@ CliCommand *CliCommands::create(const QString &name, CliContext *context)
         return new StepCommand(context);
     if (name == QLatin1String("runs"))
         return new RunsCommand(context);
+    if (name == QLatin1String("apply-run"))
+        return new ApplyRunCommand(context);
     if (name == QLatin1String("spectrum"))
         return new SpectrumCommand(context);
     if (name == QLatin1String("stop"))

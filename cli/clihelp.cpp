@@ -88,6 +88,8 @@ QString CliHelp::commandList()
               "  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]\n"
               "                                 step-response test within limits, with metrics\n"
               "  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences\n"
+              "  apply-run RUN.ddrun [--dry-run] [--force]\n"
+              "                                 write the run's tuning parameters where they differ\n"
               "  spectrum RUN.ddrun CHANNEL [--peaks N]\n"
               "                                 a channel's spectrum and its peaks\n")
         + tr("  ping [--count N]               link health: turnaround, timeouts, errors, and\n"
@@ -252,6 +254,13 @@ QString CliHelp::command(const QString &name)
         return tr("Usage: drivedesk-cli runs RUN.ddrun [RUN2.ddrun ...]\n"
                   "The runs' metrics side by side, and the tuning parameters that differ between\n"
                   "consecutive runs with what the metrics did. Reads files only.\n");
+    if (name == QLatin1String("apply-run"))
+        return tr("Usage: drivedesk-cli [OPTIONS] apply-run RUN.ddrun [--dry-run] [--force]\n"
+                  "Write the tuning parameters the run was taken with (its snapshot) back to the\n"
+                  "drive, as restore does: only those that differ from the drive, each read back\n"
+                  "and reported verified or not. A run of another family, or whose parameters the\n"
+                  "dictionary does not know as such, is refused (exit 2, nothing sent); another\n"
+                  "firmware only with --force. --dry-run shows what would be written.\n");
     if (name == QLatin1String("spectrum"))
         return tr("Usage: drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ]\n"
                   "The channel's amplitude spectrum (Hann window; resolution stated) and its N\n"

@@ -1,5 +1,13 @@
 #include "cli/runcommands.h"
 
+#include "cli/clidescribe.h"
+#include "cli/clijournal.h"
+#include "cli/restoredescribe.h"
+#include "core/drive/drive.h"
+#include "core/params/parameterdictionary.h"
+#include "core/protocol/familytraits.h"
+#include "core/report/verificationjournal.h"
+#include "core/tuning/runparameterapply.h"
 #include "core/tuning/spectrum.h"
 
 #include <QJsonArray>
@@ -165,6 +173,77 @@ void SpectrumCommand::start()
              {QStringLiteral("peaks"), peaks},
              {QStringLiteral("notes"), QJsonArray::fromStringList(s.notes)}},
             lines.join(QLatin1Char('\n')));
+}
+
+// --- apply-run ---------------------------------------------------------------------------
+
+bool ApplyRunCommand::prepare(const CliInvocation &inv, QString *error)
+{
+    if (!expectArguments(inv, 1, 1, tr("RUN.ddrun"), error))
+        return false;
+    m_path = inv.positionals.at(0);
+    if (Error e = TuningRun::load(m_path, &m_run)) {
+        *error = e.message;
+        return false;
+    }
+    if (Error e = RunParameterApply::check(m_run, context()->globals.connection.family, *context()->dictionary)) {
+        *error = QStringLiteral("%1: %2").arg(m_path, e.message);
+        return false;
+    }
+    m_dryRun = inv.has(QStringLiteral("dry-run"));
+    m_force = inv.has(QStringLiteral("force"));
+    return true;
+}
+
+void ApplyRunCommand::start()
+{
+    m_apply = new RunParameterApply(drive(), this);
+    connect(m_apply, &RunParameterApply::finished, this, &ApplyRunCommand::report);
+    if (Error e = m_apply->apply(m_run, m_dryRun, m_force))
+        fail(e);
+}
+
+void ApplyRunCommand::interrupt(int)
+{
+    out()->note(tr("Finishing the writes in progress so that the report is complete; every write is verified as "
+                   "it goes."));
+}
+
+void ApplyRunCommand::report(const Error &error)
+{
+    const ParameterDictionary &dict = m_apply->dictionary();
+    const RestoreReport &r = m_apply->report();
+    QList<QPair<QString, QString>> rows;
+    QJsonObject json{{QStringLiteral("file"), m_path},
+                     {QStringLiteral("run"), m_run.label},
+                     {QStringLiteral("dryRun"), r.dryRun},
+                     {QStringLiteral("forced"), m_force},
+                     {QStringLiteral("snapshot"), int(m_run.tuning.size())},
+                     {QStringLiteral("selected"), RestoreDescribe::selected(dict, r, &rows)}};
+    RestoreDescribe::insertOutcomes(dict, r, &json);
+    if (!r.dryRun && !r.selected.isEmpty())
+        CliJournal::verification(
+            context(),
+            VerificationJournal::fromRestore(r, dict, m_path, BackupFile::checksum(m_apply->file().values())));
+    if (error) {
+        if (!r.selected.isEmpty() && !out()->isJson()) {
+            out()->line(CliDescribe::table(rows));
+            for (const QString &line : RestoreDescribe::incomplete(dict, r))
+                out()->line(line);
+        }
+        return fail(error, json);
+    }
+    if (r.selected.isEmpty())
+        return succeed(json, tr("The drive's tuning parameters already match %1; nothing to write.").arg(m_path));
+    QString text = CliDescribe::table(rows);
+    if (r.dryRun) {
+        text += tr("Dry run: %n parameter(s) would be written; nothing was sent.", nullptr, int(r.selected.size()));
+    } else {
+        text += tr("%n parameter(s) written and verified.", nullptr, int(r.written().size()));
+        if (familyTraits(context()->globals.connection.family).eeOperations)
+            out()->note(tr("The values are in the drive's RAM; `ee set` stores them to EEPROM."));
+    }
+    succeed(json, text);
 }
 
 } // namespace dd

@@ -48,3 +48,33 @@ private:
 };
 
 } // namespace dd
+
+namespace dd {
+
+class RunParameterApply;
+
+// drivedesk-cli apply-run RUN.ddrun [--dry-run] [--force]: writes the run's tuning snapshot
+// to the drive where it differs, each write read back, with a report like restore's.
+class ApplyRunCommand : public CliCommand
+{
+    Q_OBJECT
+public:
+    explicit ApplyRunCommand(CliContext *c)
+        : CliCommand(QStringLiteral("apply-run"), c)
+    {
+    }
+    bool prepare(const CliInvocation &inv, QString *error) override;
+    void start() override;
+    void interrupt(int) override;
+
+private:
+    void report(const Error &error);
+
+    QString m_path;
+    TuningRun m_run;
+    bool m_dryRun = false;
+    bool m_force = false;
+    RunParameterApply *m_apply = nullptr;
+};
+
+} // namespace dd

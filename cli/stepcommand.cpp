@@ -121,7 +121,8 @@ bool StepCommand::prepare(const CliInvocation &inv, QString *error)
         m_limits.maxDurationS = position ? PositionDurationS : m_spec.commandedSeconds() + StopAllowanceS;
     }
     if (inv.has(QStringLiteral("record"))) {
-        const auto r = CliValues::real(inv.value(QStringLiteral("record")), 0.01, 600, QStringLiteral("--record"), error);
+        const auto r = CliValues::real(inv.value(QStringLiteral("record")), 0.01, 600, QStringLiteral("--record"),
+                                       error);
         if (!r)
             return false;
         m_spec.recordS = *r;
@@ -190,9 +191,10 @@ void StepCommand::onFinished(const StepResult &r)
     QJsonObject json{{QStringLiteral("test"), StepSpec::testId(m_spec.kind)},
                      {QStringLiteral("outcome"), StepResult::outcomeId(r.outcome)},
                      {QStringLiteral("speed"), m_spec.speed},
-                     {QStringLiteral("limits"), QJsonObject{{QStringLiteral("maxSpeed"), m_limits.maxSpeed},
-                                                            {QStringLiteral("maxTravel"), double(m_limits.maxTravel)},
-                                                            {QStringLiteral("maxDuration"), m_limits.maxDurationS}}},
+                     {QStringLiteral("limits"),
+                      QJsonObject{{QStringLiteral("maxSpeed"), m_limits.maxSpeed},
+                                  {QStringLiteral("maxTravel"), double(m_limits.maxTravel)},
+                                  {QStringLiteral("maxDuration"), m_limits.maxDurationS}}},
                      {QStringLiteral("moved"), r.moved},
                      {QStringLiteral("stopConfirmed"), r.stopConfirmed},
                      {QStringLiteral("returnedToStart"), r.returnedToStart}};
@@ -265,7 +267,7 @@ void StepCommand::onFinished(const StepResult &r)
     }
     if (r.completed()) {
         lines << (r.returnedToStart ? tr("Back at the start position %1.").arg(r.startPosition)
-                  : !m_spec.returnToStart
+                      : !m_spec.returnToStart
                       ? tr("Left at %1 (--no-return; started at %2).").arg(r.endPosition).arg(r.startPosition)
                       : r.stopNote);
         return succeed(json, lines.join(QLatin1Char('\n')));

@@ -51,6 +51,8 @@ void ChannelSampler::start()
     m_clock.start();
     m_timer.start();
     tick();
+    if (m_continuous && m_running && pendingReads() < maxPendingReads())
+        read();
 }
 
 void ChannelSampler::stop()
@@ -127,7 +129,7 @@ void ChannelSampler::onReadFinished(DriveReply *reply)
     m_reads[at].values = reply->samples();
     const double timeS = elapsedSeconds();
     // Behind the rate: the next read goes out now, before the sample is handled.
-    if (m_behind && pendingReads() < maxPendingReads())
+    if ((m_behind || m_continuous) && pendingReads() < maxPendingReads())
         read();
     const quint64 run = m_run;
     while (m_running && run == m_run && !m_reads.isEmpty() && m_reads.first().arrived) {

@@ -40,6 +40,11 @@ public:
     QStringList channels() const { return m_channels; }
     void setIntervalMs(int ms);
     int intervalMs() const { return m_timer.interval(); }
+    // Continuous: as fast as the link allows, whatever the interval — the next read is
+    // asked for as soon as a reply is in, so that maxPendingReads() reads are always
+    // outstanding (a tuning capture). Off by default: one read a tick, as above.
+    void setContinuous(bool on) { m_continuous = on; }
+    bool isContinuous() const { return m_continuous; }
 
     void start();
     void stop();
@@ -77,7 +82,8 @@ private:
     QList<Read> m_reads; // in the order they went out; arrived ones wait for earlier ones
     bool m_running = false;
     bool m_behind = false; // a tick found the reads outstanding: read again on a reply
-    quint64 m_run = 0;     // start() / stop() count: a handler sees a restart
+    bool m_continuous = false;
+    quint64 m_run = 0; // start() / stop() count: a handler sees a restart
     quint64 m_samples = 0;
     quint64 m_skipped = 0;
 };

@@ -34,7 +34,8 @@ void CaptureSession::start(const CaptureSettings &settings, const QStringList &c
     m_watchingSent = false;
     m_recorder.arm(settings, channels);
     m_sampler->setChannels(channels);
-    m_sampler->setIntervalMs(1); // as fast as the link allows: the sampler pipelines and skips ticks
+    m_sampler->setIntervalMs(1);
+    m_sampler->setContinuous(true); // as fast as the link allows: two reads always outstanding
     m_sampler->start();
 }
 

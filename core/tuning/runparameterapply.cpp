@@ -23,8 +23,8 @@ Error RunParameterApply::check(const TuningRun &run, Family family, const Parame
     if (run.tuning.isEmpty())
         return {ErrorCode::InvalidArgument, tr("The run holds no tuning parameters to apply.")};
     if (familyFromId(run.family) != family)
-        return {ErrorCode::InvalidArgument, tr("The run was taken on a %1 drive; this drive is %2.")
-                                                .arg(run.family, familyId(family))};
+        return {ErrorCode::InvalidArgument,
+                tr("The run was taken on a %1 drive; this drive is %2.").arg(run.family, familyId(family))};
     for (const TuningSnapshotEntry &e : run.tuning) {
         const ParameterInfo *p = dict.byIndex(e.index);
         if (!p || p->key.compare(e.key, Qt::CaseInsensitive) != 0)

@@ -45,6 +45,7 @@
 #include "core/drive/drivereply.h"
 #include "core/link/wiretime.h"
 #include "core/trend/channelsampler.h"
+#include "core/tuning/capturesession.h"
 #include "sim/bench/simbench.h"
 #include "sim/bus/simcandevice.h"
 #include "sim/bus/simserialdevice.h"
@@ -573,6 +574,81 @@ void benchCanMonitor()
         floorUs, QStringLiteral("speed, torque, current, bus voltage: 4 pipelined reads"));
 }
 
+// A tuning capture (CaptureSession, as `capture` and the step tests take it: the trend's
+// ChannelSampler at 1 ms ticks, pipelined) of 4 servo-can channels for 2 s; with `jogging`
+// the simulated motor turns at 300 r/min meanwhile (the closed loop is integrated at
+// 0.1 ms steps, as during a step test). The target: >= 95 % of the link's rate.
+void benchCanCapture(bool jogging)
+{
+    const QString name = jogging ? QStringLiteral("capture servo-can @ 1 Mbit/s, jogging")
+                                 : QStringLiteral("capture servo-can @ 1 Mbit/s");
+    if (!wanted(name))
+        return;
+    SimBenchOptions o;
+    o.family = Family::ServoCan;
+    o.can = QStringLiteral("virtualcan:auto");
+    const double floorUs = canMonitorSampleUs(4, 1000000, SimCanDevice::DefaultLatencyUs);
+    auto s = standUp(o);
+    if (s->error)
+        return addFailure(name, QString(), 1 / 0.95, s->error);
+    const QStringList channels = {QStringLiteral("speed"), QStringLiteral("speed-command"), QStringLiteral("torque"),
+                                  QStringLiteral("current")};
+    QTimer renew;
+    QObject::connect(&renew, &QTimer::timeout, s->drive, &Drive::renewJogLease);
+    if (jogging) {
+        if (Error e = await(s->drive->jog(300), 2000))
+            return addFailure(name, QString(), 1 / 0.95, e);
+        renew.start(100);
+    }
+    QList<double> runs, each;
+    int gaps = 0;
+    for (int i = 0; i < g_runs; ++i) {
+        CaptureSession session(s->drive);
+        CaptureData data;
+        Error failure;
+        QObject::connect(&session, &CaptureSession::captured, &session, [&data](const CaptureData &c) { data = c; });
+        QObject::connect(&session, &CaptureSession::failed, &session, [&failure](const Error &e) { failure = e; });
+        CaptureSettings settings;
+        settings.durationS = 2.0;
+        session.start(settings, channels);
+        waitForSignal(&session, &CaptureSession::captured, 5000);
+        if (failure || data.time.size() < 3)
+            return addFailure(name, QString(), 1 / 0.95,
+                              failure ? failure : Error{ErrorCode::Timeout, QStringLiteral("no capture")});
+        for (qsizetype k = 2; k < data.time.size(); ++k)
+            each << (data.time.at(k) - data.time.at(k - 2)) * 1000 / 2;
+        runs << (data.time.last() - data.time.first()) * 1000 / double(data.time.size() - 1);
+        gaps += int(data.gaps.size());
+    }
+    if (jogging) {
+        renew.stop();
+        await(s->drive->stop(), 2000);
+    }
+    const Stats st = statsOf(runs);
+    Row r;
+    r.name = name;
+    r.measured = QStringLiteral("%1 Hz (best %2)").arg(1000 / st.median, 0, 'f', 0).arg(1000 / st.min, 0, 'f', 0);
+    r.floor = QStringLiteral("%1 Hz").arg(1e6 / floorUs, 0, 'f', 0);
+    r.ratio = st.median / (floorUs / 1000);
+    r.limit = 1 / 0.95;
+    r.medianMs = st.median;
+    const double typicalMs = statsOf(each).median;
+    r.note = QStringLiteral("speed, speed command, torque, current; %1 % of the link's rate (typical sample %2 ms = "
+                            "%3 %); %4 gap(s) in %5 captures of 2 s")
+                 .arg(100 / r.ratio, 0, 'f', 0)
+                 .arg(typicalMs, 0, 'f', 2)
+                 .arg(100 * floorUs / 1000 / typicalMs, 0, 'f', 0)
+                 .arg(gaps)
+                 .arg(g_runs);
+    g_rows.append(r);
+    QStringList rates;
+    for (double v : runs)
+        rates << QString::number(1000 / v, 'f', 0);
+    out(QStringLiteral("  %1: runs [%2] Hz, floor %3 Hz")
+            .arg(name, rates.join(QStringLiteral(", ")))
+            .arg(1e6 / floorUs, 0, 'f', 0));
+}
+
 // Shuoke steppers report speed but no torque, current or bus voltage.
 void benchShuokeMonitor()
 {
@@ -642,6 +718,8 @@ int main(int argc, char **argv)
     benchModbusMonitor(115200);
     benchModbusMonitor(9600);
     benchCanMonitor();
+    benchCanCapture(false);
+    benchCanCapture(true);
     benchShuokeMonitor();
 
     printTable();

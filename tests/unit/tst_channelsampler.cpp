@@ -99,6 +99,7 @@ private slots:
     void slowLinkSkipsTicks();
     void behindTheRateReadsBackToBack();
     void slowLinkGetsTwoReadsPipelined();
+    void continuousKeepsTheLinkBusyWhateverTheRate();
     void overtakingReplyWaitsForTheEarlierRead();
     void stopIgnoresRepliesOnTheirWay();
     void firstErrorStops();
@@ -194,6 +195,28 @@ void TestChannelSampler::slowLinkGetsTwoReadsPipelined()
         QVERIFY(t >= lastT);
         lastT = t;
     }
+}
+
+void TestChannelSampler::continuousKeepsTheLinkBusyWhateverTheRate()
+{
+    // A capture asks for as fast as the link allows: reads of 2 ms with ticks every 200 ms
+    // would leave the link idle between ticks; continuous keeps two reads out all along.
+    ChannelDrive drive;
+    drive.serial = true;
+    drive.latencyMs = 2;
+    ChannelSampler s(&drive);
+    s.setIntervalMs(200);
+    s.setContinuous(true);
+    QSignalSpy spy(&s, &ChannelSampler::sampled);
+    s.start();
+    while (spy.count() < 20 && spy.wait(1000)) {
+    }
+    s.stop();
+    QVERIFY(spy.count() >= 20);
+    QCOMPARE(drive.maxOutstanding, 2);
+    QCOMPARE(drive.idleGaps, 0);
+    for (int k = 0; k < spy.count(); ++k)
+        QCOMPARE(spy.at(k).at(1).value<Samples>().value(QStringLiteral("speed")), (k + 1) * 10.0);
 }
 
 void TestChannelSampler::overtakingReplyWaitsForTheEarlierRead()

@@ -68,7 +68,7 @@ QList<CliCommandSpec> CliCommands::specs()
           valued("output", QLatin1Char('o'))}},
         {QStringLiteral("runs"), {}},
         {QStringLiteral("apply-run"), {flag("dry-run"), flag("force")}},
-        {QStringLiteral("spectrum"), {valued("peaks"), valued("from")}},
+        {QStringLiteral("spectrum"), {valued("peaks"), valued("from"), valued("between")}},
         {QStringLiteral("report"),
          {valued("output", QLatin1Char('o')), flag("all"), valued("from"), valued("to"), valued("runs"),
           valued("header"), valued("json-out"), valued("page-size")}},

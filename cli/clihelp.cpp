@@ -262,9 +262,11 @@ QString CliHelp::command(const QString &name)
                   "dictionary does not know as such, is refused (exit 2, nothing sent); another\n"
                   "firmware only with --force. --dry-run shows what would be written.\n");
     if (name == QLatin1String("spectrum"))
-        return tr("Usage: drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ]\n"
+        return tr("Usage: drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ] [--between T1:T2]\n"
                   "The channel's amplitude spectrum (Hann window; resolution stated) and its N\n"
-                  "highest peaks (default 5), at HZ and above with --from. Reads files only.\n");
+                  "highest peaks (default 5), at HZ and above with --from, of the samples from T1\n"
+                  "to T2 seconds after the trigger with --between (e.g. after a step's own\n"
+                  "transient, where its ringing shows a resonance). Reads files only.\n");
     if (name == QLatin1String("report"))
         return tr("Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--header FILE.json]\n"
                   "                     [--json-out RECORD.json] [--page-size a4|letter]\n"

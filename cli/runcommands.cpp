@@ -131,6 +131,20 @@ bool SpectrumCommand::prepare(const CliInvocation &inv, QString *error)
             return false;
         }
     }
+    if (inv.has(QStringLiteral("between"))) {
+        const QStringList parts = inv.value(QStringLiteral("between")).split(QLatin1Char(':'));
+        bool ok1 = false, ok2 = false;
+        if (parts.size() == 2) {
+            m_t1 = parts.at(0).toDouble(&ok1);
+            m_t2 = parts.at(1).toDouble(&ok2);
+        }
+        if (!ok1 || !ok2 || !std::isfinite(m_t1) || !std::isfinite(m_t2) || m_t1 >= m_t2) {
+            *error = tr("--between must be T1:T2, seconds from the trigger with T1 < T2 (e.g. 0.05:0.3), not \"%1\".")
+                         .arg(inv.value(QStringLiteral("between")));
+            return false;
+        }
+        m_between = true;
+    }
     if (Error e = TuningRun::load(inv.positionals.at(0), &m_run)) {
         *error = e.message;
         return false;
@@ -147,7 +161,21 @@ bool SpectrumCommand::prepare(const CliInvocation &inv, QString *error)
 void SpectrumCommand::start()
 {
     QString why;
-    const Spectrum s = Spectrum::compute(m_run.capture, m_channel, m_peaks, &why, m_fromHz);
+    Spectrum s;
+    if (m_between) {
+        // Only the stretch asked for, e.g. after a step's own transient.
+        const CaptureData &c = m_run.capture;
+        const QVector<double> &column = c.columns.at(c.columnOf(m_channel));
+        QVector<double> time, values;
+        for (int i = 0; i < c.time.size(); ++i)
+            if (c.time.at(i) >= m_t1 && c.time.at(i) <= m_t2) {
+                time << c.time.at(i);
+                values << column.at(i);
+            }
+        s = Spectrum::compute(time, values, m_peaks, &why, m_fromHz);
+    } else {
+        s = Spectrum::compute(m_run.capture, m_channel, m_peaks, &why, m_fromHz);
+    }
     if (s.isEmpty()) {
         fail({ErrorCode::InvalidArgument, why}, {}, CliExit::Usage);
         return;

@@ -45,6 +45,9 @@ private:
     QString m_channel;
     int m_peaks = 5;
     double m_fromHz = 0.0;
+    bool m_between = false; // --between T1:T2: only the samples of that stretch
+    double m_t1 = 0.0;
+    double m_t2 = 0.0;
 };
 
 } // namespace dd

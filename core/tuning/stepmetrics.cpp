@@ -17,6 +17,17 @@ double crossing(double t0, double v0, double t1, double v1, double level)
     return t0 + (level - v0) / (v1 - v0) * (t1 - t0);
 }
 
+// The longest interval between consecutive samples from..to (indices into t), the ones a
+// metric measured over that stretch rests on: a stall elsewhere in the record does not
+// make it less certain.
+double longestInterval(const QVector<double> &t, int from, int to)
+{
+    double worst = 0.0;
+    for (int i = std::max(from, 1); i <= to && i < t.size(); ++i)
+        worst = std::max(worst, t.at(i) - t.at(i - 1));
+    return worst;
+}
+
 QString ms(double seconds)
 {
     return QString::number(seconds * 1000.0, 'g', 3);
@@ -72,7 +83,6 @@ StepMetrics StepMetrics::compute(const CaptureData &c, const Input &in)
 {
     StepMetrics m;
     const double dt = c.interval.count > 0 ? c.interval.mean : Nan;
-    const double worst = c.interval.count > 0 ? c.interval.max : Nan;
     if (std::isfinite(dt)) {
         m.sampleInterval.value = dt;
         m.sampleInterval.resolution = 0.0;
@@ -161,12 +171,12 @@ StepMetrics StepMetrics::compute(const CaptureData &c, const Input &in)
     if (!std::isfinite(t10) || !std::isfinite(t90)) {
         m.riseTime.reason = tr("the response never reached 90 % of the step");
         m.overshoot.reason = m.riseTime.reason;
-    } else if (n90 - n10 < 1 || t90 - t10 < 2.0 * worst) {
+    } else if (const double around = longestInterval(t, n10, n90); n90 - n10 < 1 || t90 - t10 < 2.0 * around) {
         // Fewer than two intervals between the 10 % and 90 % crossings: the interpolation
         // says more than the samples do, and a peak between samples would be missed.
         m.riseTime.reason = tr("the rise is shorter than two sample intervals (%1 ms): not resolvable at this "
                                "sample rate")
-                                .arg(ms(worst));
+                                .arg(ms(around));
         m.overshoot.reason = m.riseTime.reason;
     } else {
         m.riseTime.value = t90 - t10;
@@ -196,10 +206,11 @@ StepMetrics StepMetrics::compute(const CaptureData &c, const Input &in)
             if (lastOutside + 1 < 2)
                 metric->reason.clear();
         }
-        if (metric->value && *metric->value < 2.0 * worst) {
+        const double around = longestInterval(t, 1, std::max(lastOutside + 1, 1));
+        if (metric->value && *metric->value < 2.0 * around) {
             metric->value.reset();
             metric->reason = tr("settles within two sample intervals (%1 ms): not resolvable at this sample rate")
-                                 .arg(ms(worst));
+                                 .arg(ms(around));
         }
     }
     return m;

@@ -423,6 +423,7 @@ void StepTest::waitAtRest()
 {
     setPhase(Phase::Stopping, tr("Waiting for the axis to come to rest."));
     m_atRestPolls = 0;
+    m_havePolledPosition = false;
     pollAtRest();
 }
 
@@ -444,9 +445,9 @@ void StepTest::pollAtRest()
         }
         if (s.positionValid && !checkTravel(s.position))
             return;
-        m_atRestPolls = s.running ? 0 : m_atRestPolls + 1;
-        // At rest twice in a row: the first status at rest can carry reads taken while the
-        // axis still settled.
+        countRest(s);
+        // At rest twice: the first status at rest can carry reads taken while the axis
+        // still settled.
         if (m_atRestPolls >= 2) {
             m_limit.stop();
             m_result.stopConfirmed = true;
@@ -457,6 +458,23 @@ void StepTest::pollAtRest()
                 pollAtRest();
         });
     });
+}
+
+void StepTest::countRest(const DriveStatus &s)
+{
+    // A drive's "in position" may flicker while a disturbance trembles the shaft at rest
+    // (a count either way): a running status without real movement does not start the count
+    // again, a status at rest counts when the position held since the last one.
+    const bool held = !s.positionValid || !m_havePolledPosition
+        || std::abs(double(s.position - m_polledPosition)) <= 2.0;
+    if (s.positionValid) {
+        m_polledPosition = s.position;
+        m_havePolledPosition = true;
+    }
+    if (!held)
+        m_atRestPolls = 0;
+    else if (!s.running)
+        ++m_atRestPolls;
 }
 
 void StepTest::afterRest()
@@ -545,6 +563,7 @@ void StepTest::goBack()
     // The way back is as long as the way out at the test's speed: allow the test's time.
     m_limit.start(int(std::lround(m_limits.maxDurationS * 1000.0)));
     m_atRestPolls = 0;
+    m_havePolledPosition = false;
     m_sawRunning = false;
     m_motionClock.start();
     watch(r, [this](DriveReply *r) {
@@ -576,12 +595,9 @@ void StepTest::pollBack()
         }
         if (s.positionValid)
             m_result.endPosition = s.position;
-        if (s.running) {
+        if (s.running)
             m_sawRunning = true;
-            m_atRestPolls = 0;
-        } else {
-            ++m_atRestPolls;
-        }
+        countRest(s);
         const bool there = s.positionValid && std::abs(double(s.position - m_start)) <= 1.0;
         if ((m_sawRunning && m_atRestPolls >= 2) || (m_atRestPolls >= 3 && (there || m_motionClock.elapsed() >= 300))) {
             m_limit.stop();
@@ -639,6 +655,7 @@ void StepTest::abortWith(const QString &cause, const Error &error)
             return finish(StepResult::Outcome::Aborted);
         }
         m_atRestPolls = 0;
+        m_havePolledPosition = false;
         m_emergencySent = false;
         m_motionClock.start();
         confirmStopped();
@@ -658,7 +675,7 @@ void StepTest::confirmStopped()
         const DriveStatus s = r->status();
         if (s.positionValid)
             m_result.endPosition = s.position;
-        m_atRestPolls = s.running ? 0 : m_atRestPolls + 1;
+        countRest(s);
         if (m_atRestPolls >= 2) {
             m_result.stopConfirmed = true;
             m_result.stopNote = tr("The axis stopped at %1 (%2 from the start).")

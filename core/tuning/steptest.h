@@ -18,6 +18,7 @@ class CaptureSession;
 class Drive;
 class DriveReply;
 struct ChannelInfo;
+struct DriveStatus;
 
 // A step-response test on a live drive (docs/tuning.md), for the CLI's `step` and the GUI's
 // Tuning tab:
@@ -90,6 +91,7 @@ private:
     void onCaptured(const CaptureData &capture);
     void waitAtRest();
     void pollAtRest();
+    void countRest(const DriveStatus &status);
     void afterRest();
     void buildRun();
     void goBack();
@@ -126,8 +128,10 @@ private:
     bool m_ownStop = false; // our own stop() is being sent (not a STOP from elsewhere)
     bool m_emergencySent = false;
     bool m_sawRunning = false;
-    QString m_jogEnd; // the drive's word on how the last jog ended
-    int m_atRestPolls = 0;
+    QString m_jogEnd;      // the drive's word on how the last jog ended
+    int m_atRestPolls = 0; // statuses at rest with the position held
+    bool m_havePolledPosition = false;
+    qint64 m_polledPosition = 0;
     quint64 m_generation = 0; // replies of an earlier test are ignored
 };
 

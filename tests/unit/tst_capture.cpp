@@ -205,6 +205,28 @@ private slots:
         QVERIFY(std::abs(*m.settlingTime5.value - settleTime(y, 0.05, 1.0)) <= dt);
     }
 
+    void aStallAfterTheRiseDoesNotHideIt()
+    {
+        // A 25 ms stall of the link long after the rise (a loaded host): the rise and the
+        // settling rest on the 1 ms samples around them and are still measured.
+        const double tau = 0.004, dt = 0.001;
+        auto y = [tau](double t) { return 1.0 - std::exp(-t / tau); };
+        CaptureData c = synthetic(y, dt, 0.02, 0.3);
+        for (int i = c.time.size() - 1; i >= 0; --i)
+            if (c.time.at(i) > 0.2 && c.time.at(i) < 0.225) {
+                c.time.remove(i);
+                c.columns[0].remove(i);
+            }
+        c.interval = IntervalStats::of(c.time);
+        QVERIFY(c.interval.max > 0.02);
+        StepMetrics::Input in;
+        in.target = 1.0;
+        const StepMetrics m = StepMetrics::compute(c, in);
+        QVERIFY2(m.riseTime.value, qPrintable(m.riseTime.reason));
+        QVERIFY(std::abs(*m.riseTime.value - tau * std::log(9.0)) <= dt);
+        QVERIFY2(m.settlingTime2.value, qPrintable(m.settlingTime2.reason));
+    }
+
     void slowSamplingSaysSoInsteadOfANumber()
     {
         // Shuoke over RTU samples at ~18 Hz: a 5 ms rise cannot be measured.

@@ -251,7 +251,7 @@
     </message>
     <message>
         <source>%1: field &quot;scope&quot; must be &quot;all&quot; or &quot;%2&quot; (found &quot;%3&quot;)</source>
-        <translation>%1：字段 "scope" 必须是 "all" 或 "%2"（实际为 "%3"）</translation>
+        <translation>%1：字段 &quot;scope&quot; 必须是 &quot;all&quot; 或 &quot;%2&quot;（实际为 &quot;%3&quot;）</translation>
     </message>
 </context>
 <context>
@@ -1878,7 +1878,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
     <message>
         <source>%1 must be an object with &quot;key&quot; and &quot;role&quot;</source>
-        <translation>%1 必须是包含 "key" 和 "role" 的对象</translation>
+        <translation>%1 必须是包含 &quot;key&quot; 和 &quot;role&quot; 的对象</translation>
     </message>
     <message>
         <source>%1: no parameter has the key &quot;%2&quot;</source>
@@ -4672,7 +4672,7 @@ Servo enable on or off.
     </message>
     <message>
         <source>&quot;%1&quot; works on one drive: give one --address. backup, restore and diff take several (--address 1,2,5).</source>
-        <translation>"%1" 只作用于一台驱动器：请只给一个 --address。backup、restore 和 diff 可接受多个（--address 1,2,5）。</translation>
+        <translation>&quot;%1&quot; 只作用于一台驱动器：请只给一个 --address。backup、restore 和 diff 可接受多个（--address 1,2,5）。</translation>
     </message>
     <message>
         <source>--sim-resonance-hz must be a frequency from 1 to 1000 Hz, not &quot;%1&quot;.</source>
@@ -4715,78 +4715,12 @@ Servo enable on or off.
   --timeout MS                   线路传输时间之外的应答等待余量
   --retries N                    超时后的额外重试次数
   --dictionary FILE              参数字典（名称、范围、单位）；
-                                 "simulator"：模拟器的参数字典，含其环路增益
+                                 &quot;simulator&quot;：模拟器的参数字典，含其环路增益
   --option FAMILY.KEY=VALUE      协议文档未明确之处的系列设置，例如
                                  shuoke.checksum=twos-complement、
                                  servo-modbus.positionRule=decimal10000
                                  （可重复；见 docs/cli.md）
   --sim                          使用内置模拟器代替硬件（见下文“模拟器”）
-</translation>
-    </message>
-    <message>
-        <source>Commands:
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 find drives: family, address, baud, firmware, state
-  info                           identity, firmware, state, alarm, capabilities
-  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
-  set PARAM=VALUE ...            validate, write, read back, report verified or not
-  backup -o FILE [--changed-only] every readable parameter to a backup file
-  backup (--all | --address 1,2,5) -o DIR
-                                 one file per drive, FAMILY-ADDRESS.json, and index.json
-  diff FILE | diff A B           compare; A, B = FILE, drive, drive:ADDRESS or defaults
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 write the differences, verify each
-  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
-                                 the same to several drives, each at its address
-  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 sample live values (Ctrl-C ends)
-  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 move, and wait until the axis is at rest
-  stop [--emergency]             stop (emergency stop where the family has one)
-  enable on|off                  servo enable on or off
-  clear-alarm                    clear the alarm and check that it is gone
-  home [--positive] [--no-wait]  homing, negative direction first
-  channels                       the monitor channels this drive offers
-  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
-          [--mode single|auto] [--timeout S] -o RUN.ddrun
-                                 triggered capture to a run file
-  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences
-  spectrum RUN.ddrun CHANNEL [--peaks N]
-                                 a channel&apos;s spectrum and its peaks
-</source>
-        <translation>命令：
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 查找驱动器：系列、地址、波特率、固件、状态
-  info                           标识、固件、状态、报警、支持的功能
-  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
-  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
-  backup -o FILE [--changed-only] 将全部可读参数备份到文件
-  backup (--all | --address 1,2,5) -o DIR
-                                 每台驱动器一个文件 FAMILY-ADDRESS.json，另有 index.json
-  diff FILE | diff A B           比较；A、B 为 FILE、drive、drive:ADDRESS 或 defaults
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 写入有差异的参数，并逐个校验
-  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
-                                 同上，写入多台驱动器，各用其自己的地址
-  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 采样实时值（Ctrl-C 结束）
-  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 定位运动，并等待轴静止
-  stop [--emergency]             停止（该系列支持时可急停）
-  enable on|off                  伺服使能开或关
-  clear-alarm                    清除报警并确认报警已消除
-  home [--positive] [--no-wait]  回零，先向负方向
-  channels                       该驱动器提供的监控通道
-  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
-          [--mode single|auto] [--timeout S] -o RUN.ddrun
-                                 触发采集，保存为运行记录文件
-  runs RUN.ddrun [RUN2.ddrun ...] 并列比较指标，列出参数差异
-  spectrum RUN.ddrun CHANNEL [--peaks N]
-                                 通道的频谱及其峰值
 </translation>
     </message>
     <message>
@@ -4832,7 +4766,7 @@ Servo enable on or off.
   --sim-motion                   模拟驱动器自行运动（用于 monitor 演示；
                                  仅限该系列的模拟器支持时）
   --sim-resonance-hz F           模拟负载在 F Hz 处发生谐振（1..1000）
-  使用 --sim 时采用模拟器的参数字典：其 "tuning" 组列出模拟器自身的
+  使用 --sim 时采用模拟器的参数字典：其 &quot;tuning&quot; 组列出模拟器自身的
   环路增益（docs/tuning.md）。
 </translation>
     </message>
@@ -4938,16 +4872,6 @@ consecutive runs with what the metrics did. Reads files only.
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ]
-The channel&apos;s amplitude spectrum (Hann window; resolution stated) and its N
-highest peaks (default 5), at HZ and above with --from. Reads files only.
-</source>
-        <translation>用法：drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ]
-该通道的幅值频谱（Hann 窗；注明分辨率）及其 N 个最高峰值（默认 5 个），
-使用 --from 时只取 HZ 及以上的峰值。只读取文件。
-</translation>
-    </message>
-    <message>
         <source>Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--header FILE.json]
                      [--json-out RECORD.json] [--page-size a4|letter]
 The commissioning record of the drive at --address (--all: of every drive a scan
@@ -4968,6 +4892,148 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
 --all [--from A] [--to B]：扫描的地址范围（默认：该系列的范围）。
 --header：从 JSON 文件读取机器、客户、现场、工程师、备注。
 --runs RUN.ddrun,...：调试运行记录（本版本尚不支持）。
+</translation>
+    </message>
+    <message>
+        <source>Commands:
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 find drives: family, address, baud, firmware, state
+  info                           identity, firmware, state, alarm, capabilities
+  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
+  set PARAM=VALUE ...            validate, write, read back, report verified or not
+  backup -o FILE [--changed-only] every readable parameter to a backup file
+  backup (--all | --address 1,2,5) -o DIR
+                                 one file per drive, FAMILY-ADDRESS.json, and index.json
+  diff FILE | diff A B           compare; A, B = FILE, drive, drive:ADDRESS or defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 write the differences, verify each
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 the same to several drives, each at its address
+  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 sample live values (Ctrl-C ends)
+  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 move, and wait until the axis is at rest
+  stop [--emergency]             stop (emergency stop where the family has one)
+  enable on|off                  servo enable on or off
+  clear-alarm                    clear the alarm and check that it is gone
+  home [--positive] [--no-wait]  homing, negative direction first
+  channels                       the monitor channels this drive offers
+  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
+          [--mode single|auto] [--timeout S] -o RUN.ddrun
+                                 triggered capture to a run file
+  step velocity SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+  step position DISTANCE --speed V --max-travel N [-o RUN.ddrun]
+  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+                                 step-response test within limits, with metrics
+  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences
+  apply-run RUN.ddrun [--dry-run] [--force]
+                                 write the run&apos;s tuning parameters where they differ
+  spectrum RUN.ddrun CHANNEL [--peaks N]
+                                 a channel&apos;s spectrum and its peaks
+</source>
+        <translation>命令：
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 查找驱动器：系列、地址、波特率、固件、状态
+  info                           标识、固件、状态、报警、支持的功能
+  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
+  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
+  backup -o FILE [--changed-only] 将全部可读参数备份到文件
+  backup (--all | --address 1,2,5) -o DIR
+                                 每台驱动器一个文件 FAMILY-ADDRESS.json，另有 index.json
+  diff FILE | diff A B           比较；A、B 为 FILE、drive、drive:ADDRESS 或 defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 写入有差异的参数，并逐个校验
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 同上，写入多台驱动器，各用其自己的地址
+  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 采样实时值（Ctrl-C 结束）
+  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 定位运动，并等待轴静止
+  stop [--emergency]             停止（该系列支持时可急停）
+  enable on|off                  伺服使能开或关
+  clear-alarm                    清除报警并确认报警已消除
+  home [--positive] [--no-wait]  回零，先向负方向
+  channels                       该驱动器提供的监控通道
+  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
+          [--mode single|auto] [--timeout S] -o RUN.ddrun
+                                 触发采集，保存为运行记录文件
+  step velocity SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+  step position DISTANCE --speed V --max-travel N [-o RUN.ddrun]
+  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+                                 在限值内进行阶跃响应测试，给出指标
+  runs RUN.ddrun [RUN2.ddrun ...] 并列比较指标，列出参数差异
+  apply-run RUN.ddrun [--dry-run] [--force]
+                                 将运行记录的调谐参数写入有差异之处
+  spectrum RUN.ddrun CHANNEL [--peaks N]
+                                 通道的频谱及其峰值
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] step velocity SPEED --duration S --max-speed V --max-travel N
+       drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]
+       drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N
+          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
+          [--notes TEXT] [-o RUN.ddrun]
+velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.
+reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.
+The limits are required (exit 2, nothing sent, without them): --max-speed (the
+speed unit; a position step: 1.5 x --speed unless given), --max-travel from the
+start position (counts), --max-duration until the axis is at rest (default: the
+step&apos;s time + 2 s; position 10 s). The captured speed and position are watched
+against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends
+the test with exit code 1. The capture runs from --pre (0.05 s) before the motion
+command for --record seconds (default: the step&apos;s time + 0.3 s; position 1 s).
+A completed test returns to its start position (--no-return: it stays), prints
+the metrics with their resolution or why they cannot be resolved, and saves the
+run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).
+</source>
+        <translation>用法：drivedesk-cli [选项] step velocity SPEED --duration S --max-speed V --max-travel N
+      drivedesk-cli [选项] step position DISTANCE --speed V --max-travel N [--max-speed V]
+      drivedesk-cli [选项] step reversal SPEED --duration S --max-speed V --max-travel N
+          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
+          [--notes TEXT] [-o RUN.ddrun]
+velocity：以 SPEED 运行 S 秒后停止。position：以速度 V 相对移动 DISTANCE。
+reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止。
+限值为必填（缺少时退出码 2，不发送任何内容）：--max-speed（速度单位；定位阶跃
+未给出时为 --speed 的 1.5 倍）、--max-travel 距起始位置的最大行程（脉冲数）、
+--max-duration 到轴静止的最长时间（默认：阶跃时间 + 2 秒；定位 10 秒）。
+采集到的速度和位置按这些限值监视；报警、超出限值、Ctrl-C 或链路断开都会停止
+轴并以退出码 1 结束测试。采集从运动指令前 --pre（0.05 秒）开始，持续 --record
+秒（默认：阶跃时间 + 0.3 秒；定位 1 秒）。测试完成后回到起始位置（--no-return：
+留在原处），打印各项指标及其分辨率或无法分辨的原因，并将运行记录连同从驱动器
+读取的调谐参数保存到 RUN.ddrun（docs/tuning.md）。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] apply-run RUN.ddrun [--dry-run] [--force]
+Write the tuning parameters the run was taken with (its snapshot) back to the
+drive, as restore does: only those that differ from the drive, each read back
+and reported verified or not. A run of another family, or whose parameters the
+dictionary does not know as such, is refused (exit 2, nothing sent); another
+firmware only with --force. --dry-run shows what would be written.
+</source>
+        <translation>用法：drivedesk-cli [选项] apply-run RUN.ddrun [--dry-run] [--force]
+将运行记录采集时的调谐参数（其快照）写回驱动器，方式与 restore 相同：只写入与
+驱动器不同的参数，每个都回读并报告是否校验通过。其他系列的运行记录，或参数字典
+不再认得其参数的运行记录会被拒绝（退出码 2，不发送任何内容）；固件不同时需加
+--force。--dry-run 显示将要写入的内容。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ] [--between T1:T2]
+The channel&apos;s amplitude spectrum (Hann window; resolution stated) and its N
+highest peaks (default 5), at HZ and above with --from, of the samples from T1
+to T2 seconds after the trigger with --between (e.g. after a step&apos;s own
+transient, where its ringing shows a resonance). Reads files only.
+</source>
+        <translation>用法：drivedesk-cli spectrum RUN.ddrun CHANNEL [--peaks N] [--from HZ] [--between T1:T2]
+该通道的幅值频谱（Hann 窗；注明分辨率）及其 N 个最高峰值（默认 5 个），
+使用 --from 时只取 HZ 及以上的峰值，使用 --between 时只取触发后 T1 到 T2 秒的
+采样（例如阶跃自身的过渡过程之后，其振荡会显出共振）。只读取文件。
 </translation>
     </message>
 </context>
@@ -5822,23 +5888,23 @@ then log out and log in again (or restart the computer).</source>
     </message>
     <message>
         <source>%1: a header file is one JSON object, e.g. {&quot;machine&quot;: &quot;Press 3&quot;, &quot;engineer&quot;: &quot;Li Wei&quot;}.</source>
-        <translation>%1：表头文件是一个 JSON 对象，例如 {"machine": "Press 3", "engineer": "Li Wei"}。</translation>
+        <translation>%1：表头文件是一个 JSON 对象，例如 {&quot;machine&quot;: &quot;Press 3&quot;, &quot;engineer&quot;: &quot;Li Wei&quot;}。</translation>
     </message>
     <message>
         <source>%1: unknown field &quot;%2&quot;; a header has the fields %3.</source>
-        <translation>%1：未知字段 "%2"；表头的字段为 %3。</translation>
+        <translation>%1：未知字段 &quot;%2&quot;；表头的字段为 %3。</translation>
     </message>
     <message>
         <source>%1: the field &quot;%2&quot; must be text (a JSON string).</source>
-        <translation>%1：字段 "%2" 必须是文本（JSON 字符串）。</translation>
+        <translation>%1：字段 &quot;%2&quot; 必须是文本（JSON 字符串）。</translation>
     </message>
     <message>
         <source>%1: the field &quot;%2&quot; is %3 characters long; at most %4 are allowed.</source>
-        <translation>%1：字段 "%2" 长 %3 个字符；最多允许 %4 个。</translation>
+        <translation>%1：字段 &quot;%2&quot; 长 %3 个字符；最多允许 %4 个。</translation>
     </message>
     <message>
         <source>%1: the field &quot;%2&quot; holds a control character (U+%3).</source>
-        <translation>%1：字段 "%2" 含有控制字符（U+%3）。</translation>
+        <translation>%1：字段 &quot;%2&quot; 含有控制字符（U+%3）。</translation>
     </message>
 </context>
 <context>
@@ -6480,7 +6546,7 @@ then log out and log in again (or restart the computer).</source>
     </message>
     <message>
         <source>report --page-size: &quot;%1&quot; is not a page size; use a4 or letter.</source>
-        <translation>report --page-size："%1" 不是纸张尺寸；请用 a4 或 letter。</translation>
+        <translation>report --page-size：&quot;%1&quot; 不是纸张尺寸；请用 a4 或 letter。</translation>
     </message>
     <message>
         <source>report: --from and --to limit the scan of --all; without --all the record is of --address.</source>
@@ -6589,6 +6655,10 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>Spectrum of %1: %2 points at %3 Hz, %4 window, resolution %5 Hz</source>
         <translation>%1 的频谱：%2 个点，采样率 %3 Hz，%4 窗，分辨率 %5 Hz</translation>
+    </message>
+    <message>
+        <source>--between must be T1:T2, seconds from the trigger with T1 &lt; T2 (e.g. 0.05:0.3), not &quot;%1&quot;.</source>
+        <translation>--between 必须为 T1:T2，即触发后的秒数且 T1 &lt; T2（例如 0.05:0.3），而不是 "%1"。</translation>
     </message>
 </context>
 <context>
@@ -7095,6 +7165,352 @@ firmware %2</source>
     <message>
         <source>STOP: %1</source>
         <translation>停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RunParameterApply</name>
+    <message>
+        <source>The run holds no tuning parameters to apply.</source>
+        <translation>该运行记录中没有可应用的调谐参数。</translation>
+    </message>
+    <message>
+        <source>The run was taken on a %1 drive; this drive is %2.</source>
+        <translation>该运行记录采集自 %1 驱动器；本驱动器为 %2。</translation>
+    </message>
+    <message>
+        <source>The run&apos;s parameter %1 (index %2) is not that parameter in the drive&apos;s dictionary.</source>
+        <translation>运行记录中的参数 %1（索引 %2）在驱动器的参数字典中并非该参数。</translation>
+    </message>
+    <message>
+        <source>The run&apos;s %1 = %2 cannot be applied: %3</source>
+        <translation>运行记录中的 %1 = %2 无法应用：%3</translation>
+    </message>
+    <message>
+        <source>The drive is gone.</source>
+        <translation>驱动器已不存在。</translation>
+    </message>
+    <message>
+        <source>A backup or restore is already running on this drive.</source>
+        <translation>该驱动器上已有备份或恢复正在进行。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepLimits</name>
+    <message>
+        <source>A step test needs limits: a maximum speed, a maximum travel from the start position and a maximum duration.</source>
+        <translation>阶跃测试需要限值：最大速度、距起始位置的最大行程和最长时间。</translation>
+    </message>
+    <message>
+        <source>The maximum speed is not set.</source>
+        <translation>未设置最大速度。</translation>
+    </message>
+    <message>
+        <source>The maximum travel is not set.</source>
+        <translation>未设置最大行程。</translation>
+    </message>
+    <message>
+        <source>The maximum duration is not set.</source>
+        <translation>未设置最长时间。</translation>
+    </message>
+    <message>
+        <source>The step&apos;s speed %1 is above the maximum speed %2.</source>
+        <translation>阶跃速度 %1 超过最大速度 %2。</translation>
+    </message>
+    <message>
+        <source>The step&apos;s distance %1 is beyond the maximum travel %2.</source>
+        <translation>阶跃距离 %1 超出最大行程 %2。</translation>
+    </message>
+    <message>
+        <source>The step runs for %1 s, which leaves no time to stop within the maximum duration of %2 s.</source>
+        <translation>阶跃运行 %1 秒，在最长时间 %2 秒内没有留出停止的时间。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepSpec</name>
+    <message>
+        <source>A position step needs a distance other than 0.</source>
+        <translation>定位阶跃需要不为 0 的距离。</translation>
+    </message>
+    <message>
+        <source>A position step needs a speed above 0.</source>
+        <translation>定位阶跃需要大于 0 的速度。</translation>
+    </message>
+    <message>
+        <source>A %1 step needs a speed other than 0.</source>
+        <translation>%1 阶跃需要不为 0 的速度。</translation>
+    </message>
+    <message>
+        <source>A %1 step needs a duration from 0 to 3600 s.</source>
+        <translation>%1 阶跃需要 0 到 3600 秒之间的时长。</translation>
+    </message>
+    <message>
+        <source>The capture before the motion must be 0 to 10 s.</source>
+        <translation>运动前的采集时间必须为 0 到 10 秒。</translation>
+    </message>
+    <message>
+        <source>The capture after the motion command must be 0 to 600 s.</source>
+        <translation>运动指令后的采集时间必须为 0 到 600 秒。</translation>
+    </message>
+    <message>
+        <source>The settling time recorded after the motion must be 0 to 60 s.</source>
+        <translation>运动后记录的稳定时间必须为 0 到 60 秒。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepTest</name>
+    <message>
+        <source>The motion was not at rest within the maximum duration of %1 s; stopped.</source>
+        <translation>运动未在最长时间 %1 秒内静止；已停止。</translation>
+    </message>
+    <message>
+        <source>The drive raised alarm %1 during the step test.</source>
+        <translation>阶跃测试期间驱动器发出报警 %1。</translation>
+    </message>
+    <message>
+        <source>STOP: the step test was stopped.</source>
+        <translation>停止：阶跃测试已停止。</translation>
+    </message>
+    <message>
+        <source>The jog lease ran out and the drive stopped the axis.</source>
+        <translation>点动租约已到期，驱动器已停止该轴。</translation>
+    </message>
+    <message>
+        <source>The link was lost during the step test (%1).</source>
+        <translation>阶跃测试期间链路断开（%1）。</translation>
+    </message>
+    <message>
+        <source>No drive to test.</source>
+        <translation>没有可测试的驱动器。</translation>
+    </message>
+    <message>
+        <source>This drive cannot run a %1 step: %2</source>
+        <translation>该驱动器无法进行 %1 阶跃：%2</translation>
+    </message>
+    <message>
+        <source>This drive cannot move back to the start position; run the test without returning.</source>
+        <translation>该驱动器无法回到起始位置；请在不返回的情况下进行测试。</translation>
+    </message>
+    <message>
+        <source>This drive offers no %1 channel, which the step test&apos;s limits are watched on.</source>
+        <translation>该驱动器没有 %1 通道，而阶跃测试的限值要靠它监视。</translation>
+    </message>
+    <message>
+        <source>This drive has no channel %1.</source>
+        <translation>该驱动器没有通道 %1。</translation>
+    </message>
+    <message>
+        <source>A step test is already running.</source>
+        <translation>已有阶跃测试正在进行。</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s state and tuning parameters.</source>
+        <translation>正在读取驱动器状态和调谐参数。</translation>
+    </message>
+    <message>
+        <source>Could not read the drive&apos;s state: %1</source>
+        <translation>无法读取驱动器状态：%1</translation>
+    </message>
+    <message>
+        <source>The drive is in alarm %1: clear it before a step test.</source>
+        <translation>驱动器处于报警 %1：请在阶跃测试前清除报警。</translation>
+    </message>
+    <message>
+        <source>Could not read the tuning parameters: %1</source>
+        <translation>无法读取调谐参数：%1</translation>
+    </message>
+    <message>
+        <source>The capture failed: %1</source>
+        <translation>采集失败：%1</translation>
+    </message>
+    <message>
+        <source>Capturing %1 before the motion.</source>
+        <translation>运动前开始采集 %1。</translation>
+    </message>
+    <message>
+        <source>The start position is unknown: the travel limit cannot be watched.</source>
+        <translation>起始位置未知：无法监视行程限值。</translation>
+    </message>
+    <message>
+        <source>Moving by %1 at %2.</source>
+        <translation>以 %2 移动 %1。</translation>
+    </message>
+    <message>
+        <source>Running at %1 for %2 s.</source>
+        <translation>以 %1 运行 %2 秒。</translation>
+    </message>
+    <message>
+        <source>The speed reached %1, above the maximum speed %2; stopped.</source>
+        <translation>速度达到 %1，超过最大速度 %2；已停止。</translation>
+    </message>
+    <message>
+        <source>The axis travelled %1 from the start, beyond the maximum travel %2; stopped.</source>
+        <translation>轴从起始位置移动了 %1，超出最大行程 %2；已停止。</translation>
+    </message>
+    <message>
+        <source>Waiting for the axis to come to rest.</source>
+        <translation>正在等待轴静止。</translation>
+    </message>
+    <message>
+        <source>Returning to the start position %1.</source>
+        <translation>正在返回起始位置 %1。</translation>
+    </message>
+    <message>
+        <source>Could not return to the start position: %1</source>
+        <translation>无法返回起始位置：%1</translation>
+    </message>
+    <message>
+        <source>The axis came to rest at %1, not at the start position %2.</source>
+        <translation>轴静止在 %1，而不是起始位置 %2。</translation>
+    </message>
+    <message>
+        <source>Stopping the axis: %1</source>
+        <translation>正在停止该轴：%1</translation>
+    </message>
+    <message>
+        <source>No stop could be sent: the drive&apos;s own watchdog stops the axis; check that it has stopped.</source>
+        <translation>无法发送停止指令：由驱动器自身的看门狗停止该轴；请确认轴已停止。</translation>
+    </message>
+    <message>
+        <source>No stop could be sent: the axis may still be moving; use the machine&apos;s emergency stop.</source>
+        <translation>无法发送停止指令：轴可能仍在运动；请使用机器的急停。</translation>
+    </message>
+    <message>
+        <source>STOP FAILED: %1 The drive&apos;s own watchdog stops the axis when it hears nothing from us; check that it has stopped.</source>
+        <translation>停止失败：%1 驱动器收不到我们的消息时由其自身的看门狗停止该轴；请确认轴已停止。</translation>
+    </message>
+    <message>
+        <source>STOP FAILED: %1 The axis may still be moving: use the machine&apos;s emergency stop.</source>
+        <translation>停止失败：%1 轴可能仍在运动：请使用机器的急停。</translation>
+    </message>
+    <message>
+        <source>The stop was sent, but the axis could not be seen at rest: %1</source>
+        <translation>停止指令已发送，但无法确认轴已静止：%1</translation>
+    </message>
+    <message>
+        <source>The axis stopped at %1 (%2 from the start).</source>
+        <translation>轴停在 %1（距起始位置 %2）。</translation>
+    </message>
+    <message>
+        <source>The axis was not seen at rest %1 s after the stop: check it; use the machine&apos;s emergency stop if it still moves.</source>
+        <translation>停止后 %1 秒仍未见轴静止：请检查；若仍在运动，请使用机器的急停。</translation>
+    </message>
+    <message>
+        <source>Step test completed.</source>
+        <translation>阶跃测试完成。</translation>
+    </message>
+    <message>
+        <source>Step test aborted: %1</source>
+        <translation>阶跃测试中止：%1</translation>
+    </message>
+    <message>
+        <source>Step test not run: %1</source>
+        <translation>阶跃测试未进行：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ApplyRunCommand</name>
+    <message>
+        <source>RUN.ddrun</source>
+        <translation>RUN.ddrun</translation>
+    </message>
+    <message>
+        <source>Finishing the writes in progress so that the report is complete; every write is verified as it goes.</source>
+        <translation>正在完成进行中的写入以保证报告完整；每次写入都会随即校验。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s tuning parameters already match %1; nothing to write.</source>
+        <translation>驱动器的调谐参数已与 %1 一致；无需写入。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Dry run: %n parameter(s) would be written; nothing was sent.</source>
+        <translation>
+            <numerusform>试运行：将写入 %n 个参数；未发送任何数据。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) written and verified.</source>
+        <translation>
+            <numerusform>已写入并校验 %n 个参数。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The values are in the drive&apos;s RAM; `ee set` stores them to EEPROM.</source>
+        <translation>这些值位于驱动器的 RAM 中；`ee set` 可将其存入 EEPROM。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepCommand</name>
+    <message>
+        <source>velocity SPEED | position DISTANCE | reversal SPEED</source>
+        <translation>velocity SPEED | position DISTANCE | reversal SPEED</translation>
+    </message>
+    <message>
+        <source>The step test must be velocity, position or reversal, not &quot;%1&quot;.</source>
+        <translation>阶跃测试必须为 velocity、position 或 reversal，而不是 "%1"。</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>距离</translation>
+    </message>
+    <message>
+        <source>A position step needs --speed V.</source>
+        <translation>定位阶跃需要 --speed V。</translation>
+    </message>
+    <message>
+        <source>--duration is for velocity and reversal steps; a position step ends when it arrives.</source>
+        <translation>--duration 用于速度阶跃和反向阶跃；定位阶跃在到位时结束。</translation>
+    </message>
+    <message>
+        <source>step speed</source>
+        <translation>阶跃速度</translation>
+    </message>
+    <message>
+        <source>--speed is for position steps; the speed of a %1 step is its argument.</source>
+        <translation>--speed 用于定位阶跃；%1 阶跃的速度由其参数给出。</translation>
+    </message>
+    <message>
+        <source>A %1 step needs --duration S.</source>
+        <translation>%1 阶跃需要 --duration S。</translation>
+    </message>
+    <message>
+        <source>A step test needs its limits: --max-speed V is missing (nothing was sent).</source>
+        <translation>阶跃测试需要限值：缺少 --max-speed V（未发送任何内容）。</translation>
+    </message>
+    <message>
+        <source>A step test needs its limits: --max-travel N is missing (nothing was sent).</source>
+        <translation>阶跃测试需要限值：缺少 --max-travel N（未发送任何内容）。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent.</source>
+        <translation>未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Second interrupt: emergency stop.</source>
+        <translation>第二次中断：急停。</translation>
+    </message>
+    <message>
+        <source>Interrupted: the step test was stopped.</source>
+        <translation>已中断：阶跃测试已停止。</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 samples of %4, interval %5 ms (%6 Hz); metrics on %7</source>
+        <translation>%1 %2：%4 共 %3 个采样，间隔 %5 毫秒（%6 Hz）；指标基于 %7</translation>
+    </message>
+    <message>
+        <source>  tuning: %1</source>
+        <translation>  调谐参数：%1</translation>
+    </message>
+    <message>
+        <source>  saved to %1</source>
+        <translation>  已保存到 %1</translation>
+    </message>
+    <message>
+        <source>Back at the start position %1.</source>
+        <translation>已回到起始位置 %1。</translation>
+    </message>
+    <message>
+        <source>Left at %1 (--no-return; started at %2).</source>
+        <translation>停留在 %1（--no-return；起始于 %2）。</translation>
     </message>
 </context>
 </TS>

@@ -246,7 +246,8 @@ QString CliHelp::command(const QString &name)
                   "step's time + 2 s; position 10 s). The captured speed and position are watched\n"
                   "against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends\n"
                   "the test with exit code 1. The capture runs from --pre (0.05 s) before the motion\n"
-                  "command for --record seconds (default: the step's time + 0.3 s; position 1 s).\n"
+                  "command for --record seconds (default: the step's time + 0.3 s; a position\n"
+                  "step: until the axis is at rest, + 0.3 s).\n"
                   "A completed test returns to its start position (--no-return: it stays), prints\n"
                   "the metrics with their resolution or why they cannot be resolved, and saves the\n"
                   "run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).\n");

@@ -4973,42 +4973,6 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] step velocity SPEED --duration S --max-speed V --max-travel N
-       drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]
-       drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N
-          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
-          [--notes TEXT] [-o RUN.ddrun]
-velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.
-reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.
-The limits are required (exit 2, nothing sent, without them): --max-speed (the
-speed unit; a position step: 1.5 x --speed unless given), --max-travel from the
-start position (counts), --max-duration until the axis is at rest (default: the
-step&apos;s time + 2 s; position 10 s). The captured speed and position are watched
-against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends
-the test with exit code 1. The capture runs from --pre (0.05 s) before the motion
-command for --record seconds (default: the step&apos;s time + 0.3 s; position 1 s).
-A completed test returns to its start position (--no-return: it stays), prints
-the metrics with their resolution or why they cannot be resolved, and saves the
-run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).
-</source>
-        <translation>用法：drivedesk-cli [选项] step velocity SPEED --duration S --max-speed V --max-travel N
-      drivedesk-cli [选项] step position DISTANCE --speed V --max-travel N [--max-speed V]
-      drivedesk-cli [选项] step reversal SPEED --duration S --max-speed V --max-travel N
-          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
-          [--notes TEXT] [-o RUN.ddrun]
-velocity：以 SPEED 运行 S 秒后停止。position：以速度 V 相对移动 DISTANCE。
-reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止。
-限值为必填（缺少时退出码 2，不发送任何内容）：--max-speed（速度单位；定位阶跃
-未给出时为 --speed 的 1.5 倍）、--max-travel 距起始位置的最大行程（脉冲数）、
---max-duration 到轴静止的最长时间（默认：阶跃时间 + 2 秒；定位 10 秒）。
-采集到的速度和位置按这些限值监视；报警、超出限值、Ctrl-C 或链路断开都会停止
-轴并以退出码 1 结束测试。采集从运动指令前 --pre（0.05 秒）开始，持续 --record
-秒（默认：阶跃时间 + 0.3 秒；定位 1 秒）。测试完成后回到起始位置（--no-return：
-留在原处），打印各项指标及其分辨率或无法分辨的原因，并将运行记录连同从驱动器
-读取的调谐参数保存到 RUN.ddrun（docs/tuning.md）。
-</translation>
-    </message>
-    <message>
         <source>Usage: drivedesk-cli [OPTIONS] apply-run RUN.ddrun [--dry-run] [--force]
 Write the tuning parameters the run was taken with (its snapshot) back to the
 drive, as restore does: only those that differ from the drive, each read back
@@ -5034,6 +4998,43 @@ transient, where its ringing shows a resonance). Reads files only.
 该通道的幅值频谱（Hann 窗；注明分辨率）及其 N 个最高峰值（默认 5 个），
 使用 --from 时只取 HZ 及以上的峰值，使用 --between 时只取触发后 T1 到 T2 秒的
 采样（例如阶跃自身的过渡过程之后，其振荡会显出共振）。只读取文件。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] step velocity SPEED --duration S --max-speed V --max-travel N
+       drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]
+       drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N
+          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
+          [--notes TEXT] [-o RUN.ddrun]
+velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.
+reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.
+The limits are required (exit 2, nothing sent, without them): --max-speed (the
+speed unit; a position step: 1.5 x --speed unless given), --max-travel from the
+start position (counts), --max-duration until the axis is at rest (default: the
+step&apos;s time + 2 s; position 10 s). The captured speed and position are watched
+against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends
+the test with exit code 1. The capture runs from --pre (0.05 s) before the motion
+command for --record seconds (default: the step&apos;s time + 0.3 s; a position
+step: until the axis is at rest, + 0.3 s).
+A completed test returns to its start position (--no-return: it stays), prints
+the metrics with their resolution or why they cannot be resolved, and saves the
+run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).
+</source>
+        <translation>用法：drivedesk-cli [选项] step velocity SPEED --duration S --max-speed V --max-travel N
+      drivedesk-cli [选项] step position DISTANCE --speed V --max-travel N [--max-speed V]
+      drivedesk-cli [选项] step reversal SPEED --duration S --max-speed V --max-travel N
+          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
+          [--notes TEXT] [-o RUN.ddrun]
+velocity：以 SPEED 运行 S 秒后停止。position：以速度 V 相对移动 DISTANCE。
+reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止。
+限值为必填（缺少时退出码 2，不发送任何内容）：--max-speed（速度单位；定位阶跃
+未给出时为 --speed 的 1.5 倍）、--max-travel 距起始位置的最大行程（脉冲数）、
+--max-duration 到轴静止的最长时间（默认：阶跃时间 + 2 秒；定位 10 秒）。
+采集到的速度和位置按这些限值监视；报警、超出限值、Ctrl-C 或链路断开都会停止
+轴并以退出码 1 结束测试。采集从运动指令前 --pre（0.05 秒）开始，持续 --record
+秒（默认：阶跃时间 + 0.3 秒；定位阶跃：直到轴静止后再加 0.3 秒）。测试完成后
+回到起始位置（--no-return：留在原处），打印各项指标及其分辨率或无法分辨的原因，
+并将运行记录连同从驱动器读取的调谐参数保存到 RUN.ddrun（docs/tuning.md）。
 </translation>
     </message>
 </context>
@@ -6658,7 +6659,7 @@ then log out and log in again (or restart the computer).</source>
     </message>
     <message>
         <source>--between must be T1:T2, seconds from the trigger with T1 &lt; T2 (e.g. 0.05:0.3), not &quot;%1&quot;.</source>
-        <translation>--between 必须为 T1:T2，即触发后的秒数且 T1 &lt; T2（例如 0.05:0.3），而不是 "%1"。</translation>
+        <translation>--between 必须为 T1:T2，即触发后的秒数且 T1 &lt; T2（例如 0.05:0.3），而不是 &quot;%1&quot;。</translation>
     </message>
 </context>
 <context>
@@ -7446,7 +7447,7 @@ firmware %2</source>
     </message>
     <message>
         <source>The step test must be velocity, position or reversal, not &quot;%1&quot;.</source>
-        <translation>阶跃测试必须为 velocity、position 或 reversal，而不是 "%1"。</translation>
+        <translation>阶跃测试必须为 velocity、position 或 reversal，而不是 &quot;%1&quot;。</translation>
     </message>
     <message>
         <source>distance</source>

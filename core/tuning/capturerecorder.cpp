@@ -72,6 +72,14 @@ void CaptureRecorder::trigger(double t, const QString &source)
     fire(t, source);
 }
 
+bool CaptureRecorder::finish()
+{
+    if (m_state != State::Recording)
+        return false;
+    m_state = State::Done;
+    return true;
+}
+
 void CaptureRecorder::fire(double t, const QString &source)
 {
     m_state = State::Recording;

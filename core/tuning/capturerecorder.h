@@ -31,6 +31,9 @@ public:
     // while the pre-trigger window is still filling it fires too (manual force) and the
     // record simply has less before the trigger.
     void trigger(double t, const QString &source);
+    // Ends a recording now, shorter than its record (a step test's axis is at rest): true
+    // when there was one (state Done, take() it).
+    bool finish();
 
     State state() const { return m_state; }
     bool isWatching() const { return m_state == State::Armed; }

@@ -55,6 +55,16 @@ void CaptureSession::forceTrigger(const QString &source)
     m_recorder.trigger(now(), source);
 }
 
+bool CaptureSession::finishNow()
+{
+    if (!m_recorder.finish())
+        return false;
+    const CaptureData data = m_recorder.take();
+    m_sampler->stop();
+    emit captured(data);
+    return true;
+}
+
 double CaptureSession::now() const
 {
     return m_sampler->elapsedSeconds();

@@ -28,6 +28,9 @@ public:
     bool isRunning() const;
     // Fires the trigger now (on the samples' clock).
     void forceTrigger(const QString &source = QStringLiteral("manual"));
+    // Ends the recording now with the samples so far (captured() follows at once); false
+    // when not recording.
+    bool finishNow();
     // Seconds on the samples' clock.
     double now() const;
     CaptureRecorder::State state() const { return m_recorder.state(); }

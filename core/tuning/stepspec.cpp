@@ -19,7 +19,7 @@ double StepSpec::recordSeconds() const
     if (recordS > 0.0)
         return recordS;
     if (kind == Kind::Position)
-        return 1.0;
+        return 0.0;
     return commandedSeconds() + settleS;
 }
 

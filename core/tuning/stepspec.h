@@ -13,7 +13,8 @@ namespace dd {
 //  - Position: move by `distance` (counts / pulses) at `speed`.
 //  - Reversal: run at +`speed` for `durationS`, then at -`speed` for `durationS`, then stop.
 // The capture starts `preS` before the motion command (the "motion" trigger) and records
-// `recordS` after it (0: the commanded time plus `settleS`; a position step: 1 s). The
+// `recordS` after it (0: the commanded time plus `settleS`; a position step: until the axis
+// is at rest, plus `settleS`, at most the maximum duration). The
 // channels are those that matter for the test among what the drive offers, unless
 // `channels` names them (speed and position are always added: the limits are watched on
 // them). After a completed test the axis goes back to where it started, unless
@@ -35,7 +36,7 @@ public:
     bool returnToStart = true;
     QStringList channels; // empty: chosen for the drive (StepTest::channelsFor)
 
-    // The capture after the motion command, seconds.
+    // The capture after the motion command, seconds (0: a position step's, until at rest).
     double recordSeconds() const;
     // The commanded time of the motion (0 for a position step: it ends when it arrives).
     double commandedSeconds() const;

@@ -177,6 +177,7 @@ Error StepTest::start(const StepSpec &spec, const StepLimits &limits)
     m_capture = CaptureData();
     m_haveCapture = false;
     m_motionDone = false;
+    m_restConfirmed = false;
     m_startKnown = false;
     m_snapshot.clear();
     m_segment = 0;
@@ -271,7 +272,10 @@ void StepTest::arm()
     m_session = new CaptureSession(m_drive, this);
     CaptureSettings settings;
     settings.trigger.kind = TriggerSpec::Kind::MotionStart;
-    settings.durationS = m_spec.preS + m_spec.recordSeconds();
+    // A position step without a record of its own records until the axis is at rest (then
+    // settleS more: finishNow()), at most for the maximum duration.
+    const double record = m_spec.recordSeconds() > 0.0 ? m_spec.recordSeconds() : m_limits.maxDurationS;
+    settings.durationS = m_spec.preS + record;
     settings.prePercent = 100.0 * m_spec.preS / settings.durationS;
     settings.mode = CaptureSettings::Mode::Single;
     m_settings = settings;
@@ -328,8 +332,7 @@ void StepTest::sendMotion()
         }
         if (m_spec.kind == StepSpec::Kind::Position) {
             m_motionDone = true;
-            if (m_haveCapture)
-                waitAtRest();
+            waitAtRest(); // while the capture goes on: it ends once the axis is at rest
         }
     });
 }
@@ -415,7 +418,9 @@ void StepTest::onCaptured(const CaptureData &capture)
         return;
     m_capture = capture;
     m_haveCapture = true;
-    if (m_motionDone)
+    if (m_restConfirmed)
+        afterRest();
+    else if (m_motionDone && m_phase != Phase::Stopping)
         waitAtRest();
 }
 
@@ -451,7 +456,16 @@ void StepTest::pollAtRest()
         if (m_atRestPolls >= 2) {
             m_limit.stop();
             m_result.stopConfirmed = true;
-            return afterRest();
+            m_restConfirmed = true;
+            if (m_haveCapture)
+                return afterRest();
+            // A position step's capture: settleS more after the arrival, then it ends.
+            if (m_spec.recordSeconds() <= 0.0)
+                QTimer::singleShot(int(std::lround(m_spec.settleS * 1000.0)), this, [this, g = m_generation] {
+                    if (g == m_generation && !m_aborting && m_session && !m_haveCapture)
+                        m_session->finishNow();
+                });
+            return; // onCaptured() goes on
         }
         QTimer::singleShot(PollMs, this, [this, g = m_generation] {
             if (g == m_generation)

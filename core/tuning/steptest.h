@@ -110,7 +110,8 @@ private:
     CaptureSession *m_session = nullptr;
     CaptureData m_capture;
     bool m_haveCapture = false;
-    bool m_motionDone = false; // the motion's commands are done (stop sent / move accepted)
+    bool m_motionDone = false;    // the motion's commands are done (stop sent / move accepted)
+    bool m_restConfirmed = false; // seen at rest after the motion
     bool m_startKnown = false;
     qint64 m_start = 0;
     QList<TuningSnapshotEntry> m_snapshot;

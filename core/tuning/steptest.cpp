@@ -97,7 +97,15 @@ void StepTest::linkLost(const Error &why)
               {ErrorCode::LinkClosed, tr("The link was lost during the step test (%1).").arg(why.message)});
 }
 
-StepTest::~StepTest() = default;
+StepTest::~StepTest()
+{
+    // Gone mid-test (a closed tab): the axis must not go on moving on its own.
+    if (isRunning() && m_result.moved && m_drive) {
+        m_ownStop = true;
+        DriveReply *r = m_drive->stop(false);
+        connect(r, &DriveReply::finished, r, &QObject::deleteLater);
+    }
+}
 
 QString StepTest::phaseId(Phase phase)
 {

@@ -35,7 +35,8 @@ struct DriveStatus;
 //     axis is stopped and seen at rest (stopConfirmed), or the result says why not.
 //  4. A completed test goes back to the start position (unless the spec says otherwise),
 //     computes the metrics (StepMetrics) and hands the run (TuningRun) in the result.
-// finished() comes exactly once per started test. Lives in the drive's thread.
+// finished() comes exactly once per started test (not when the object is destroyed
+// mid-test: the destructor then sends a stop). Lives in the drive's thread.
 class StepTest : public QObject
 {
     Q_OBJECT

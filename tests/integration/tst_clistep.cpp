@@ -111,6 +111,15 @@ private slots:
                 > 0.0);
     }
 
+    void aDriveWithoutMotionRefusesTheStep()
+    {
+        // servo-modbus's protocol has no motion commands: refused with the reason, exit 2.
+        const CliRun r = runCli({"--sim", "--family", "servo-modbus", "step", "velocity", "300", "--duration", "0.2",
+                                 "--max-speed", "500", "--max-travel", "5000"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.text().contains(QStringLiteral("cannot run a velocity step")), qPrintable(r.text()));
+    }
+
     void aTravelLimitPassedAbortsWithTheAxisStopped()
     {
         const CliRun r = runCli({"--sim", "--family", "servo-can", "--json", "step", "velocity", "500", "--duration",

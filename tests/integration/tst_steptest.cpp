@@ -66,6 +66,7 @@ private slots:
     void abortsOnAnAlarmWithTheAxisStopped();
     void abortsOnStopWithTheAxisStopped();
     void abortsWhenTheTravelLimitIsPassed();
+    void destroyedMidTestStopsTheAxis();
     void higherSpeedGainRisesFasterAndOvershootsMore();
 
 private:
@@ -225,6 +226,18 @@ void TestStepTest::abortsWhenTheTravelLimitIsPassed()
     QCOMPARE(r.abortCause, QStringLiteral("travel-limit"));
     QVERIFY2(r.stopConfirmed, qPrintable(r.stopNote));
     QVERIFY(!m_sim->motor().isMoving());
+}
+
+void TestStepTest::destroyedMidTestStopsTheAxis()
+{
+    QSignalSpy expired(m_drive, &Drive::jogLeaseExpired);
+    auto *test = new StepTest(m_drive);
+    QVERIFY(!test->start(velocity(300, 1.0), limits()));
+    QVERIFY(
+        waitUntil([&] { return test->phase() == StepTest::Phase::Moving && m_sim->motor().speedRpm() > 200; }, 3000));
+    delete test; // a closed tab: its own stop, not the lease running out
+    QVERIFY(waitUntil([this] { return !m_sim->motor().isMoving(); }, 3000));
+    QCOMPARE(expired.size(), 0);
 }
 
 bool TestStepTest::write(const QList<ParameterWrite> &writes)

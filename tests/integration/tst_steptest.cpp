@@ -67,6 +67,8 @@ private slots:
     void abortsOnStopWithTheAxisStopped();
     void abortsWhenTheTravelLimitIsPassed();
     void destroyedMidTestStopsTheAxis();
+    void abortsWhenTheSpeedLimitIsPassed();
+    void aLostLinkSaysWhatStopsTheAxis();
     void higherSpeedGainRisesFasterAndOvershootsMore();
 
 private:
@@ -238,6 +240,40 @@ void TestStepTest::destroyedMidTestStopsTheAxis()
     delete test; // a closed tab: its own stop, not the lease running out
     QVERIFY(waitUntil([this] { return !m_sim->motor().isMoving(); }, 3000));
     QCOMPARE(expired.size(), 0);
+}
+
+void TestStepTest::abortsWhenTheSpeedLimitIsPassed()
+{
+    // A stiff loop on a true step overshoots 300 r/min by ~25 %: above a limit of 330.
+    QVERIFY(write({{60, 60}, {64, 1000}, {65, 0}}));
+    StepTest test(m_drive);
+    const StepResult r = run(test, velocity(300, 0.5), limits(330));
+    QVERIFY(write({{60, 30}, {64, 6}, {65, 100}}));
+    QCOMPARE(r.outcome, StepResult::Outcome::Aborted);
+    QCOMPARE(r.abortCause, QStringLiteral("speed-limit"));
+    QVERIFY2(r.reason.contains(QStringLiteral("above the maximum speed 330")), qPrintable(r.reason));
+    QVERIFY2(r.stopConfirmed, qPrintable(r.stopNote));
+    QVERIFY(!m_sim->motor().isMoving());
+}
+
+void TestStepTest::aLostLinkSaysWhatStopsTheAxis()
+{
+    // The link goes away mid-step (as DriveConnection reports it): no stop can be sent; the
+    // result says the drive's own watchdog stops the axis (servo-can has one).
+    StepTest test(m_drive);
+    QSignalSpy finished(&test, &StepTest::finished);
+    QVERIFY(!test.start(velocity(200, 1.0), limits()));
+    QVERIFY(waitUntil([&] { return test.phase() == StepTest::Phase::Moving; }, 3000));
+    test.linkLost({ErrorCode::LinkClosed, QStringLiteral("adapter unplugged")});
+    QCOMPARE(finished.size(), 1);
+    const StepResult r = finished.first().first().value<StepResult>();
+    QCOMPARE(r.outcome, StepResult::Outcome::Aborted);
+    QCOMPARE(r.abortCause, QStringLiteral("link-lost"));
+    QCOMPARE(r.stoppedBy, QStringLiteral("drive-watchdog"));
+    QVERIFY(!r.stopConfirmed);
+    QVERIFY2(r.stopNote.contains(QStringLiteral("watchdog")), qPrintable(r.stopNote));
+    // Here the link is in fact still up: the jog lease, no longer renewed, stops the axis.
+    QVERIFY(waitUntil([this] { return !m_sim->motor().isMoving(); }, 3000));
 }
 
 bool TestStepTest::write(const QList<ParameterWrite> &writes)

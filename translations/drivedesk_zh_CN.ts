@@ -7097,4 +7097,642 @@ firmware %2</source>
         <translation>停止：%1</translation>
     </message>
 </context>
+<context>
+    <name>dd::CaptureControls</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>At once</source>
+        <translation>立即</translation>
+    </message>
+    <message>
+        <source>Rising through level</source>
+        <translation>上升穿过电平</translation>
+    </message>
+    <message>
+        <source>Falling through level</source>
+        <translation>下降穿过电平</translation>
+    </message>
+    <message>
+        <source>Either way through level</source>
+        <translation>双向穿过电平</translation>
+    </message>
+    <message>
+        <source>Above level</source>
+        <translation>高于电平</translation>
+    </message>
+    <message>
+        <source>Below level</source>
+        <translation>低于电平</translation>
+    </message>
+    <message>
+        <source>Alarm raised</source>
+        <translation>出现报警</translation>
+    </message>
+    <message>
+        <source>Single</source>
+        <translation>单次</translation>
+    </message>
+    <message>
+        <source>Normal (re-arm)</source>
+        <translation>常规（自动重新布防）</translation>
+    </message>
+    <message>
+        <source>Auto (time-out)</source>
+        <translation>自动（超时触发）</translation>
+    </message>
+    <message>
+        <source>Trigger:</source>
+        <translation>触发：</translation>
+    </message>
+    <message>
+        <source>Channel:</source>
+        <translation>通道：</translation>
+    </message>
+    <message>
+        <source>Level:</source>
+        <translation>电平：</translation>
+    </message>
+    <message>
+        <source>Pre-trigger:</source>
+        <translation>预触发：</translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation>时长：</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>模式：</translation>
+    </message>
+    <message>
+        <source>Auto after:</source>
+        <translation>超时：</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>Arm</source>
+        <translation>布防</translation>
+    </message>
+    <message>
+        <source>Force</source>
+        <translation>强制触发</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Start sampling; the capture is taken when the trigger fires.</source>
+        <translation>开始采样；触发条件满足时进行捕获。</translation>
+    </message>
+    <message>
+        <source>Fire the trigger now.</source>
+        <translation>立即触发。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CapturePlot</name>
+    <message>
+        <source>Click the plot to place cursor A, Shift + click for cursor B.</source>
+        <translation>单击曲线图放置光标 A，Shift + 单击放置光标 B。</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 毫秒</translation>
+    </message>
+    <message>
+        <source>A: %1</source>
+        <translation>A：%1</translation>
+    </message>
+    <message>
+        <source>B: %1</source>
+        <translation>B：%1</translation>
+    </message>
+    <message>
+        <source>Δt: %1</source>
+        <translation>Δt：%1</translation>
+    </message>
+    <message>
+        <source>A %1</source>
+        <translation>A %1</translation>
+    </message>
+    <message>
+        <source>B %1</source>
+        <translation>B %1</translation>
+    </message>
+    <message>
+        <source>Δvalue %1</source>
+        <translation>Δ值 %1</translation>
+    </message>
+    <message>
+        <source>Time from the trigger (s)</source>
+        <translation>相对触发时刻的时间（秒）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RunComparison</name>
+    <message>
+        <source>Rise time (10–90 %)</source>
+        <translation>上升时间（10–90 %）</translation>
+    </message>
+    <message>
+        <source>Overshoot</source>
+        <translation>超调量</translation>
+    </message>
+    <message>
+        <source>Settling (±2 %)</source>
+        <translation>调节时间（±2 %）</translation>
+    </message>
+    <message>
+        <source>Settling (±5 %)</source>
+        <translation>调节时间（±5 %）</translation>
+    </message>
+    <message>
+        <source>Steady-state error</source>
+        <translation>稳态误差</translation>
+    </message>
+    <message>
+        <source>Steady-state ripple</source>
+        <translation>稳态波动</translation>
+    </message>
+    <message>
+        <source>Peak following error</source>
+        <translation>最大跟随误差</translation>
+    </message>
+    <message>
+        <source>Peak torque</source>
+        <translation>峰值转矩</translation>
+    </message>
+    <message>
+        <source>Peak current</source>
+        <translation>峰值电流</translation>
+    </message>
+    <message>
+        <source>Sample interval</source>
+        <translation>采样间隔</translation>
+    </message>
+    <message>
+        <source>not resolvable</source>
+        <translation>无法分辨</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 毫秒</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3</source>
+        <translation>%1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>no tuning parameter differs</source>
+        <translation>调谐参数无差异</translation>
+    </message>
+    <message>
+        <source>%1 → %2: %3: %4</source>
+        <translation>%1 → %2：%3：%4</translation>
+    </message>
+    <message>
+        <source>%1, %2: %3</source>
+        <translation>%1，%2：%3</translation>
+    </message>
+    <message>
+        <source>Resolution: %1</source>
+        <translation>分辨率：%1</translation>
+    </message>
+    <message>
+        <source>Tick runs in the list to compare them here.</source>
+        <translation>在列表中勾选运行记录，即可在此比较。</translation>
+    </message>
+    <message>
+        <source>Tick a second run to see the parameter differences.</source>
+        <translation>再勾选一条运行记录即可查看参数差异。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RunList</name>
+    <message>
+        <source>%1 · %2 samples · trigger %3</source>
+        <translation>%1 · %2 个样本 · 触发 %3</translation>
+    </message>
+    <message>
+        <source>Not opened: %1</source>
+        <translation>未打开：%1</translation>
+    </message>
+    <message>
+        <source>Opened %1.</source>
+        <translation>已打开 %1。</translation>
+    </message>
+    <message>
+        <source>Select a run to save.</source>
+        <translation>请选择要保存的运行记录。</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>未保存：%1</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>已保存 %1。</translation>
+    </message>
+    <message>
+        <source>Open run</source>
+        <translation>打开运行记录</translation>
+    </message>
+    <message>
+        <source>DriveDesk runs (*.ddrun);;All files (*)</source>
+        <translation>DriveDesk 运行记录 (*.ddrun);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Save run</source>
+        <translation>保存运行记录</translation>
+    </message>
+    <message>
+        <source>DriveDesk runs (*.ddrun)</source>
+        <translation>DriveDesk 运行记录 (*.ddrun)</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>打开…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>保存…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>Tick the runs to overlay; the selected run is the one saved, analysed and applied.</source>
+        <translation>勾选要叠加显示的运行记录；保存、分析和应用的对象是选中的那一条。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::SpectrumView</name>
+    <message>
+        <source>Channel:</source>
+        <translation>通道：</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz)</source>
+        <translation>频率（Hz）</translation>
+    </message>
+    <message>
+        <source>Select a run to see its spectrum.</source>
+        <translation>选择一条运行记录以查看其频谱。</translation>
+    </message>
+    <message>
+        <source>No spectrum: %1</source>
+        <translation>无频谱：%1</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz) · %1 window, resolution %2 Hz, %3 points at %4 Hz</source>
+        <translation>频率（Hz）· %1 窗，分辨率 %2 Hz，%3 点，采样率 %4 Hz</translation>
+    </message>
+    <message>
+        <source>Amplitude of %1</source>
+        <translation>%1 的幅值</translation>
+    </message>
+    <message>
+        <source>Amplitude</source>
+        <translation>幅值</translation>
+    </message>
+    <message>
+        <source>Peaks:</source>
+        <translation>峰值：</translation>
+    </message>
+    <message>
+        <source>%1 Hz (%2)</source>
+        <translation>%1 Hz（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepTestControls</name>
+    <message>
+        <source>maximum speed</source>
+        <translation>最高速度</translation>
+    </message>
+    <message>
+        <source>maximum travel</source>
+        <translation>最大行程</translation>
+    </message>
+    <message>
+        <source>maximum duration</source>
+        <translation>最长时间</translation>
+    </message>
+    <message>
+        <source>Set the limits first: %1.</source>
+        <translation>请先设置限值：%1。</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>Give the step a speed above 0 r/min.</source>
+        <translation>请为阶跃设置大于 0 r/min 的速度。</translation>
+    </message>
+    <message>
+        <source>The step&apos;s speed %1 r/min is above the maximum speed %2 r/min.</source>
+        <translation>阶跃速度 %1 r/min 高于最高速度 %2 r/min。</translation>
+    </message>
+    <message>
+        <source>Give the position step a distance.</source>
+        <translation>请为位置阶跃设置距离。</translation>
+    </message>
+    <message>
+        <source>The distance %1 is beyond the maximum travel %2.</source>
+        <translation>距离 %1 超出最大行程 %2。</translation>
+    </message>
+    <message>
+        <source>Give the step a duration.</source>
+        <translation>请为阶跃设置持续时间。</translation>
+    </message>
+    <message>
+        <source>The test takes %1 s, longer than the maximum duration %2 s.</source>
+        <translation>测试需要 %1 秒，超过最长时间 %2 秒。</translation>
+    </message>
+    <message>
+        <source>Limits (none is assumed)</source>
+        <translation>限值（不设默认值）</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>测试</translation>
+    </message>
+    <message>
+        <source>Velocity step</source>
+        <translation>速度阶跃</translation>
+    </message>
+    <message>
+        <source>Position step</source>
+        <translation>位置阶跃</translation>
+    </message>
+    <message>
+        <source>Reversal (+V, then −V)</source>
+        <translation>正反转（先 +V，再 −V）</translation>
+    </message>
+    <message>
+        <source>Max. speed:</source>
+        <translation>最高速度：</translation>
+    </message>
+    <message>
+        <source>Max. travel:</source>
+        <translation>最大行程：</translation>
+    </message>
+    <message>
+        <source>Max. duration:</source>
+        <translation>最长时间：</translation>
+    </message>
+    <message>
+        <source>Test:</source>
+        <translation>测试：</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>速度：</translation>
+    </message>
+    <message>
+        <source>Duration:</source>
+        <translation>持续时间：</translation>
+    </message>
+    <message>
+        <source>Distance:</source>
+        <translation>距离：</translation>
+    </message>
+    <message>
+        <source>not set</source>
+        <translation>未设置</translation>
+    </message>
+    <message>
+        <source> r/min</source>
+        <translation> r/min</translation>
+    </message>
+    <message>
+        <source> counts</source>
+        <translation> 脉冲</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>From the start position, in the drive&apos;s position counts.</source>
+        <translation>自起始位置算起，单位为驱动器的位置脉冲数。</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TuningParametersEditor</name>
+    <message>
+        <source>The drive&apos;s dictionary is not known yet.</source>
+        <translation>尚未获得驱动器的参数字典。</translation>
+    </message>
+    <message>
+        <source>Edited, not yet written</source>
+        <translation>已编辑，尚未写入</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>未读取</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a whole number.</source>
+        <translation>“%1”不是整数。</translation>
+    </message>
+    <message>
+        <source>Not taken: %1</source>
+        <translation>未采用：%1</translation>
+    </message>
+    <message>
+        <source>Reading the tuning parameters failed: %1</source>
+        <translation>读取调谐参数失败：%1</translation>
+    </message>
+    <message>
+        <source>Not written: %1 Nothing was sent.</source>
+        <translation>未写入：%1 未向驱动器发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Not applied: %1 Nothing was sent.</source>
+        <translation>未应用：%1 未向驱动器发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Not applied: reading the drive failed: %1</source>
+        <translation>未应用：读取驱动器失败：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: the drive already has these %n value(s); nothing written.</source>
+        <translation>
+            <numerusform>%1：驱动器已是这 %n 个值；未写入任何内容。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n written and read back.</source>
+        <translation>
+            <numerusform>%n 个已写入并回读校验。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 applied:</source>
+        <translation>已应用 %1：</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n already equal.</source>
+        <translation>
+            <numerusform>%n 个本已相同。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not verified: %1.</source>
+        <translation>未经校验：%1。</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>读取</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>写入</translation>
+    </message>
+    <message>
+        <source>Write the edited values and read them back.</source>
+        <translation>写入已编辑的值并回读校验。</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s dictionary…</source>
+        <translation>正在读取驱动器的参数字典…</translation>
+    </message>
+    <message>
+        <source>This drive&apos;s dictionary names no tuning parameters. A dictionary with a &quot;tuning&quot; group names them (docs/dictionaries.md).</source>
+        <translation>该驱动器的参数字典未列出调谐参数。带有 "tuning" 组的字典可以列出它们（见 docs/dictionaries.md）。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s dictionary names no tuning parameters: shown are the DriveDesk simulator&apos;s loop gains (its own model). On a real drive these parameters may mean something else.</source>
+        <translation>该驱动器的参数字典未列出调谐参数：此处显示的是 DriveDesk 模拟器的环路增益（模拟器自身的模型）。在真实驱动器上，这些参数可能另有含义。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TuningPanel</name>
+    <message>
+        <source>Capture stopped: %1</source>
+        <translation>捕获已停止：%1</translation>
+    </message>
+    <message>
+        <source>Tuning</source>
+        <translation>调谐</translation>
+    </message>
+    <message>
+        <source>This drive reports no live channels to capture.</source>
+        <translation>该驱动器没有可捕获的实时通道。</translation>
+    </message>
+    <message>
+        <source>Filling the pre-trigger window…</source>
+        <translation>正在填充预触发窗口…</translation>
+    </message>
+    <message>
+        <source>Armed: waiting for the trigger %1.</source>
+        <translation>已布防：等待触发 %1。</translation>
+    </message>
+    <message>
+        <source>Triggered: recording…</source>
+        <translation>已触发：正在记录…</translation>
+    </message>
+    <message>
+        <source>Capturing…</source>
+        <translation>正在捕获…</translation>
+    </message>
+    <message>
+        <source>Captured %1 samples (%2 before the trigger), interval %3 ms.</source>
+        <translation>已捕获 %1 个样本（触发前 %2 个），采样间隔 %3 毫秒。</translation>
+    </message>
+    <message>
+        <source>capture %1 · %2</source>
+        <translation>捕获 %1 · %2</translation>
+    </message>
+    <message>
+        <source>The tuning parameters could not be read: %1</source>
+        <translation>无法读取调谐参数：%1</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>Select a run whose parameters to apply.</source>
+        <translation>请选择要应用其参数的运行记录。</translation>
+    </message>
+    <message>
+        <source>The selected run holds no tuning parameters.</source>
+        <translation>所选运行记录不含调谐参数。</translation>
+    </message>
+    <message>
+        <source>Busy with the drive.</source>
+        <translation>正在与驱动器通信。</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s identity…</source>
+        <translation>正在读取驱动器信息…</translation>
+    </message>
+    <message>
+        <source>This drive offers no live values to capture: %1</source>
+        <translation>该驱动器不提供可捕获的实时值：%1</translation>
+    </message>
+    <message>
+        <source>Show:</source>
+        <translation>显示：</translation>
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation>运行记录</translation>
+    </message>
+    <message>
+        <source>Spectrum</source>
+        <translation>频谱</translation>
+    </message>
+    <message>
+        <source>Step test</source>
+        <translation>阶跃测试</translation>
+    </message>
+    <message>
+        <source>Capture</source>
+        <translation>捕获</translation>
+    </message>
+    <message>
+        <source>Tuning parameters</source>
+        <translation>调谐参数</translation>
+    </message>
+    <message>
+        <source>Apply this run&apos;s parameters</source>
+        <translation>应用此运行记录的参数</translation>
+    </message>
+    <message>
+        <source>Step tests are not available in this version yet: capture a step with Arm and Force meanwhile.</source>
+        <translation>此版本尚未提供阶跃测试：目前请用“布防”和“强制触发”捕获阶跃。</translation>
+    </message>
+</context>
 </TS>

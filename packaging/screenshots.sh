@@ -41,3 +41,5 @@ shoot en alarms alarms-en.png
 shoot en ee eeprom-en.png
 shoot en motion motion-en.png servo-can
 shoot zh_CN motion motion-zh_CN.png servo-can
+shoot en tuning tuning-en.png servo-can
+shoot zh_CN tuning tuning-zh_CN.png servo-can

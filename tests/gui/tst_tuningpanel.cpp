@@ -21,7 +21,10 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -47,8 +50,7 @@ bool captureOnce(TuningPanel *tuning, QString *why)
         return false;
     }
     // Force once the pre-trigger window is full (the recorder watches the trigger then).
-    if (!waitUntil([&] { return tuning->captureControls()->stateText().startsWith(QStringLiteral("Armed")); },
-                   5000)) {
+    if (!waitUntil([&] { return tuning->captureControls()->stateText().startsWith(QStringLiteral("Armed")); }, 5000)) {
         *why = QStringLiteral("never armed: ") + tuning->captureControls()->stateText();
         return false;
     }
@@ -155,8 +157,8 @@ private slots:
         tuning->runList()->select(0);
         QVERIFY(tuning->applyButton()->isEnabled());
         tuning->applyButton()->click();
-        QVERIFY(waitUntil([&] { return parametersTab->parameters()->value(pa5).value == 40 && !editor->isBusy(); },
-                          5000));
+        QVERIFY(
+            waitUntil([&] { return parametersTab->parameters()->value(pa5).value == 40 && !editor->isBusy(); }, 5000));
         QVERIFY2(editor->message().contains(QStringLiteral("1 written and read back")), qPrintable(editor->message()));
 
         // Saved and opened again, a run round-trips into the list.
@@ -285,10 +287,10 @@ private slots:
         QCoreApplication::processEvents();
         tuning->resize(width - 8, 560);
         QCoreApplication::processEvents();
-        QVERIFY2(tuning->minimumSizeHint().width() <= tuning->width(),
-                 qPrintable(QStringLiteral("needs %1 px, has %2")
-                                .arg(tuning->minimumSizeHint().width())
-                                .arg(tuning->width())));
+        QVERIFY2(
+            tuning->minimumSizeHint().width() <= tuning->width(),
+            qPrintable(
+                QStringLiteral("needs %1 px, has %2").arg(tuning->minimumSizeHint().width()).arg(tuning->width())));
         for (QScrollBar *bar : tuning->findChildren<QScrollBar *>())
             if (bar->orientation() == Qt::Horizontal && bar->parentWidget()
                 && bar->parentWidget()->objectName() != QLatin1String("qt_scrollarea_hcontainer"))
@@ -303,6 +305,24 @@ private slots:
             if (w->inherits("QAbstractButton"))
                 QVERIFY2(w->width() >= w->minimumSizeHint().width(), qPrintable(w->objectName()));
         }
+        // The side column (a vertical scroll area) shows its content whole: never cut, never
+        // scrolled sideways.
+        QScrollArea *side = tuning->sidePanel();
+        QVERIFY2(side->widget()->width() <= side->viewport()->width(),
+                 qPrintable(QStringLiteral("%1 > %2").arg(side->widget()->width()).arg(side->viewport()->width())));
+        QVERIFY(side->widget()->minimumSizeHint().width() <= side->viewport()->width());
+        // Every form field has its label.
+        int fields = 0;
+        for (QFormLayout *form : side->widget()->findChildren<QFormLayout *>())
+            for (int row = 0; row < form->rowCount(); ++row) {
+                auto *label = qobject_cast<QLabel *>(form->itemAt(row, QFormLayout::LabelRole)
+                                                         ? form->itemAt(row, QFormLayout::LabelRole)->widget()
+                                                         : nullptr);
+                QVERIFY(label);
+                QVERIFY(!label->text().isEmpty());
+                ++fields;
+            }
+        QVERIFY(fields >= 14);
         if (chinese)
             language.apply(LanguageManager::Language::English);
     }
@@ -324,7 +344,8 @@ private slots:
         QVERIFY(tuning->captureControls()->armButton()->text() != arm);
         QVERIFY(tuning->stepControls()->blockedReason() != reason);
         QVERIFY(tuning->comparison()->table()->verticalHeaderItem(0) == nullptr
-                || tuning->comparison()->table()->verticalHeaderItem(0)->text() != QStringLiteral("Rise time (10–90 %)"));
+                || tuning->comparison()->table()->verticalHeaderItem(0)->text()
+                    != QStringLiteral("Rise time (10–90 %)"));
         QVERIFY(language.apply(LanguageManager::Language::English));
         QCoreApplication::sendPostedEvents();
         QCOMPARE(tuning->captureControls()->armButton()->text(), arm);

@@ -14,10 +14,9 @@ namespace dd {
 namespace {
 const QList<TriggerSpec::Kind> &kinds()
 {
-    static const QList<TriggerSpec::Kind> k{TriggerSpec::Kind::Now,    TriggerSpec::Kind::Rise,
-                                            TriggerSpec::Kind::Fall,   TriggerSpec::Kind::Either,
-                                            TriggerSpec::Kind::Above,  TriggerSpec::Kind::Below,
-                                            TriggerSpec::Kind::Alarm};
+    static const QList<TriggerSpec::Kind> k{
+        TriggerSpec::Kind::Now,   TriggerSpec::Kind::Rise,  TriggerSpec::Kind::Fall, TriggerSpec::Kind::Either,
+        TriggerSpec::Kind::Above, TriggerSpec::Kind::Below, TriggerSpec::Kind::Alarm};
     return k;
 }
 const QList<CaptureSettings::Mode> &modes()
@@ -67,13 +66,13 @@ CaptureControls::CaptureControls(QWidget *parent)
     m_form = new QFormLayout;
     m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    m_form->addRow(QString(), m_kind);
-    m_form->addRow(QString(), m_channel);
-    m_form->addRow(QString(), m_level);
-    m_form->addRow(QString(), m_pre);
-    m_form->addRow(QString(), m_length);
-    m_form->addRow(QString(), m_mode);
-    m_form->addRow(QString(), m_timeout);
+    m_form->addRow(new QLabel(this), m_kind);
+    m_form->addRow(new QLabel(this), m_channel);
+    m_form->addRow(new QLabel(this), m_level);
+    m_form->addRow(new QLabel(this), m_pre);
+    m_form->addRow(new QLabel(this), m_length);
+    m_form->addRow(new QLabel(this), m_mode);
+    m_form->addRow(new QLabel(this), m_timeout);
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_arm);
     buttons->addWidget(m_force);
@@ -141,9 +140,8 @@ void CaptureControls::setRunning(bool running, const QString &state)
     m_force->setEnabled(running);
     m_stop->setEnabled(running);
     for (QWidget *w : {static_cast<QWidget *>(m_kind), static_cast<QWidget *>(m_channel),
-                       static_cast<QWidget *>(m_level), static_cast<QWidget *>(m_pre),
-                       static_cast<QWidget *>(m_length), static_cast<QWidget *>(m_mode),
-                       static_cast<QWidget *>(m_timeout)})
+                       static_cast<QWidget *>(m_level), static_cast<QWidget *>(m_pre), static_cast<QWidget *>(m_length),
+                       static_cast<QWidget *>(m_mode), static_cast<QWidget *>(m_timeout)})
         w->setEnabled(!running);
     if (!running)
         updateLevelFields();
@@ -167,9 +165,9 @@ void CaptureControls::updateLevelFields()
 
 void CaptureControls::retranslate()
 {
-    const QStringList kindNames{tr("At once"),      tr("Rising through level"), tr("Falling through level"),
-                                tr("Either way through level"), tr("Above level"), tr("Below level"),
-                                tr("Alarm raised")};
+    const QStringList kindNames{
+        tr("At once"),     tr("Rising through level"), tr("Falling through level"), tr("Either way through level"),
+        tr("Above level"), tr("Below level"),          tr("Alarm raised")};
     for (int i = 0; i < kindNames.size(); ++i)
         m_kind->setItemText(i, kindNames.at(i));
     const QStringList modeNames{tr("Single"), tr("Normal (re-arm)"), tr("Auto (time-out)")};

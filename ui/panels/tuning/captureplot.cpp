@@ -39,9 +39,8 @@ CapturePlot::CapturePlot(QWidget *parent)
         const double d = (m_toS - m_fromS) * fraction;
         setTimeWindow(m_fromS + d, m_toS + d);
     });
-    connect(m_plot, &TrendPlot::zoomToRect, this, [this](const QRectF &r) {
-        setTimeWindow(m_plot->timeAtX(r.left()), m_plot->timeAtX(r.right()));
-    });
+    connect(m_plot, &TrendPlot::zoomToRect, this,
+            [this](const QRectF &r) { setTimeWindow(m_plot->timeAtX(r.left()), m_plot->timeAtX(r.right())); });
     changeEvent(nullptr);
     updateReadout();
 }

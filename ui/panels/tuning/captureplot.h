@@ -50,8 +50,8 @@ public:
     // Min/max decimation of (time, values) inside [fromS, toS] to `columns` buckets: per
     // bucket the lowest and highest sample in time order, plus the nearest sample outside
     // each end so that the line reaches the edges. NaN breaks the line.
-    static QList<QPointF> decimate(const QVector<double> &time, const QVector<double> &values, double fromS,
-                                   double toS, int columns);
+    static QList<QPointF> decimate(const QVector<double> &time, const QVector<double> &values, double fromS, double toS,
+                                   int columns);
     // Linear interpolation at t; nullopt outside the samples or next to a NaN.
     static std::optional<double> valueAt(const QVector<double> &time, const QVector<double> &values, double t);
 

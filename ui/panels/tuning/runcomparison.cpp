@@ -155,9 +155,9 @@ void RunComparison::refresh()
                 if (!m.reason.isEmpty())
                     notes << tr("%1, %2: %3").arg(run.label, metricName(keys.at(r)).toLower(), m.reason);
             } else if (m.resolution > 0.0) {
-                item->setToolTip(tr("Resolution: %1").arg(isTime(keys.at(r))
-                                                              ? tr("%1 ms").arg(m.resolution * 1000.0, 0, 'g', 3)
-                                                              : QString::number(m.resolution, 'g', 3)));
+                item->setToolTip(tr("Resolution: %1")
+                                     .arg(isTime(keys.at(r)) ? tr("%1 ms").arg(m.resolution * 1000.0, 0, 'g', 3)
+                                                             : QString::number(m.resolution, 'g', 3)));
             }
             m_table->setItem(r, c, item);
         }

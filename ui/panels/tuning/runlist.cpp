@@ -60,10 +60,8 @@ void RunList::addRun(const TuningRun &run)
     auto *item = new QListWidgetItem(run.label, m_list);
     item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
     item->setCheckState(Qt::Checked);
-    item->setToolTip(tr("%1 · %2 samples · trigger %3")
-                         .arg(run.test)
-                         .arg(run.capture.time.size())
-                         .arg(run.capture.triggerSource));
+    item->setToolTip(
+        tr("%1 · %2 samples · trigger %3").arg(run.test).arg(run.capture.time.size()).arg(run.capture.triggerSource));
     m_filling = false;
     m_list->setCurrentRow(m_list->count() - 1);
     emit overlayChanged();

@@ -87,8 +87,7 @@ void SpectrumView::retranslate()
     if (m_spectrum.isEmpty()) {
         m_plot->setSeries({});
         m_plot->setTimeTitle(tr("Frequency (Hz)"));
-        m_peaks->setText(!m_haveRun ? tr("Select a run to see its spectrum.")
-                                    : tr("No spectrum: %1").arg(m_error));
+        m_peaks->setText(!m_haveRun ? tr("Select a run to see its spectrum.") : tr("No spectrum: %1").arg(m_error));
         return;
     }
     m_plot->setTimeTitle(tr("Frequency (Hz) · %1 window, resolution %2 Hz, %3 points at %4 Hz")

@@ -54,13 +54,13 @@ StepTestControls::StepTestControls(QWidget *parent)
         f->setRowWrapPolicy(QFormLayout::WrapLongRows);
         f->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     }
-    m_limits->addRow(QString(), m_maxSpeed);
-    m_limits->addRow(QString(), m_maxTravel);
-    m_limits->addRow(QString(), m_maxDuration);
-    m_size->addRow(QString(), m_test);
-    m_size->addRow(QString(), m_speed);
-    m_size->addRow(QString(), m_duration);
-    m_size->addRow(QString(), m_distance);
+    m_limits->addRow(new QLabel(this), m_maxSpeed);
+    m_limits->addRow(new QLabel(this), m_maxTravel);
+    m_limits->addRow(new QLabel(this), m_maxDuration);
+    m_size->addRow(new QLabel(this), m_test);
+    m_size->addRow(new QLabel(this), m_speed);
+    m_size->addRow(new QLabel(this), m_duration);
+    m_size->addRow(new QLabel(this), m_distance);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_limitsTitle);
     layout->addLayout(m_limits);

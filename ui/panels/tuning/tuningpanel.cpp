@@ -23,8 +23,10 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSplitter>
+#include <QStyle>
 #include <QTabWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace dd {
 
@@ -49,7 +51,8 @@ TuningPanel::TuningPanel(const DriveContext &context, QWidget *parent)
     connect(m_capture, &HubCapture::failed, this, [this](const Error &e) {
         const QString why = e.message;
         m_lastCaptureState = why;
-        showMessage(m_message, [why] { return tr("Capture stopped: %1").arg(why); }, MessageKind::Problem);
+        showMessage(
+            m_message, [why] { return tr("Capture stopped: %1").arg(why); }, MessageKind::Problem);
         reportError(e);
         updateCaptureState();
     });
@@ -131,8 +134,7 @@ void TuningPanel::buildUi()
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(rightBox);
-    scroll->setMinimumWidth(260);
-    scroll->setMaximumWidth(330);
+    m_side = scroll;
 
     auto *body = new QHBoxLayout(m_body);
     body->setContentsMargins(0, 0, 0, 0);
@@ -192,8 +194,8 @@ void TuningPanel::arm()
     if (settings.trigger.isLevel() && !channels.contains(settings.trigger.channel))
         channels << settings.trigger.channel;
     if (channels.isEmpty()) {
-        showMessage(m_message, [] { return tr("This drive reports no live channels to capture."); },
-                    MessageKind::Problem);
+        showMessage(
+            m_message, [] { return tr("This drive reports no live channels to capture."); }, MessageKind::Problem);
         return;
     }
     m_message->clear();
@@ -278,7 +280,9 @@ void TuningPanel::onCaptured(const CaptureData &capture)
         run.metricsChannel = input.channel;
         run.metrics = StepMetrics::compute(capture, input);
     }
-    run.label = tr("capture %1 · %2").arg(m_captureCount).arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")));
+    run.label = tr("capture %1 · %2")
+                    .arg(m_captureCount)
+                    .arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")));
 
     // The tuning parameters as the drive has them now (read, not assumed).
     QList<int> indices;
@@ -402,7 +406,7 @@ void TuningPanel::loadDictionary()
                 *dictionary = std::shared_ptr<const ParameterDictionary>(&ParameterDictionary::bundled(family),
                                                                          [](const ParameterDictionary *) {});
             for (const TuningEntry &e : TuningParametersEditor::entriesFor(**dictionary, family))
-                    *indices << e.index;
+                *indices << e.index;
             return d.readParameters(*indices);
         },
         [self, dictionary, indices](const DriveResult &r) {
@@ -443,7 +447,8 @@ void TuningPanel::retranslate()
     if (!info.valid)
         m_unavailable->setText(tr("Reading the drive's identity…"));
     else if (!monitor)
-        m_unavailable->setText(tr("This drive offers no live values to capture: %1").arg(info.reason(Capability::Monitor)));
+        m_unavailable->setText(
+            tr("This drive offers no live values to capture: %1").arg(info.reason(Capability::Monitor)));
     m_unavailable->setVisible(!info.valid || !monitor);
     m_body->setVisible(info.valid && monitor);
 
@@ -458,6 +463,24 @@ void TuningPanel::retranslate()
         false, tr("Step tests are not available in this version yet: capture a step with Arm and Force meanwhile."));
     updateCaptureState();
     updatePlotChannels();
+    updateSideWidth();
+}
+
+void TuningPanel::updateSideWidth()
+{
+    // As wide as its content needs beside a vertical scroll bar: never cut, never scrolled
+    // sideways (the content's needs change with the language).
+    QWidget *content = m_side->widget();
+    content->adjustSize();
+    const int bar = m_side->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_side);
+    const int need = std::max(240, content->minimumSizeHint().width()) + bar + 2 * m_side->frameWidth();
+    m_side->setFixedWidth(std::min(need, 380));
+}
+
+void TuningPanel::showEvent(QShowEvent *event)
+{
+    DrivePanel::showEvent(event);
+    updateSideWidth();
 }
 
 } // namespace dd

@@ -8,6 +8,7 @@
 class QComboBox;
 class QLabel;
 class QPushButton;
+class QScrollArea;
 class QTabWidget;
 
 namespace dd {
@@ -61,6 +62,7 @@ public:
     TuningParametersEditor *parametersEditor() const { return m_editor; }
     QComboBox *plotChannel() const { return m_plotChannel; }
     QPushButton *applyButton() const { return m_apply; }
+    QScrollArea *sidePanel() const { return m_side; }
     QString message() const;
 
 protected:
@@ -68,8 +70,10 @@ protected:
     void driveInfoChanged(const DriveInfo &info) override;
     void alarmChanged(int code) override;
     void retranslate() override;
+    void showEvent(QShowEvent *event) override;
 
 private:
+    void updateSideWidth();
     void buildUi();
     void loadDictionary();
     void onCaptured(const CaptureData &capture);
@@ -96,6 +100,7 @@ private:
     QLabel *m_message = nullptr;
     QLabel *m_unavailable = nullptr;
     QWidget *m_body = nullptr;
+    QScrollArea *m_side = nullptr;
     bool m_dictionaryAsked = false;
     int m_captureCount = 0;
     QString m_lastCaptureState;

@@ -290,8 +290,7 @@ void TuningParametersEditor::applySnapshot(const QList<TuningSnapshotEntry> &sna
         });
 }
 
-void TuningParametersEditor::writeValues(const QList<ParameterWrite> &writes, const QString &runLabel,
-                                         int alreadyEqual)
+void TuningParametersEditor::writeValues(const QList<ParameterWrite> &writes, const QString &runLabel, int alreadyEqual)
 {
     setBusy(true);
     QPointer<TuningParametersEditor> self(this);

@@ -14,6 +14,7 @@
 #include "cli/runcommands.h"
 #include "cli/scancommand.h"
 #include "cli/sourcediffcommand.h"
+#include "cli/stepcommand.h"
 
 namespace dd {
 
@@ -60,6 +61,10 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("ping"), {valued("count")}},
         {QStringLiteral("capture"),
          {valued("trigger"), valued("pre"), valued("duration"), valued("mode"), valued("timeout"), valued("notes"),
+          valued("output", QLatin1Char('o'))}},
+        {QStringLiteral("step"),
+         {valued("duration"), valued("speed"), valued("max-speed"), valued("max-travel"), valued("max-duration"),
+          valued("record"), valued("pre"), valued("channels"), flag("no-return"), valued("notes"),
           valued("output", QLatin1Char('o'))}},
         {QStringLiteral("runs"), {}},
         {QStringLiteral("spectrum"), {valued("peaks"), valued("from")}},
@@ -119,6 +124,8 @@ CliCommand *CliCommands::create(const QString &name, CliContext *context)
         return new PingCommand(context);
     if (name == QLatin1String("capture"))
         return new CaptureCommand(context);
+    if (name == QLatin1String("step"))
+        return new StepCommand(context);
     if (name == QLatin1String("runs"))
         return new RunsCommand(context);
     if (name == QLatin1String("spectrum"))

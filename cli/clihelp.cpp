@@ -83,6 +83,10 @@ QString CliHelp::commandList()
               "  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]\n"
               "          [--mode single|auto] [--timeout S] -o RUN.ddrun\n"
               "                                 triggered capture to a run file\n"
+              "  step velocity SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]\n"
+              "  step position DISTANCE --speed V --max-travel N [-o RUN.ddrun]\n"
+              "  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]\n"
+              "                                 step-response test within limits, with metrics\n"
               "  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences\n"
               "  spectrum RUN.ddrun CHANNEL [--peaks N]\n"
               "                                 a channel's spectrum and its peaks\n")
@@ -226,6 +230,24 @@ QString CliHelp::command(const QString &name)
                   "trigger (default 0), --duration the record (default 1 s); auto captures anyway\n"
                   "after --timeout seconds (default 1). Saves the samples and the drive's tuning\n"
                   "parameters (read from it) to RUN.ddrun (docs/tuning.md).\n");
+    if (name == QLatin1String("step"))
+        return tr("Usage: drivedesk-cli [OPTIONS] step velocity SPEED --duration S --max-speed V --max-travel N\n"
+                  "       drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]\n"
+                  "       drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N\n"
+                  "          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]\n"
+                  "          [--notes TEXT] [-o RUN.ddrun]\n"
+                  "velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.\n"
+                  "reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.\n"
+                  "The limits are required (exit 2, nothing sent, without them): --max-speed (the\n"
+                  "speed unit; a position step: 1.5 x --speed unless given), --max-travel from the\n"
+                  "start position (counts), --max-duration until the axis is at rest (default: the\n"
+                  "step's time + 2 s; position 10 s). The captured speed and position are watched\n"
+                  "against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends\n"
+                  "the test with exit code 1. The capture runs from --pre (0.05 s) before the motion\n"
+                  "command for --record seconds (default: the step's time + 0.3 s; position 1 s).\n"
+                  "A completed test returns to its start position (--no-return: it stays), prints\n"
+                  "the metrics with their resolution or why they cannot be resolved, and saves the\n"
+                  "run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).\n");
     if (name == QLatin1String("runs"))
         return tr("Usage: drivedesk-cli runs RUN.ddrun [RUN2.ddrun ...]\n"
                   "The runs' metrics side by side, and the tuning parameters that differ between\n"

@@ -156,6 +156,7 @@ DriveReply *Drive::jog(qint32 speed)
 
 DriveReply *Drive::stop(bool emergency)
 {
+    emit stopRequested(emergency);
     const bool wasJogging = m_jogging;
     const bool leaseExpired = m_leaseStopping;
     endJogLease();

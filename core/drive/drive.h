@@ -102,6 +102,7 @@ signals:
     void alarmChanged(int code);               // 0 = cleared
     void jogLeaseExpired();                    // the axis was stopped by the lease
     void jogEnded(const dd::JogEnd &end);      // after the stop of a jog, or a lost link
+    void stopRequested(bool emergency);        // stop() was called, by anyone (a step test aborts)
     void connectionLost(const dd::Error &why); // the link went away
 
 protected:

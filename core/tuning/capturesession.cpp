@@ -71,11 +71,14 @@ void CaptureSession::onSample(double timeS, const QMap<QString, double> &values)
     for (const QString &c : std::as_const(m_channels))
         row.append(values.value(c, std::nan("")));
     const bool done = m_recorder.feed(timeS, row);
+    emit sampled(timeS, values);
+    if (m_recorder.state() == CaptureRecorder::State::Idle)
+        return; // stopped by a receiver of sampled()
     if (!m_watchingSent && m_recorder.state() != CaptureRecorder::State::Filling) {
         m_watchingSent = true;
         emit watching();
     }
-    if (!done)
+    if (!done || m_recorder.state() != CaptureRecorder::State::Done)
         return;
     const CaptureData data = m_recorder.take();
     if (m_settings.mode == CaptureSettings::Mode::Normal) {

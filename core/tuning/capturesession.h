@@ -36,6 +36,8 @@ public:
 signals:
     void watching(); // the pre-trigger window is full: the trigger is watched from now on
     void captured(const dd::CaptureData &capture);
+    // Every sample as it arrives (seconds on the samples' clock, value per channel).
+    void sampled(double timeS, const QMap<QString, double> &values);
     void failed(const dd::Error &error);
 
 private:

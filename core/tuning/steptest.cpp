@@ -1,0 +1,710 @@
+#include "core/tuning/steptest.h"
+
+#include "core/drive/drive.h"
+#include "core/params/parameterdictionary.h"
+#include "core/tuning/capturesession.h"
+
+#include <QDateTime>
+#include <cmath>
+
+namespace dd {
+
+namespace {
+constexpr int PollMs = 50;
+constexpr int StopConfirmMs = 3000; // the axis must be seen at rest this soon after a stop
+
+bool offers(const Drive *drive, const QString &channel)
+{
+    for (const ChannelInfo &i : drive->channels())
+        if (i.id == channel)
+            return true;
+    return false;
+}
+
+// The part of a reversal's capture around its reversal: from the middle of the first
+// segment on, with time 0 at the reversal (the samples before it are its "pre-trigger").
+CaptureData reversalPart(const CaptureData &c, double reversalAt)
+{
+    CaptureData out;
+    out.channels = c.channels;
+    out.triggerSource = c.triggerSource;
+    out.columns.resize(c.columns.size());
+    for (int i = 0; i < c.time.size(); ++i) {
+        const double t = c.time.at(i);
+        if (t < reversalAt / 2.0)
+            continue;
+        out.time.append(t - reversalAt);
+        for (int k = 0; k < c.columns.size(); ++k)
+            out.columns[k].append(c.columns.at(k).value(i, std::nan("")));
+        if (t < reversalAt)
+            ++out.preTriggerSamples;
+    }
+    out.interval = IntervalStats::of(out.time);
+    out.gaps = CaptureGap::of(out.time);
+    return out;
+}
+} // namespace
+
+StepTest::StepTest(Drive *drive, QObject *parent)
+    : QObject(parent)
+    , m_drive(drive)
+    , m_renew(this)
+    , m_step(this)
+    , m_limit(this)
+    , m_retry(this)
+{
+    qRegisterMetaType<dd::StepResult>();
+    m_renew.setTimerType(Qt::PreciseTimer);
+    m_step.setSingleShot(true);
+    m_step.setTimerType(Qt::PreciseTimer);
+    m_limit.setSingleShot(true);
+    m_retry.setSingleShot(true);
+    connect(&m_step, &QTimer::timeout, this, &StepTest::onStepTimer);
+    connect(&m_limit, &QTimer::timeout, this, [this] {
+        abortWith(
+            QStringLiteral("duration-limit"),
+            {ErrorCode::Cancelled,
+             tr("The motion was not at rest within the maximum duration of %1 s; stopped.").arg(m_limits.maxDurationS)});
+    });
+    if (!drive)
+        return;
+    connect(&m_renew, &QTimer::timeout, drive, &Drive::renewJogLease);
+    connect(drive, &Drive::alarmChanged, this, [this](int code) {
+        if (code != 0 && isRunning())
+            abortWith(
+                QStringLiteral("alarm"),
+                {ErrorCode::DriveException, tr("The drive raised alarm %1 during the step test.").arg(code), code});
+    });
+    connect(drive, &Drive::stopRequested, this, [this] {
+        if (isRunning() && !m_ownStop && m_result.moved)
+            abortWith(QStringLiteral("stop"), {ErrorCode::Cancelled, tr("STOP: the step test was stopped.")});
+    });
+    connect(drive, &Drive::jogLeaseExpired, this, [this] {
+        if (isRunning())
+            abortWith(QStringLiteral("lease-expired"),
+                      {ErrorCode::Cancelled, tr("The jog lease ran out and the drive stopped the axis.")});
+    });
+    connect(drive, &Drive::jogEnded, this, [this](const JogEnd &end) { m_jogEnd = end.message; });
+    connect(drive, &Drive::connectionLost, this, &StepTest::linkLost);
+}
+
+void StepTest::linkLost(const Error &why)
+{
+    if (!isRunning())
+        return;
+    m_linkLost = true;
+    abortWith(QStringLiteral("link-lost"),
+              {ErrorCode::LinkClosed, tr("The link was lost during the step test (%1).").arg(why.message)});
+}
+
+StepTest::~StepTest() = default;
+
+QString StepTest::phaseId(Phase phase)
+{
+    switch (phase) {
+    case Phase::Idle: return QStringLiteral("idle");
+    case Phase::Preparing: return QStringLiteral("preparing");
+    case Phase::Arming: return QStringLiteral("arming");
+    case Phase::Moving: return QStringLiteral("moving");
+    case Phase::Stopping: return QStringLiteral("stopping");
+    case Phase::Returning: return QStringLiteral("returning");
+    case Phase::Done: return QStringLiteral("done");
+    }
+    return {};
+}
+
+QStringList StepTest::channelsFor(const Drive *drive, StepSpec::Kind kind)
+{
+    QStringList wanted;
+    if (kind == StepSpec::Kind::Position)
+        wanted = {QStringLiteral("position"), QStringLiteral("position-error"), QStringLiteral("speed"),
+                  QStringLiteral("torque"), QStringLiteral("current")};
+    else
+        wanted = {QStringLiteral("speed"), QStringLiteral("speed-command"), QStringLiteral("torque"),
+                  QStringLiteral("current"), QStringLiteral("position")};
+    QStringList out;
+    if (!drive)
+        return out;
+    for (const QString &c : std::as_const(wanted))
+        if (offers(drive, c))
+            out << c;
+    return out;
+}
+
+Error StepTest::check(const Drive *drive, const StepSpec &spec, const StepLimits &limits)
+{
+    if (Error e = spec.check())
+        return e;
+    if (Error e = limits.check(spec))
+        return e;
+    if (!drive)
+        return {ErrorCode::InvalidArgument, tr("No drive to test.")};
+    QList<Capability> needed = {Capability::Monitor, Capability::Stop};
+    needed << (spec.kind == StepSpec::Kind::Position ? Capability::MoveRelative : Capability::Jog);
+    for (Capability c : needed)
+        if (!drive->hasCapability(c))
+            return {
+                ErrorCode::NotSupported,
+                tr("This drive cannot run a %1 step: %2").arg(StepSpec::kindId(spec.kind), drive->unsupportedReason(c))};
+    if (spec.returnToStart && !drive->hasCapability(Capability::MoveAbsolute)
+        && !drive->hasCapability(Capability::MoveRelative))
+        return {ErrorCode::NotSupported,
+                tr("This drive cannot move back to the start position; run the test without returning.")};
+    for (const QString &c : {QStringLiteral("speed"), QStringLiteral("position")})
+        if (!offers(drive, c))
+            return {ErrorCode::NotSupported,
+                    tr("This drive offers no %1 channel, which the step test's limits are watched on.").arg(c)};
+    for (const QString &c : spec.channels)
+        if (!offers(drive, c))
+            return {ErrorCode::InvalidArgument, tr("This drive has no channel %1.").arg(c)};
+    return {};
+}
+
+Error StepTest::start(const StepSpec &spec, const StepLimits &limits)
+{
+    if (isRunning())
+        return {ErrorCode::Busy, tr("A step test is already running.")};
+    if (Error e = check(m_drive, spec, limits))
+        return e;
+    ++m_generation;
+    m_spec = spec;
+    m_limits = limits;
+    m_channels = spec.channels.isEmpty() ? channelsFor(m_drive, spec.kind) : spec.channels;
+    for (const QString &c : {QStringLiteral("speed"), QStringLiteral("position")})
+        if (!m_channels.contains(c))
+            m_channels << c; // the limits are watched on them
+    m_result = StepResult();
+    m_capture = CaptureData();
+    m_haveCapture = false;
+    m_motionDone = false;
+    m_startKnown = false;
+    m_snapshot.clear();
+    m_segment = 0;
+    m_reversalAt = 0.0;
+    m_stopSent = false;
+    m_aborting = false;
+    m_linkLost = false;
+    m_ownStop = false;
+    m_jogEnd.clear();
+    setPhase(Phase::Preparing, tr("Reading the drive's state and tuning parameters."));
+    readState();
+    return {};
+}
+
+void StepTest::abort(const QString &reason)
+{
+    if (!isRunning())
+        return;
+    abortWith(QStringLiteral("stop"),
+              {ErrorCode::Cancelled, reason.isEmpty() ? tr("STOP: the step test was stopped.") : reason});
+}
+
+void StepTest::setPhase(Phase phase, const QString &message)
+{
+    m_phase = phase;
+    emit progress(phase, message);
+}
+
+void StepTest::watch(DriveReply *reply, std::function<void(DriveReply *)> handler)
+{
+    const quint64 generation = m_generation;
+    connect(reply, &DriveReply::finished, this, [this, reply, generation, handler = std::move(handler)] {
+        reply->deleteLater();
+        if (generation == m_generation)
+            handler(reply);
+    });
+}
+
+void StepTest::readState()
+{
+    watch(m_drive->readStatus(), [this](DriveReply *r) {
+        if (m_phase != Phase::Preparing)
+            return;
+        if (!r->ok()) {
+            m_result.error = r->error();
+            m_result.reason = tr("Could not read the drive's state: %1").arg(r->error().message);
+            return finish(StepResult::Outcome::Failed);
+        }
+        const DriveStatus s = r->status();
+        if (s.alarmCode != 0) {
+            m_result.error = {ErrorCode::DriveException,
+                              tr("The drive is in alarm %1: clear it before a step test.").arg(s.alarmCode),
+                              s.alarmCode};
+            m_result.reason = m_result.error.message;
+            return finish(StepResult::Outcome::Failed);
+        }
+        if (s.positionValid) {
+            m_start = s.position;
+            m_startKnown = true;
+        }
+        readSnapshot();
+    });
+}
+
+void StepTest::readSnapshot()
+{
+    const ParameterDictionary &dict = m_drive->parameterDictionary();
+    QList<int> indices;
+    for (const TuningEntry &e : dict.tuning())
+        indices << e.index;
+    if (indices.isEmpty())
+        return arm();
+    watch(m_drive->readParameters(indices), [this](DriveReply *r) {
+        if (m_phase != Phase::Preparing)
+            return;
+        if (!r->ok()) {
+            m_result.error = r->error();
+            m_result.reason = tr("Could not read the tuning parameters: %1").arg(r->error().message);
+            return finish(StepResult::Outcome::Failed);
+        }
+        const ParameterDictionary &d = m_drive->parameterDictionary();
+        for (const TuningEntry &e : d.tuning())
+            if (r->parameters().contains(e.index))
+                m_snapshot.append({e.index, d.byIndex(e.index)->key, e.role, r->parameters().value(e.index)});
+        arm();
+    });
+}
+
+void StepTest::arm()
+{
+    delete m_session;
+    m_session = new CaptureSession(m_drive, this);
+    CaptureSettings settings;
+    settings.trigger.kind = TriggerSpec::Kind::MotionStart;
+    settings.durationS = m_spec.preS + m_spec.recordSeconds();
+    settings.prePercent = 100.0 * m_spec.preS / settings.durationS;
+    settings.mode = CaptureSettings::Mode::Single;
+    m_settings = settings;
+    connect(m_session, &CaptureSession::watching, this, &StepTest::sendMotion);
+    connect(m_session, &CaptureSession::sampled, this, &StepTest::onSample);
+    connect(m_session, &CaptureSession::captured, this, &StepTest::onCaptured);
+    connect(m_session, &CaptureSession::failed, this, [this](const Error &e) {
+        abortWith(QStringLiteral("capture-failed"),
+                  {e.code == ErrorCode::None ? ErrorCode::Timeout : e.code, tr("The capture failed: %1").arg(e.message),
+                   e.driveCode});
+    });
+    setPhase(Phase::Arming, tr("Capturing %1 before the motion.").arg(m_channels.join(QStringLiteral(", "))));
+    m_session->start(settings, m_channels);
+}
+
+void StepTest::sendMotion()
+{
+    if (m_phase != Phase::Arming || m_aborting)
+        return;
+    if (!m_startKnown) {
+        abortWith(QStringLiteral("travel-limit"),
+                  {ErrorCode::NotSupported, tr("The start position is unknown: the travel limit cannot be watched.")});
+        return;
+    }
+    m_result.positionKnown = true;
+    m_result.startPosition = m_start;
+    m_result.endPosition = m_start;
+    setPhase(Phase::Moving,
+             m_spec.kind == StepSpec::Kind::Position
+                 ? tr("Moving by %1 at %2.").arg(m_spec.distance).arg(m_spec.speed)
+                 : tr("Running at %1 for %2 s.").arg(m_spec.speed).arg(m_spec.durationS));
+    m_result.moved = true;
+    m_motionClock.start();
+    m_limit.start(int(std::lround(m_limits.maxDurationS * 1000.0)));
+    DriveReply *r = nullptr;
+    if (m_spec.kind == StepSpec::Kind::Position) {
+        r = m_drive->moveRelative(m_spec.distance, m_spec.speed);
+    } else {
+        r = m_drive->jog(m_spec.speed);
+        m_renew.start(qMax(10, m_drive->jogLeaseMs() / 3));
+        m_step.start(int(std::lround(m_spec.durationS * 1000.0)));
+    }
+    m_triggerAt = m_session->now();
+    m_session->forceTrigger(QStringLiteral("motion"));
+    watch(r, [this](DriveReply *r) {
+        if (m_aborting || !isRunning())
+            return;
+        if (!r->ok()) {
+            const ErrorCode c = r->error().code;
+            if (c == ErrorCode::NotSupported || c == ErrorCode::OutOfRange || c == ErrorCode::InvalidArgument)
+                m_result.moved = false; // refused before anything was sent
+            abortWith(QStringLiteral("refused"), r->error());
+            return;
+        }
+        if (m_spec.kind == StepSpec::Kind::Position) {
+            m_motionDone = true;
+            if (m_haveCapture)
+                waitAtRest();
+        }
+    });
+}
+
+void StepTest::sendOwnStop(std::function<void(DriveReply *)> handler)
+{
+    m_ownStop = true;
+    DriveReply *r = m_drive->stop(false);
+    m_ownStop = false;
+    watch(r, std::move(handler));
+}
+
+void StepTest::onStepTimer()
+{
+    if (m_phase != Phase::Moving || m_aborting)
+        return;
+    if (m_spec.kind == StepSpec::Kind::Reversal && m_segment == 0) {
+        m_segment = 1;
+        m_reversalAt = m_session->now() - m_triggerAt;
+        watch(m_drive->jog(-m_spec.speed), [this](DriveReply *r) {
+            if (!r->ok() && !m_aborting && isRunning())
+                abortWith(QStringLiteral("refused"), r->error());
+        });
+        m_step.start(int(std::lround(m_spec.durationS * 1000.0)));
+        return;
+    }
+    m_renew.stop();
+    m_stopSent = true;
+    sendOwnStop([this](DriveReply *r) {
+        if (m_aborting || !isRunning())
+            return;
+        m_result.stoppedBy = r->info().value(QStringLiteral("stoppedBy")).toString();
+        if (!r->ok()) {
+            abortWith(QStringLiteral("stop-failed"), r->error());
+            return;
+        }
+        m_motionDone = true;
+        if (m_haveCapture)
+            waitAtRest();
+    });
+}
+
+void StepTest::onSample(double timeS, const QMap<QString, double> &values)
+{
+    Q_UNUSED(timeS);
+    emit sampled(timeS, values);
+    if (m_aborting || !isRunning())
+        return;
+    const double position = values.value(QStringLiteral("position"), std::nan(""));
+    if (!m_startKnown && m_phase == Phase::Arming && std::isfinite(position)) {
+        m_start = qint64(std::llround(position));
+        m_startKnown = true;
+    }
+    if (m_phase != Phase::Moving && m_phase != Phase::Stopping)
+        return;
+    const double speed = values.value(QStringLiteral("speed"), std::nan(""));
+    if (std::isfinite(speed) && std::abs(speed) > m_limits.maxSpeed) {
+        abortWith(QStringLiteral("speed-limit"),
+                  {ErrorCode::Cancelled,
+                   tr("The speed reached %1, above the maximum speed %2; stopped.").arg(speed).arg(m_limits.maxSpeed)});
+        return;
+    }
+    if (std::isfinite(position))
+        checkTravel(qint64(std::llround(position)));
+}
+
+bool StepTest::checkTravel(qint64 position)
+{
+    m_result.endPosition = position;
+    if (!m_startKnown || std::abs(double(position - m_start)) <= double(m_limits.maxTravel))
+        return true;
+    abortWith(QStringLiteral("travel-limit"),
+              {ErrorCode::Cancelled,
+               tr("The axis travelled %1 from the start, beyond the maximum travel %2; stopped.")
+                   .arg(position - m_start)
+                   .arg(m_limits.maxTravel)});
+    return false;
+}
+
+void StepTest::onCaptured(const CaptureData &capture)
+{
+    if (m_aborting || !isRunning())
+        return;
+    m_capture = capture;
+    m_haveCapture = true;
+    if (m_motionDone)
+        waitAtRest();
+}
+
+void StepTest::waitAtRest()
+{
+    setPhase(Phase::Stopping, tr("Waiting for the axis to come to rest."));
+    m_atRestPolls = 0;
+    pollAtRest();
+}
+
+void StepTest::pollAtRest()
+{
+    watch(m_drive->readStatus(), [this](DriveReply *r) {
+        if (m_aborting || m_phase != Phase::Stopping)
+            return;
+        if (!r->ok()) {
+            abortWith(QStringLiteral("link-lost"), r->error());
+            return;
+        }
+        const DriveStatus s = r->status();
+        if (s.alarmCode != 0) {
+            abortWith(QStringLiteral("alarm"),
+                      {ErrorCode::DriveException,
+                       tr("The drive raised alarm %1 during the step test.").arg(s.alarmCode), s.alarmCode});
+            return;
+        }
+        if (s.positionValid && !checkTravel(s.position))
+            return;
+        m_atRestPolls = s.running ? 0 : m_atRestPolls + 1;
+        // At rest twice in a row: the first status at rest can carry reads taken while the
+        // axis still settled.
+        if (m_atRestPolls >= 2) {
+            m_limit.stop();
+            m_result.stopConfirmed = true;
+            return afterRest();
+        }
+        QTimer::singleShot(PollMs, this, [this, g = m_generation] {
+            if (g == m_generation)
+                pollAtRest();
+        });
+    });
+}
+
+void StepTest::afterRest()
+{
+    buildRun();
+    if (m_spec.returnToStart)
+        return goBack();
+    finish(StepResult::Outcome::Completed);
+}
+
+void StepTest::buildRun()
+{
+    TuningRun &run = m_result.run;
+    run.created = QDateTime::currentDateTimeUtc();
+    const DriveIdentity id = m_drive->identity();
+    run.family = familyId(m_drive->family());
+    run.address = m_drive->address();
+    run.model = id.model;
+    run.firmware = id.firmware;
+    run.linkDescription = id.link;
+    run.linkKind = id.link.contains(QLatin1String("can"), Qt::CaseInsensitive) ? QStringLiteral("can")
+                                                                               : QStringLiteral("serial");
+    run.test = StepSpec::testId(m_spec.kind);
+    QJsonObject p{{QStringLiteral("speed"), m_spec.speed},
+                  {QStringLiteral("maxSpeed"), m_limits.maxSpeed},
+                  {QStringLiteral("maxTravel"), double(m_limits.maxTravel)},
+                  {QStringLiteral("maxDuration"), m_limits.maxDurationS},
+                  {QStringLiteral("startPosition"), double(m_start)},
+                  {QStringLiteral("returnToStart"), m_spec.returnToStart}};
+    if (m_spec.kind == StepSpec::Kind::Position)
+        p.insert(QStringLiteral("distance"), double(m_spec.distance));
+    else
+        p.insert(QStringLiteral("duration"), m_spec.durationS);
+    run.testParameters = p;
+    run.settings = m_settings;
+    run.capture = m_capture;
+    run.units.clear();
+    for (const QString &c : std::as_const(m_capture.channels)) {
+        QString unit;
+        for (const ChannelInfo &i : m_drive->channels())
+            if (i.id == c)
+                unit = i.unit;
+        run.units << unit;
+    }
+    run.tuning = m_snapshot;
+    run.label = QStringLiteral("%1 %2").arg(run.test, run.created.toLocalTime().toString(QStringLiteral("HH:mm:ss")));
+
+    StepMetrics::Input in;
+    switch (m_spec.kind) {
+    case StepSpec::Kind::Velocity:
+        in.channel = QStringLiteral("speed");
+        in.target = m_spec.speed;
+        in.stepEnd = m_spec.durationS;
+        run.metrics = StepMetrics::compute(m_capture, in);
+        break;
+    case StepSpec::Kind::Reversal: {
+        // Measured on the reversal itself: from +speed (settled) to -speed.
+        in.channel = QStringLiteral("speed");
+        in.target = -m_spec.speed;
+        in.stepEnd = m_spec.durationS;
+        const double at = m_reversalAt > 0.0 ? m_reversalAt : m_spec.durationS;
+        run.metrics = StepMetrics::compute(reversalPart(m_capture, at), in);
+        break;
+    }
+    case StepSpec::Kind::Position:
+        in.channel = QStringLiteral("position");
+        in.target = double(m_start + m_spec.distance);
+        run.metrics = StepMetrics::compute(m_capture, in);
+        break;
+    }
+    run.metricsChannel = in.channel;
+    m_result.hasRun = true;
+}
+
+void StepTest::goBack()
+{
+    if (m_result.endPosition == m_start) {
+        m_result.returnedToStart = true;
+        return finish(StepResult::Outcome::Completed);
+    }
+    setPhase(Phase::Returning, tr("Returning to the start position %1.").arg(m_start));
+    const qint32 speed = qint32(std::abs(m_spec.speed));
+    DriveReply *r = m_drive->hasCapability(Capability::MoveAbsolute)
+        ? m_drive->moveAbsolute(m_start, speed)
+        : m_drive->moveRelative(m_start - m_result.endPosition, speed);
+    // The way back is as long as the way out at the test's speed: allow the test's time.
+    m_limit.start(int(std::lround(m_limits.maxDurationS * 1000.0)));
+    m_atRestPolls = 0;
+    m_sawRunning = false;
+    m_motionClock.start();
+    watch(r, [this](DriveReply *r) {
+        if (m_aborting || m_phase != Phase::Returning)
+            return;
+        if (!r->ok()) {
+            m_result.stopNote = tr("Could not return to the start position: %1").arg(r->error().message);
+            return finish(StepResult::Outcome::Completed);
+        }
+        pollBack();
+    });
+}
+
+void StepTest::pollBack()
+{
+    watch(m_drive->readStatus(), [this](DriveReply *r) {
+        if (m_aborting || m_phase != Phase::Returning)
+            return;
+        if (!r->ok()) {
+            abortWith(QStringLiteral("link-lost"), r->error());
+            return;
+        }
+        const DriveStatus s = r->status();
+        if (s.alarmCode != 0) {
+            abortWith(QStringLiteral("alarm"),
+                      {ErrorCode::DriveException,
+                       tr("The drive raised alarm %1 during the step test.").arg(s.alarmCode), s.alarmCode});
+            return;
+        }
+        if (s.positionValid)
+            m_result.endPosition = s.position;
+        if (s.running) {
+            m_sawRunning = true;
+            m_atRestPolls = 0;
+        } else {
+            ++m_atRestPolls;
+        }
+        const bool there = s.positionValid && std::abs(double(s.position - m_start)) <= 1.0;
+        if ((m_sawRunning && m_atRestPolls >= 2) || (m_atRestPolls >= 3 && (there || m_motionClock.elapsed() >= 300))) {
+            m_limit.stop();
+            m_result.returnedToStart = there;
+            if (!there)
+                m_result.stopNote = tr("The axis came to rest at %1, not at the start position %2.")
+                                        .arg(m_result.endPosition)
+                                        .arg(m_start);
+            return finish(StepResult::Outcome::Completed);
+        }
+        QTimer::singleShot(PollMs, this, [this, g = m_generation] {
+            if (g == m_generation)
+                pollBack();
+        });
+    });
+}
+
+void StepTest::abortWith(const QString &cause, const Error &error)
+{
+    if (m_aborting || !isRunning())
+        return;
+    m_aborting = true;
+    m_renew.stop();
+    m_step.stop();
+    m_limit.stop();
+    if (m_session)
+        m_session->stop();
+    m_result.abortCause = cause;
+    m_result.error = error;
+    m_result.reason = error.message;
+    if (!m_result.moved) {
+        // Nothing was moved: nothing to stop.
+        m_result.stopConfirmed = true;
+        return finish(cause == QLatin1String("refused") ? StepResult::Outcome::Failed : StepResult::Outcome::Aborted);
+    }
+    setPhase(Phase::Stopping, tr("Stopping the axis: %1").arg(error.message));
+    if (m_linkLost) {
+        m_result.stoppedBy = m_drive && m_drive->watchdogMs() > 0 ? QStringLiteral("drive-watchdog")
+                                                                  : QStringLiteral("nothing");
+        m_result.stopNote = !m_jogEnd.isEmpty() ? m_jogEnd
+            : m_drive && m_drive->watchdogMs() > 0
+            ? tr("No stop could be sent: the drive's own watchdog stops the axis; check that it has stopped.")
+            : tr("No stop could be sent: the axis may still be moving; use the machine's emergency stop.");
+        return finish(StepResult::Outcome::Aborted);
+    }
+    sendOwnStop([this](DriveReply *r) {
+        m_result.stoppedBy = r->info().value(QStringLiteral("stoppedBy")).toString();
+        if (!r->ok()) {
+            m_result.stopNote = m_result.stoppedBy == QLatin1String("drive-watchdog")
+                ? tr("STOP FAILED: %1 The drive's own watchdog stops the axis when it hears nothing from us; "
+                     "check that it has stopped.")
+                      .arg(r->error().message)
+                : tr("STOP FAILED: %1 The axis may still be moving: use the machine's emergency stop.")
+                      .arg(r->error().message);
+            return finish(StepResult::Outcome::Aborted);
+        }
+        m_atRestPolls = 0;
+        m_emergencySent = false;
+        m_motionClock.start();
+        confirmStopped();
+    });
+}
+
+void StepTest::confirmStopped()
+{
+    watch(m_drive->readStatus(), [this](DriveReply *r) {
+        if (m_phase != Phase::Stopping)
+            return;
+        if (!r->ok()) {
+            m_result.stopNote = tr("The stop was sent, but the axis could not be seen at rest: %1")
+                                    .arg(r->error().message);
+            return finish(StepResult::Outcome::Aborted);
+        }
+        const DriveStatus s = r->status();
+        if (s.positionValid)
+            m_result.endPosition = s.position;
+        m_atRestPolls = s.running ? 0 : m_atRestPolls + 1;
+        if (m_atRestPolls >= 2) {
+            m_result.stopConfirmed = true;
+            m_result.stopNote = tr("The axis stopped at %1 (%2 from the start).")
+                                    .arg(m_result.endPosition)
+                                    .arg(m_result.endPosition - m_start);
+            return finish(StepResult::Outcome::Aborted);
+        }
+        if (m_motionClock.elapsed() > StopConfirmMs) {
+            if (!m_emergencySent && m_drive->hasCapability(Capability::EmergencyStop)) {
+                m_emergencySent = true;
+                m_motionClock.start();
+                m_ownStop = true;
+                DriveReply *e = m_drive->stop(true);
+                m_ownStop = false;
+                connect(e, &DriveReply::finished, e, &QObject::deleteLater);
+            } else {
+                m_result.stopNote = tr("The axis was not seen at rest %1 s after the stop: check it; use the "
+                                       "machine's emergency stop if it still moves.")
+                                        .arg(StopConfirmMs / 1000);
+                return finish(StepResult::Outcome::Aborted);
+            }
+        }
+        QTimer::singleShot(PollMs, this, [this, g = m_generation] {
+            if (g == m_generation)
+                confirmStopped();
+        });
+    });
+}
+
+void StepTest::finish(StepResult::Outcome outcome)
+{
+    m_renew.stop();
+    m_step.stop();
+    m_limit.stop();
+    if (m_session)
+        m_session->stop();
+    m_result.outcome = outcome;
+    ++m_generation; // late replies of this test are ignored
+    QString line;
+    switch (outcome) {
+    case StepResult::Outcome::Completed: line = tr("Step test completed."); break;
+    case StepResult::Outcome::Aborted: line = tr("Step test aborted: %1").arg(m_result.reason); break;
+    case StepResult::Outcome::Failed: line = tr("Step test not run: %1").arg(m_result.reason); break;
+    }
+    setPhase(Phase::Done, line);
+    emit finished(m_result);
+}
+
+} // namespace dd

@@ -4724,72 +4724,6 @@ Servo enable on or off.
 </translation>
     </message>
     <message>
-        <source>Commands:
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 find drives: family, address, baud, firmware, state
-  info                           identity, firmware, state, alarm, capabilities
-  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
-  set PARAM=VALUE ...            validate, write, read back, report verified or not
-  backup -o FILE [--changed-only] every readable parameter to a backup file
-  backup (--all | --address 1,2,5) -o DIR
-                                 one file per drive, FAMILY-ADDRESS.json, and index.json
-  diff FILE | diff A B           compare; A, B = FILE, drive, drive:ADDRESS or defaults
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 write the differences, verify each
-  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
-                                 the same to several drives, each at its address
-  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 sample live values (Ctrl-C ends)
-  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 move, and wait until the axis is at rest
-  stop [--emergency]             stop (emergency stop where the family has one)
-  enable on|off                  servo enable on or off
-  clear-alarm                    clear the alarm and check that it is gone
-  home [--positive] [--no-wait]  homing, negative direction first
-  channels                       the monitor channels this drive offers
-  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
-          [--mode single|auto] [--timeout S] -o RUN.ddrun
-                                 triggered capture to a run file
-  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences
-  spectrum RUN.ddrun CHANNEL [--peaks N]
-                                 a channel&apos;s spectrum and its peaks
-</source>
-        <translation>命令：
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 查找驱动器：系列、地址、波特率、固件、状态
-  info                           标识、固件、状态、报警、支持的功能
-  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
-  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
-  backup -o FILE [--changed-only] 将全部可读参数备份到文件
-  backup (--all | --address 1,2,5) -o DIR
-                                 每台驱动器一个文件 FAMILY-ADDRESS.json，另有 index.json
-  diff FILE | diff A B           比较；A、B 为 FILE、drive、drive:ADDRESS 或 defaults
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 写入有差异的参数，并逐个校验
-  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
-                                 同上，写入多台驱动器，各用其自己的地址
-  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 采样实时值（Ctrl-C 结束）
-  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 定位运动，并等待轴静止
-  stop [--emergency]             停止（该系列支持时可急停）
-  enable on|off                  伺服使能开或关
-  clear-alarm                    清除报警并确认报警已消除
-  home [--positive] [--no-wait]  回零，先向负方向
-  channels                       该驱动器提供的监控通道
-  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
-          [--mode single|auto] [--timeout S] -o RUN.ddrun
-                                 触发采集，保存为运行记录文件
-  runs RUN.ddrun [RUN2.ddrun ...] 并列比较指标，列出参数差异
-  spectrum RUN.ddrun CHANNEL [--peaks N]
-                                 通道的频谱及其峰值
-</translation>
-    </message>
-    <message>
         <source>  ping [--count N]               link health: turnaround, timeouts, errors, and
                                  the timeout and gap to use; exit 1 if no answer
 </source>
@@ -4968,6 +4902,117 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
 --all [--from A] [--to B]：扫描的地址范围（默认：该系列的范围）。
 --header：从 JSON 文件读取机器、客户、现场、工程师、备注。
 --runs RUN.ddrun,...：调试运行记录（本版本尚不支持）。
+</translation>
+    </message>
+    <message>
+        <source>Commands:
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 find drives: family, address, baud, firmware, state
+  info                           identity, firmware, state, alarm, capabilities
+  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
+  set PARAM=VALUE ...            validate, write, read back, report verified or not
+  backup -o FILE [--changed-only] every readable parameter to a backup file
+  backup (--all | --address 1,2,5) -o DIR
+                                 one file per drive, FAMILY-ADDRESS.json, and index.json
+  diff FILE | diff A B           compare; A, B = FILE, drive, drive:ADDRESS or defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 write the differences, verify each
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 the same to several drives, each at its address
+  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 sample live values (Ctrl-C ends)
+  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 move, and wait until the axis is at rest
+  stop [--emergency]             stop (emergency stop where the family has one)
+  enable on|off                  servo enable on or off
+  clear-alarm                    clear the alarm and check that it is gone
+  home [--positive] [--no-wait]  homing, negative direction first
+  channels                       the monitor channels this drive offers
+  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
+          [--mode single|auto] [--timeout S] -o RUN.ddrun
+                                 triggered capture to a run file
+  step velocity SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+  step position DISTANCE --speed V --max-travel N [-o RUN.ddrun]
+  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+                                 step-response test within limits, with metrics
+  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences
+  spectrum RUN.ddrun CHANNEL [--peaks N]
+                                 a channel&apos;s spectrum and its peaks
+</source>
+        <translation>命令：
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 查找驱动器：系列、地址、波特率、固件、状态
+  info                           标识、固件、状态、报警、支持的功能
+  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
+  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
+  backup -o FILE [--changed-only] 将全部可读参数备份到文件
+  backup (--all | --address 1,2,5) -o DIR
+                                 每台驱动器一个文件 FAMILY-ADDRESS.json，另有 index.json
+  diff FILE | diff A B           比较；A、B 为 FILE、drive、drive:ADDRESS 或 defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 写入有差异的参数，并逐个校验
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 同上，写入多台驱动器，各用其自己的地址
+  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 采样实时值（Ctrl-C 结束）
+  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 定位运动，并等待轴静止
+  stop [--emergency]             停止（该系列支持时可急停）
+  enable on|off                  伺服使能开或关
+  clear-alarm                    清除报警并确认报警已消除
+  home [--positive] [--no-wait]  回零，先向负方向
+  channels                       该驱动器提供的监控通道
+  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
+          [--mode single|auto] [--timeout S] -o RUN.ddrun
+                                 触发采集，保存为运行记录文件
+  step velocity SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+  step position DISTANCE --speed V --max-travel N [-o RUN.ddrun]
+  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+                                 在限值内进行阶跃响应测试，并给出指标
+  runs RUN.ddrun [RUN2.ddrun ...] 并列比较指标，列出参数差异
+  spectrum RUN.ddrun CHANNEL [--peaks N]
+                                 通道的频谱及其峰值
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] step velocity SPEED --duration S --max-speed V --max-travel N
+       drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]
+       drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N
+          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
+          [--notes TEXT] [-o RUN.ddrun]
+velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.
+reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.
+The limits are required (exit 2, nothing sent, without them): --max-speed (the
+speed unit; a position step: 1.5 x --speed unless given), --max-travel from the
+start position (counts), --max-duration until the axis is at rest (default: the
+step&apos;s time + 2 s; position 10 s). The captured speed and position are watched
+against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends
+the test with exit code 1. The capture runs from --pre (0.05 s) before the motion
+command for --record seconds (default: the step&apos;s time + 0.3 s; position 1 s).
+A completed test returns to its start position (--no-return: it stays), prints
+the metrics with their resolution or why they cannot be resolved, and saves the
+run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] step velocity SPEED --duration S --max-speed V --max-travel N
+      drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]
+      drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N
+          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
+          [--notes TEXT] [-o RUN.ddrun]
+velocity：以 SPEED 运行 S 秒后停止。position：以速度 V 相对移动 DISTANCE。
+reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止。
+限值为必需项（缺少时退出码 2，且不发送任何内容）：--max-speed（速度单位；
+位置阶跃未给出时为 1.5 × --speed）、--max-travel（自起始位置的行程，脉冲数）、
+--max-duration（直到轴静止的时间，默认：阶跃时间 + 2 秒；位置阶跃 10 秒）。
+采集到的速度和位置会与限值比较；报警、超出限值、Ctrl-C 或连接丢失都会使轴停止，
+测试以退出码 1 结束。采集从运动命令前 --pre（0.05 秒）开始，持续 --record 秒
+（默认：阶跃时间 + 0.3 秒；位置阶跃 1 秒）。
+测试完成后轴回到起始位置（--no-return：停在原处），打印各项指标及其分辨率或
+无法分辨的原因，并将运行记录连同从驱动器读取的调谐参数保存到 RUN.ddrun
+（见 docs/tuning.md）。
 </translation>
     </message>
 </context>
@@ -7443,14 +7488,6 @@ firmware %2</source>
         <translation>、</translation>
     </message>
     <message>
-        <source>Give the step a speed above 0 r/min.</source>
-        <translation>请为阶跃设置大于 0 r/min 的速度。</translation>
-    </message>
-    <message>
-        <source>The step&apos;s speed %1 r/min is above the maximum speed %2 r/min.</source>
-        <translation>阶跃速度 %1 r/min 高于最高速度 %2 r/min。</translation>
-    </message>
-    <message>
         <source>Give the position step a distance.</source>
         <translation>请为位置阶跃设置距离。</translation>
     </message>
@@ -7519,10 +7556,6 @@ firmware %2</source>
         <translation>未设置</translation>
     </message>
     <message>
-        <source> r/min</source>
-        <translation> r/min</translation>
-    </message>
-    <message>
         <source> counts</source>
         <translation> 脉冲</translation>
     </message>
@@ -7537,6 +7570,18 @@ firmware %2</source>
     <message>
         <source>Run</source>
         <translation>运行</translation>
+    </message>
+    <message>
+        <source>Give the step a speed above 0.</source>
+        <translation>请为阶跃设置大于 0 的速度。</translation>
+    </message>
+    <message>
+        <source>The step&apos;s speed %1 is above the maximum speed %2.</source>
+        <translation>阶跃速度 %1 高于最高速度 %2。</translation>
+    </message>
+    <message>
+        <source>Stop the test</source>
+        <translation>停止测试</translation>
     </message>
 </context>
 <context>
@@ -7731,8 +7776,348 @@ firmware %2</source>
         <translation>应用此运行记录的参数</translation>
     </message>
     <message>
-        <source>Step tests are not available in this version yet: capture a step with Arm and Force meanwhile.</source>
-        <translation>此版本尚未提供阶跃测试：目前请用“布防”和“强制触发”捕获阶跃。</translation>
+        <source>Step test: reading the drive&apos;s state…</source>
+        <translation>阶跃测试：正在读取驱动器状态…</translation>
+    </message>
+    <message>
+        <source>Step test: filling the capture before the motion…</source>
+        <translation>阶跃测试：正在填充运动前的采集数据…</translation>
+    </message>
+    <message>
+        <source>Step test: moving…</source>
+        <translation>阶跃测试：正在运动…</translation>
+    </message>
+    <message>
+        <source>Step test: stopping…</source>
+        <translation>阶跃测试：正在停止…</translation>
+    </message>
+    <message>
+        <source>Step test: going back to the start…</source>
+        <translation>阶跃测试：正在返回起始位置…</translation>
+    </message>
+    <message>
+        <source>Step test: running…</source>
+        <translation>阶跃测试：正在运行…</translation>
+    </message>
+    <message>
+        <source>Not started: %1</source>
+        <translation>未启动：%1</translation>
+    </message>
+    <message>
+        <source>Step test done; the axis is back at its start position.</source>
+        <translation>阶跃测试完成；轴已回到起始位置。</translation>
+    </message>
+    <message>
+        <source>Step test done; the axis did not return to its start position.</source>
+        <translation>阶跃测试完成；轴未回到起始位置。</translation>
+    </message>
+    <message>
+        <source>Step test ended early: %1</source>
+        <translation>阶跃测试提前结束：%1</translation>
+    </message>
+    <message>
+        <source>The axis was not seen at rest.</source>
+        <translation>未确认轴已静止。</translation>
+    </message>
+    <message>
+        <source>%1 %2 · %3</source>
+        <translation>%1 %2 · %3</translation>
+    </message>
+    <message>
+        <source>This drive cannot be moved from here: %1</source>
+        <translation>无法从此处使该驱动器运动：%1</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s live values are needed for a step test.</source>
+        <translation>阶跃测试需要驱动器的实时值。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepLimits</name>
+    <message>
+        <source>A step test needs limits: a maximum speed, a maximum travel from the start position and a maximum duration.</source>
+        <translation>阶跃测试需要限值：最高速度、自起始位置的最大行程和最长时间。</translation>
+    </message>
+    <message>
+        <source>The maximum speed is not set.</source>
+        <translation>未设置最高速度。</translation>
+    </message>
+    <message>
+        <source>The maximum travel is not set.</source>
+        <translation>未设置最大行程。</translation>
+    </message>
+    <message>
+        <source>The maximum duration is not set.</source>
+        <translation>未设置最长时间。</translation>
+    </message>
+    <message>
+        <source>The step&apos;s speed %1 is above the maximum speed %2.</source>
+        <translation>阶跃速度 %1 高于最高速度 %2。</translation>
+    </message>
+    <message>
+        <source>The step&apos;s distance %1 is beyond the maximum travel %2.</source>
+        <translation>阶跃距离 %1 超出最大行程 %2。</translation>
+    </message>
+    <message>
+        <source>The step runs for %1 s, which leaves no time to stop within the maximum duration of %2 s.</source>
+        <translation>阶跃运行 %1 秒，在最长时间 %2 秒内没有留出停止的时间。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepSpec</name>
+    <message>
+        <source>A position step needs a distance other than 0.</source>
+        <translation>位置阶跃需要非 0 的距离。</translation>
+    </message>
+    <message>
+        <source>A position step needs a speed above 0.</source>
+        <translation>位置阶跃需要大于 0 的速度。</translation>
+    </message>
+    <message>
+        <source>A %1 step needs a speed other than 0.</source>
+        <translation>%1 阶跃需要非 0 的速度。</translation>
+    </message>
+    <message>
+        <source>A %1 step needs a duration from 0 to 3600 s.</source>
+        <translation>%1 阶跃需要 0 到 3600 秒的持续时间。</translation>
+    </message>
+    <message>
+        <source>The capture before the motion must be 0 to 10 s.</source>
+        <translation>运动前的采集时间必须为 0 到 10 秒。</translation>
+    </message>
+    <message>
+        <source>The capture after the motion command must be 0 to 600 s.</source>
+        <translation>运动命令后的采集时间必须为 0 到 600 秒。</translation>
+    </message>
+    <message>
+        <source>The settling time recorded after the motion must be 0 to 60 s.</source>
+        <translation>运动后记录的调节时间必须为 0 到 60 秒。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepTest</name>
+    <message>
+        <source>The motion was not at rest within the maximum duration of %1 s; stopped.</source>
+        <translation>运动未在最长时间 %1 秒内静止；已停止。</translation>
+    </message>
+    <message>
+        <source>The drive raised alarm %1 during the step test.</source>
+        <translation>阶跃测试期间驱动器发出报警 %1。</translation>
+    </message>
+    <message>
+        <source>STOP: the step test was stopped.</source>
+        <translation>停止：阶跃测试已停止。</translation>
+    </message>
+    <message>
+        <source>The jog lease ran out and the drive stopped the axis.</source>
+        <translation>点动租约到期，驱动器已停止轴。</translation>
+    </message>
+    <message>
+        <source>The link was lost during the step test (%1).</source>
+        <translation>阶跃测试期间连接丢失（%1）。</translation>
+    </message>
+    <message>
+        <source>No drive to test.</source>
+        <translation>没有可测试的驱动器。</translation>
+    </message>
+    <message>
+        <source>This drive cannot run a %1 step: %2</source>
+        <translation>该驱动器无法进行 %1 阶跃：%2</translation>
+    </message>
+    <message>
+        <source>This drive cannot move back to the start position; run the test without returning.</source>
+        <translation>该驱动器无法返回起始位置；请以不返回的方式运行测试。</translation>
+    </message>
+    <message>
+        <source>This drive offers no %1 channel, which the step test&apos;s limits are watched on.</source>
+        <translation>该驱动器不提供 %1 通道，而阶跃测试的限值需要监视该通道。</translation>
+    </message>
+    <message>
+        <source>This drive has no channel %1.</source>
+        <translation>该驱动器没有通道 %1。</translation>
+    </message>
+    <message>
+        <source>A step test is already running.</source>
+        <translation>已有阶跃测试正在运行。</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s state and tuning parameters.</source>
+        <translation>正在读取驱动器状态和调谐参数。</translation>
+    </message>
+    <message>
+        <source>Could not read the drive&apos;s state: %1</source>
+        <translation>无法读取驱动器状态：%1</translation>
+    </message>
+    <message>
+        <source>The drive is in alarm %1: clear it before a step test.</source>
+        <translation>驱动器处于报警 %1：请在阶跃测试前清除报警。</translation>
+    </message>
+    <message>
+        <source>Could not read the tuning parameters: %1</source>
+        <translation>无法读取调谐参数：%1</translation>
+    </message>
+    <message>
+        <source>The capture failed: %1</source>
+        <translation>采集失败：%1</translation>
+    </message>
+    <message>
+        <source>Capturing %1 before the motion.</source>
+        <translation>正在采集运动前的 %1。</translation>
+    </message>
+    <message>
+        <source>The start position is unknown: the travel limit cannot be watched.</source>
+        <translation>起始位置未知：无法监视行程限值。</translation>
+    </message>
+    <message>
+        <source>Moving by %1 at %2.</source>
+        <translation>以 %2 移动 %1。</translation>
+    </message>
+    <message>
+        <source>Running at %1 for %2 s.</source>
+        <translation>以 %1 运行 %2 秒。</translation>
+    </message>
+    <message>
+        <source>The speed reached %1, above the maximum speed %2; stopped.</source>
+        <translation>速度达到 %1，高于最高速度 %2；已停止。</translation>
+    </message>
+    <message>
+        <source>The axis travelled %1 from the start, beyond the maximum travel %2; stopped.</source>
+        <translation>轴自起点移动了 %1，超出最大行程 %2；已停止。</translation>
+    </message>
+    <message>
+        <source>Waiting for the axis to come to rest.</source>
+        <translation>正在等待轴静止。</translation>
+    </message>
+    <message>
+        <source>Returning to the start position %1.</source>
+        <translation>正在返回起始位置 %1。</translation>
+    </message>
+    <message>
+        <source>Could not return to the start position: %1</source>
+        <translation>无法返回起始位置：%1</translation>
+    </message>
+    <message>
+        <source>The axis came to rest at %1, not at the start position %2.</source>
+        <translation>轴停在 %1，而不是起始位置 %2。</translation>
+    </message>
+    <message>
+        <source>Stopping the axis: %1</source>
+        <translation>正在停止轴：%1</translation>
+    </message>
+    <message>
+        <source>No stop could be sent: the drive&apos;s own watchdog stops the axis; check that it has stopped.</source>
+        <translation>无法发送停止命令：驱动器自身的看门狗会停止轴；请确认轴已停止。</translation>
+    </message>
+    <message>
+        <source>No stop could be sent: the axis may still be moving; use the machine&apos;s emergency stop.</source>
+        <translation>无法发送停止命令：轴可能仍在运动；请使用机器的急停。</translation>
+    </message>
+    <message>
+        <source>STOP FAILED: %1 The drive&apos;s own watchdog stops the axis when it hears nothing from us; check that it has stopped.</source>
+        <translation>停止失败：%1 驱动器在收不到我们的通信时会由自身看门狗停止轴；请确认轴已停止。</translation>
+    </message>
+    <message>
+        <source>STOP FAILED: %1 The axis may still be moving: use the machine&apos;s emergency stop.</source>
+        <translation>停止失败：%1 轴可能仍在运动：请使用机器的急停。</translation>
+    </message>
+    <message>
+        <source>The stop was sent, but the axis could not be seen at rest: %1</source>
+        <translation>已发送停止命令，但无法确认轴已静止：%1</translation>
+    </message>
+    <message>
+        <source>The axis stopped at %1 (%2 from the start).</source>
+        <translation>轴停在 %1（距起点 %2）。</translation>
+    </message>
+    <message>
+        <source>The axis was not seen at rest %1 s after the stop: check it; use the machine&apos;s emergency stop if it still moves.</source>
+        <translation>停止后 %1 秒仍未确认轴静止：请检查；若仍在运动，请使用机器的急停。</translation>
+    </message>
+    <message>
+        <source>Step test completed.</source>
+        <translation>阶跃测试已完成。</translation>
+    </message>
+    <message>
+        <source>Step test aborted: %1</source>
+        <translation>阶跃测试已中止：%1</translation>
+    </message>
+    <message>
+        <source>Step test not run: %1</source>
+        <translation>阶跃测试未运行：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepCommand</name>
+    <message>
+        <source>velocity SPEED | position DISTANCE | reversal SPEED</source>
+        <translation>velocity SPEED | position DISTANCE | reversal SPEED</translation>
+    </message>
+    <message>
+        <source>The step test must be velocity, position or reversal, not &quot;%1&quot;.</source>
+        <translation>阶跃测试必须是 velocity、position 或 reversal，而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>距离</translation>
+    </message>
+    <message>
+        <source>A position step needs --speed V.</source>
+        <translation>位置阶跃需要 --speed V。</translation>
+    </message>
+    <message>
+        <source>--duration is for velocity and reversal steps; a position step ends when it arrives.</source>
+        <translation>--duration 用于速度阶跃和正反转；位置阶跃在到达目标时结束。</translation>
+    </message>
+    <message>
+        <source>step speed</source>
+        <translation>阶跃速度</translation>
+    </message>
+    <message>
+        <source>--speed is for position steps; the speed of a %1 step is its argument.</source>
+        <translation>--speed 用于位置阶跃；%1 阶跃的速度由其参数给出。</translation>
+    </message>
+    <message>
+        <source>A %1 step needs --duration S.</source>
+        <translation>%1 阶跃需要 --duration S。</translation>
+    </message>
+    <message>
+        <source>A step test needs its limits: --max-speed V is missing (nothing was sent).</source>
+        <translation>阶跃测试需要限值：缺少 --max-speed V（未发送任何内容）。</translation>
+    </message>
+    <message>
+        <source>A step test needs its limits: --max-travel N is missing (nothing was sent).</source>
+        <translation>阶跃测试需要限值：缺少 --max-travel N（未发送任何内容）。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent.</source>
+        <translation>未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Second interrupt: emergency stop.</source>
+        <translation>第二次中断：急停。</translation>
+    </message>
+    <message>
+        <source>Interrupted: the step test was stopped.</source>
+        <translation>已中断：阶跃测试已停止。</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 samples of %4, interval %5 ms (%6 Hz); metrics on %7</source>
+        <translation>%1 %2：%4 的 %3 个样本，间隔 %5 毫秒（%6 Hz）；指标基于 %7</translation>
+    </message>
+    <message>
+        <source>  tuning: %1</source>
+        <translation>  调谐参数：%1</translation>
+    </message>
+    <message>
+        <source>  saved to %1</source>
+        <translation>  已保存到 %1</translation>
+    </message>
+    <message>
+        <source>Back at the start position %1.</source>
+        <translation>已回到起始位置 %1。</translation>
+    </message>
+    <message>
+        <source>Left at %1 (--no-return; started at %2).</source>
+        <translation>停在 %1（--no-return；起始于 %2）。</translation>
     </message>
 </context>
 </TS>

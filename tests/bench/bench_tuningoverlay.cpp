@@ -93,7 +93,9 @@ int main(int argc, char **argv)
             if (t >= 0.0) {
                 const double wd = wn * std::sqrt(1 - zeta * zeta);
                 y = 500.0
-                    * (1 - std::exp(-zeta * wn * t) * (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t)));
+                    * (1
+                       - std::exp(-zeta * wn * t)
+                           * (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t)));
             }
             seed = seed * 1664525u + 1013904223u;
             y += double(seed >> 24) / 255.0 * 4.0 - 2.0; // ±2 r/min of noise

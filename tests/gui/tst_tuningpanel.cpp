@@ -4,6 +4,8 @@
 // 1280 x 720 in English and Chinese, and a live language switch reaches the tab.
 #include <QtTest>
 
+#include "core/drive/drive.h"
+#include "core/drive/driveresult.h"
 #include "core/params/parameterdictionary.h"
 #include "tests/gui/panelrig.h"
 #include "ui/panels/parameters/parameterspanel.h"
@@ -220,6 +222,47 @@ private slots:
         r.duration = 0.5;
         controls.setRequest(r);
         QCOMPARE(controls.blockedReason(), QStringLiteral("not here"));
+    }
+
+    void velocityStepMakesARun()
+    {
+        PanelRig rig;
+        QString why;
+        SimBenchOptions o; // servo-modbus has no motion commands: servo-can
+        o.family = Family::ServoCan;
+        o.can = QStringLiteral("virtualcan:auto");
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        TuningPanel *tuning = rig.show<TuningPanel>(&why);
+        QVERIFY2(tuning, qPrintable(why));
+        QVERIFY(dictionaryLoaded(tuning));
+        // A simulated drive powers up disabled.
+        bool enabled = false;
+        rig.hub->run(
+            rig.id, 1, [](Drive &d) { return d.setEnabled(true); }, [&](const DriveResult &r) { enabled = r.ok(); });
+        QVERIFY(waitUntil([&] { return enabled; }, 5000));
+        StepTestControls *controls = tuning->stepControls();
+        QVERIFY(!controls->runButton()->isEnabled()); // no limits yet
+        StepTestControls::Request r;
+        r.test = StepTestControls::Test::Velocity;
+        r.speed = 200;
+        r.duration = 0.3;
+        r.maxSpeed = 400;
+        r.maxTravel = 1000000;
+        r.maxDuration = 3;
+        controls->setRequest(r);
+        QVERIFY2(controls->runButton()->isEnabled(), qPrintable(controls->blockedReason()));
+        controls->runButton()->click();
+        QVERIFY(tuning->isStepRunning());
+        QCOMPARE(controls->runButton()->text(), QStringLiteral("Stop the test"));
+        QVERIFY2(waitUntil([&] { return !tuning->isStepRunning(); }, 15000), qPrintable(tuning->message()));
+        QCOMPARE(tuning->runList()->count(), 1);
+        const TuningRun &run = tuning->runList()->run(0);
+        QCOMPARE(run.test, QStringLiteral("velocity-step"));
+        QCOMPARE(run.capture.triggerSource, QStringLiteral("motion"));
+        QVERIFY(!run.tuning.isEmpty()); // the simulator's gains, read from the drive
+        QVERIFY2(tuning->message().contains(QStringLiteral("Step test done")), qPrintable(tuning->message()));
+        QVERIFY(tuning->comparison()->table()->columnCount() == 1);
+        QCOMPARE(controls->runButton()->text(), QStringLiteral("Run"));
     }
 
     void overlayDecimationKeepsPeaks()

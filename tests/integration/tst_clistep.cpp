@@ -24,18 +24,20 @@ private slots:
                                       << "--max-speed V is missing";
         QTest::newRow("no max-travel") << QStringList{"velocity", "300", "--duration", "0.2", "--max-speed", "500"}
                                        << "--max-travel N is missing";
-        QTest::newRow("position, no max-travel") << QStringList{"position", "5000", "--speed", "300"}
-                                                 << "--max-travel N is missing";
+        QTest::newRow("position, no max-travel")
+            << QStringList{"position", "5000", "--speed", "300"} << "--max-travel N is missing";
         QTest::newRow("reversal, no max-speed")
-            << QStringList{"reversal", "300", "--duration", "0.2", "--max-travel", "5000"} << "--max-speed V is missing";
+            << QStringList{"reversal", "300", "--duration", "0.2", "--max-travel", "5000"}
+            << "--max-speed V is missing";
         QTest::newRow("speed above the limit")
             << QStringList{"velocity", "600", "--duration", "0.2", "--max-speed", "500", "--max-travel", "5000"}
             << "above the maximum speed 500";
         QTest::newRow("distance beyond the travel")
             << QStringList{"position", "-6000", "--speed", "300", "--max-travel", "5000"}
             << "beyond the maximum travel 5000";
-        QTest::newRow("no time to stop") << QStringList{"velocity", "300", "--duration",     "2",   "--max-speed",
-                                                        "500",      "--max-travel", "5000", "--max-duration", "2"}
+        QTest::newRow("no time to stop") << QStringList{"velocity",       "300", "--duration",   "2",
+                                                        "--max-speed",    "500", "--max-travel", "5000",
+                                                        "--max-duration", "2"}
                                          << "no time to stop";
         QTest::newRow("no duration") << QStringList{"velocity", "300", "--max-speed", "500", "--max-travel", "5000"}
                                      << "needs --duration";
@@ -46,8 +48,8 @@ private slots:
         QFETCH(QStringList, step);
         QFETCH(QString, message);
         const QString file = m_dir.filePath(QStringLiteral("refused.ddrun"));
-        const CliRun r =
-            runCli(QStringList{"--sim", "--family", "servo-can", "--trace", "step"} << step << "-o" << file);
+        const CliRun r = runCli(QStringList{"--sim", "--family", "servo-can", "--trace", "step"} << step << "-o"
+                                                                                                 << file);
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.text().contains(message), qPrintable(r.text()));
         QCOMPARE(r.txFrames(), 0);
@@ -96,15 +98,17 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
         QCOMPARE(r.json().value(QStringLiteral("metricsChannel")).toString(), QStringLiteral("position"));
         QVERIFY(r.json().value(QStringLiteral("returnedToStart")).toBool());
-        QVERIFY(r.json().value(QStringLiteral("metrics")).toObject().value(QStringLiteral("peakFollowingError")).toDouble()
-                > 0.0);
+        QVERIFY(
+            r.json().value(QStringLiteral("metrics")).toObject().value(QStringLiteral("peakFollowingError")).toDouble()
+            > 0.0);
         r = runCli({"--sim", "--family", "servo-can", "--json", "step", "reversal", "200", "--duration", "0.15",
                     "--max-speed", "300", "--max-travel", "100000", "--no-return"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
         QCOMPARE(r.json().value(QStringLiteral("test")).toString(), QStringLiteral("reversal"));
         QVERIFY(!r.json().value(QStringLiteral("returnedToStart")).toBool());
         // +200 for 0.15 s then -200 for 0.15 s: back near the start, not on it.
-        QVERIFY(r.json().value(QStringLiteral("metrics")).toObject().value(QStringLiteral("riseTime")).toDouble() > 0.0);
+        QVERIFY(r.json().value(QStringLiteral("metrics")).toObject().value(QStringLiteral("riseTime")).toDouble()
+                > 0.0);
     }
 
     void aTravelLimitPassedAbortsWithTheAxisStopped()

@@ -72,7 +72,12 @@ StepTestControls::StepTestControls(QWidget *parent)
     for (QDoubleSpinBox *s : {m_maxSpeed, m_maxTravel, m_maxDuration, m_speed, m_duration, m_distance})
         connect(s, &QDoubleSpinBox::valueChanged, this, &StepTestControls::update);
     connect(m_test, &QComboBox::currentIndexChanged, this, &StepTestControls::update);
-    connect(m_run, &QPushButton::clicked, this, &StepTestControls::runRequested);
+    connect(m_run, &QPushButton::clicked, this, [this] {
+        if (m_running)
+            emit stopRequested();
+        else
+            emit runRequested();
+    });
     retranslate();
 }
 
@@ -130,9 +135,9 @@ QString StepTestControls::blockedReason() const
     if (!unset.isEmpty())
         return tr("Set the limits first: %1.").arg(unset.join(tr(", ")));
     if (r.speed <= 0.0)
-        return tr("Give the step a speed above 0 r/min.");
+        return tr("Give the step a speed above 0.");
     if (r.speed > r.maxSpeed)
-        return tr("The step's speed %1 r/min is above the maximum speed %2 r/min.").arg(r.speed).arg(r.maxSpeed);
+        return tr("The step's speed %1 is above the maximum speed %2.").arg(r.speed).arg(r.maxSpeed);
     if (r.test == Test::Position) {
         if (r.distance <= 0.0)
             return tr("Give the position step a distance.");
@@ -150,6 +155,20 @@ QString StepTestControls::blockedReason() const
     return {};
 }
 
+void StepTestControls::setRunning(bool running)
+{
+    m_running = running;
+    retranslate();
+}
+
+void StepTestControls::setSpeedUnit(const QString &unit)
+{
+    if (unit.isEmpty() || unit == m_speedUnit)
+        return;
+    m_speedUnit = unit;
+    retranslate();
+}
+
 void StepTestControls::update()
 {
     const bool position = m_test->currentIndex() == int(Test::Position);
@@ -159,7 +178,12 @@ void StepTestControls::update()
         l->setVisible(!position);
     if (QWidget *l = m_size->labelForField(m_distance))
         l->setVisible(position);
-    const QString reason = blockedReason();
+    for (QWidget *w :
+         {static_cast<QWidget *>(m_maxSpeed), static_cast<QWidget *>(m_maxTravel),
+          static_cast<QWidget *>(m_maxDuration), static_cast<QWidget *>(m_test), static_cast<QWidget *>(m_speed),
+          static_cast<QWidget *>(m_duration), static_cast<QWidget *>(m_distance)})
+        w->setEnabled(!m_running);
+    const QString reason = m_running ? QString() : blockedReason();
     m_run->setEnabled(reason.isEmpty());
     m_reason->setText(reason);
     m_reason->setVisible(!reason.isEmpty());
@@ -185,14 +209,14 @@ void StepTestControls::retranslate()
     label(m_size, m_distance, tr("Distance:"));
     for (QDoubleSpinBox *s : {m_maxSpeed, m_maxTravel, m_maxDuration})
         s->setSpecialValueText(tr("not set"));
-    m_maxSpeed->setSuffix(tr(" r/min"));
-    m_speed->setSuffix(tr(" r/min"));
+    m_maxSpeed->setSuffix(QLatin1Char(' ') + m_speedUnit);
+    m_speed->setSuffix(QLatin1Char(' ') + m_speedUnit);
     m_maxTravel->setSuffix(tr(" counts"));
     m_distance->setSuffix(tr(" counts"));
     m_maxDuration->setSuffix(tr(" s"));
     m_duration->setSuffix(tr(" s"));
     m_maxTravel->setToolTip(tr("From the start position, in the drive's position counts."));
-    m_run->setText(tr("Run"));
+    m_run->setText(m_running ? tr("Stop the test") : tr("Run"));
     update();
 }
 

@@ -39,6 +39,12 @@ public:
     void setRequest(const Request &r);
     // Whether the panel can run a test now, and why not.
     void setAvailable(bool available, const QString &reason);
+    // While a test runs, the Run button stops it (emits stopRequested()) and the fields are
+    // locked.
+    void setRunning(bool running);
+    bool isRunning() const { return m_running; }
+    // The unit of the drive's speed (the jog's: r/min on the servos, pulse/s on shuoke).
+    void setSpeedUnit(const QString &unit);
     // Why Run is disabled ("" when it is enabled).
     QString blockedReason() const;
     QPushButton *runButton() const { return m_run; }
@@ -46,6 +52,7 @@ public:
 
 signals:
     void runRequested();
+    void stopRequested();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -68,6 +75,8 @@ private:
     QLabel *m_limitsTitle = nullptr;
     QLabel *m_testTitle = nullptr;
     bool m_available = false;
+    bool m_running = false;
+    QString m_speedUnit = QStringLiteral("r/min");
     QString m_unavailableReason;
 };
 

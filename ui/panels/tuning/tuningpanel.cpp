@@ -8,6 +8,7 @@
 #include "ui/panels/tuning/capturecontrols.h"
 #include "ui/panels/tuning/captureplot.h"
 #include "ui/panels/tuning/hubcapture.h"
+#include "ui/panels/tuning/hubsteptest.h"
 #include "ui/panels/tuning/runcomparison.h"
 #include "ui/panels/tuning/runlist.h"
 #include "ui/panels/tuning/spectrumview.h"
@@ -45,7 +46,24 @@ TuningPanel::TuningPanel(const DriveContext &context, QWidget *parent)
     : DrivePanel(context, parent)
 {
     m_capture = new HubCapture(context.hub, context.connectionId, context.address, this);
+    m_step = new HubStepTest(context.hub, context.connectionId, context.address, this);
     buildUi();
+    connect(m_step, &HubStepTest::phaseChanged, this, [this](StepTest::Phase phase) {
+        showMessage(
+            m_message,
+            [phase] {
+                switch (phase) {
+                case StepTest::Phase::Preparing: return tr("Step test: reading the drive's state…");
+                case StepTest::Phase::Arming: return tr("Step test: filling the capture before the motion…");
+                case StepTest::Phase::Moving: return tr("Step test: moving…");
+                case StepTest::Phase::Stopping: return tr("Step test: stopping…");
+                case StepTest::Phase::Returning: return tr("Step test: going back to the start…");
+                default: return tr("Step test: running…");
+                }
+            },
+            MessageKind::Info);
+    });
+    connect(m_step, &HubStepTest::finished, this, &TuningPanel::onStepFinished);
     connect(m_capture, &HubCapture::stateChanged, this, &TuningPanel::updateCaptureState);
     connect(m_capture, &HubCapture::captured, this, &TuningPanel::onCaptured);
     connect(m_capture, &HubCapture::failed, this, [this](const Error &e) {
@@ -146,6 +164,8 @@ void TuningPanel::buildUi()
     layout->addWidget(m_unavailable);
     layout->addWidget(m_body, 1);
 
+    connect(m_stepControls, &StepTestControls::runRequested, this, &TuningPanel::runStep);
+    connect(m_stepControls, &StepTestControls::stopRequested, this, [this] { m_step->stop(); });
     connect(m_captureControls, &CaptureControls::armRequested, this, &TuningPanel::arm);
     connect(m_captureControls, &CaptureControls::forceRequested, this, &TuningPanel::force);
     connect(m_captureControls, &CaptureControls::stopRequested, this, &TuningPanel::stopCapture);
@@ -284,6 +304,15 @@ void TuningPanel::onCaptured(const CaptureData &capture)
                     .arg(m_captureCount)
                     .arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")));
 
+    addRunWithSnapshot(run);
+}
+
+void TuningPanel::addRunWithSnapshot(TuningRun run)
+{
+    if (!run.tuning.isEmpty()) {
+        m_runs->addRun(run);
+        return;
+    }
     // The tuning parameters as the drive has them now (read, not assumed).
     QList<int> indices;
     for (const TuningEntry &e : m_editor->entries())
@@ -302,6 +331,85 @@ void TuningPanel::onCaptured(const CaptureData &capture)
                 self->parameters()->reportRead(r.parameters);
             self->addCapturedRun(run, r.parameters, r.ok() ? QString() : r.error.message);
         });
+}
+
+void TuningPanel::runStep()
+{
+    if (!context().isValid() || m_step->isRunning() || !m_stepControls->blockedReason().isEmpty())
+        return;
+    const StepTestControls::Request r = m_stepControls->request();
+    StepSpec spec;
+    spec.kind = r.test == StepTestControls::Test::Position ? StepSpec::Kind::Position
+        : r.test == StepTestControls::Test::Reversal       ? StepSpec::Kind::Reversal
+                                                           : StepSpec::Kind::Velocity;
+    spec.speed = qint32(qRound(r.speed));
+    spec.durationS = r.duration;
+    spec.distance = qint64(qRound64(r.distance));
+    StepLimits limits;
+    limits.maxSpeed = r.maxSpeed;
+    limits.maxTravel = qint64(qRound64(r.maxTravel));
+    limits.maxDurationS = r.maxDuration;
+    if (Error e = limits.check(spec)) {
+        const QString why = e.message;
+        showMessage(
+            m_message, [why] { return tr("Not started: %1").arg(why); }, MessageKind::Problem);
+        return;
+    }
+    m_stepControls->setRunning(true);
+    m_captureControls->setEnabled(false);
+    m_step->start(spec, limits);
+}
+
+bool TuningPanel::isStepRunning() const
+{
+    return m_step->isRunning();
+}
+
+void TuningPanel::onStepFinished(const StepResult &result)
+{
+    m_stepControls->setRunning(false);
+    m_captureControls->setEnabled(true);
+    const QString reason = result.reason;
+    const QString stopNote = result.stopNote;
+    if (result.completed()) {
+        const bool back = result.returnedToStart;
+        showMessage(
+            m_message,
+            [back] {
+                return back ? tr("Step test done; the axis is back at its start position.")
+                            : tr("Step test done; the axis did not return to its start position.");
+            },
+            MessageKind::Success);
+    } else {
+        const bool stopped = result.stopConfirmed;
+        showMessage(
+            m_message,
+            [reason, stopNote, stopped] {
+                QString text = tr("Step test ended early: %1").arg(reason);
+                if (!stopNote.isEmpty())
+                    text += QLatin1Char(' ') + stopNote;
+                else if (!stopped)
+                    text += QLatin1Char(' ') + tr("The axis was not seen at rest.");
+                return text;
+            },
+            MessageKind::Problem);
+        if (result.error.isError() && result.abortCause != QLatin1String("refused"))
+            reportError(result.error);
+    }
+    if (!result.hasRun)
+        return;
+    TuningRun run = result.run;
+    ++m_stepCount;
+    const ConnectionSettings link = context().hub ? context().hub->connectionSettings(context().connectionId)
+                                                  : ConnectionSettings{};
+    run.linkKind = link.isCan() ? QStringLiteral("can") : QStringLiteral("serial");
+    if (run.linkDescription.isEmpty())
+        run.linkDescription = link.linkName();
+    run.label = tr("%1 %2 · %3")
+                    .arg(run.test)
+                    .arg(m_stepCount)
+                    .arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")));
+    addRunWithSnapshot(run);
 }
 
 void TuningPanel::addCapturedRun(TuningRun run, const QMap<int, qint64> &values, const QString &readError)
@@ -459,8 +567,15 @@ void TuningPanel::retranslate()
     m_actions->setTabText(1, tr("Capture"));
     m_parametersTitle->setText(tr("Tuning parameters"));
     m_apply->setText(tr("Apply this run's parameters"));
-    m_stepControls->setAvailable(
-        false, tr("Step tests are not available in this version yet: capture a step with Arm and Force meanwhile."));
+    const bool canMove = info.capabilities.testFlag(Capability::Jog)
+        || info.capabilities.testFlag(Capability::MoveRelative);
+    m_stepControls->setAvailable(info.valid && monitor && canMove,
+                                 !canMove
+                                     ? tr("This drive cannot be moved from here: %1").arg(info.reason(Capability::Jog))
+                                     : tr("The drive's live values are needed for a step test."));
+    for (const ChannelInfo &c : info.channels)
+        if (c.id == QLatin1String("speed"))
+            m_stepControls->setSpeedUnit(c.unit);
     updateCaptureState();
     updatePlotChannels();
     updateSideWidth();

@@ -16,6 +16,8 @@ namespace dd {
 class CaptureControls;
 class CapturePlot;
 class HubCapture;
+class HubStepTest;
+struct StepResult;
 class ParameterDictionary;
 class RunComparison;
 class RunList;
@@ -50,6 +52,9 @@ public:
     void force();
     void stopCapture();
     bool isCapturing() const;
+    // Runs the step test set up in the Step test page (its Run button).
+    void runStep();
+    bool isStepRunning() const;
     // "Apply this run's parameters" on the selected run.
     void applySelectedRun();
 
@@ -77,6 +82,8 @@ private:
     void buildUi();
     void loadDictionary();
     void onCaptured(const CaptureData &capture);
+    void onStepFinished(const StepResult &result);
+    void addRunWithSnapshot(TuningRun run);
     void addCapturedRun(TuningRun run, const QMap<int, qint64> &values, const QString &readError);
     void updateCaptureState();
     void updateOverlay();
@@ -84,6 +91,8 @@ private:
     void updatePlotChannels();
 
     HubCapture *m_capture = nullptr;
+    HubStepTest *m_step = nullptr;
+    int m_stepCount = 0;
     CaptureControls *m_captureControls = nullptr;
     StepTestControls *m_stepControls = nullptr;
     CapturePlot *m_plot = nullptr;

@@ -255,7 +255,8 @@ private slots:
         QVERIFY(tuning->isStepRunning());
         QCOMPARE(controls->runButton()->text(), QStringLiteral("Stop the test"));
         QVERIFY2(waitUntil([&] { return !tuning->isStepRunning(); }, 15000), qPrintable(tuning->message()));
-        QCOMPARE(tuning->runList()->count(), 1);
+        // The run joins the list once its tuning parameters are read.
+        QVERIFY2(waitUntil([&] { return tuning->runList()->count() == 1; }, 5000), qPrintable(tuning->message()));
         const TuningRun &run = tuning->runList()->run(0);
         QCOMPARE(run.test, QStringLiteral("velocity-step"));
         QCOMPARE(run.capture.triggerSource, QStringLiteral("motion"));

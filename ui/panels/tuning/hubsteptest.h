@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/tuning/stepresult.h"
 #include "core/tuning/steplimits.h"
+#include "core/tuning/stepresult.h"
 #include "core/tuning/stepspec.h"
 #include "core/tuning/steptest.h"
 

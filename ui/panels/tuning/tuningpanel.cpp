@@ -68,7 +68,7 @@ TuningPanel::TuningPanel(const DriveContext &context, QWidget *parent)
     connect(m_capture, &HubCapture::captured, this, &TuningPanel::onCaptured);
     connect(m_capture, &HubCapture::failed, this, [this](const Error &e) {
         const QString why = e.message;
-        m_lastCaptureState = why;
+        m_lastCaptureState = [why] { return why; };
         showMessage(
             m_message, [why] { return tr("Capture stopped: %1").arg(why); }, MessageKind::Problem);
         reportError(e);
@@ -256,7 +256,7 @@ void TuningPanel::updateCaptureState()
         default: state = tr("Capturing…"); break;
         }
     } else {
-        state = m_lastCaptureState;
+        state = m_lastCaptureState ? m_lastCaptureState() : QString();
     }
     m_captureControls->setRunning(running, state);
 }
@@ -268,10 +268,12 @@ void TuningPanel::onCaptured(const CaptureData &capture)
     const int samples = int(capture.time.size());
     const int pre = capture.preTriggerSamples;
     const double intervalMs = s.mean * 1000.0;
-    m_lastCaptureState = tr("Captured %1 samples (%2 before the trigger), interval %3 ms.")
-                             .arg(samples)
-                             .arg(pre)
-                             .arg(intervalMs, 0, 'f', 2);
+    m_lastCaptureState = [samples, pre, intervalMs] {
+        return tr("Captured %1 samples (%2 before the trigger), interval %3 ms.")
+            .arg(samples)
+            .arg(pre)
+            .arg(intervalMs, 0, 'f', 2);
+    };
     updateCaptureState();
 
     TuningRun run;

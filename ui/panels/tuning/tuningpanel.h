@@ -3,6 +3,7 @@
 #include "core/tuning/tuningrun.h"
 #include "ui/workspace/drivepanel.h"
 
+#include <functional>
 #include <memory>
 
 class QComboBox;
@@ -112,7 +113,7 @@ private:
     QScrollArea *m_side = nullptr;
     bool m_dictionaryAsked = false;
     int m_captureCount = 0;
-    QString m_lastCaptureState;
+    std::function<QString()> m_lastCaptureState; // the last capture's outcome, in the current language
 };
 
 } // namespace dd

@@ -7583,6 +7583,14 @@ firmware %2</source>
         <source>Stop the test</source>
         <translation>停止测试</translation>
     </message>
+    <message>
+        <source>Back to the start afterwards</source>
+        <translation>完成后回到起始位置</translation>
+    </message>
+    <message>
+        <source>After a completed test the axis moves back to where it started. An aborted test leaves it where it stopped.</source>
+        <translation>测试完成后轴会移回起始位置。中止的测试会让轴停在停止处。</translation>
+    </message>
 </context>
 <context>
     <name>dd::TuningParametersEditor</name>

@@ -192,6 +192,14 @@ private slots:
         QCOMPARE(tuning->runList()->count(), 0);
         QVERIFY(tuning->capturePlot()->curves().isEmpty());
         QVERIFY2(tuning->runList()->message().contains(e.message), qPrintable(tuning->runList()->message()));
+        // The message line follows a live language switch.
+        LanguageManager language;
+        QVERIFY(language.apply(LanguageManager::Language::Chinese));
+        QCoreApplication::sendPostedEvents();
+        QVERIFY2(tuning->runList()->message().startsWith(QStringLiteral("未打开")),
+                 qPrintable(tuning->runList()->message()));
+        QVERIFY(language.apply(LanguageManager::Language::English));
+        QCoreApplication::sendPostedEvents();
     }
 
     void runNeedsLimits()
@@ -264,6 +272,13 @@ private slots:
         QVERIFY2(tuning->message().contains(QStringLiteral("Step test done")), qPrintable(tuning->message()));
         QVERIFY(tuning->comparison()->table()->columnCount() == 1);
         QCOMPARE(controls->runButton()->text(), QStringLiteral("Run"));
+
+        // A free capture on the same drive, for the record: the rate the hub reads give.
+        QVERIFY2(captureOnce(tuning, &why), qPrintable(why));
+        const IntervalStats &s = tuning->runList()->run(1).capture.interval;
+        qInfo("servo-can free capture of %s: %d samples, mean interval %.3f ms (%.0f Hz)",
+              qPrintable(tuning->runList()->run(1).capture.channels.join(QLatin1Char(','))),
+              int(tuning->runList()->run(1).capture.time.size()), s.mean * 1000.0, s.mean > 0 ? 1.0 / s.mean : 0.0);
     }
 
     void overlayDecimationKeepsPeaks()

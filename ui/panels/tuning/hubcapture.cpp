@@ -22,7 +22,7 @@ void HubCapture::start(const CaptureSettings &settings, const QStringList &chann
     m_settings = settings;
     m_channels = channels;
     ++m_generation;
-    m_inFlight = false;
+    m_inFlight = 0;
     m_clock.start();
     m_recorder.arm(settings, channels);
     m_running = true;
@@ -36,7 +36,7 @@ void HubCapture::stop()
         return;
     m_running = false;
     ++m_generation;
-    m_inFlight = false;
+    m_inFlight = 0;
     m_recorder.reset();
     emit stateChanged();
 }
@@ -57,9 +57,9 @@ void HubCapture::alarmRaised()
 
 void HubCapture::readNext()
 {
-    if (!m_running || m_inFlight || !m_hub)
+    if (!m_running || m_inFlight >= MaxInFlight || !m_hub)
         return;
-    m_inFlight = true;
+    ++m_inFlight;
     QPointer<HubCapture> self(this);
     const quint64 generation = m_generation;
     const QStringList ids = m_channels;
@@ -68,7 +68,9 @@ void HubCapture::readNext()
         [self, generation](const DriveResult &r) {
             if (!self || generation != self->m_generation)
                 return;
-            self->m_inFlight = false;
+            --self->m_inFlight;
+            if (!self->m_running)
+                return; // the capture ended (done, or failed) while this read was on its way
             if (!r.ok()) {
                 self->m_running = false;
                 self->m_recorder.reset();
@@ -97,6 +99,7 @@ void HubCapture::readNext()
             }
             self->readNext();
         });
+    readNext(); // the second read in flight
 }
 
 } // namespace dd

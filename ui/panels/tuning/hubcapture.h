@@ -11,7 +11,8 @@ namespace dd {
 class DriveHub;
 
 // A capture taken through the DriveHub (the GUI never touches a Drive): reads the channels
-// one request after the other, as fast as the link answers, and feeds each reading into a
+// as fast as the link answers — two reads in flight, so that the link never waits for the
+// hand-over between the threads — and feeds each reading, in order, into a
 // CaptureRecorder, timestamped when its reply reaches this thread (the I/O thread's hand-over
 // adds well under a millisecond; the capture's interval statistics show what it was).
 // forceTrigger() fires a manual trigger now; alarmRaised() fires an "alarm" trigger. Single
@@ -48,7 +49,8 @@ private:
     QStringList m_channels;
     QElapsedTimer m_clock;
     bool m_running = false;
-    bool m_inFlight = false;
+    static constexpr int MaxInFlight = 2;
+    int m_inFlight = 0;
     quint64 m_generation = 0; // replies of an earlier start are dropped
 };
 

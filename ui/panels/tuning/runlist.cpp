@@ -1,5 +1,7 @@
 #include "ui/panels/tuning/runlist.h"
 
+#include "ui/common/livetext.h"
+
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -71,11 +73,13 @@ Error RunList::openFile(const QString &path)
 {
     TuningRun run;
     if (Error e = TuningRun::load(path, &run)) {
-        setMessage(tr("Not opened: %1").arg(e.message), true);
+        const QString why = e.message;
+        setMessage([why] { return tr("Not opened: %1").arg(why); }, true);
         return e;
     }
     addRun(run);
-    setMessage(tr("Opened %1.").arg(QFileInfo(path).fileName()), false);
+    const QString name = QFileInfo(path).fileName();
+    setMessage([name] { return tr("Opened %1.").arg(name); }, false);
     emit fileUsed(path);
     return {};
 }
@@ -86,12 +90,14 @@ Error RunList::saveSelected(const QString &path)
     if (i < 0)
         return {ErrorCode::InvalidArgument, tr("Select a run to save.")};
     if (Error e = m_runs.at(i).save(path)) {
-        setMessage(tr("Not saved: %1").arg(e.message), true);
+        const QString why = e.message;
+        setMessage([why] { return tr("Not saved: %1").arg(why); }, true);
         return e;
     }
     m_runs[i].label = QFileInfo(path).completeBaseName();
     m_list->item(i)->setText(m_runs.at(i).label);
-    setMessage(tr("Saved %1.").arg(QDir::toNativeSeparators(path)), false);
+    const QString shown = QDir::toNativeSeparators(path);
+    setMessage([shown] { return tr("Saved %1.").arg(shown); }, false);
     emit fileUsed(path);
     emit overlayChanged();
     return {};
@@ -138,11 +144,11 @@ QString RunList::message() const
     return m_message->text();
 }
 
-void RunList::setMessage(const QString &text, bool problem)
+void RunList::setMessage(std::function<QString()> text, bool problem)
 {
-    m_message->setText(text);
+    LiveText::set(m_message, std::move(text)); // follows a live language switch
     m_message->setStyleSheet(problem ? QStringLiteral("color: #b00020;") : QString());
-    m_message->setVisible(!text.isEmpty());
+    m_message->setVisible(!m_message->text().isEmpty());
 }
 
 void RunList::updateButtons()

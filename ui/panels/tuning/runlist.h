@@ -4,6 +4,7 @@
 #include "core/tuning/tuningrun.h"
 
 #include <QWidget>
+#include <functional>
 
 class QLabel;
 class QListWidget;
@@ -54,7 +55,7 @@ private:
     void openInteractive();
     void saveInteractive();
     void removeSelected();
-    void setMessage(const QString &text, bool problem);
+    void setMessage(std::function<QString()> text, bool problem);
 
     QList<TuningRun> m_runs;
     QListWidget *m_list = nullptr;

@@ -1,5 +1,6 @@
 #include "ui/panels/tuning/steptestcontrols.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -31,6 +32,7 @@ StepTestControls::StepTestControls(QWidget *parent)
     , m_speed(spin(this, "stepSpeed", 10000.0, 300.0, 0))
     , m_duration(spin(this, "stepDuration", 600.0, 0.3, 2))
     , m_distance(spin(this, "stepDistance", 1e9, 10000.0, 0))
+    , m_return(new QCheckBox(this))
     , m_run(new QPushButton(this))
     , m_reason(new QLabel(this))
     , m_limitsTitle(new QLabel(this))
@@ -38,6 +40,8 @@ StepTestControls::StepTestControls(QWidget *parent)
 {
     m_test->setObjectName(QStringLiteral("stepTest"));
     m_run->setObjectName(QStringLiteral("runStep"));
+    m_return->setObjectName(QStringLiteral("returnToStart"));
+    m_return->setChecked(true);
     m_reason->setObjectName(QStringLiteral("runBlockedReason"));
     m_reason->setWordWrap(true);
     m_reason->setEnabled(false); // greyed, as the other panels' reasons
@@ -66,6 +70,7 @@ StepTestControls::StepTestControls(QWidget *parent)
     layout->addLayout(m_limits);
     layout->addWidget(m_testTitle);
     layout->addLayout(m_size);
+    layout->addWidget(m_return);
     layout->addWidget(m_run);
     layout->addWidget(m_reason);
     layout->addStretch(1);
@@ -101,6 +106,7 @@ StepTestControls::Request StepTestControls::request() const
     r.maxSpeed = m_maxSpeed->value();
     r.maxTravel = m_maxTravel->value();
     r.maxDuration = m_maxDuration->value();
+    r.returnToStart = m_return->isChecked();
     return r;
 }
 
@@ -113,6 +119,7 @@ void StepTestControls::setRequest(const Request &r)
     m_maxSpeed->setValue(r.maxSpeed);
     m_maxTravel->setValue(r.maxTravel);
     m_maxDuration->setValue(r.maxDuration);
+    m_return->setChecked(r.returnToStart);
 }
 
 void StepTestControls::setAvailable(bool available, const QString &reason)
@@ -217,6 +224,9 @@ void StepTestControls::retranslate()
     m_duration->setSuffix(tr(" s"));
     m_maxTravel->setToolTip(tr("From the start position, in the drive's position counts."));
     m_run->setText(m_running ? tr("Stop the test") : tr("Run"));
+    m_return->setText(tr("Back to the start afterwards"));
+    m_return->setToolTip(tr("After a completed test the axis moves back to where it started. An aborted test "
+                            "leaves it where it stopped."));
     update();
 }
 

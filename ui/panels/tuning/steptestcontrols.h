@@ -3,6 +3,7 @@
 #include <QJsonObject>
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
@@ -31,6 +32,7 @@ public:
         double maxSpeed = 0.0;
         double maxTravel = 0.0;
         double maxDuration = 0.0;
+        bool returnToStart = true; // back to the start position after a completed test
     };
 
     explicit StepTestControls(QWidget *parent = nullptr);
@@ -70,6 +72,7 @@ private:
     QDoubleSpinBox *m_speed = nullptr;
     QDoubleSpinBox *m_duration = nullptr;
     QDoubleSpinBox *m_distance = nullptr;
+    QCheckBox *m_return = nullptr;
     QPushButton *m_run = nullptr;
     QLabel *m_reason = nullptr;
     QLabel *m_limitsTitle = nullptr;

@@ -347,6 +347,7 @@ void TuningPanel::runStep()
     spec.speed = qint32(qRound(r.speed));
     spec.durationS = r.duration;
     spec.distance = qint64(qRound64(r.distance));
+    spec.returnToStart = r.returnToStart;
     StepLimits limits;
     limits.maxSpeed = r.maxSpeed;
     limits.maxTravel = qint64(qRound64(r.maxTravel));

@@ -7366,6 +7366,12 @@ firmware %2</source>
         <source>Tick a second run to see the parameter differences.</source>
         <translation>再勾选一条运行记录即可查看参数差异。</translation>
     </message>
+    <message numerus="yes">
+        <source>… and %n more (the cells&apos; tool tips give every reason).</source>
+        <translation>
+            <numerusform>…另有 %n 条（每个单元格的提示中给出全部原因）。</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>dd::RunList</name>
@@ -7838,6 +7844,10 @@ firmware %2</source>
     <message>
         <source>The drive&apos;s live values are needed for a step test.</source>
         <translation>阶跃测试需要驱动器的实时值。</translation>
+    </message>
+    <message>
+        <source>Not started: stop the free capture first.</source>
+        <translation>未启动：请先停止自由捕获。</translation>
     </message>
 </context>
 <context>

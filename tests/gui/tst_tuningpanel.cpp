@@ -281,6 +281,31 @@ private slots:
               int(tuning->runList()->run(1).capture.time.size()), s.mean * 1000.0, s.mean > 0 ? 1.0 / s.mean : 0.0);
     }
 
+    void unresolvableMetricsSayWhy()
+    {
+        // Too few samples for any metric: "not resolvable" with the reason, a few note lines.
+        QList<TuningRun> runs;
+        for (int k = 0; k < 3; ++k) {
+            TuningRun run;
+            run.label = QStringLiteral("r%1").arg(k);
+            run.capture.channels = {QStringLiteral("speed")};
+            run.capture.columns = {{0.0}};
+            run.capture.time = {0.0};
+            run.metricsChannel = QStringLiteral("speed");
+            run.metrics = StepMetrics::compute(run.capture, StepMetrics::Input{});
+            runs << run;
+        }
+        RunComparison comparison;
+        comparison.setRuns(runs);
+        QTableWidgetItem *rise = comparison.table()->item(0, 0);
+        QCOMPARE(rise->text(), QStringLiteral("not resolvable"));
+        QVERIFY(!rise->toolTip().isEmpty());
+        QCOMPARE(rise->toolTip(), runs.at(0).metrics.riseTime.reason);
+        const QStringList lines = comparison.notesText().split(QLatin1Char('\n'));
+        QCOMPARE(lines.size(), 5);
+        QVERIFY(lines.last().contains(QStringLiteral("more")));
+    }
+
     void overlayDecimationKeepsPeaks()
     {
         QVector<double> t, v;

@@ -172,6 +172,13 @@ void RunComparison::refresh()
         m_differences->setText(tr("Tick a second run to see the parameter differences."));
     else
         m_differences->setText(lines.join(QLatin1Char('\n')));
+    // A few lines at most: the table keeps its room (every reason is in its cell's tool tip).
+    constexpr int MaxNotes = 4;
+    if (notes.size() > MaxNotes) {
+        const int more = int(notes.size()) - MaxNotes;
+        notes = notes.mid(0, MaxNotes);
+        notes << tr("… and %n more (the cells' tool tips give every reason).", nullptr, more);
+    }
     m_notes->setText(notes.join(QLatin1Char('\n')));
     m_notes->setVisible(!notes.isEmpty());
 }

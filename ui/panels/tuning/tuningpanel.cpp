@@ -339,6 +339,11 @@ void TuningPanel::runStep()
 {
     if (!context().isValid() || m_step->isRunning() || !m_stepControls->blockedReason().isEmpty())
         return;
+    if (m_capture->isRunning()) {
+        showMessage(
+            m_message, [] { return tr("Not started: stop the free capture first."); }, MessageKind::Problem);
+        return;
+    }
     const StepTestControls::Request r = m_stepControls->request();
     StepSpec spec;
     spec.kind = r.test == StepTestControls::Test::Position ? StepSpec::Kind::Position

@@ -419,6 +419,10 @@ private slots:
         TuningPanel *tuning = rig.show<TuningPanel>(&why);
         QVERIFY2(tuning, qPrintable(why));
         QCOMPARE(tuning->title(), QStringLiteral("Tuning"));
+        QVERIFY(dictionaryLoaded(tuning));
+        QVERIFY2(captureOnce(tuning, &why), qPrintable(why));
+        const QString channelName = tuning->plotChannel()->currentText();
+        QCOMPARE(tuning->plotChannel()->currentData().toString(), QStringLiteral("speed"));
         const QString arm = tuning->captureControls()->armButton()->text();
         const QString reason = tuning->stepControls()->blockedReason();
         LanguageManager language;
@@ -427,6 +431,9 @@ private slots:
         QVERIFY(tuning->title() != QStringLiteral("Tuning"));
         QVERIFY(tuning->captureControls()->armButton()->text() != arm);
         QVERIFY(tuning->stepControls()->blockedReason() != reason);
+        // The drive's channel names (read again in the new language) reach the plot's list.
+        QVERIFY(waitUntil([&] { return tuning->plotChannel()->currentText() != channelName; }, 5000));
+        QCOMPARE(tuning->plotChannel()->currentData().toString(), QStringLiteral("speed"));
         QVERIFY(tuning->comparison()->table()->verticalHeaderItem(0) == nullptr
                 || tuning->comparison()->table()->verticalHeaderItem(0)->text()
                     != QStringLiteral("Rise time (10–90 %)"));

@@ -49,10 +49,22 @@ void SpectrumView::setRun(const TuningRun *run)
     const QSignalBlocker block(m_channel);
     m_channel->clear();
     for (const QString &c : m_run.capture.channels)
-        m_channel->addItem(c, c);
+        m_channel->addItem(m_names.value(c, c), c);
     int i = m_channel->findData(keep.isEmpty() ? QStringLiteral("speed") : keep);
     m_channel->setCurrentIndex(i >= 0 ? i : 0);
     recompute();
+}
+
+void SpectrumView::setChannelNames(const QMap<QString, QString> &names)
+{
+    if (names == m_names)
+        return;
+    m_names = names;
+    for (int i = 0; i < m_channel->count(); ++i) {
+        const QString id = m_channel->itemData(i).toString();
+        m_channel->setItemText(i, m_names.value(id, id));
+    }
+    retranslate();
 }
 
 void SpectrumView::setChannel(const QString &channel)
@@ -97,7 +109,7 @@ void SpectrumView::retranslate()
                              .arg(m_spectrum.sampleRate, 0, 'f', 0));
     TrendPlot::Series s;
     s.id = QStringLiteral("spectrum");
-    s.label = tr("Amplitude of %1").arg(channel());
+    s.label = tr("Amplitude of %1").arg(m_names.value(channel(), channel()));
     s.color = QColor(0x1f, 0x77, 0xb4);
     double top = 0.0;
     for (int i = 0; i < m_spectrum.hz.size(); ++i) {

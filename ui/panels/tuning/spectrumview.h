@@ -3,6 +3,7 @@
 #include "core/tuning/spectrum.h"
 #include "core/tuning/tuningrun.h"
 
+#include <QMap>
 #include <QWidget>
 
 class QComboBox;
@@ -26,6 +27,8 @@ public:
     // The run whose channel is analysed (nullptr: none selected).
     void setRun(const TuningRun *run);
     void setChannel(const QString &channel);
+    // Display names of channel ids (the drive's, translated); ids without one show as is.
+    void setChannelNames(const QMap<QString, QString> &names);
     QString channel() const;
     const Spectrum &spectrum() const { return m_spectrum; }
     QString peaksText() const;
@@ -39,6 +42,7 @@ private:
     void retranslate();
 
     TuningRun m_run;
+    QMap<QString, QString> m_names;
     bool m_haveRun = false;
     Spectrum m_spectrum;
     QString m_error;

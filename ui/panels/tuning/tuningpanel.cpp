@@ -437,21 +437,24 @@ void TuningPanel::updatePlotChannels()
         for (const QString &c : r.capture.channels)
             if (!ids.contains(c))
                 ids << c;
-    QStringList current;
+    auto nameOf = [this](const QString &id) {
+        for (const ChannelInfo &c : driveInfo().channels)
+            if (c.id == id)
+                return c.name; // translated by the drive code
+        return id;
+    };
+    QStringList wanted, current;
+    for (const QString &id : std::as_const(ids))
+        wanted << id + QLatin1Char('\t') + nameOf(id);
     for (int i = 0; i < m_plotChannel->count(); ++i)
-        current << m_plotChannel->itemData(i).toString();
-    if (current == ids)
+        current << m_plotChannel->itemData(i).toString() + QLatin1Char('\t') + m_plotChannel->itemText(i);
+    if (current == wanted)
         return;
     const QString keep = m_plotChannel->currentData().toString();
     const QSignalBlocker block(m_plotChannel);
     m_plotChannel->clear();
-    for (const QString &id : ids) {
-        QString name = id;
-        for (const ChannelInfo &c : driveInfo().channels)
-            if (c.id == id)
-                name = c.name;
-        m_plotChannel->addItem(name, id);
-    }
+    for (const QString &id : std::as_const(ids))
+        m_plotChannel->addItem(nameOf(id), id);
     int i = m_plotChannel->findData(keep.isEmpty() ? QStringLiteral("speed") : keep);
     if (i < 0)
         i = m_plotChannel->findData(QStringLiteral("speed"));
@@ -585,7 +588,11 @@ void TuningPanel::retranslate()
         if (c.id == QLatin1String("speed"))
             m_stepControls->setSpeedUnit(c.unit);
     updateCaptureState();
-    updatePlotChannels();
+    QMap<QString, QString> names;
+    for (const ChannelInfo &c : info.channels)
+        names.insert(c.id, c.name);
+    m_spectrum->setChannelNames(names);
+    updateOverlay(); // channel names follow the language
     updateSideWidth();
 }
 

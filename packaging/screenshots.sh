@@ -21,13 +21,14 @@ mkdir -p "$out"
 settings="$(mktemp -d)"
 trap 'rm -rf "$settings"' EXIT
 
-shoot() {   # shoot LANG PANEL FILE [FAMILY: the drive to select]
-  local drive=()
+shoot() {   # shoot LANG PANEL FILE [FAMILY: the drive to select] [a file to open in its tabs]
+  local drive=() open=()
   [ -n "${4:-}" ] && drive=(--drive "$4")
+  [ -n "${5:-}" ] && open=("$5")
   XDG_CONFIG_HOME="$settings/$1" QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" \
     xvfb-run --auto-servernum --server-args="-screen 0 1440x900x24" \
     "$app" -geometry 1400x860+0+0 --demo --lang "$1" --panel "$2" "${drive[@]}" --screenshot "$out/$3" \
-      --screenshot-delay "$delay"
+      --screenshot-delay "$delay" "${open[@]}"
   echo "screenshots: $out/$3"
 }
 
@@ -41,3 +42,9 @@ shoot en alarms alarms-en.png
 shoot en ee eeprom-en.png
 shoot en motion motion-en.png servo-can
 shoot zh_CN motion motion-zh_CN.png servo-can
+# The Tuning tab with a run in it: a velocity step taken by the CLI on its own simulator.
+run="$settings/velocity-step.ddrun"
+QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" "$build/app/drivedesk-cli" --sim --family servo-can \
+  step velocity 500 --duration 0.4 --max-speed 800 --max-travel 1000000 -o "$run" >/dev/null
+shoot en tuning tuning-en.png servo-can "$run"
+shoot zh_CN tuning tuning-zh_CN.png servo-can "$run"

@@ -8,6 +8,7 @@
 #include "ui/panels/overview/overviewpanel.h"
 #include "ui/panels/parameters/parameterspanel.h"
 #include "ui/panels/trend/trendpanel.h"
+#include "ui/panels/tuning/tuningpanel.h"
 
 namespace dd {
 
@@ -17,6 +18,7 @@ QList<DrivePanel *> createDrivePanels(const DriveContext &context, QWidget *pare
     panels << new OverviewPanel(context, parent);
     panels << new ParametersPanel(context, parent);
     panels << new TrendPanel(context, parent);
+    panels << new TuningPanel(context, parent);
     panels << new MotionPanel(context, parent);
     panels << new AlarmsPanel(context, parent);
     panels << new BackupPanel(context, parent);

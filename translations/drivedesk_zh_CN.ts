@@ -251,7 +251,7 @@
     </message>
     <message>
         <source>%1: field &quot;scope&quot; must be &quot;all&quot; or &quot;%2&quot; (found &quot;%3&quot;)</source>
-        <translation>%1：字段 "scope" 必须是 "all" 或 "%2"（实际为 "%3"）</translation>
+        <translation>%1：字段 &quot;scope&quot; 必须是 &quot;all&quot; 或 &quot;%2&quot;（实际为 &quot;%3&quot;）</translation>
     </message>
 </context>
 <context>
@@ -1878,7 +1878,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
     <message>
         <source>%1 must be an object with &quot;key&quot; and &quot;role&quot;</source>
-        <translation>%1 必须是包含 "key" 和 "role" 的对象</translation>
+        <translation>%1 必须是包含 &quot;key&quot; 和 &quot;role&quot; 的对象</translation>
     </message>
     <message>
         <source>%1: no parameter has the key &quot;%2&quot;</source>
@@ -4672,7 +4672,7 @@ Servo enable on or off.
     </message>
     <message>
         <source>&quot;%1&quot; works on one drive: give one --address. backup, restore and diff take several (--address 1,2,5).</source>
-        <translation>"%1" 只作用于一台驱动器：请只给一个 --address。backup、restore 和 diff 可接受多个（--address 1,2,5）。</translation>
+        <translation>&quot;%1&quot; 只作用于一台驱动器：请只给一个 --address。backup、restore 和 diff 可接受多个（--address 1,2,5）。</translation>
     </message>
     <message>
         <source>--sim-resonance-hz must be a frequency from 1 to 1000 Hz, not &quot;%1&quot;.</source>
@@ -4715,7 +4715,7 @@ Servo enable on or off.
   --timeout MS                   线路传输时间之外的应答等待余量
   --retries N                    超时后的额外重试次数
   --dictionary FILE              参数字典（名称、范围、单位）；
-                                 "simulator"：模拟器的参数字典，含其环路增益
+                                 &quot;simulator&quot;：模拟器的参数字典，含其环路增益
   --option FAMILY.KEY=VALUE      协议文档未明确之处的系列设置，例如
                                  shuoke.checksum=twos-complement、
                                  servo-modbus.positionRule=decimal10000
@@ -4798,14 +4798,6 @@ Servo enable on or off.
 </translation>
     </message>
     <message>
-        <source>  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]
-                                 the commissioning record (PDF and JSON)
-</source>
-        <translation>  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]
-                                 调试记录（PDF 与 JSON）
-</translation>
-    </message>
-    <message>
         <source>Simulator:
   --sim runs the command against simulated drives of --family inside this
   process, with nothing plugged in: serial families on a pseudo-terminal,
@@ -4832,7 +4824,7 @@ Servo enable on or off.
   --sim-motion                   模拟驱动器自行运动（用于 monitor 演示；
                                  仅限该系列的模拟器支持时）
   --sim-resonance-hz F           模拟负载在 F Hz 处发生谐振（1..1000）
-  使用 --sim 时采用模拟器的参数字典：其 "tuning" 组列出模拟器自身的
+  使用 --sim 时采用模拟器的参数字典：其 &quot;tuning&quot; 组列出模拟器自身的
   环路增益（docs/tuning.md）。
 </translation>
     </message>
@@ -4948,8 +4940,18 @@ highest peaks (default 5), at HZ and above with --from. Reads files only.
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--header FILE.json]
-                     [--json-out RECORD.json] [--page-size a4|letter]
+        <source>  report -o RECORD.pdf [--all] [--runs RUN.ddrun,...] [--header FILE.json]
+         [--json-out RECORD.json]
+                                 the commissioning record (PDF and JSON)
+</source>
+        <translation>  report -o RECORD.pdf [--all] [--runs RUN.ddrun,...] [--header FILE.json]
+         [--json-out RECORD.json]
+                                 调试记录（PDF 与 JSON）
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--runs RUN.ddrun,...]
+                     [--header FILE.json] [--json-out RECORD.json] [--page-size a4|letter]
 The commissioning record of the drive at --address (--all: of every drive a scan
 of the link finds): identity, firmware, link, the parameters that differ from the
 dictionary&apos;s defaults (all of them in the appendix), the last restore or write
@@ -4957,17 +4959,21 @@ verification, alarms, link health and backup files, as a PDF in the language of
 --lang, and the same as JSON whose SHA-256 the PDF prints (docs/record.md).
 --all [--from A] [--to B]: the scan&apos;s address range (default: the family&apos;s).
 --header: machine, customer, site, engineer, notes from a JSON file.
---runs RUN.ddrun,...: tuning runs (not supported by this build yet).
+--runs RUN.ddrun,...: tuning runs (capture or step test files) shown with the drive
+they were taken on: plot, metrics, parameter snapshot. A bad run file, or one of a
+drive not in the record, exits 2 with the reason and writes nothing.
 </source>
-        <translation>用法：drivedesk-cli [选项] report -o RECORD.pdf [--all] [--header FILE.json]
-                     [--json-out RECORD.json] [--page-size a4|letter]
+        <translation>用法：drivedesk-cli [选项] report -o RECORD.pdf [--all] [--runs RUN.ddrun,...]
+                     [--header FILE.json] [--json-out RECORD.json] [--page-size a4|letter]
 生成 --address 所指驱动器的调试记录（--all：扫描链路找到的全部驱动器）：身份、固件、
 链路、与字典默认值不同的参数（附录中列出全部参数）、最近一次恢复或写入的校验结果、
 报警、链路状况和备份文件；PDF 使用 --lang 的语言，另有内容相同的 JSON，
 PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
 --all [--from A] [--to B]：扫描的地址范围（默认：该系列的范围）。
 --header：从 JSON 文件读取机器、客户、现场、工程师、备注。
---runs RUN.ddrun,...：调试运行记录（本版本尚不支持）。
+--runs RUN.ddrun,...：调试运行（采集或阶跃测试文件），显示在其所测的驱动器下：
+曲线、指标、参数快照。运行文件有误，或其驱动器不在记录中时，以退出码 2 结束并说明原因，
+不写任何文件。
 </translation>
     </message>
 </context>
@@ -5822,23 +5828,23 @@ then log out and log in again (or restart the computer).</source>
     </message>
     <message>
         <source>%1: a header file is one JSON object, e.g. {&quot;machine&quot;: &quot;Press 3&quot;, &quot;engineer&quot;: &quot;Li Wei&quot;}.</source>
-        <translation>%1：表头文件是一个 JSON 对象，例如 {"machine": "Press 3", "engineer": "Li Wei"}。</translation>
+        <translation>%1：表头文件是一个 JSON 对象，例如 {&quot;machine&quot;: &quot;Press 3&quot;, &quot;engineer&quot;: &quot;Li Wei&quot;}。</translation>
     </message>
     <message>
         <source>%1: unknown field &quot;%2&quot;; a header has the fields %3.</source>
-        <translation>%1：未知字段 "%2"；表头的字段为 %3。</translation>
+        <translation>%1：未知字段 &quot;%2&quot;；表头的字段为 %3。</translation>
     </message>
     <message>
         <source>%1: the field &quot;%2&quot; must be text (a JSON string).</source>
-        <translation>%1：字段 "%2" 必须是文本（JSON 字符串）。</translation>
+        <translation>%1：字段 &quot;%2&quot; 必须是文本（JSON 字符串）。</translation>
     </message>
     <message>
         <source>%1: the field &quot;%2&quot; is %3 characters long; at most %4 are allowed.</source>
-        <translation>%1：字段 "%2" 长 %3 个字符；最多允许 %4 个。</translation>
+        <translation>%1：字段 &quot;%2&quot; 长 %3 个字符；最多允许 %4 个。</translation>
     </message>
     <message>
         <source>%1: the field &quot;%2&quot; holds a control character (U+%3).</source>
-        <translation>%1：字段 "%2" 含有控制字符（U+%3）。</translation>
+        <translation>%1：字段 &quot;%2&quot; 含有控制字符（U+%3）。</translation>
     </message>
 </context>
 <context>
@@ -6177,6 +6183,14 @@ then log out and log in again (or restart the computer).</source>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
+    <message>
+        <source>Run file %1, checksum</source>
+        <translation>运行文件 %1，校验和</translation>
+    </message>
+    <message>
+        <source>not measured: %1</source>
+        <translation>未测得：%1</translation>
+    </message>
 </context>
 <context>
     <name>dd::VerificationJournal</name>
@@ -6471,16 +6485,12 @@ then log out and log in again (or restart the computer).</source>
         <translation>report：PDF 与 JSON 必须是两个不同的文件。</translation>
     </message>
     <message>
-        <source>report --runs: run files are not supported by this build yet.</source>
-        <translation>report --runs：本版本尚不支持运行记录文件。</translation>
-    </message>
-    <message>
         <source>report --header: %1</source>
         <translation>report --header：%1</translation>
     </message>
     <message>
         <source>report --page-size: &quot;%1&quot; is not a page size; use a4 or letter.</source>
-        <translation>report --page-size："%1" 不是纸张尺寸；请用 a4 或 letter。</translation>
+        <translation>report --page-size：&quot;%1&quot; 不是纸张尺寸；请用 a4 或 letter。</translation>
     </message>
     <message>
         <source>report: --from and --to limit the scan of --all; without --all the record is of --address.</source>
@@ -6555,6 +6565,34 @@ then log out and log in again (or restart the computer).</source>
         <translation>
             <numerusform>%n 台驱动器最近一次校验失败；记录中已注明。</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>report --runs: %1 was taken on a %2 drive; this link is of the %3 family.</source>
+        <translation>report --runs：%1 是在 %2 驱动器上测得的；此链路属于 %3 系列。</translation>
+    </message>
+    <message>
+        <source>report --runs: %1 was taken on the drive at address %2; this record is of address %3.</source>
+        <translation>report --runs：%1 是在地址 %2 的驱动器上测得的；本记录针对地址 %3。</translation>
+    </message>
+    <message>
+        <source>report --runs: &quot;%1&quot; has an empty file name; give RUN.ddrun,RUN2.ddrun,...</source>
+        <translation>report --runs：“%1”中有空文件名；请写成 RUN.ddrun,RUN2.ddrun,...</translation>
+    </message>
+    <message>
+        <source>report --runs: %1</source>
+        <translation>report --runs：%1</translation>
+    </message>
+    <message>
+        <source>report --runs: %1 is listed twice.</source>
+        <translation>report --runs：%1 列出了两次。</translation>
+    </message>
+    <message>
+        <source>Run %1 left out: its drive (address %2) could not be read.</source>
+        <translation>运行 %1 未收入：其驱动器（地址 %2）无法读取。</translation>
+    </message>
+    <message>
+        <source>run %1: its drive could not be read</source>
+        <translation>运行 %1：其驱动器无法读取</translation>
     </message>
 </context>
 <context>
@@ -6960,10 +6998,6 @@ firmware %2</source>
         <translation>记录中的驱动器：</translation>
     </message>
     <message>
-        <source>Tuning runs: run files are not supported by this build yet.</source>
-        <translation>调试运行：本版本尚不支持运行记录文件。</translation>
-    </message>
-    <message>
         <source>Machine / project:</source>
         <translation>机器 / 项目：</translation>
     </message>
@@ -7047,6 +7081,38 @@ firmware %2</source>
         <source>No Chinese font is installed: Chinese text is missing from the PDF.</source>
         <translation>未安装中文字体：PDF 中缺少中文文字。</translation>
     </message>
+    <message>
+        <source>Tuning runs (run files, each shown with the drive it was taken on):</source>
+        <translation>调试运行（运行文件，各自显示在其所测的驱动器下）：</translation>
+    </message>
+    <message>
+        <source>Add run files…</source>
+        <translation>添加运行文件…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>%1 — %2, %3 at address %4</source>
+        <translation>%1 — %2，%3，地址 %4</translation>
+    </message>
+    <message>
+        <source>Not added: %1</source>
+        <translation>未添加：%1</translation>
+    </message>
+    <message>
+        <source>Choose tuning runs for the record</source>
+        <translation>选择要收入记录的调试运行</translation>
+    </message>
+    <message>
+        <source>Run files (*.ddrun)</source>
+        <translation>运行文件 (*.ddrun)</translation>
+    </message>
+    <message>
+        <source>No record was made: %1</source>
+        <translation>未生成记录：%1</translation>
+    </message>
 </context>
 <context>
     <name>dd::RecordGatherer</name>
@@ -7095,6 +7161,100 @@ firmware %2</source>
     <message>
         <source>STOP: %1</source>
         <translation>停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordRuns</name>
+    <message>
+        <source>Capture</source>
+        <translation>采集</translation>
+    </message>
+    <message>
+        <source>Velocity step</source>
+        <translation>速度阶跃</translation>
+    </message>
+    <message>
+        <source>Position step</source>
+        <translation>位置阶跃</translation>
+    </message>
+    <message>
+        <source>Reversal</source>
+        <translation>换向</translation>
+    </message>
+    <message>
+        <source>Rise time (10–90 %)</source>
+        <translation>上升时间（10–90 %）</translation>
+    </message>
+    <message>
+        <source>Overshoot</source>
+        <translation>超调量</translation>
+    </message>
+    <message>
+        <source>Settling time (±2 %)</source>
+        <translation>调节时间（±2 %）</translation>
+    </message>
+    <message>
+        <source>Settling time (±5 %)</source>
+        <translation>调节时间（±5 %）</translation>
+    </message>
+    <message>
+        <source>Steady-state error</source>
+        <translation>稳态误差</translation>
+    </message>
+    <message>
+        <source>Steady-state ripple</source>
+        <translation>稳态波动</translation>
+    </message>
+    <message>
+        <source>Peak following error</source>
+        <translation>最大跟随误差</translation>
+    </message>
+    <message>
+        <source>Peak torque</source>
+        <translation>峰值转矩</translation>
+    </message>
+    <message>
+        <source>Peak current</source>
+        <translation>峰值电流</translation>
+    </message>
+    <message>
+        <source>Sample interval</source>
+        <translation>采样间隔</translation>
+    </message>
+    <message>
+        <source>Cannot open the run file %1: %2</source>
+        <translation>无法打开运行文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 MiB: not a run file</source>
+        <translation>%1 大于 %2 MiB：不是运行文件</translation>
+    </message>
+    <message>
+        <source>The run file %1 is chosen twice.</source>
+        <translation>运行文件 %1 被选了两次。</translation>
+    </message>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1，地址 %2</translation>
+    </message>
+    <message>
+        <source>The run %1 was taken on %2 at address %3, which is not in this record (it holds %4).</source>
+        <translation>运行 %1 是在 %2（地址 %3）上测得的，该驱动器不在本记录中（本记录包含：%4）。</translation>
+    </message>
+    <message>
+        <source>no drive</source>
+        <translation>无驱动器</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RunPlot</name>
+    <message>
+        <source>time from the trigger (s)</source>
+        <translation>相对触发点的时间（s）</translation>
+    </message>
+    <message>
+        <source>%1: no sample</source>
+        <translation>%1：无采样</translation>
     </message>
 </context>
 </TS>

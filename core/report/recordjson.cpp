@@ -57,8 +57,11 @@ QJsonObject runJson(const RunRecord &run)
 {
     QJsonArray metrics;
     for (const RunRecord::Metric &m : run.metrics)
-        metrics.append(QJsonObject{
-            {QStringLiteral("name"), m.name}, {QStringLiteral("value"), m.value}, {QStringLiteral("unit"), m.unit}});
+        metrics.append(QJsonObject{{QStringLiteral("key"), m.key},
+                                   {QStringLiteral("name"), m.name},
+                                   {QStringLiteral("value"), m.value ? QJsonValue(*m.value) : QJsonValue()},
+                                   {QStringLiteral("unit"), m.unit},
+                                   {QStringLiteral("note"), m.note}});
     QJsonArray snapshot;
     for (const RunRecord::SnapshotValue &s : run.snapshot)
         snapshot.append(QJsonObject{{QStringLiteral("key"), s.key},
@@ -68,9 +71,10 @@ QJsonObject runJson(const RunRecord &run)
     const QJsonValue plot = run.plot.isNull() ? QJsonValue(QJsonValue::Null)
                                               : QJsonValue(QJsonObject{{QStringLiteral("width"), run.plot.width()},
                                                                        {QStringLiteral("height"), run.plot.height()}});
-    return {{QStringLiteral("title"), run.title},     {QStringLiteral("file"), run.file},
-            {QStringLiteral("when"), time(run.when)}, {QStringLiteral("metrics"), metrics},
-            {QStringLiteral("snapshot"), snapshot},   {QStringLiteral("plot"), plot}};
+    return {{QStringLiteral("title"), run.title},       {QStringLiteral("file"), run.file},
+            {QStringLiteral("checksum"), run.checksum}, {QStringLiteral("test"), run.test},
+            {QStringLiteral("when"), time(run.when)},   {QStringLiteral("metrics"), metrics},
+            {QStringLiteral("snapshot"), snapshot},     {QStringLiteral("plot"), plot}};
 }
 
 QJsonObject driveJson(const DriveRecord &d)

@@ -2,6 +2,7 @@
 
 #include "core/protocol/familytraits.h"
 #include "core/report/recordfont.h"
+#include "core/report/recordruns.h"
 
 #include <QAbstractTextDocumentLayout>
 #include <QBuffer>
@@ -303,7 +304,11 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
         html += QStringLiteral("<h3>%1</h3>").arg(esc(tr("Tuning runs (%n)", nullptr, int(d.runs.size()))));
         for (int r = 0; r < d.runs.size(); ++r) {
             const RunRecord &run = d.runs.at(r);
-            html += QStringLiteral("<p><b>%1</b> %2</p>").arg(esc(run.title), esc(timeText(run.when)));
+            html += QStringLiteral("<p><b>%1</b> — %2, %3</p>")
+                        .arg(esc(run.title), esc(RecordRuns::testName(run.test)), esc(timeText(run.when)));
+            if (!run.file.isEmpty())
+                html += QStringLiteral("<p class=\"note\">%1 <span class=\"mono\">%2</span></p>")
+                            .arg(esc(tr("Run file %1, checksum").arg(run.file)), esc(run.checksum));
             if (!run.plot.isNull())
                 html += QStringLiteral("<p><img src=\"run:%1/%2\" width=\"%3\" height=\"%4\"/></p>")
                             .arg(number)
@@ -313,7 +318,10 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
             if (!run.metrics.isEmpty()) {
                 html += tableStart({tr("Metric"), tr("Value"), tr("Unit")});
                 for (const RunRecord::Metric &m : run.metrics)
-                    html += QStringLiteral("<tr>") + cell(esc(m.name)) + cell(QString::number(m.value, 'g', 6))
+                    html += QStringLiteral("<tr>") + cell(esc(m.name))
+                        + cell(m.value ? QString::number(*m.value, 'g', 4)
+                                       : QStringLiteral("— <span class=\"note\">%1</span>")
+                                             .arg(esc(tr("not measured: %1").arg(m.note))))
                         + cell(esc(m.unit)) + QStringLiteral("</tr>");
                 html += QStringLiteral("</table>");
             }

@@ -156,10 +156,14 @@ bool ReportCommand::loadRuns(const QString &list, QString *error)
 
 void ReportCommand::start()
 {
-    m_health = new LinkHealthCounter(context()->connection->tap(), this);
+    const ConnectionSettings &settings = context()->connection->settings();
+    m_health = new LinkHealthCounter(context()->connection->tap(), settings.isCan() ? 0 : settings.baud, this);
     m_collector = new RecordCollector(QLocale(), this);
     m_collector->setJournal(&m_journal);
-    connect(m_collector, &RecordCollector::operationFailed, m_health, &LinkHealthCounter::countError);
+    connect(m_collector, &RecordCollector::operationFailed, m_health, [this] {
+        if (!m_addresses.isEmpty())
+            m_health->countError(m_addresses.first());
+    });
     connect(m_collector, &RecordCollector::finished, this, [this](const Error &error) {
         const int address = m_addresses.takeFirst();
         if (error) {
@@ -225,9 +229,8 @@ void ReportCommand::writeRecord()
     record.locale = QLocale();
     record.header = m_header;
     record.header.stamp();
-    const RecordLinkHealth health = m_health->health(tr("while this record was made"));
     for (DriveRecord &d : m_drives) {
-        d.linkHealth = health;
+        d.linkHealth = m_health->health(d.address, tr("while this record was made"));
         record.drives.append(d);
     }
     // Runs of a drive --all found but could not read are left out with it; a run of a drive

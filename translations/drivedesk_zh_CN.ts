@@ -6109,10 +6109,6 @@ then log out and log in again (or restart the computer).</source>
         <source>Not measured.</source>
         <translation>未统计。</translation>
     </message>
-    <message>
-        <source>%1: %2 frame(s) sent, %3 received, %4 discarded, %5 retries, %6 failed operation(s).</source>
-        <translation>%1：发送 %2 帧，接收 %3 帧，丢弃 %4 帧，重试 %5 次，失败操作 %6 次。</translation>
-    </message>
     <message numerus="yes">
         <source>Tuning runs (%n)</source>
         <translation>
@@ -6190,6 +6186,18 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>not measured: %1</source>
         <translation>未测得：%1</translation>
+    </message>
+    <message>
+        <source>turnaround %1 / %2 / %3 ms (min / median / max)</source>
+        <translation>往返时间 %1 / %2 / %3 ms（最小 / 中位 / 最大）</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>%1: %2 request(s), %3 answered, %4; %5 timeout(s), %6 checksum error(s), %7 late or duplicated reply(ies), %8 retries, %9 failed operation(s).</source>
+        <translation>%1：%2 次请求，%3 次应答，%4；%5 次超时，%6 次校验错误，%7 次迟到或重复的应答，%8 次重试，%9 次操作失败。</translation>
     </message>
 </context>
 <context>

@@ -96,13 +96,21 @@ QJsonObject driveJson(const DriveRecord &d)
                                   {QStringLiteral("source"), a.source},
                                   {QStringLiteral("cleared"), a.cleared}});
     const RecordLinkHealth &h = d.linkHealth;
+    const QJsonValue turnaround = h.answered > 0
+        ? QJsonValue(QJsonObject{{QStringLiteral("min"), h.turnaroundMinMs},
+                                 {QStringLiteral("median"), h.turnaroundMedianMs},
+                                 {QStringLiteral("max"), h.turnaroundMaxMs}})
+        : QJsonValue(QJsonValue::Null);
     const QJsonObject health{{QStringLiteral("measured"), h.measured},
                              {QStringLiteral("scope"), h.scope},
-                             {QStringLiteral("framesSent"), double(h.framesSent)},
-                             {QStringLiteral("framesReceived"), double(h.framesReceived)},
-                             {QStringLiteral("discarded"), double(h.discarded)},
-                             {QStringLiteral("retries"), double(h.retries)},
-                             {QStringLiteral("errors"), double(h.errors)}};
+                             {QStringLiteral("requests"), h.requests},
+                             {QStringLiteral("answered"), h.answered},
+                             {QStringLiteral("turnaroundMs"), turnaround},
+                             {QStringLiteral("timeouts"), h.timeouts},
+                             {QStringLiteral("checksumErrors"), h.checksumErrors},
+                             {QStringLiteral("lateReplies"), h.lateReplies},
+                             {QStringLiteral("retries"), h.retries},
+                             {QStringLiteral("errors"), h.errors}};
     QJsonArray runs;
     for (const RunRecord &r : d.runs)
         runs.append(runJson(r));

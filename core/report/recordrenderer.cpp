@@ -289,12 +289,21 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
     if (!h.measured) {
         html += QStringLiteral("<p>%1</p>").arg(esc(tr("Not measured.")));
     } else {
+        const QString turnaround = h.answered > 0
+            ? tr("turnaround %1 / %2 / %3 ms (min / median / max)")
+                  .arg(QString::number(h.turnaroundMinMs, 'f', 1), QString::number(h.turnaroundMedianMs, 'f', 1),
+                       QString::number(h.turnaroundMaxMs, 'f', 1))
+            : tr("no reply");
         html += QStringLiteral("<p>%1</p>")
-                    .arg(esc(tr("%1: %2 frame(s) sent, %3 received, %4 discarded, %5 retries, %6 failed operation(s).")
+                    .arg(esc(tr("%1: %2 request(s), %3 answered, %4; %5 timeout(s), %6 checksum error(s), %7 late or "
+                                "duplicated reply(ies), %8 retries, %9 failed operation(s).")
                                  .arg(h.scope)
-                                 .arg(h.framesSent)
-                                 .arg(h.framesReceived)
-                                 .arg(h.discarded)
+                                 .arg(h.requests)
+                                 .arg(h.answered)
+                                 .arg(turnaround)
+                                 .arg(h.timeouts)
+                                 .arg(h.checksumErrors)
+                                 .arg(h.lateReplies)
                                  .arg(h.retries)
                                  .arg(h.errors)));
     }

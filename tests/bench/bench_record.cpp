@@ -43,8 +43,8 @@ int main(int argc, char *argv[])
     qint64 runBytes = 0;
     for (const QString &p : std::as_const(runPaths))
         runBytes += QFileInfo(p).size();
-    out << "record: " << drives << " drives x " << parameters << " parameters, " << runPaths.size()
-        << " run files (" << QString::number(runBytes / 1024.0, 'f', 0) << " KB)\n";
+    out << "record: " << drives << " drives x " << parameters << " parameters, " << runPaths.size() << " run files ("
+        << QString::number(runBytes / 1024.0, 'f', 0) << " KB)\n";
 
     // A warm-up (font database, first glyphs), then three timed runs per page size.
     const dd::CommissioningRecord base = dd::test::fixtureRecord(drives, parameters, 2);

@@ -9,6 +9,9 @@
 #include "ui/report/recordsession.h"
 
 #include <QCryptographicHash>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QLoggingCategory>
@@ -97,6 +100,20 @@ private slots:
             const QString sha = QString::fromLatin1(
                 QCryptographicHash::hash(json.readAll(), QCryptographicHash::Sha256).toHex());
             QCOMPARE(saved.at(0).at(2).toString(), sha);
+            // The drive's link health: core/link's figures for its address since the session began.
+            QVERIFY(json.seek(0));
+            const QJsonObject health = QJsonDocument::fromJson(json.readAll())
+                                           .object()
+                                           .value(QStringLiteral("drives"))
+                                           .toArray()
+                                           .at(0)
+                                           .toObject()
+                                           .value(QStringLiteral("linkHealth"))
+                                           .toObject();
+            QVERIFY(health.value(QStringLiteral("measured")).toBool());
+            QVERIFY(health.value(QStringLiteral("requests")).toInt() >= 4);
+            QCOMPARE(health.value(QStringLiteral("answered")).toInt(),
+                     health.value(QStringLiteral("requests")).toInt());
 
             QString error;
             const QString text = test::pdfText(pdf, 0, 0, &error);

@@ -147,7 +147,9 @@ void TestCliReport::recordOfEveryDriveOnTheLink()
     QCOMPARE(v2.value("entries").toArray().size(), 2);
     QVERIFY(t.contains("2 parameter(s) written and verified."));
     // Link health of this run.
-    QVERIFY(QRegularExpression("while this record was made: [1-9]\\d* frame\\(s\\) sent").match(t).hasMatch());
+    QVERIFY(QRegularExpression("while this record was made: [1-9]\\d* request\\(s\\), [1-9]\\d* answered, turnaround")
+                .match(t.simplified())
+                .hasMatch());
 }
 
 void TestCliReport::chineseRecord()
@@ -207,6 +209,16 @@ void TestCliReport::tuningRunsAreInTheRecordOfTheirDrive()
     QCOMPARE(drives.at(0).toObject().value("runs").toArray().size(), 0);
     const QJsonObject jr = drives.at(1).toObject().value("runs").toArray().at(0).toObject();
     QCOMPARE(jr.value("checksum").toString(), checksum);
+    // Each drive's link health is its own (core/link's LinkHealth for its address): every
+    // request to it answered on the clean simulated link, with a turnaround.
+    for (const QJsonValue &d : drives) {
+        const QJsonObject h = d.toObject().value("linkHealth").toObject();
+        QVERIFY(h.value("measured").toBool());
+        QVERIFY2(h.value("requests").toInt() >= 4, qPrintable(QJsonDocument(h).toJson()));
+        QCOMPARE(h.value("answered").toInt(), h.value("requests").toInt());
+        QCOMPARE(h.value("timeouts").toInt() + h.value("checksumErrors").toInt() + h.value("errors").toInt(), 0);
+        QVERIFY(h.value("turnaroundMs").toObject().value("max").toDouble() > 0);
+    }
     QCOMPARE(jr.value("test").toString(), QString("capture"));
     QVERIFY(jr.value("plot").isObject());
     QVERIFY(!jr.value("snapshot").toArray().isEmpty());

@@ -158,7 +158,7 @@ inline CommissioningRecord fixtureRecord(int drives, int parameters, int failedD
             {QStringLiteral("restore"), r.verification.sourceFile, r.verification.sourceChecksum, r.verification.when});
         r.alarms.append({QDateTime(QDate(2026, 11, 25), QTime(12, 10, 0), Qt::UTC), 12, QStringLiteral("Overcurrent"),
                          QStringLiteral("session"), true});
-        r.linkHealth = {true, QStringLiteral("this session"), 12000, 11990, 3, 2, 1};
+        r.linkHealth = {true, QStringLiteral("this session"), 6000, 5995, 3, 1, 2, 2, 1.2, 1.9, 14.5, 1};
         record.drives.append(r);
     }
     for (int k = 0; k < runs && drives > 0; ++k) {

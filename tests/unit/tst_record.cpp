@@ -1,7 +1,9 @@
 // The commissioning record (core/report): header files, the JSON and its schema, the PDF as
 // a reader sees it (pdftotext), the verification journal.
 #include "core/drive/drivetypes.h"
+#include "core/link/trafficrecord.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/linkhealthcounter.h"
 #include "core/report/recordheader.h"
 #include "core/report/recordjson.h"
 #include "core/report/recordrenderer.h"
@@ -186,7 +188,7 @@ private slots:
         }
         // The alarm history, link health and backup checksums are there too.
         QVERIFY(t.contains(QStringLiteral("Overcurrent")));
-        QVERIFY(t.contains(QStringLiteral("12000 frame(s) sent")));
+        QVERIFY(t.contains(QStringLiteral("6000 request(s), 5995 answered")));
         QVERIFY(t.contains(record.drives.first().backups.first().checksum));
     }
 
@@ -415,6 +417,72 @@ private slots:
         e = RecordRuns::attach({loaded, loaded}, &record.drives, record.locale);
         QVERIFY2(e.message.contains(QLatin1String("chosen twice")), qPrintable(e.message));
         QVERIFY(record.drives.at(0).runs.isEmpty());
+    }
+
+    void linkHealthIsCountedPerDriveFromTheTraffic()
+    {
+        // Serial traffic of two drives at 115200: drive 1 answers in 5 ms; drive 2's first
+        // reply is dropped for a bad checksum, the retry is answered in 8 ms; a broadcast and
+        // a request to drive 3 that nobody answers (still out at the end: not counted).
+        LinkHealthCounter counter(nullptr, 115200);
+        auto record = [&counter](qint64 ms, TrafficRecord::Direction d, QByteArray bytes, const char *note = "") {
+            TrafficRecord r;
+            r.timestampUs = ms * 1000;
+            r.direction = d;
+            r.bytes = bytes;
+            r.note = QLatin1String(note);
+            counter.count(r);
+        };
+        using D = TrafficRecord::Direction;
+        record(0, D::Tx, QByteArray::fromHex("010300640001c5d5"));
+        record(5, D::Rx, QByteArray::fromHex("01030200001984"));
+        record(10, D::Tx, QByteArray::fromHex("020300640001c5e6"));
+        record(14, D::Discarded, QByteArray::fromHex("0203020000ffff"), "bad checksum");
+        record(60, D::Tx, QByteArray::fromHex("020300640001c5e6"), "(retry 1)");
+        record(68, D::Rx, QByteArray::fromHex("02030200001984"));
+        record(70, D::Tx, QByteArray::fromHex("000600640001"));
+        record(80, D::Tx, QByteArray::fromHex("030300640001"));
+        counter.countError(2);
+
+        const RecordLinkHealth one = counter.health(1, QStringLiteral("test"));
+        QVERIFY(one.measured);
+        QCOMPARE(one.requests, 1);
+        QCOMPARE(one.answered, 1);
+        QCOMPARE(one.turnaroundMedianMs, 5.0);
+        QCOMPARE(one.timeouts + one.checksumErrors + one.retries + one.errors, 0);
+        const RecordLinkHealth two = counter.health(2, QStringLiteral("test"));
+        QCOMPARE(two.requests, 2);
+        QCOMPARE(two.answered, 1);
+        QCOMPARE(two.checksumErrors, 1);
+        QCOMPARE(two.retries, 1);
+        QCOMPARE(two.timeouts, 0);
+        QCOMPARE(two.turnaroundMaxMs, 8.0);
+        QCOMPARE(two.errors, 1);
+        const RecordLinkHealth three = counter.health(3, QStringLiteral("test"));
+        QCOMPARE(three.requests, 1);
+        QCOMPARE(three.answered, 0);
+
+        // As the record shows it.
+        CommissioningRecord rec = test::fixtureRecord(1, 5);
+        rec.drives[0].linkHealth = two;
+        const QString pdf = path(QStringLiteral("health.pdf"));
+        QByteArray json;
+        QVERIFY(!write(rec, pdf, QPageSize::A4, &json).isEmpty());
+        QVERIFY2(QRegularExpression(QStringLiteral("test: 2 request\\(s\\), 1 answered, turnaround 8.0 / 8.0 / 8.0 ms "
+                                                   "\\(min / median / max\\); 0 timeout\\(s\\), 1 checksum error"))
+                     .match(text(pdf).simplified())
+                     .hasMatch(),
+                 qPrintable(text(pdf)));
+        const QJsonObject h = QJsonDocument::fromJson(json)
+                                  .object()
+                                  .value(QStringLiteral("drives"))
+                                  .toArray()
+                                  .at(0)
+                                  .toObject()
+                                  .value(QStringLiteral("linkHealth"))
+                                  .toObject();
+        QCOMPARE(h.value(QStringLiteral("checksumErrors")).toInt(), 1);
+        QCOMPARE(h.value(QStringLiteral("turnaroundMs")).toObject().value(QStringLiteral("max")).toDouble(), 8.0);
     }
 
     void journalKeepsTheLastVerificationAndBackups()

@@ -6009,12 +6009,6 @@ then log out and log in again (or restart the computer).</source>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
-    <message numerus="yes">
-        <source>%n parameter(s) could not be compared: the dictionary gives no default for them.</source>
-        <translation>
-            <numerusform>%n 个参数无法比较：字典中没有它们的默认值。</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Every parameter with its value and default is listed in the appendix.</source>
         <translation>附录中列出每个参数及其值和默认值。</translation>
@@ -6198,6 +6192,26 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>%1: %2 request(s), %3 answered, %4; %5 timeout(s), %6 checksum error(s), %7 late or duplicated reply(ies), %8 retries, %9 failed operation(s).</source>
         <translation>%1：%2 次请求，%3 次应答，%4；%5 次超时，%6 次校验错误，%7 次迟到或重复的应答，%8 次重试，%9 次操作失败。</translation>
+    </message>
+    <message>
+        <source>%1 (%2 not compared)</source>
+        <translation>%1（%2 个未比较）</translation>
+    </message>
+    <message numerus="yes">
+        <source>Not compared: the dictionary gives no factory default for any of the %n parameter(s) read, so this record cannot say which of them were changed.</source>
+        <translation>
+            <numerusform>未比较：字典没有为已读取的 %n 个参数中的任何一个给出出厂默认值，因此本记录无法说明其中哪些被修改过。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) not compared: the dictionary gives no factory default for them (shown as “—” in the Default column of the appendix).</source>
+        <translation>
+            <numerusform>%n 个参数未比较：字典没有给出它们的出厂默认值（附录的“默认值”列中显示为“—”）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The protocol documents of this drive family list no factory defaults for these parameters. A dictionary with the drive&apos;s factory settings (drivedesk-cli --dictionary, or the user dictionary of the family) makes the comparison complete.</source>
+        <translation>该驱动器系列的协议文档没有列出这些参数的出厂默认值。使用包含驱动器出厂设置的字典（drivedesk-cli --dictionary，或该系列的用户字典）即可完成比较。</translation>
     </message>
 </context>
 <context>

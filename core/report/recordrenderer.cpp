@@ -10,6 +10,7 @@
 #include <QPdfWriter>
 #include <QSaveFile>
 #include <QTextDocument>
+#include <algorithm>
 #include <functional>
 
 namespace dd {
@@ -176,8 +177,11 @@ QString RecordRenderer::summarySection() const
             verification = QStringLiteral("<span class=\"fail\">%1</span>")
                                .arg(esc(tr("FAILED (%1)").arg(d.verification.failedCount())));
         html += QStringLiteral("<tr>") + cell(esc(driveTitle(d))) + cell(orDash(d.firmware)) + cell(orDash(d.model))
-            + cell(orDash(d.link)) + cell(QString::number(d.nonDefault().size())) + cell(verification)
-            + cell(QString::number(d.alarms.size())) + QStringLiteral("</tr>");
+            + cell(orDash(d.link))
+            + cell(d.withoutDefault() > 0
+                       ? esc(tr("%1 (%2 not compared)").arg(d.nonDefault().size()).arg(d.withoutDefault()))
+                       : QString::number(d.nonDefault().size()))
+            + cell(verification) + cell(QString::number(d.alarms.size())) + QStringLiteral("</tr>");
     }
     return html + QStringLiteral("</table>");
 }
@@ -213,7 +217,15 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
     const QList<RecordParameter> changed = d.nonDefault();
     html += QStringLiteral("<h3>%1</h3>")
                 .arg(esc(tr("Parameters that differ from the defaults (%n)", nullptr, int(changed.size()))));
-    if (changed.isEmpty()) {
+    const int notCompared = d.withoutDefault();
+    const int read = int(std::count_if(d.parameters.cbegin(), d.parameters.cend(),
+                                       [](const RecordParameter &p) { return p.value.has_value(); }));
+    if (changed.isEmpty() && read > 0 && notCompared == read) {
+        html += QStringLiteral("<p class=\"fail\">%1</p>")
+                    .arg(esc(tr("Not compared: the dictionary gives no factory default for any of the %n parameter(s) "
+                                "read, so this record cannot say which of them were changed.",
+                                nullptr, read)));
+    } else if (changed.isEmpty()) {
         html += QStringLiteral("<p>%1</p>").arg(esc(tr("No parameter read differs from its default.")));
     } else {
         QStringList rows;
@@ -224,10 +236,16 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
         html += chunkedTable({tr("Index"), tr("Parameter"), tr("Name"), tr("Value"), tr("Default"), tr("Unit")},
                              {8, 12, 42, 13, 13, 12}, rows);
     }
-    if (const int n = d.withoutDefault())
+    if (notCompared > 0 && notCompared < read)
         html += QStringLiteral("<p class=\"note\">%1</p>")
-                    .arg(esc(tr("%n parameter(s) could not be compared: the dictionary gives no default for them.",
-                                nullptr, n)));
+                    .arg(esc(tr("%n parameter(s) not compared: the dictionary gives no factory default for them "
+                                "(shown as “—” in the Default column of the appendix).",
+                                nullptr, notCompared)));
+    if (notCompared > 0)
+        html += QStringLiteral("<p class=\"note\">%1</p>")
+                    .arg(esc(tr("The protocol documents of this drive family list no factory defaults for these "
+                                "parameters. A dictionary with the drive's factory settings (drivedesk-cli "
+                                "--dictionary, or the user dictionary of the family) makes the comparison complete.")));
     html += QStringLiteral("<p class=\"note\">%1</p>")
                 .arg(esc(tr("Every parameter with its value and default is listed in the appendix.")));
 

@@ -485,6 +485,29 @@ private slots:
         QCOMPARE(h.value(QStringLiteral("turnaroundMs")).toObject().value(QStringLiteral("max")).toDouble(), 8.0);
     }
 
+    void parametersWithoutDefaultsAreSaidNotCompared()
+    {
+        // No default at all (the bundled servo dictionaries): the record must not read as
+        // "nothing changed".
+        CommissioningRecord record = test::fixtureRecord(2, 12);
+        for (RecordParameter &p : record.drives[0].parameters)
+            p.defaultValue.reset();
+        for (int i = 0; i < 4; ++i) // drive 2: some without a default
+            record.drives[1].parameters[i].defaultValue.reset();
+        const QString pdf = path(QStringLiteral("nodefaults.pdf"));
+        QVERIFY(!write(record, pdf).isEmpty());
+        const QString first = text(pdf, 1, 1).simplified();
+        QVERIFY2(first.contains(QStringLiteral("0 (12 not compared)")), qPrintable(first));
+        QVERIFY2(first.contains(QStringLiteral("(4 not compared)")), qPrintable(first));
+        const QString drive1 = text(pdf, 2, 2).simplified();
+        QVERIFY2(drive1.contains(QStringLiteral("Not compared: the dictionary gives no factory default for any of the "
+                                                "12 parameter(s) read")),
+                 qPrintable(drive1));
+        QVERIFY(!drive1.contains(QStringLiteral("No parameter read differs")));
+        const QString all = text(pdf).simplified();
+        QVERIFY(all.contains(QStringLiteral("4 parameter(s) not compared: the dictionary gives no factory default")));
+    }
+
     void journalKeepsTheLastVerificationAndBackups()
     {
         VerificationJournal journal(path(QStringLiteral("journal")));

@@ -173,7 +173,11 @@ QString CliHelp::command(const QString &name)
                   "With --all (every drive a scan finds) or --address 1,2,5 the file goes to\n"
                   "each drive at its own address; communication settings are never copied\n"
                   "unless --only names them. --stop-on-failure: one drive after the other,\n"
-                  "none after the first that fails. The exit code is the worst drive's.\n");
+                  "none after the first that fails. The exit code is the worst drive's.\n"
+                  "restore DIR [--address 1,2,5]: a folder written by backup --all -o DIR put\n"
+                  "back, every drive its index.json lists (or those of --address) from its own\n"
+                  "file, at its address; each file is checked to be that drive's before anything\n"
+                  "is sent.\n");
     if (name == QLatin1String("ee"))
         return tr("Usage: drivedesk-cli [OPTIONS] ee set|rd|ba|rs|def\n"
                   "servo-modbus EEPROM operations, waiting for completion:\n"

@@ -4864,28 +4864,6 @@ no link. Sources of different families are refused. Exit code as diff(1):
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
-Write the parameters that differ from the file and verify each by reading it
-back. The file is checked completely before anything is sent. A file from
-another family is refused; from another firmware only with --force.
---dry-run shows what would be written. On failure the report says exactly
-which parameters were written and which were not.
-With --all (every drive a scan finds) or --address 1,2,5 the file goes to
-each drive at its own address; communication settings are never copied
-unless --only names them. --stop-on-failure: one drive after the other,
-none after the first that fails. The exit code is the worst drive&apos;s.
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
-写入与文件不同的参数，并逐个回读校验。发送任何数据之前会完整检查文件。
-其他系列的备份文件一律拒绝；其他固件版本的备份文件须加 --force。
---dry-run 只显示将写入的内容。失败时报告会准确列出哪些参数已写入、
-哪些未写入。
-使用 --all（扫描找到的每一台）或 --address 1,2,5 时，文件写入每台驱动器各自
-的地址；通信设置除非在 --only 中指明，否则从不复制。--stop-on-failure：逐台
-进行，第一台失败后不再继续。退出码取最差的那台驱动器的。
-</translation>
-    </message>
-    <message>
         <source>Usage: drivedesk-cli [OPTIONS] ping [--count N]
 Ask the drive for its status N times (default 10), one request at a time, and
 report the link&apos;s health: turnaround min / median / max, timeouts, checksum
@@ -4974,6 +4952,35 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
 --runs RUN.ddrun,...：调试运行（采集或阶跃测试文件），显示在其所测的驱动器下：
 曲线、指标、参数快照。运行文件有误，或其驱动器不在记录中时，以退出码 2 结束并说明原因，
 不写任何文件。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+Write the parameters that differ from the file and verify each by reading it
+back. The file is checked completely before anything is sent. A file from
+another family is refused; from another firmware only with --force.
+--dry-run shows what would be written. On failure the report says exactly
+which parameters were written and which were not.
+With --all (every drive a scan finds) or --address 1,2,5 the file goes to
+each drive at its own address; communication settings are never copied
+unless --only names them. --stop-on-failure: one drive after the other,
+none after the first that fails. The exit code is the worst drive&apos;s.
+restore DIR [--address 1,2,5]: a folder written by backup --all -o DIR put
+back, every drive its index.json lists (or those of --address) from its own
+file, at its address; each file is checked to be that drive&apos;s before anything
+is sent.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+写入与文件不同的参数，并逐个回读校验。发送任何数据之前会完整检查文件。
+其他系列的备份文件一律拒绝；其他固件版本的备份文件须加 --force。
+--dry-run 只显示将写入的内容。失败时报告会准确列出哪些参数已写入、
+哪些未写入。
+使用 --all（扫描找到的每一台）或 --address 1,2,5 时，文件写入每台驱动器各自
+的地址；通信设置除非在 --only 中指明，否则从不复制。--stop-on-failure：逐台
+进行，第一台失败后不再继续。退出码取最差的那台驱动器的。
+restore DIR [--address 1,2,5]：将 backup --all -o DIR 写出的文件夹恢复回去，
+index.json 中列出的每台驱动器（或 --address 指定的驱动器）各用自己的文件、
+按其地址恢复；发送任何数据之前会逐个确认文件属于该驱动器。
 </translation>
     </message>
 </context>
@@ -6427,6 +6434,46 @@ then log out and log in again (or restart the computer).</source>
         <translation>
             <numerusform>%n 台驱动器中有 %1 台已从 %2 恢复。</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>restore %1: a backup folder names its drives; --from and --to do not apply.</source>
+        <translation>restore %1：备份文件夹已列明其驱动器；--from 和 --to 不适用。</translation>
+    </message>
+    <message>
+        <source>restore %1: the folder has no index.json (write one with backup --all -o %1): %2</source>
+        <translation>restore %1：该文件夹中没有 index.json（可用 backup --all -o %1 生成）：%2</translation>
+    </message>
+    <message>
+        <source>restore %1: %2 is not the index of a backup folder (format &quot;%3&quot;).</source>
+        <translation>restore %1：%2 不是备份文件夹的索引（格式应为“%3”）。</translation>
+    </message>
+    <message>
+        <source>restore %1: index format version %2 is not supported (this DriveDesk reads 1).</source>
+        <translation>restore %1：不支持索引格式版本 %2（本 DriveDesk 读取版本 1）。</translation>
+    </message>
+    <message>
+        <source>restore %1: the folder holds backups of %2 drives; this link is for %3 drives.</source>
+        <translation>restore %1：该文件夹保存的是 %2 驱动器的备份；此链路用于 %3 驱动器。</translation>
+    </message>
+    <message>
+        <source>restore %1: index.json lists a drive without a valid address or file name.</source>
+        <translation>restore %1：index.json 中有驱动器缺少有效的地址或文件名。</translation>
+    </message>
+    <message>
+        <source>restore %1: index.json lists no drive.</source>
+        <translation>restore %1：index.json 中没有列出驱动器。</translation>
+    </message>
+    <message>
+        <source>restore %1: drive %2 is not in the folder&apos;s index.</source>
+        <translation>restore %1：驱动器 %2 不在该文件夹的索引中。</translation>
+    </message>
+    <message>
+        <source>restore %1: drive %2 has no file in the folder (its backup failed). Restore the others with --address %3.</source>
+        <translation>restore %1：驱动器 %2 在该文件夹中没有文件（其备份失败）。可用 --address %3 恢复其余驱动器。</translation>
+    </message>
+    <message>
+        <source>restore %1: %2 is the backup of the drive at address %3, but the index gives it to address %4.</source>
+        <translation>restore %1：%2 是地址 %3 驱动器的备份，但索引将其分配给地址 %4。</translation>
     </message>
 </context>
 <context>

@@ -3673,6 +3673,14 @@ Restore anyway?</source>
         <source>Wait until the drive has answered, then open %1 again.</source>
         <translation>请等待驱动器应答后，再打开 %1。</translation>
     </message>
+    <message>
+        <source>Only the settings changed from the defaults</source>
+        <translation>仅保存与默认值不同的设置</translation>
+    </message>
+    <message>
+        <source>Leaves out the settings equal to the dictionary&apos;s default and the read-only values; settings the dictionary gives no default for are kept. The file says it holds changes only, and restoring it touches only what it lists.</source>
+        <translation>不保存等于字典默认值的设置和只读值；字典未给出默认值的设置予以保留。文件会注明只含改动，恢复它时只改动其中列出的参数。</translation>
+    </message>
 </context>
 <context>
     <name>dd::EePanel</name>

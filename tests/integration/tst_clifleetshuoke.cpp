@@ -49,7 +49,8 @@ private slots:
         QCOMPARE(three.values().value(37), std::optional<qint64>(500));
 
         // Drive 2's settings to 1 and 3: only the differences, the baud code left alone.
-        r = runCli(args({"--json", "--address", "1,3", "restore"}) << QDir(dir).filePath(QStringLiteral("shuoke-2.json")));
+        r = runCli(args({"--json", "--address", "1,3", "restore"})
+                   << QDir(dir).filePath(QStringLiteral("shuoke-2.json")));
         QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
         const QJsonArray drives = r.json().value("drives").toArray();
         QCOMPARE(drives.size(), 2);
@@ -84,8 +85,9 @@ private:
     // Start speed and acceleration of the drive at `address`, by key.
     QMap<QString, int> get(int address)
     {
-        const CliRun r = runCli(args({"--json", "--address"})
-                                << QString::number(address) << "get" << "start-speed" << "acceleration");
+        const CliRun r = runCli(args({"--json", "--address"}) << QString::number(address) << "get"
+                                                              << "start-speed"
+                                                              << "acceleration");
         QMap<QString, int> values;
         for (const QJsonValue &p : r.json().value("parameters").toArray())
             values.insert(p.toObject().value("key").toString(), p.toObject().value("value").toInt(-1));

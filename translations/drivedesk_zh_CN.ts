@@ -6228,6 +6228,18 @@ then log out and log in again (or restart the computer).</source>
         <source>The protocol documents of this drive family list no factory defaults for these parameters. A dictionary with the drive&apos;s factory settings (drivedesk-cli --dictionary, or the user dictionary of the family) makes the comparison complete.</source>
         <translation>该驱动器系列的协议文档没有列出这些参数的出厂默认值。使用包含驱动器出厂设置的字典（drivedesk-cli --dictionary，或该系列的用户字典）即可完成比较。</translation>
     </message>
+    <message numerus="yes">
+        <source>%n sample(s), one every %1 ms on average</source>
+        <translation>
+            <numerusform>%n 个采样，平均每 %1 ms 一个</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n gap(s) in the sampling, the longest %1 ms (the plot breaks its lines at those it can show)</source>
+        <translation>
+            <numerusform>采样中有 %n 处间断，最长 %1 ms（曲线在能显示出的间断处断开）</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>dd::VerificationJournal</name>

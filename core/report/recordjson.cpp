@@ -71,10 +71,19 @@ QJsonObject runJson(const RunRecord &run)
     const QJsonValue plot = run.plot.isNull() ? QJsonValue(QJsonValue::Null)
                                               : QJsonValue(QJsonObject{{QStringLiteral("width"), run.plot.width()},
                                                                        {QStringLiteral("height"), run.plot.height()}});
-    return {{QStringLiteral("title"), run.title},       {QStringLiteral("file"), run.file},
-            {QStringLiteral("checksum"), run.checksum}, {QStringLiteral("test"), run.test},
-            {QStringLiteral("when"), time(run.when)},   {QStringLiteral("metrics"), metrics},
-            {QStringLiteral("snapshot"), snapshot},     {QStringLiteral("plot"), plot}};
+    return {{QStringLiteral("title"), run.title},
+            {QStringLiteral("file"), run.file},
+            {QStringLiteral("checksum"), run.checksum},
+            {QStringLiteral("test"), run.test},
+            {QStringLiteral("sampling"),
+             QJsonObject{{QStringLiteral("samples"), run.samples},
+                         {QStringLiteral("meanIntervalMs"), run.meanIntervalMs},
+                         {QStringLiteral("gaps"), run.gaps},
+                         {QStringLiteral("longestGapMs"), run.longestGapMs}}},
+            {QStringLiteral("when"), time(run.when)},
+            {QStringLiteral("metrics"), metrics},
+            {QStringLiteral("snapshot"), snapshot},
+            {QStringLiteral("plot"), plot}};
 }
 
 QJsonObject driveJson(const DriveRecord &d)

@@ -333,6 +333,15 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
             const RunRecord &run = d.runs.at(r);
             html += QStringLiteral("<p><b>%1</b> — %2, %3</p>")
                         .arg(esc(run.title), esc(RecordRuns::testName(run.test)), esc(timeText(run.when)));
+            QString sampling = tr("%n sample(s), one every %1 ms on average", nullptr, run.samples)
+                                   .arg(QString::number(run.meanIntervalMs, 'f', 2));
+            if (run.gaps > 0)
+                sampling += QStringLiteral("; ")
+                    + tr("%n gap(s) in the sampling, the longest %1 ms (the plot breaks its lines at those it can "
+                         "show)",
+                         nullptr, run.gaps)
+                          .arg(QString::number(run.longestGapMs, 'f', 1));
+            html += QStringLiteral("<p class=\"note\">%1</p>").arg(esc(sampling));
             if (!run.file.isEmpty())
                 html += QStringLiteral("<p class=\"note\">%1 <span class=\"mono\">%2</span></p>")
                             .arg(esc(tr("Run file %1, checksum").arg(run.file)), esc(run.checksum));

@@ -99,6 +99,12 @@ RunRecord RecordRuns::toRecord(const RecordRunFile &file, const DriveRecord &dri
     r.checksum = file.checksum;
     r.test = run.test;
     r.when = run.created;
+    r.samples = int(run.capture.time.size());
+    r.meanIntervalMs = run.capture.interval.mean * 1000.0;
+    const QList<CaptureGap> gaps = CaptureGap::of(run.capture.time);
+    r.gaps = int(gaps.size());
+    for (const CaptureGap &g : gaps)
+        r.longestGapMs = std::max(r.longestGapMs, (g.to - g.from) * 1000.0);
     // Step metrics: those with a value or a reason (a plain capture has no step to measure).
     QHash<QString, QString> notes;
     for (const QString &line : run.metrics.notes()) {

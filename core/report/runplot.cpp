@@ -124,8 +124,9 @@ QImage RunPlot::render(const TuningRun &run, const QLocale &locale, int width)
     const double plotWidth = plotRight - plotLeft;
     auto xOf = [&](double t) { return plotLeft + (t - t0) / (t1 - t0) * plotWidth; };
     // A gap (CaptureGap's: over three median intervals) breaks the line where the plot can show
-    // it: wider than MinGapPx; a narrower one would only make the line look dashed.
-    constexpr double MinGapPx = 6.0;
+    // it: wider than MinGapPx (1.5 % of the axis); narrower ones would only make the line look
+    // dashed (the record states how many gaps there are and the longest).
+    constexpr double MinGapPx = 16.0;
     const double gapSeconds = c.interval.median > 0
         ? std::max(3.0 * c.interval.median, MinGapPx / plotWidth * (t1 - t0))
         : INFINITY;

@@ -11,7 +11,7 @@ struct TuningRun;
 // Draws a tuning run's channels as the picture a commissioning record shows: one strip per
 // channel (its own value axis, id and unit), one time axis (seconds from the trigger) under
 // them, the trigger at time 0 as a dashed line. Lines break where the capture has no sample
-// (a NaN, or a gap — over three median intervals — wide enough to see); a channel with more samples than
+// (a NaN, or a gap — over three median intervals — at least 1.5 % of the axis wide); a channel with more samples than
 // pixels is drawn as each pixel column's minimum and maximum, so a spike is never lost.
 // Needs a QGuiApplication (fonts); text in the current translation.
 class RunPlot

@@ -33,6 +33,12 @@ struct RunRecord
     QString checksum; // "sha256:<hex>" of the run file's bytes ("" when not from a file)
     QString test;     // "capture", "velocity-step", "position-step", "reversal"
     QDateTime when;
+    // How the capture was sampled: its samples, the mean interval between them, and the
+    // stretches without samples (CaptureGap: over three median intervals).
+    int samples = 0;
+    double meanIntervalMs = 0;
+    int gaps = 0;
+    double longestGapMs = 0;
     QList<Metric> metrics;
     QList<SnapshotValue> snapshot;
     QImage plot; // null: no plot

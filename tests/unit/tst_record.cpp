@@ -320,7 +320,8 @@ private slots:
         const double rise = *run.metrics.riseTime.value * 1000.0;
         QVERIFY(overshoot > 10 && overshoot < 20);
         for (const QString &expected : {QStringLiteral("axis2-step — Velocity step"), loaded.checksum,
-                                        QStringLiteral("Parameters during the run")})
+                                        QStringLiteral("Parameters during the run"),
+                                        QStringLiteral("501 sample(s), one every 1.00 ms on average")})
             QVERIFY2(t.contains(expected), qPrintable(expected));
         QVERIFY(QRegularExpression(QStringLiteral("Overshoot\\s+%1\\s+%").arg(QString::number(overshoot, 'g', 4)))
                     .match(t)

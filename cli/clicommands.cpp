@@ -16,6 +16,8 @@
 #include "cli/sourcediffcommand.h"
 #include "cli/stepcommand.h"
 
+#include <QFileInfo>
+
 namespace dd {
 
 namespace {
@@ -86,7 +88,8 @@ CliCommand *CliCommands::create(const CliInvocation &inv, CliContext *context)
     const bool many = inv.has(QStringLiteral("all")) || context->globals.addresses.size() > 1;
     if (inv.command == QLatin1String("backup") && many)
         return new FleetBackupCommand(context);
-    if (inv.command == QLatin1String("restore") && many)
+    const bool folder = !inv.positionals.isEmpty() && QFileInfo(inv.positionals.first()).isDir();
+    if (inv.command == QLatin1String("restore") && (many || folder))
         return new FleetRestoreCommand(context);
     if (inv.command == QLatin1String("diff") && inv.positionals.size() >= 2)
         return new SourceDiffCommand(context);

@@ -94,7 +94,8 @@ QString CliHelp::commandList()
               "                                 a channel's spectrum and its peaks\n")
         + tr("  ping [--count N]               link health: turnaround, timeouts, errors, and\n"
              "                                 the timeout and gap to use; exit 1 if no answer\n")
-        + tr("  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]\n"
+        + tr("  report -o RECORD.pdf [--all] [--runs RUN.ddrun,...] [--header FILE.json]\n"
+             "         [--json-out RECORD.json]\n"
              "                                 the commissioning record (PDF and JSON)\n");
 }
 
@@ -178,7 +179,11 @@ QString CliHelp::command(const QString &name)
                   "With --all (every drive a scan finds) or --address 1,2,5 the file goes to\n"
                   "each drive at its own address; communication settings are never copied\n"
                   "unless --only names them. --stop-on-failure: one drive after the other,\n"
-                  "none after the first that fails. The exit code is the worst drive's.\n");
+                  "none after the first that fails. The exit code is the worst drive's.\n"
+                  "restore DIR [--address 1,2,5]: a folder written by backup --all -o DIR put\n"
+                  "back, every drive its index.json lists (or those of --address) from its own\n"
+                  "file, at its address; each file is checked to be that drive's before anything\n"
+                  "is sent.\n");
     if (name == QLatin1String("ee"))
         return tr("Usage: drivedesk-cli [OPTIONS] ee set|rd|ba|rs|def\n"
                   "servo-modbus EEPROM operations, waiting for completion:\n"
@@ -269,8 +274,8 @@ QString CliHelp::command(const QString &name)
                   "to T2 seconds after the trigger with --between (e.g. after a step's own\n"
                   "transient, where its ringing shows a resonance). Reads files only.\n");
     if (name == QLatin1String("report"))
-        return tr("Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--header FILE.json]\n"
-                  "                     [--json-out RECORD.json] [--page-size a4|letter]\n"
+        return tr("Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--runs RUN.ddrun,...]\n"
+                  "                     [--header FILE.json] [--json-out RECORD.json] [--page-size a4|letter]\n"
                   "The commissioning record of the drive at --address (--all: of every drive a scan\n"
                   "of the link finds): identity, firmware, link, the parameters that differ from the\n"
                   "dictionary's defaults (all of them in the appendix), the last restore or write\n"
@@ -278,7 +283,9 @@ QString CliHelp::command(const QString &name)
                   "--lang, and the same as JSON whose SHA-256 the PDF prints (docs/record.md).\n"
                   "--all [--from A] [--to B]: the scan's address range (default: the family's).\n"
                   "--header: machine, customer, site, engineer, notes from a JSON file.\n"
-                  "--runs RUN.ddrun,...: tuning runs (not supported by this build yet).\n");
+                  "--runs RUN.ddrun,...: tuning runs (capture or step test files) shown with the drive\n"
+                  "they were taken on: plot, metrics, parameter snapshot. A bad run file, or one of a\n"
+                  "drive not in the record, exits 2 with the reason and writes nothing.\n");
     return general();
 }
 

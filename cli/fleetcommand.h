@@ -33,6 +33,12 @@ public:
 
 protected:
     bool prepareTargets(const CliInvocation &inv, QString *error);
+    // The drives, known without a scan (no --all).
+    void setTargets(const QList<int> &addresses)
+    {
+        m_all = false;
+        m_addresses = addresses;
+    }
     // The drives are known: start the transfer (m_transfer made by newTransfer()).
     virtual void run(const QList<int> &addresses) = 0;
     FleetTransfer *newTransfer(const QList<int> &addresses);

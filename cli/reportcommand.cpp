@@ -11,6 +11,7 @@
 #include "core/report/recordfont.h"
 #include "core/report/recordjson.h"
 #include "core/report/recordrenderer.h"
+#include "core/report/recordruns.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -57,11 +58,8 @@ bool ReportCommand::prepare(const CliInvocation &inv, QString *error)
             return false;
         }
     }
-    if (inv.has(QStringLiteral("runs"))) {
-        // The tuning work's run-file loader (core/tuning) is not part of this build yet.
-        *error = tr("report --runs: run files are not supported by this build yet.");
+    if (inv.has(QStringLiteral("runs")) && !loadRuns(inv.value(QStringLiteral("runs")), error))
         return false;
-    }
     if (inv.has(QStringLiteral("header"))) {
         if (Error e = m_header.load(inv.value(QStringLiteral("header")))) {
             *error = tr("report --header: %1").arg(e.message);
@@ -78,6 +76,15 @@ bool ReportCommand::prepare(const CliInvocation &inv, QString *error)
         } else {
             *error = tr("report --page-size: \"%1\" is not a page size; use a4 or letter.")
                          .arg(inv.value(QStringLiteral("page-size")));
+            return false;
+        }
+    }
+    for (const RecordRunFile &r : std::as_const(m_runs)) {
+        const auto family = familyFromId(r.run.family);
+        if (!family || *family != context()->globals.connection.family) {
+            *error = tr("report --runs: %1 was taken on a %2 drive; this link is of the %3 family.")
+                         .arg(QFileInfo(r.path).fileName(), r.run.family,
+                              familyId(context()->globals.connection.family));
             return false;
         }
     }
@@ -108,16 +115,55 @@ bool ReportCommand::prepare(const CliInvocation &inv, QString *error)
             m_scan.timeoutMs = context()->globals.connection.timeoutMs;
     } else {
         m_addresses = {context()->globals.address};
+        // Without --all the record holds one drive: a run of another is refused before anything is sent.
+        for (const RecordRunFile &r : std::as_const(m_runs)) {
+            if (r.run.address != context()->globals.address) {
+                *error = tr("report --runs: %1 was taken on the drive at address %2; this record is of address %3.")
+                             .arg(QFileInfo(r.path).fileName())
+                             .arg(r.run.address)
+                             .arg(context()->globals.address);
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+bool ReportCommand::loadRuns(const QString &list, QString *error)
+{
+    const QStringList paths = list.split(QLatin1Char(','));
+    for (const QString &path : paths) {
+        if (path.trimmed().isEmpty()) {
+            *error = tr("report --runs: \"%1\" has an empty file name; give RUN.ddrun,RUN2.ddrun,...").arg(list);
+            return false;
+        }
+    }
+    for (const QString &path : paths) {
+        RecordRunFile file;
+        if (Error e = RecordRuns::load(path.trimmed(), &file)) {
+            *error = tr("report --runs: %1").arg(e.message);
+            return false;
+        }
+        for (const RecordRunFile &other : std::as_const(m_runs))
+            if (other.path == file.path) {
+                *error = tr("report --runs: %1 is listed twice.").arg(path.trimmed());
+                return false;
+            }
+        m_runs.append(file);
     }
     return true;
 }
 
 void ReportCommand::start()
 {
-    m_health = new LinkHealthCounter(context()->connection->tap(), this);
+    const ConnectionSettings &settings = context()->connection->settings();
+    m_health = new LinkHealthCounter(context()->connection->tap(), settings.isCan() ? 0 : settings.baud, this);
     m_collector = new RecordCollector(QLocale(), this);
     m_collector->setJournal(&m_journal);
-    connect(m_collector, &RecordCollector::operationFailed, m_health, &LinkHealthCounter::countError);
+    connect(m_collector, &RecordCollector::operationFailed, m_health, [this] {
+        if (!m_addresses.isEmpty())
+            m_health->countError(m_addresses.first());
+    });
     connect(m_collector, &RecordCollector::finished, this, [this](const Error &error) {
         const int address = m_addresses.takeFirst();
         if (error) {
@@ -125,6 +171,7 @@ void ReportCommand::start()
             if (!m_all)
                 return fail(error);
             m_skipped << tr("address %1: %2").arg(address).arg(error.message);
+            m_unreadable << address;
             out()->note(tr("Drive %1 left out of the record: %2").arg(address).arg(error.message));
         } else {
             m_drives.append(m_collector->record());
@@ -182,11 +229,25 @@ void ReportCommand::writeRecord()
     record.locale = QLocale();
     record.header = m_header;
     record.header.stamp();
-    const RecordLinkHealth health = m_health->health(tr("while this record was made"));
     for (DriveRecord &d : m_drives) {
-        d.linkHealth = health;
+        d.linkHealth = m_health->health(d.address, tr("while this record was made"));
         record.drives.append(d);
     }
+    // Runs of a drive --all found but could not read are left out with it; a run of a drive
+    // the scan did not find refuses the record.
+    QList<RecordRunFile> runs;
+    for (const RecordRunFile &r : std::as_const(m_runs)) {
+        if (m_unreadable.contains(r.run.address)) {
+            out()->note(tr("Run %1 left out: its drive (address %2) could not be read.")
+                            .arg(QFileInfo(r.path).fileName())
+                            .arg(r.run.address));
+            m_skipped << tr("run %1: its drive could not be read").arg(QFileInfo(r.path).fileName());
+            continue;
+        }
+        runs.append(r);
+    }
+    if (Error e = RecordRuns::attach(runs, &record.drives, record.locale))
+        return fail(e, {}, CliExit::Usage);
     const QByteArray json = RecordJson::toJson(record);
     const QString sha = RecordJson::sha256(json);
     RecordRenderer renderer(record, sha);

@@ -5,6 +5,7 @@
 #include "core/drive/discovery.h"
 #include "core/report/driverecord.h"
 #include "core/report/recordheader.h"
+#include "core/report/recordruns.h"
 #include "core/report/verificationjournal.h"
 
 #include <QPageSize>
@@ -33,6 +34,7 @@ public:
     void start() override;
 
 private:
+    bool loadRuns(const QString &list, QString *error);
     static bool checkOutputPath(const QString &option, const QString &path, const QString &suffix, QString *error);
     void startScan();
     void collectNext();
@@ -47,6 +49,8 @@ private:
     QList<int> m_addresses;
     QList<DriveRecord> m_drives;
     QStringList m_skipped;
+    QList<int> m_unreadable;
+    QList<RecordRunFile> m_runs;
     VerificationJournal m_journal;
     LinkHealthCounter *m_health = nullptr;
     RecordCollector *m_collector = nullptr;

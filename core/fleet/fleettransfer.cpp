@@ -24,6 +24,15 @@ void FleetTransfer::backup()
 void FleetTransfer::restore(const BackupFile &file, const RestoreOptions &options)
 {
     m_file = file;
+    m_files.clear();
+    m_options = options;
+    begin(Job::Restore);
+}
+
+void FleetTransfer::restoreEach(const QVector<BackupFile> &files, const RestoreOptions &options)
+{
+    Q_ASSERT(files.size() == m_drives.size());
+    m_files = files;
     m_options = options;
     begin(Job::Restore);
 }
@@ -82,7 +91,7 @@ void FleetTransfer::startDrive(int position)
     if (m_job == Job::Backup)
         transfer->backup();
     else
-        transfer->restore(m_file, m_options);
+        transfer->restore(m_files.isEmpty() ? m_file : m_files.at(position), m_options);
 }
 
 void FleetTransfer::onDriveFinished(int position, const Error &error)

@@ -25,7 +25,8 @@ class ParameterTransfer;
 //  - backup(): each drive's identity and values (result.backup, result.values);
 //  - restore(file, options): the same file to every drive (only the differences written,
 //    each read back; communication settings only when options.only names them). A dry run
-//    is the plan: result.report.selected per drive, nothing written.
+//    is the plan: result.report.selected per drive, nothing written. restoreEach(): the
+//    same, each drive from its own file.
 // finished() is emitted once, after every drive's result is final. Lives in the drives'
 // thread.
 class FleetTransfer : public QObject
@@ -40,6 +41,8 @@ public:
 
     void backup();
     void restore(const BackupFile &file, const RestoreOptions &options);
+    // Each drive from its own file (files[i] to the i-th drive: a backup folder put back).
+    void restoreEach(const QVector<BackupFile> &files, const RestoreOptions &options);
     // No further drive is started; those under way finish (their reports stay complete).
     void cancel();
     // The link is gone: the drives not started are not attempted; those under way fail on
@@ -71,6 +74,7 @@ private:
     QVector<FleetDriveResult> m_results;
     Job m_job = Job::Backup;
     BackupFile m_file;
+    QVector<BackupFile> m_files; // restoreEach(): one per drive
     RestoreOptions m_options;
     bool m_stopAtFirstFailure = false;
     bool m_running = false;

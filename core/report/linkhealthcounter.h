@@ -1,31 +1,36 @@
 #pragma once
 
+#include "core/link/linkhealth.h"
 #include "core/report/recordlinkhealth.h"
 
+#include <QHash>
 #include <QObject>
 
 namespace dd {
 
 class TrafficTap;
-struct TrafficRecord;
 
-// Counts a link's health from its traffic tap, the way the GUI's status bar does: frames
-// sent and received, discarded frames (noise, bad checksums, late replies), retries (frames
-// sent again); failed operations are added by whoever sees them (countError()).
+// A link's health per drive for the commissioning record: one core/link LinkHealth per
+// address a request went to (fed every traffic record of the link, each keeping its own
+// address's, as the Link health view and `ping` count), plus the failed operations whoever
+// sees them reports with countError().
 class LinkHealthCounter : public QObject
 {
     Q_OBJECT
 public:
-    explicit LinkHealthCounter(TrafficTap *tap, QObject *parent = nullptr);
+    // `baud` > 0: the serial baud rate (LinkHealth's wire time); 0: CAN. `tap` may be null:
+    // count() is then called by the owner.
+    LinkHealthCounter(TrafficTap *tap, int baud, QObject *parent = nullptr);
 
-    void countError() { ++m_health.errors; }
-    // The counts so far, described by `scope`.
-    RecordLinkHealth health(const QString &scope) const;
-    // Counts one traffic record (what the tap's signal calls).
     void count(const TrafficRecord &record);
+    void countError(int address) { ++m_errors[address]; }
+    // The figures of the drive at `address`, described by `scope`.
+    RecordLinkHealth health(int address, const QString &scope) const;
 
 private:
-    RecordLinkHealth m_health;
+    int m_baud = 0;
+    QHash<int, LinkHealth> m_health;
+    QHash<int, int> m_errors;
 };
 
 } // namespace dd

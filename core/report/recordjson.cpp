@@ -57,8 +57,11 @@ QJsonObject runJson(const RunRecord &run)
 {
     QJsonArray metrics;
     for (const RunRecord::Metric &m : run.metrics)
-        metrics.append(QJsonObject{
-            {QStringLiteral("name"), m.name}, {QStringLiteral("value"), m.value}, {QStringLiteral("unit"), m.unit}});
+        metrics.append(QJsonObject{{QStringLiteral("key"), m.key},
+                                   {QStringLiteral("name"), m.name},
+                                   {QStringLiteral("value"), m.value ? QJsonValue(*m.value) : QJsonValue()},
+                                   {QStringLiteral("unit"), m.unit},
+                                   {QStringLiteral("note"), m.note}});
     QJsonArray snapshot;
     for (const RunRecord::SnapshotValue &s : run.snapshot)
         snapshot.append(QJsonObject{{QStringLiteral("key"), s.key},
@@ -68,9 +71,19 @@ QJsonObject runJson(const RunRecord &run)
     const QJsonValue plot = run.plot.isNull() ? QJsonValue(QJsonValue::Null)
                                               : QJsonValue(QJsonObject{{QStringLiteral("width"), run.plot.width()},
                                                                        {QStringLiteral("height"), run.plot.height()}});
-    return {{QStringLiteral("title"), run.title},     {QStringLiteral("file"), run.file},
-            {QStringLiteral("when"), time(run.when)}, {QStringLiteral("metrics"), metrics},
-            {QStringLiteral("snapshot"), snapshot},   {QStringLiteral("plot"), plot}};
+    return {{QStringLiteral("title"), run.title},
+            {QStringLiteral("file"), run.file},
+            {QStringLiteral("checksum"), run.checksum},
+            {QStringLiteral("test"), run.test},
+            {QStringLiteral("sampling"),
+             QJsonObject{{QStringLiteral("samples"), run.samples},
+                         {QStringLiteral("meanIntervalMs"), run.meanIntervalMs},
+                         {QStringLiteral("gaps"), run.gaps},
+                         {QStringLiteral("longestGapMs"), run.longestGapMs}}},
+            {QStringLiteral("when"), time(run.when)},
+            {QStringLiteral("metrics"), metrics},
+            {QStringLiteral("snapshot"), snapshot},
+            {QStringLiteral("plot"), plot}};
 }
 
 QJsonObject driveJson(const DriveRecord &d)
@@ -92,13 +105,21 @@ QJsonObject driveJson(const DriveRecord &d)
                                   {QStringLiteral("source"), a.source},
                                   {QStringLiteral("cleared"), a.cleared}});
     const RecordLinkHealth &h = d.linkHealth;
+    const QJsonValue turnaround = h.answered > 0
+        ? QJsonValue(QJsonObject{{QStringLiteral("min"), h.turnaroundMinMs},
+                                 {QStringLiteral("median"), h.turnaroundMedianMs},
+                                 {QStringLiteral("max"), h.turnaroundMaxMs}})
+        : QJsonValue(QJsonValue::Null);
     const QJsonObject health{{QStringLiteral("measured"), h.measured},
                              {QStringLiteral("scope"), h.scope},
-                             {QStringLiteral("framesSent"), double(h.framesSent)},
-                             {QStringLiteral("framesReceived"), double(h.framesReceived)},
-                             {QStringLiteral("discarded"), double(h.discarded)},
-                             {QStringLiteral("retries"), double(h.retries)},
-                             {QStringLiteral("errors"), double(h.errors)}};
+                             {QStringLiteral("requests"), h.requests},
+                             {QStringLiteral("answered"), h.answered},
+                             {QStringLiteral("turnaroundMs"), turnaround},
+                             {QStringLiteral("timeouts"), h.timeouts},
+                             {QStringLiteral("checksumErrors"), h.checksumErrors},
+                             {QStringLiteral("lateReplies"), h.lateReplies},
+                             {QStringLiteral("retries"), h.retries},
+                             {QStringLiteral("errors"), h.errors}};
     QJsonArray runs;
     for (const RunRecord &r : d.runs)
         runs.append(runJson(r));

@@ -5,18 +5,22 @@
 
 namespace dd {
 
-// The health of the link a drive is on, as counted over some span (`scope` says which):
-// frames sent and received, frames discarded (noise, bad checksum, late replies), retries
-// and failed operations. The link work's counters feed this after merge.
+// The health of one drive's link as a commissioning record shows it: core/link's LinkHealth
+// figures for the drive's address over some span (`scope` says which) — requests and
+// replies, turnaround, timeouts, checksum errors, late or duplicated replies, retries — and
+// the operations on the drive that failed.
 struct RecordLinkHealth
 {
     bool measured = false; // false: nothing was counted (shown as "not measured")
     QString scope;         // in the record's language: "while this record was made", ...
-    quint64 framesSent = 0;
-    quint64 framesReceived = 0;
-    quint64 discarded = 0;
-    quint64 retries = 0;
-    quint64 errors = 0; // operations that failed (timeouts, exceptions)
+    int requests = 0;
+    int answered = 0;
+    int timeouts = 0;
+    int checksumErrors = 0;
+    int lateReplies = 0; // stale, late or duplicated replies dropped
+    int retries = 0;
+    double turnaroundMinMs = 0, turnaroundMedianMs = 0, turnaroundMaxMs = 0; // when answered > 0
+    int errors = 0; // operations that failed (timeouts, exceptions)
 };
 
 } // namespace dd

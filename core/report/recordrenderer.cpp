@@ -2,6 +2,7 @@
 
 #include "core/protocol/familytraits.h"
 #include "core/report/recordfont.h"
+#include "core/report/recordruns.h"
 
 #include <QAbstractTextDocumentLayout>
 #include <QBuffer>
@@ -9,6 +10,7 @@
 #include <QPdfWriter>
 #include <QSaveFile>
 #include <QTextDocument>
+#include <algorithm>
 #include <functional>
 
 namespace dd {
@@ -175,8 +177,11 @@ QString RecordRenderer::summarySection() const
             verification = QStringLiteral("<span class=\"fail\">%1</span>")
                                .arg(esc(tr("FAILED (%1)").arg(d.verification.failedCount())));
         html += QStringLiteral("<tr>") + cell(esc(driveTitle(d))) + cell(orDash(d.firmware)) + cell(orDash(d.model))
-            + cell(orDash(d.link)) + cell(QString::number(d.nonDefault().size())) + cell(verification)
-            + cell(QString::number(d.alarms.size())) + QStringLiteral("</tr>");
+            + cell(orDash(d.link))
+            + cell(d.withoutDefault() > 0
+                       ? esc(tr("%1 (%2 not compared)").arg(d.nonDefault().size()).arg(d.withoutDefault()))
+                       : QString::number(d.nonDefault().size()))
+            + cell(verification) + cell(QString::number(d.alarms.size())) + QStringLiteral("</tr>");
     }
     return html + QStringLiteral("</table>");
 }
@@ -212,7 +217,15 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
     const QList<RecordParameter> changed = d.nonDefault();
     html += QStringLiteral("<h3>%1</h3>")
                 .arg(esc(tr("Parameters that differ from the defaults (%n)", nullptr, int(changed.size()))));
-    if (changed.isEmpty()) {
+    const int notCompared = d.withoutDefault();
+    const int read = int(std::count_if(d.parameters.cbegin(), d.parameters.cend(),
+                                       [](const RecordParameter &p) { return p.value.has_value(); }));
+    if (changed.isEmpty() && read > 0 && notCompared == read) {
+        html += QStringLiteral("<p class=\"fail\">%1</p>")
+                    .arg(esc(tr("Not compared: the dictionary gives no factory default for any of the %n parameter(s) "
+                                "read, so this record cannot say which of them were changed.",
+                                nullptr, read)));
+    } else if (changed.isEmpty()) {
         html += QStringLiteral("<p>%1</p>").arg(esc(tr("No parameter read differs from its default.")));
     } else {
         QStringList rows;
@@ -223,10 +236,16 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
         html += chunkedTable({tr("Index"), tr("Parameter"), tr("Name"), tr("Value"), tr("Default"), tr("Unit")},
                              {8, 12, 42, 13, 13, 12}, rows);
     }
-    if (const int n = d.withoutDefault())
+    if (notCompared > 0 && notCompared < read)
         html += QStringLiteral("<p class=\"note\">%1</p>")
-                    .arg(esc(tr("%n parameter(s) could not be compared: the dictionary gives no default for them.",
-                                nullptr, n)));
+                    .arg(esc(tr("%n parameter(s) not compared: the dictionary gives no factory default for them "
+                                "(shown as “—” in the Default column of the appendix).",
+                                nullptr, notCompared)));
+    if (notCompared > 0)
+        html += QStringLiteral("<p class=\"note\">%1</p>")
+                    .arg(esc(tr("The protocol documents of this drive family list no factory defaults for these "
+                                "parameters. A dictionary with the drive's factory settings (drivedesk-cli "
+                                "--dictionary, or the user dictionary of the family) makes the comparison complete.")));
     html += QStringLiteral("<p class=\"note\">%1</p>")
                 .arg(esc(tr("Every parameter with its value and default is listed in the appendix.")));
 
@@ -288,12 +307,21 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
     if (!h.measured) {
         html += QStringLiteral("<p>%1</p>").arg(esc(tr("Not measured.")));
     } else {
+        const QString turnaround = h.answered > 0
+            ? tr("turnaround %1 / %2 / %3 ms (min / median / max)")
+                  .arg(QString::number(h.turnaroundMinMs, 'f', 1), QString::number(h.turnaroundMedianMs, 'f', 1),
+                       QString::number(h.turnaroundMaxMs, 'f', 1))
+            : tr("no reply");
         html += QStringLiteral("<p>%1</p>")
-                    .arg(esc(tr("%1: %2 frame(s) sent, %3 received, %4 discarded, %5 retries, %6 failed operation(s).")
+                    .arg(esc(tr("%1: %2 request(s), %3 answered, %4; %5 timeout(s), %6 checksum error(s), %7 late or "
+                                "duplicated reply(ies), %8 retries, %9 failed operation(s).")
                                  .arg(h.scope)
-                                 .arg(h.framesSent)
-                                 .arg(h.framesReceived)
-                                 .arg(h.discarded)
+                                 .arg(h.requests)
+                                 .arg(h.answered)
+                                 .arg(turnaround)
+                                 .arg(h.timeouts)
+                                 .arg(h.checksumErrors)
+                                 .arg(h.lateReplies)
                                  .arg(h.retries)
                                  .arg(h.errors)));
     }
@@ -303,7 +331,20 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
         html += QStringLiteral("<h3>%1</h3>").arg(esc(tr("Tuning runs (%n)", nullptr, int(d.runs.size()))));
         for (int r = 0; r < d.runs.size(); ++r) {
             const RunRecord &run = d.runs.at(r);
-            html += QStringLiteral("<p><b>%1</b> %2</p>").arg(esc(run.title), esc(timeText(run.when)));
+            html += QStringLiteral("<p><b>%1</b> — %2, %3</p>")
+                        .arg(esc(run.title), esc(RecordRuns::testName(run.test)), esc(timeText(run.when)));
+            QString sampling = tr("%n sample(s), one every %1 ms on average", nullptr, run.samples)
+                                   .arg(QString::number(run.meanIntervalMs, 'f', 2));
+            if (run.gaps > 0)
+                sampling += QStringLiteral("; ")
+                    + tr("%n gap(s) in the sampling, the longest %1 ms (the plot breaks its lines at those it can "
+                         "show)",
+                         nullptr, run.gaps)
+                          .arg(QString::number(run.longestGapMs, 'f', 1));
+            html += QStringLiteral("<p class=\"note\">%1</p>").arg(esc(sampling));
+            if (!run.file.isEmpty())
+                html += QStringLiteral("<p class=\"note\">%1 <span class=\"mono\">%2</span></p>")
+                            .arg(esc(tr("Run file %1, checksum").arg(run.file)), esc(run.checksum));
             if (!run.plot.isNull())
                 html += QStringLiteral("<p><img src=\"run:%1/%2\" width=\"%3\" height=\"%4\"/></p>")
                             .arg(number)
@@ -313,7 +354,10 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
             if (!run.metrics.isEmpty()) {
                 html += tableStart({tr("Metric"), tr("Value"), tr("Unit")});
                 for (const RunRecord::Metric &m : run.metrics)
-                    html += QStringLiteral("<tr>") + cell(esc(m.name)) + cell(QString::number(m.value, 'g', 6))
+                    html += QStringLiteral("<tr>") + cell(esc(m.name))
+                        + cell(m.value ? QString::number(*m.value, 'g', 4)
+                                       : QStringLiteral("— <span class=\"note\">%1</span>")
+                                             .arg(esc(tr("not measured: %1").arg(m.note))))
                         + cell(esc(m.unit)) + QStringLiteral("</tr>");
                 html += QStringLiteral("</table>");
             }

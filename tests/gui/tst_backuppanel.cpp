@@ -10,6 +10,7 @@
 #include "ui/panels/backup/restorereportdialog.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QFile>
 #include <QLabel>
 #include <QLoggingCategory>
@@ -36,6 +37,37 @@ private slots:
     {
         QLoggingCategory::setFilterRules(QStringLiteral("drivedesk.*.debug=false"));
         QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    }
+
+    void saveChangedFromDefaultsOnly()
+    {
+        // The save option writes a changed-only file, as backup --changed-only does: the
+        // read-only values left out, marked as such in the file.
+        QTemporaryDir dir;
+        SimDriveFixture fx;
+        QVERIFY(fx.start([](SimServoModbusDrive *d) { d->setParameter(10, 100); }));
+        BackupPanel panel(fx.context());
+        panel.setDriveInfo(fx.info);
+        auto *changedOnly = panel.findChild<QCheckBox *>(QStringLiteral("saveChangedOnlyCheck"));
+        QVERIFY(changedOnly);
+        QVERIFY(!changedOnly->isChecked()); // a full backup unless asked
+        const QString full = dir.filePath(QStringLiteral("full.json"));
+        QSignalSpy saved(&panel, &BackupPanel::backupSaved);
+        panel.saveBackup(full);
+        QVERIFY(saved.wait(10000));
+        changedOnly->setChecked(true);
+        const QString changed = dir.filePath(QStringLiteral("changed.json"));
+        panel.saveBackup(changed);
+        QVERIFY(saved.wait(10000));
+        BackupFile a, b;
+        QVERIFY(!a.load(full));
+        QVERIFY(!b.load(changed));
+        QVERIFY(!a.isChangedOnly());
+        QVERIFY(b.isChangedOnly());
+        QVERIFY(a.values().value(2).has_value()); // PA2, the firmware: read-only
+        QVERIFY(!b.values().value(2).has_value());
+        QCOMPARE(b.values().value(10), std::optional<qint64>(100));
+        QVERIFY(b.values().size() < a.values().size());
     }
 
     void backupChangeCompareRestore()

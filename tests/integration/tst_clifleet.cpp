@@ -36,6 +36,7 @@ private slots:
     void worstDriveGivesTheExitCode();
     void diffCombinations();
     void changedOnlyRoundTrip();
+    void restoreFolderPutsEachDriveBackFromItsOwnFile();
     void badInputsSendNothing();
 
 private:
@@ -295,6 +296,65 @@ void TestCliFleet::changedOnlyRoundTrip()
         if (v.toObject().value("status").toString() == QLatin1String("different"))
             differing << v.toObject().value("key").toString();
     QCOMPARE(differing, (QStringList{"PA16", "PA51"}));
+}
+
+void TestCliFleet::restoreFolderPutsEachDriveBackFromItsOwnFile()
+{
+    // A machine backed up drive by drive, each with its own setting.
+    for (int a = 1; a <= 8; ++a)
+        sim(a)->setParameter(20, quint16(1000 + a));
+    const QString dir = m_dir.filePath(QStringLiteral("machine"));
+    CliRun r = runCli(args({"--timeout", "100", "backup", "--all", "--to", "8", "-o"}) << dir);
+    QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+    for (int a = 1; a <= 8; ++a) {
+        sim(a)->setParameter(20, 7);
+        sim(a)->setParameter(21, quint16(2000 + a));
+    }
+    const quint16 pa21 = m_factory[21];
+    // --address: only those drives, each from its own file.
+    r = runCli(args({"--json", "--address", "2,3", "restore"}) << dir);
+    QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+    QCOMPARE(r.json().value("drives").toArray().at(1).toObject().value("file").toString(),
+             QStringLiteral("servo-modbus-3.json"));
+    QCOMPARE(sim(3)->parameter(20), quint16(1003));
+    QCOMPARE(sim(4)->parameter(20), quint16(7));
+    // The whole folder: every drive of the index back to its own values, addresses left alone.
+    r = runCli(args({"--json", "restore"}) << dir);
+    QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+    const QJsonArray drives = r.json().value("drives").toArray();
+    QCOMPARE(drives.size(), 8);
+    for (int a = 1; a <= 8; ++a) {
+        QCOMPARE(sim(a)->parameter(20), quint16(1000 + a));
+        QCOMPARE(sim(a)->parameter(21), pa21);
+        QCOMPARE(sim(a)->parameter(51), quint16(a));
+        QCOMPARE(drives.at(a - 1).toObject().value("result").toString(), QStringLiteral("done"));
+    }
+    QCOMPARE(drives.at(1).toObject().value("verified").toArray(), QJsonArray()); // put back above already
+    QCOMPARE(drives.at(3).toObject().value("verified").toArray(), (QJsonArray{"PA20", "PA21"}));
+
+    // Refused before anything is sent: a drive not in the index, a file the index gives to
+    // another address, a folder without an index, --from/--to.
+    const quint64 before = m_bench.serialBus()->stats().bytesIn;
+    r = runCli(args({"--trace", "--address", "2,9", "restore"}) << dir);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.text().contains("drive 9 is not in the folder's index"), qPrintable(r.text()));
+    QCOMPARE(r.txFrames(), 0);
+    QFile::rename(QDir(dir).filePath("servo-modbus-3.json"), QDir(dir).filePath("three.json"));
+    QFile::copy(QDir(dir).filePath("servo-modbus-4.json"), QDir(dir).filePath("servo-modbus-3.json"));
+    r = runCli(args({"--trace", "restore"}) << dir);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.text().contains("servo-modbus-3.json is the backup of the drive at address 4, but the index gives it "
+                               "to address 3"),
+             qPrintable(r.text()));
+    QCOMPARE(r.txFrames(), 0);
+    r = runCli(args({"--trace", "restore", "--all", "--to", "4"}) << dir);
+    QCOMPARE(r.exitCode, 2);
+    QDir(dir).remove("index.json");
+    r = runCli(args({"--trace", "restore"}) << dir);
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.text().contains("has no index.json"), qPrintable(r.text()));
+    QTest::qWait(20);
+    QCOMPARE(m_bench.serialBus()->stats().bytesIn, before);
 }
 
 void TestCliFleet::badInputsSendNothing()

@@ -45,6 +45,7 @@ private slots:
     void recordOfEveryDriveOnTheLink();
     void chineseRecord();
     void aFailedVerificationIsOnTheFirstPage();
+    void tuningRunsAreInTheRecordOfTheirDrive();
     void badInputIsRefusedBeforeAnythingIsSent_data();
     void badInputIsRefusedBeforeAnythingIsSent();
 };
@@ -146,7 +147,9 @@ void TestCliReport::recordOfEveryDriveOnTheLink()
     QCOMPARE(v2.value("entries").toArray().size(), 2);
     QVERIFY(t.contains("2 parameter(s) written and verified."));
     // Link health of this run.
-    QVERIFY(QRegularExpression("while this record was made: [1-9]\\d* frame\\(s\\) sent").match(t).hasMatch());
+    QVERIFY(QRegularExpression("while this record was made: [1-9]\\d* request\\(s\\), [1-9]\\d* answered, turnaround")
+                .match(t.simplified())
+                .hasMatch());
 }
 
 void TestCliReport::chineseRecord()
@@ -184,6 +187,54 @@ void TestCliReport::aFailedVerificationIsOnTheFirstPage()
     QVERIFY(first.contains("FAILED (1)"));
 }
 
+void TestCliReport::tuningRunsAreInTheRecordOfTheirDrive()
+{
+    // A capture of drive 2 on the simulated bench, as the engineer takes it.
+    const QString run = file("axis2.ddrun");
+    CliRun r = runCli(sim() + QStringList{"--address", "2", "capture", "speed,torque", "--duration", "0.2", "-o", run},
+                      env());
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    QFile runFile(run);
+    QVERIFY(runFile.open(QIODevice::ReadOnly));
+    const QString checksum = "sha256:"
+        + QCryptographicHash::hash(runFile.readAll(), QCryptographicHash::Sha256).toHex();
+
+    r = runCli(sim()
+                   + QStringList{"--timeout", "100", "report", "--all", "--from", "1", "--to", "3", "--runs", run, "-o",
+                                 file("runs.pdf"), "--json-out", file("runs.json")},
+               env());
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    const QJsonArray drives = readJson(file("runs.json")).value("drives").toArray();
+    QCOMPARE(drives.size(), 2);
+    QCOMPARE(drives.at(0).toObject().value("runs").toArray().size(), 0);
+    const QJsonObject jr = drives.at(1).toObject().value("runs").toArray().at(0).toObject();
+    QCOMPARE(jr.value("checksum").toString(), checksum);
+    // Each drive's link health is its own (core/link's LinkHealth for its address): every
+    // request to it answered on the clean simulated link, with a turnaround.
+    for (const QJsonValue &d : drives) {
+        const QJsonObject h = d.toObject().value("linkHealth").toObject();
+        QVERIFY(h.value("measured").toBool());
+        QVERIFY2(h.value("requests").toInt() >= 4, qPrintable(QJsonDocument(h).toJson()));
+        QCOMPARE(h.value("answered").toInt(), h.value("requests").toInt());
+        QCOMPARE(h.value("timeouts").toInt() + h.value("checksumErrors").toInt() + h.value("errors").toInt(), 0);
+        QVERIFY(h.value("turnaroundMs").toObject().value("max").toDouble() > 0);
+    }
+    QCOMPARE(jr.value("test").toString(), QString("capture"));
+    QVERIFY(jr.value("plot").isObject());
+    QVERIFY(!jr.value("snapshot").toArray().isEmpty());
+    const QString t = text(file("runs.pdf"));
+    QVERIFY2(t.contains("Tuning runs (1)") && t.contains("axis2 — Capture") && t.contains(checksum), qPrintable(t));
+    QVERIFY(t.contains("Parameters during the run"));
+
+    // A record of drive 1 alone cannot hold drive 2's run: refused, nothing sent or written.
+    r = runCli(sim() + QStringList{"--address", "1", "--trace", "report", "--runs", run, "-o", file("one.pdf")}, env());
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.text().contains("axis2.ddrun was taken on the drive at address 2; this record is of address 1"),
+             r.text().toUtf8().constData());
+    QCOMPARE(r.txFrames(), 0);
+    QVERIFY(!QFile::exists(file("one.pdf")));
+}
+
 void TestCliReport::badInputIsRefusedBeforeAnythingIsSent_data()
 {
     QTest::addColumn<QStringList>("arguments");
@@ -191,8 +242,13 @@ void TestCliReport::badInputIsRefusedBeforeAnythingIsSent_data()
     QTest::addColumn<QString>("reason");
     QTest::newRow("no -o") << QStringList{"report"} << QByteArray() << "needs the PDF file";
     QTest::newRow("not .pdf") << QStringList{"report", "-o", "OUT.txt"} << QByteArray() << "should end in .pdf";
-    QTest::newRow("runs") << QStringList{"report", "-o", "OUT.pdf", "--runs", "a.ddrun"} << QByteArray()
-                          << "run files are not supported by this build yet";
+    QTest::newRow("runs missing") << QStringList{"report", "-o", "OUT.pdf", "--runs", "no-such.ddrun"} << QByteArray()
+                                  << "Cannot open the run file no-such.ddrun";
+    QTest::newRow("runs bad") << QStringList{"report", "-o", "OUT.pdf", "--runs", "HEADER"}
+                              << QByteArray(R"({"format": "drivedesk-run", "formatVersion": 1})")
+                              << "bad-header.json: created must be a string";
+    QTest::newRow("runs empty name") << QStringList{"report", "-o", "OUT.pdf", "--runs", "a.ddrun,"} << QByteArray()
+                                     << "has an empty file name";
     QTest::newRow("range without --all") << QStringList{"report", "-o", "OUT.pdf", "--to", "5"} << QByteArray()
                                          << "--from and --to limit the scan of --all";
     QTest::newRow("page size") << QStringList{"report", "-o", "OUT.pdf", "--page-size", "a5"} << QByteArray()

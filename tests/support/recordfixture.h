@@ -4,9 +4,11 @@
 // link drivedesk_report include it).
 
 #include "core/report/commissioningrecord.h"
+#include "core/tuning/tuningrun.h"
 
 #include <QPainter>
 #include <QtMath>
+#include <cmath>
 
 namespace dd::test {
 
@@ -39,6 +41,63 @@ inline QImage fixturePlot(int seed)
     p.setPen(QPen(Qt::red, 2));
     p.drawPolyline(actual);
     return image;
+}
+
+// A velocity-step run of the servo-can drive at `address` as a step test writes it: speed
+// (r/min), current (A), torque (%) and position-error (pulses) sampled every `dtMs` from
+// 50 ms before the step to 450 ms after; an underdamped response to `target` r/min (about
+// 16 % overshoot), metrics computed, the speed-loop gains P60/P61 in the snapshot. Sample
+// 100 of the current is missing (NaN), as a lost reply leaves it.
+inline TuningRun fixtureRun(int address, double target = 500.0, double dtMs = 1.0, qint64 kp = 30)
+{
+    TuningRun run;
+    run.created = QDateTime(QDate(2026, 11, 25), QTime(13, 40, 0), Qt::UTC);
+    run.family = QStringLiteral("servo-can");
+    run.address = address;
+    run.model = QStringLiteral("SC-40%1").arg(address);
+    run.firmware = QStringLiteral("V%1.07").arg(address);
+    run.linkKind = QStringLiteral("can");
+    run.linkDescription = QStringLiteral("virtualcan:can0 500000 bit/s");
+    run.test = QStringLiteral("velocity-step");
+    run.testParameters = {{QStringLiteral("speed"), target}, {QStringLiteral("duration"), 0.45}};
+    TriggerSpec::parse(QStringLiteral("motion"), &run.settings.trigger);
+    run.settings.prePercent = 10;
+    run.settings.durationS = 0.5;
+    run.capture.channels = {QStringLiteral("speed"), QStringLiteral("current"), QStringLiteral("torque"),
+                            QStringLiteral("position-error")};
+    run.units = {QStringLiteral("r/min"), QStringLiteral("A"), QStringLiteral("%"), QStringLiteral("pulses")};
+    run.capture.columns.resize(4);
+    const double zeta = 0.5, wn = 80.0, wd = wn * std::sqrt(1 - zeta * zeta);
+    const double dt = dtMs / 1000.0;
+    for (int i = -int(std::lround(0.05 / dt)); i * dt <= 0.45 + 1e-12; ++i) {
+        const double t = i * dt;
+        const double y = t < 0 ? 0.0
+                               : target
+                * (1
+                   - std::exp(-zeta * wn * t)
+                       * (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t)));
+        const double dy = t < 0
+            ? 0.0
+            : target * wn / std::sqrt(1 - zeta * zeta) * std::exp(-zeta * wn * t) * std::sin(wd * t);
+        run.capture.time.append(t);
+        run.capture.columns[0].append(y);
+        run.capture.columns[1].append(0.2 + dy / 4000.0);
+        run.capture.columns[2].append(dy / 400.0);
+        run.capture.columns[3].append((target - y) / 10.0 * (t >= 0));
+        if (t < 0)
+            ++run.capture.preTriggerSamples;
+    }
+    run.capture.columns[1][100] = NAN;
+    run.capture.triggerSource = QStringLiteral("motion");
+    run.capture.interval = IntervalStats::of(run.capture.time);
+    run.capture.gaps = CaptureGap::of(run.capture.time);
+    StepMetrics::Input in;
+    in.target = target;
+    run.metrics = StepMetrics::compute(run.capture, in);
+    run.metricsChannel = QStringLiteral("speed");
+    run.tuning = {{60, QStringLiteral("P60"), QStringLiteral("speed-kp"), kp},
+                  {61, QStringLiteral("P61"), QStringLiteral("speed-ki"), 25}};
+    return run;
 }
 
 // `drives` servo-can drives at addresses 1.., each with `parameters` parameters; drive
@@ -99,7 +158,7 @@ inline CommissioningRecord fixtureRecord(int drives, int parameters, int failedD
             {QStringLiteral("restore"), r.verification.sourceFile, r.verification.sourceChecksum, r.verification.when});
         r.alarms.append({QDateTime(QDate(2026, 11, 25), QTime(12, 10, 0), Qt::UTC), 12, QStringLiteral("Overcurrent"),
                          QStringLiteral("session"), true});
-        r.linkHealth = {true, QStringLiteral("this session"), 12000, 11990, 3, 2, 1};
+        r.linkHealth = {true, QStringLiteral("this session"), 6000, 5995, 3, 1, 2, 2, 1.2, 1.9, 14.5, 1};
         record.drives.append(r);
     }
     for (int k = 0; k < runs && drives > 0; ++k) {
@@ -107,8 +166,16 @@ inline CommissioningRecord fixtureRecord(int drives, int parameters, int failedD
         run.title = QStringLiteral("Step response %1").arg(k + 1);
         run.file = QStringLiteral("run%1.ddrun").arg(k + 1);
         run.when = QDateTime(QDate(2026, 11, 25), QTime(13, 30 + k, 0), Qt::UTC);
-        run.metrics = {{QStringLiteral("overshoot"), 4.5 + k, QStringLiteral("%")},
-                       {QStringLiteral("settling time"), 38.0 + k, QStringLiteral("ms")}};
+        run.test = QStringLiteral("velocity-step");
+        run.checksum = QStringLiteral("sha256:") + QString(64, QLatin1Char('0' + k % 10));
+        run.metrics = {{QStringLiteral("overshoot"), QStringLiteral("Overshoot"), 4.5 + k, QStringLiteral("%"), {}},
+                       {QStringLiteral("settlingTime2"),
+                        QStringLiteral("Settling time (±2 %)"),
+                        38.0 + k,
+                        QStringLiteral("ms"),
+                        {}},
+                       {QStringLiteral("peakFollowingError"), QStringLiteral("Peak following error"), std::nullopt,
+                        QString(), QStringLiteral("channel position-error was not captured")}};
         run.snapshot = {{QStringLiteral("P10"), QStringLiteral("Speed gain"), 120 + k, QString()},
                         {QStringLiteral("P11"), QStringLiteral("Integral time"), 25, QStringLiteral("ms")}};
         run.plot = fixturePlot(k);

@@ -1,10 +1,14 @@
 // The commissioning record (core/report): header files, the JSON and its schema, the PDF as
 // a reader sees it (pdftotext), the verification journal.
 #include "core/drive/drivetypes.h"
+#include "core/link/trafficrecord.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/linkhealthcounter.h"
 #include "core/report/recordheader.h"
 #include "core/report/recordjson.h"
 #include "core/report/recordrenderer.h"
+#include "core/report/recordruns.h"
+#include "core/report/runplot.h"
 #include "core/report/verificationjournal.h"
 #include "tests/support/pdftext.h"
 #include "tests/support/recordfixture.h"
@@ -48,6 +52,32 @@ private:
         if (t.isEmpty())
             qWarning() << error;
         return t;
+    }
+
+    // Each file's verdict against docs/record-schema.json: "valid" or "invalid: <why>".
+    static QList<QByteArray> schemaVerdicts(const QStringList &files)
+    {
+        const QString schema = qEnvironmentVariable("DRIVEDESK_SOURCE_DIR")
+            + QStringLiteral("/docs/record-schema.json");
+        if (!QFile::exists(schema))
+            return {};
+        QProcess python;
+        python.start(QStringLiteral("python3"),
+                     QStringList{QStringLiteral("-c"),
+                                 QStringLiteral("import json, sys, jsonschema\n"
+                                                "s = json.load(open(sys.argv[1]))\n"
+                                                "jsonschema.Draft202012Validator.check_schema(s)\n"
+                                                "v = jsonschema.Draft202012Validator(s)\n"
+                                                "for f in sys.argv[2:]:\n"
+                                                "    e = list(v.iter_errors(json.load(open(f))))\n"
+                                                "    print('valid' if not e else 'invalid: ' + e[0].message)\n"),
+                                 schema}
+                         + files);
+        if (!python.waitForFinished(30000) || python.exitCode() != 0) {
+            qWarning() << python.readAllStandardError();
+            return {};
+        }
+        return python.readAllStandardOutput().trimmed().split('\n');
     }
 
 private slots:
@@ -158,7 +188,7 @@ private slots:
         }
         // The alarm history, link health and backup checksums are there too.
         QVERIFY(t.contains(QStringLiteral("Overcurrent")));
-        QVERIFY(t.contains(QStringLiteral("12000 frame(s) sent")));
+        QVERIFY(t.contains(QStringLiteral("6000 request(s), 5995 answered")));
         QVERIFY(t.contains(record.drives.first().backups.first().checksum));
     }
 
@@ -251,9 +281,6 @@ private slots:
         QCOMPARE(d1.value(QStringLiteral("verification")).toObject().value(QStringLiteral("passed")).toBool(), false);
         QCOMPARE(d1.value(QStringLiteral("runs")).toArray().size(), 1);
 
-        const QString schema = qEnvironmentVariable("DRIVEDESK_SOURCE_DIR")
-            + QStringLiteral("/docs/record-schema.json");
-        QVERIFY(QFile::exists(schema));
         // And a record that breaks the schema is caught by it (the check is real).
         QJsonObject broken = root;
         broken.insert(QStringLiteral("formatVersion"), 2);
@@ -261,24 +288,225 @@ private slots:
         QVERIFY(bad.open(QIODevice::WriteOnly));
         bad.write(QJsonDocument(broken).toJson());
         bad.close();
-
-        QProcess python;
-        python.start(QStringLiteral("python3"),
-                     {QStringLiteral("-c"),
-                      QStringLiteral("import json, sys, jsonschema\n"
-                                     "s = json.load(open(sys.argv[1]))\n"
-                                     "jsonschema.Draft202012Validator.check_schema(s)\n"
-                                     "v = jsonschema.Draft202012Validator(s)\n"
-                                     "for f in sys.argv[2:]:\n"
-                                     "    e = list(v.iter_errors(json.load(open(f))))\n"
-                                     "    print('valid' if not e else 'invalid: ' + e[0].message)\n"),
-                      schema, file.fileName(), bad.fileName()});
-        QVERIFY(python.waitForFinished(30000));
-        QVERIFY2(python.exitCode() == 0, python.readAllStandardError().constData());
-        const QList<QByteArray> verdicts = python.readAllStandardOutput().trimmed().split('\n');
+        const QList<QByteArray> verdicts = schemaVerdicts({file.fileName(), bad.fileName()});
         QCOMPARE(verdicts.size(), 2);
         QCOMPARE(verdicts.at(0), QByteArray("valid"));
         QVERIFY2(verdicts.at(1).startsWith("invalid"), verdicts.at(1).constData());
+    }
+
+    void runFilesBecomePlotMetricsAndSnapshot()
+    {
+        const TuningRun run = test::fixtureRun(2);
+        const QString file = path(QStringLiteral("axis2-step.ddrun"));
+        QVERIFY(!run.save(file));
+        RecordRunFile loaded;
+        Error e = RecordRuns::load(file, &loaded);
+        QVERIFY2(!e, qPrintable(e.message));
+        QVERIFY(loaded.checksum.startsWith(QLatin1String("sha256:")));
+        CommissioningRecord record = test::fixtureRecord(2, 80);
+        e = RecordRuns::attach({loaded}, &record.drives, record.locale);
+        QVERIFY2(!e, qPrintable(e.message));
+        QCOMPARE(record.drives.at(0).runs.size(), 0);
+        QCOMPARE(record.drives.at(1).runs.size(), 1); // the drive it was taken on
+        const RunRecord &r = record.drives.at(1).runs.at(0);
+        QCOMPARE(r.plot.width(), RunPlot::DefaultWidth);
+        QCOMPARE(r.test, QStringLiteral("velocity-step"));
+
+        const QString pdf = path(QStringLiteral("runs.pdf"));
+        QByteArray json;
+        QVERIFY(!write(record, pdf, QPageSize::A4, &json).isEmpty());
+        const QString t = text(pdf);
+        const double overshoot = *run.metrics.overshoot.value;
+        const double rise = *run.metrics.riseTime.value * 1000.0;
+        QVERIFY(overshoot > 10 && overshoot < 20);
+        for (const QString &expected : {QStringLiteral("axis2-step — Velocity step"), loaded.checksum,
+                                        QStringLiteral("Parameters during the run"),
+                                        QStringLiteral("501 sample(s), one every 1.00 ms on average")})
+            QVERIFY2(t.contains(expected), qPrintable(expected));
+        QVERIFY(QRegularExpression(QStringLiteral("Overshoot\\s+%1\\s+%").arg(QString::number(overshoot, 'g', 4)))
+                    .match(t)
+                    .hasMatch());
+        QVERIFY(
+            QRegularExpression(QStringLiteral("Rise time \\(10–90 %\\)\\s+%1\\s+ms").arg(QString::number(rise, 'g', 4)))
+                .match(t)
+                .hasMatch());
+        QVERIFY(QRegularExpression(QStringLiteral("P60\\s+Parameter 60\\s+30")).match(t).hasMatch());
+        QVERIFY(QRegularExpression(QStringLiteral("P61\\s+Parameter 61\\s+25")).match(t).hasMatch());
+
+        const QJsonObject jr = QJsonDocument::fromJson(json)
+                                   .object()
+                                   .value(QStringLiteral("drives"))
+                                   .toArray()
+                                   .at(1)
+                                   .toObject()
+                                   .value(QStringLiteral("runs"))
+                                   .toArray()
+                                   .at(0)
+                                   .toObject();
+        QCOMPARE(jr.value(QStringLiteral("checksum")).toString(), loaded.checksum);
+        QCOMPARE(jr.value(QStringLiteral("file")).toString(), QFileInfo(file).absoluteFilePath());
+        bool found = false;
+        for (const QJsonValue &m : jr.value(QStringLiteral("metrics")).toArray())
+            if (m.toObject().value(QStringLiteral("key")).toString() == QLatin1String("overshoot")) {
+                found = true;
+                QCOMPARE(m.toObject().value(QStringLiteral("value")).toDouble(), overshoot);
+                QCOMPARE(m.toObject().value(QStringLiteral("unit")).toString(), QStringLiteral("%"));
+            }
+        QVERIFY(found);
+        QFile jf(path(QStringLiteral("runs.json")));
+        QVERIFY(jf.open(QIODevice::WriteOnly));
+        jf.write(json);
+        jf.close();
+        QCOMPARE(schemaVerdicts({jf.fileName()}), QList<QByteArray>{"valid"});
+    }
+
+    void runPlotBreaksItsLineAtAGap()
+    {
+        TuningRun run = test::fixtureRun(1);
+        // Take out 0.2 .. 0.3 s: a stretch without samples.
+        CaptureData &c = run.capture;
+        for (int i = int(c.time.size()) - 1; i >= 0; --i)
+            if (c.time.at(i) > 0.2 && c.time.at(i) < 0.3) {
+                c.time.remove(i);
+                for (QVector<double> &col : c.columns)
+                    col.remove(i);
+            }
+        c.interval = IntervalStats::of(c.time);
+        const QImage plot = RunPlot::render(run, QLocale::c());
+        // The speed strip (the first): x of time t, the line's blue in a column of the strip.
+        auto x = [&](double t) { return int(100 + (t - c.time.first()) / (c.time.last() - c.time.first()) * 1082); };
+        auto lineIn = [&](int column) {
+            for (int y = 12; y < 10 + RunPlot::StripHeight - 2; ++y) {
+                const QColor p = plot.pixelColor(column, y);
+                if (p.blue() > 140 && p.red() < 120 && p.green() < 140)
+                    return true;
+            }
+            return false;
+        };
+        QVERIFY(lineIn(x(0.15)));
+        QVERIFY(lineIn(x(0.35)));
+        QVERIFY(!lineIn(x(0.25))); // no ramp drawn across the gap
+    }
+
+    void badRunFilesAndRunsOfOtherDrivesAreRefused()
+    {
+        const QString garbage = path(QStringLiteral("garbage.ddrun"));
+        QFile f(garbage);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{\"format\": \"drivedesk-run\", \"formatVersion\": 1}");
+        f.close();
+        RecordRunFile loaded;
+        Error e = RecordRuns::load(garbage, &loaded);
+        QVERIFY(e);
+        QVERIFY2(e.message.contains(QLatin1String("garbage.ddrun: created must be a string")), qPrintable(e.message));
+        e = RecordRuns::load(path(QStringLiteral("missing.ddrun")), &loaded);
+        QVERIFY2(e && e.message.contains(QLatin1String("missing.ddrun")), qPrintable(e.message));
+
+        const QString other = path(QStringLiteral("axis5.ddrun"));
+        QVERIFY(!test::fixtureRun(5).save(other));
+        QVERIFY(!RecordRuns::load(other, &loaded));
+        CommissioningRecord record = test::fixtureRecord(2, 10);
+        e = RecordRuns::attach({loaded}, &record.drives, record.locale);
+        QVERIFY2(e.message.contains(QLatin1String("axis5.ddrun was taken on servo-can at address 5, which is not in "
+                                                  "this record (it holds servo-can at 1, servo-can at 2)")),
+                 qPrintable(e.message));
+        QVERIFY(record.drives.at(0).runs.isEmpty() && record.drives.at(1).runs.isEmpty());
+        // One good run and the same file twice: refused, nothing attached.
+        const QString good = path(QStringLiteral("axis1.ddrun"));
+        QVERIFY(!test::fixtureRun(1).save(good));
+        QVERIFY(!RecordRuns::load(good, &loaded));
+        e = RecordRuns::attach({loaded, loaded}, &record.drives, record.locale);
+        QVERIFY2(e.message.contains(QLatin1String("chosen twice")), qPrintable(e.message));
+        QVERIFY(record.drives.at(0).runs.isEmpty());
+    }
+
+    void linkHealthIsCountedPerDriveFromTheTraffic()
+    {
+        // Serial traffic of two drives at 115200: drive 1 answers in 5 ms; drive 2's first
+        // reply is dropped for a bad checksum, the retry is answered in 8 ms; a broadcast and
+        // a request to drive 3 that nobody answers (still out at the end: not counted).
+        LinkHealthCounter counter(nullptr, 115200);
+        auto record = [&counter](qint64 ms, TrafficRecord::Direction d, QByteArray bytes, const char *note = "") {
+            TrafficRecord r;
+            r.timestampUs = ms * 1000;
+            r.direction = d;
+            r.bytes = bytes;
+            r.note = QLatin1String(note);
+            counter.count(r);
+        };
+        using D = TrafficRecord::Direction;
+        record(0, D::Tx, QByteArray::fromHex("010300640001c5d5"));
+        record(5, D::Rx, QByteArray::fromHex("01030200001984"));
+        record(10, D::Tx, QByteArray::fromHex("020300640001c5e6"));
+        record(14, D::Discarded, QByteArray::fromHex("0203020000ffff"), "bad checksum");
+        record(60, D::Tx, QByteArray::fromHex("020300640001c5e6"), "(retry 1)");
+        record(68, D::Rx, QByteArray::fromHex("02030200001984"));
+        record(70, D::Tx, QByteArray::fromHex("000600640001"));
+        record(80, D::Tx, QByteArray::fromHex("030300640001"));
+        counter.countError(2);
+
+        const RecordLinkHealth one = counter.health(1, QStringLiteral("test"));
+        QVERIFY(one.measured);
+        QCOMPARE(one.requests, 1);
+        QCOMPARE(one.answered, 1);
+        QCOMPARE(one.turnaroundMedianMs, 5.0);
+        QCOMPARE(one.timeouts + one.checksumErrors + one.retries + one.errors, 0);
+        const RecordLinkHealth two = counter.health(2, QStringLiteral("test"));
+        QCOMPARE(two.requests, 2);
+        QCOMPARE(two.answered, 1);
+        QCOMPARE(two.checksumErrors, 1);
+        QCOMPARE(two.retries, 1);
+        QCOMPARE(two.timeouts, 0);
+        QCOMPARE(two.turnaroundMaxMs, 8.0);
+        QCOMPARE(two.errors, 1);
+        const RecordLinkHealth three = counter.health(3, QStringLiteral("test"));
+        QCOMPARE(three.requests, 1);
+        QCOMPARE(three.answered, 0);
+
+        // As the record shows it.
+        CommissioningRecord rec = test::fixtureRecord(1, 5);
+        rec.drives[0].linkHealth = two;
+        const QString pdf = path(QStringLiteral("health.pdf"));
+        QByteArray json;
+        QVERIFY(!write(rec, pdf, QPageSize::A4, &json).isEmpty());
+        QVERIFY2(QRegularExpression(QStringLiteral("test: 2 request\\(s\\), 1 answered, turnaround 8.0 / 8.0 / 8.0 ms "
+                                                   "\\(min / median / max\\); 0 timeout\\(s\\), 1 checksum error"))
+                     .match(text(pdf).simplified())
+                     .hasMatch(),
+                 qPrintable(text(pdf)));
+        const QJsonObject h = QJsonDocument::fromJson(json)
+                                  .object()
+                                  .value(QStringLiteral("drives"))
+                                  .toArray()
+                                  .at(0)
+                                  .toObject()
+                                  .value(QStringLiteral("linkHealth"))
+                                  .toObject();
+        QCOMPARE(h.value(QStringLiteral("checksumErrors")).toInt(), 1);
+        QCOMPARE(h.value(QStringLiteral("turnaroundMs")).toObject().value(QStringLiteral("max")).toDouble(), 8.0);
+    }
+
+    void parametersWithoutDefaultsAreSaidNotCompared()
+    {
+        // No default at all (the bundled servo dictionaries): the record must not read as
+        // "nothing changed".
+        CommissioningRecord record = test::fixtureRecord(2, 12);
+        for (RecordParameter &p : record.drives[0].parameters)
+            p.defaultValue.reset();
+        for (int i = 0; i < 4; ++i) // drive 2: some without a default
+            record.drives[1].parameters[i].defaultValue.reset();
+        const QString pdf = path(QStringLiteral("nodefaults.pdf"));
+        QVERIFY(!write(record, pdf).isEmpty());
+        const QString first = text(pdf, 1, 1).simplified();
+        QVERIFY2(first.contains(QStringLiteral("0 (12 not compared)")), qPrintable(first));
+        QVERIFY2(first.contains(QStringLiteral("(4 not compared)")), qPrintable(first));
+        const QString drive1 = text(pdf, 2, 2).simplified();
+        QVERIFY2(drive1.contains(QStringLiteral("Not compared: the dictionary gives no factory default for any of the "
+                                                "12 parameter(s) read")),
+                 qPrintable(drive1));
+        QVERIFY(!drive1.contains(QStringLiteral("No parameter read differs")));
+        const QString all = text(pdf).simplified();
+        QVERIFY(all.contains(QStringLiteral("4 parameter(s) not compared: the dictionary gives no factory default")));
     }
 
     void journalKeepsTheLastVerificationAndBackups()

@@ -28,6 +28,7 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace dd {
 
@@ -66,7 +67,20 @@ void RecordDialog::buildUi()
     m_drives->setObjectName(QStringLiteral("recordDrives"));
     m_runsLabel = new QLabel(this);
     m_runsLabel->setWordWrap(true);
-    m_runsLabel->setEnabled(false);
+    m_runs = new QListWidget(this);
+    m_runs->setObjectName(QStringLiteral("recordRuns"));
+    m_runs->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_runs->setMaximumHeight(80);
+    m_addRunsButton = new QPushButton(this);
+    m_addRunsButton->setObjectName(QStringLiteral("recordAddRuns"));
+    m_removeRunsButton = new QPushButton(this);
+    m_removeRunsButton->setObjectName(QStringLiteral("recordRemoveRuns"));
+    connect(m_addRunsButton, &QPushButton::clicked, this, &RecordDialog::chooseRunFiles);
+    connect(m_removeRunsButton, &QPushButton::clicked, this, &RecordDialog::removeSelectedRuns);
+    auto *runButtons = new QHBoxLayout;
+    runButtons->addWidget(m_addRunsButton);
+    runButtons->addWidget(m_removeRunsButton);
+    runButtons->addStretch(1);
 
     m_machine = new QLineEdit(this);
     m_machine->setObjectName(QStringLiteral("recordMachine"));
@@ -106,6 +120,8 @@ void RecordDialog::buildUi()
     leftLayout->addWidget(m_drivesLabel);
     leftLayout->addWidget(m_drives, 1);
     leftLayout->addWidget(m_runsLabel);
+    leftLayout->addWidget(m_runs);
+    leftLayout->addLayout(runButtons);
     leftLayout->addLayout(form);
 
     auto *pages = new QWidget;
@@ -147,7 +163,15 @@ void RecordDialog::retranslate()
 {
     setWindowTitle(tr("Commissioning record"));
     m_drivesLabel->setText(tr("Drives in the record:"));
-    m_runsLabel->setText(tr("Tuning runs: run files are not supported by this build yet."));
+    m_runsLabel->setText(tr("Tuning runs (run files, each shown with the drive it was taken on):"));
+    m_addRunsButton->setText(tr("Add run files…"));
+    m_removeRunsButton->setText(tr("Remove"));
+    for (int i = 0; i < m_runs->count() && i < m_runFiles.size(); ++i) {
+        const TuningRun &run = m_runFiles.at(i).run;
+        m_runs->item(i)->setText(
+            tr("%1 — %2, %3 at address %4").arg(run.label, RecordRuns::testName(run.test), run.family).arg(run.address));
+        m_runs->item(i)->setToolTip(QDir::toNativeSeparators(m_runFiles.at(i).path));
+    }
     m_machineLabel->setText(tr("Machine / project:"));
     m_customerLabel->setText(tr("Customer:"));
     m_siteLabel->setText(tr("Site:"));
@@ -188,6 +212,59 @@ void RecordDialog::fillDrives()
             item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
             item->setCheckState(Qt::Checked);
         }
+}
+
+bool RecordDialog::addRunFiles(const QStringList &paths)
+{
+    QStringList refused;
+    for (const QString &path : paths) {
+        RecordRunFile file;
+        if (Error e = RecordRuns::load(path, &file)) {
+            refused << e.message;
+            continue;
+        }
+        const bool listed = std::any_of(m_runFiles.cbegin(), m_runFiles.cend(),
+                                        [&file](const RecordRunFile &f) { return f.path == file.path; });
+        if (listed)
+            continue;
+        m_runFiles.append(file);
+        new QListWidgetItem(m_runs);
+    }
+    retranslate();
+    if (!refused.isEmpty()) {
+        const QString message = tr("Not added: %1").arg(refused.join(QLatin1String("; ")));
+        m_message->setText(message);
+        emit failed(message);
+        return false;
+    }
+    return true;
+}
+
+void RecordDialog::chooseRunFiles()
+{
+    QSettings s;
+    s.beginGroup(QLatin1String(SettingsGroup));
+    const QString folder = s.value(QStringLiteral("runFolder"), QDir::homePath()).toString();
+    const QStringList paths = QFileDialog::getOpenFileNames(this, tr("Choose tuning runs for the record"), folder,
+                                                            tr("Run files (*.ddrun)"));
+    if (paths.isEmpty())
+        return;
+    s.setValue(QStringLiteral("runFolder"), QFileInfo(paths.first()).absolutePath());
+    addRunFiles(paths);
+}
+
+void RecordDialog::removeSelectedRuns()
+{
+    for (int i = m_runs->count() - 1; i >= 0; --i)
+        if (m_runs->item(i)->isSelected()) {
+            delete m_runs->takeItem(i);
+            m_runFiles.removeAt(i);
+        }
+}
+
+QString RecordDialog::message() const
+{
+    return m_message->text();
 }
 
 void RecordDialog::loadSettings()
@@ -232,6 +309,9 @@ void RecordDialog::setBusy(bool busy)
     m_previewButton->setEnabled(!busy);
     m_saveButton->setEnabled(!busy);
     m_drives->setEnabled(!busy);
+    m_runs->setEnabled(!busy);
+    m_addRunsButton->setEnabled(!busy);
+    m_removeRunsButton->setEnabled(!busy);
 }
 
 void RecordDialog::preview()
@@ -310,7 +390,13 @@ void RecordDialog::onGathered(const QList<DriveRecord> &records, const QStringLi
         emit failed(message);
         return;
     }
-    const CommissioningRecord record = recordOf(records);
+    CommissioningRecord record = recordOf(records);
+    if (Error e = RecordRuns::attach(m_runFiles, &record.drives, record.locale)) {
+        const QString message = tr("No record was made: %1").arg(e.message);
+        m_message->setText(message);
+        emit failed(message);
+        return;
+    }
     if (what == Pending::Preview)
         showPreview(record);
     else if (what == Pending::Save)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/report/commissioningrecord.h"
+#include "core/report/recordruns.h"
 
 #include <QDialog>
 
@@ -19,8 +20,8 @@ class DriveDirectory;
 class RecordGatherer;
 class RecordSession;
 
-// File → Commissioning record…: choose the drives (and, once run files exist, the tuning
-// runs), fill in the header (remembered between sessions), preview the pages, save the PDF
+// File → Commissioning record…: choose the drives and the tuning runs (run files, .ddrun;
+// each shown with the drive it was taken on), fill in the header (remembered between sessions), preview the pages, save the PDF
 // with its JSON twin next to it (docs/gui.md, docs/record.md).
 class RecordDialog : public QDialog
 {
@@ -33,7 +34,13 @@ public:
     // Reads the chosen drives and writes RECORD.pdf and RECORD.json (no file dialog).
     void saveTo(const QString &pdfPath);
 
+    // Adds run files to the record (loaded and checked now: a bad one is not added, the
+    // message says why). False when any was refused.
+    bool addRunFiles(const QStringList &paths);
+
     QListWidget *driveList() const { return m_drives; }
+    QListWidget *runList() const { return m_runs; }
+    QString message() const;
     QString lastSha256() const { return m_sha256; }
     int previewPages() const;
 
@@ -58,6 +65,8 @@ private:
     void showPreview(const CommissioningRecord &record);
     void write(const CommissioningRecord &record);
     void chooseFileAndSave();
+    void chooseRunFiles();
+    void removeSelectedRuns();
     void setBusy(bool busy);
     CommissioningRecord recordOf(const QList<DriveRecord> &drives) const;
 
@@ -71,6 +80,10 @@ private:
     QLabel *m_drivesLabel = nullptr;
     QListWidget *m_drives = nullptr;
     QLabel *m_runsLabel = nullptr;
+    QListWidget *m_runs = nullptr;
+    QPushButton *m_addRunsButton = nullptr;
+    QPushButton *m_removeRunsButton = nullptr;
+    QList<RecordRunFile> m_runFiles; // in the order of m_runs
     QLabel *m_machineLabel = nullptr;
     QLabel *m_customerLabel = nullptr;
     QLabel *m_siteLabel = nullptr;

@@ -57,7 +57,7 @@ void RecordGatherer::next()
         },
         [this, drive, record](const DriveResult &result) mutable {
             if (!result.ok() && result.parameters.isEmpty()) {
-                m_session->countError(drive.first);
+                m_session->countError(drive.first, drive.second);
                 m_problems << tr("%1 at address %2: %3")
                                   .arg(familyTraits(record.family).displayName())
                                   .arg(drive.second)
@@ -66,7 +66,7 @@ void RecordGatherer::next()
             }
             record.setParameters(ParameterDictionary::bundled(record.family), result.parameters, QLocale());
             if (!result.ok()) {
-                m_session->countError(drive.first);
+                m_session->countError(drive.first, drive.second);
                 record.readError = result.error.message;
             }
             readAlarm(drive, record);
@@ -76,14 +76,14 @@ void RecordGatherer::next()
 void RecordGatherer::readAlarm(const QPair<int, int> &drive, DriveRecord record)
 {
     record.alarms = m_session->alarms(drive.first, drive.second);
-    record.linkHealth = m_session->linkHealth(drive.first);
+    record.linkHealth = m_session->linkHealth(drive.first, drive.second);
     if (!m_directory->info(drive.first, drive.second).capabilities.testFlag(Capability::ReadAlarm))
         return done(record);
     m_directory->hub()->run(
         drive.first, drive.second, [](Drive &d) { return d.readAlarm(); },
         [this, drive, record](const DriveResult &result) mutable {
             if (!result.ok())
-                m_session->countError(drive.first);
+                m_session->countError(drive.first, drive.second);
             else if (const int code = result.status.alarmCode) {
                 const bool known = !record.alarms.isEmpty() && record.alarms.last().code == code
                     && !record.alarms.last().cleared;

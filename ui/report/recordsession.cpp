@@ -23,8 +23,10 @@ RecordSession::RecordSession(DriveHub *hub, DriveDirectory *directory, QObject *
 LinkHealthCounter *RecordSession::counter(int connectionId)
 {
     LinkHealthCounter *&c = m_links[connectionId];
-    if (!c)
-        c = new LinkHealthCounter(nullptr, this);
+    if (!c) {
+        const ConnectionSettings settings = m_directory->connectionSettings(connectionId);
+        c = new LinkHealthCounter(nullptr, settings.isCan() ? 0 : settings.baud, this);
+    }
     return c;
 }
 
@@ -33,9 +35,9 @@ void RecordSession::onTraffic(int connectionId, const TrafficRecord &record)
     counter(connectionId)->count(record);
 }
 
-void RecordSession::countError(int connectionId)
+void RecordSession::countError(int connectionId, int address)
 {
-    counter(connectionId)->countError();
+    counter(connectionId)->countError(address);
 }
 
 void RecordSession::onAlarm(int connectionId, int address, int code)
@@ -62,12 +64,12 @@ QList<RecordAlarm> RecordSession::alarms(int connectionId, int address) const
     return m_alarms.value({connectionId, address});
 }
 
-RecordLinkHealth RecordSession::linkHealth(int connectionId) const
+RecordLinkHealth RecordSession::linkHealth(int connectionId, int address) const
 {
     const LinkHealthCounter *c = m_links.value(connectionId);
     if (!c)
         return {};
-    return c->health(tr("since the connection was opened"));
+    return c->health(address, tr("since the connection was opened"));
 }
 
 } // namespace dd

@@ -15,8 +15,9 @@ class LinkHealthCounter;
 struct TrafficRecord;
 
 // What the GUI notes during a session for a commissioning record: the alarms every drive
-// raised and cleared (from the directory's alarm changes) and each connection's link health
-// (frames, discarded frames, retries, failed operations) since it was opened. Lives as long
+// raised and cleared (from the directory's alarm changes) and each drive's link health
+// (core/link's LinkHealth per address: requests, turnaround, timeouts, checksum errors, late
+// replies, retries; and failed operations) since its connection was opened. Lives as long
 // as the main window.
 class RecordSession : public QObject
 {
@@ -25,9 +26,9 @@ public:
     RecordSession(DriveHub *hub, DriveDirectory *directory, QObject *parent = nullptr);
 
     QList<RecordAlarm> alarms(int connectionId, int address) const;
-    RecordLinkHealth linkHealth(int connectionId) const;
-    // An operation on the connection failed (counted in its link health).
-    void countError(int connectionId);
+    RecordLinkHealth linkHealth(int connectionId, int address) const;
+    // An operation on the drive failed (counted in its link health).
+    void countError(int connectionId, int address);
 
 private:
     void onAlarm(int connectionId, int address, int code);

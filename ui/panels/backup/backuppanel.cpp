@@ -1,6 +1,7 @@
 #include "ui/panels/backup/backuppanel.h"
 
 #include "core/drive/drivehub.h"
+#include "core/fleet/defaultvalues.h"
 #include "core/params/parameterdictionary.h"
 #include "core/report/verificationjournal.h"
 #include "ui/panels/backup/backupdifftable.h"
@@ -59,8 +60,13 @@ void BackupPanel::buildSaveBox()
     m_save = new QPushButton(m_saveBox);
     m_save->setObjectName(QStringLiteral("saveBackupButton"));
     connect(m_save, &QPushButton::clicked, this, &BackupPanel::chooseSaveFile);
+    m_saveChangedOnly = new QCheckBox(m_saveBox);
+    m_saveChangedOnly->setObjectName(QStringLiteral("saveChangedOnlyCheck"));
     auto *saveLayout = new QHBoxLayout(m_saveBox);
-    saveLayout->addWidget(m_saveHint, 1);
+    auto *saveText = new QVBoxLayout;
+    saveText->addWidget(m_saveHint);
+    saveText->addWidget(m_saveChangedOnly);
+    saveLayout->addLayout(saveText, 1);
     saveLayout->addWidget(m_save);
 }
 
@@ -172,16 +178,19 @@ void BackupPanel::onBackedUp(const DriveResult &result, const TransferOutcome &o
     setBusy(false);
     if (!result.ok())
         return fail(result.error, tr("No backup was saved:"));
-    if (Error e = outcome.backup.save(path, *outcome.dictionary))
+    BackupFile backup = outcome.backup;
+    if (m_saveChangedOnly->isChecked()) { // as backup --changed-only (docs/backup-format.md)
+        backup.setValues(DefaultValues::changedOnly(*outcome.dictionary, backup.values()));
+        backup.setChangedOnly(true);
+    }
+    if (Error e = backup.save(path, *outcome.dictionary))
         return fail(e, tr("No backup was saved:"));
     // For the commissioning record (core/report/verificationjournal.h): best effort.
     VerificationJournal().recordBackup(context().family, context().address,
                                        {QStringLiteral("backup"), QFileInfo(path).absoluteFilePath(),
-                                        BackupFile::checksum(outcome.backup.values()),
-                                        QDateTime::currentDateTimeUtc()});
-    setMessage(
-        tr("Saved %n parameter(s) to %1.", nullptr, outcome.backup.values().size()).arg(QDir::toNativeSeparators(path)),
-        MessageKind::Success);
+                                        BackupFile::checksum(backup.values()), QDateTime::currentDateTimeUtc()});
+    setMessage(tr("Saved %n parameter(s) to %1.", nullptr, backup.values().size()).arg(QDir::toNativeSeparators(path)),
+               MessageKind::Success);
     emit fileUsed(path);
     emit backupSaved(path);
 }
@@ -443,6 +452,11 @@ void BackupPanel::retranslate()
     m_saveHint->setText(tr("Read every parameter of the drive and save them to a file, to compare "
                            "or restore them later — to this drive or to its replacement."));
     m_save->setText(tr("Save backup…"));
+    m_saveChangedOnly->setText(tr("Only the settings changed from the defaults"));
+    m_saveChangedOnly->setToolTip(
+        tr("Leaves out the settings equal to the dictionary's default and the read-only values; settings the "
+           "dictionary gives no default for are kept. The file says it holds changes only, and restoring it "
+           "touches only what it lists."));
     m_restoreBox->setTitle(tr("Compare and restore"));
     m_open->setText(tr("Open backup…"));
     m_showIdentical->setText(tr("Show identical parameters"));

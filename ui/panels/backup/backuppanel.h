@@ -94,6 +94,7 @@ private:
     QGroupBox *m_restoreBox = nullptr;
     QLabel *m_saveHint = nullptr;
     QPushButton *m_save = nullptr;
+    QCheckBox *m_saveChangedOnly = nullptr; // save only the settings changed from the defaults
     QPushButton *m_open = nullptr;
     QLabel *m_fileInfo = nullptr;
     BackupDiffTable *m_diffTable = nullptr;

@@ -7,11 +7,9 @@
 //
 // The simulator runs in a thread of its own (as drivedesk-sim would in its own process), so
 // that the client's work does not delay the simulated drive's replies; --same-thread puts
-// it on the client's event loop instead (the CLI's --sim). With the simulator in its own
-// thread, Qt's virtualcan plugin prints "Cannot create children for a parent that is in a
-// different thread" once per CAN case: its process-wide server object lives in the thread
-// that opened the first device (the simulator's) and the client's device asks it to start
-// a server, which fails anyway (the simulator's hub holds the port). Harmless.
+// it on the client's event loop instead (the CLI's --sim). The simulator's and the client's
+// virtualcan devices open from different threads: VirtualCanHub settles the plugin's
+// process-wide server first (see virtualcanhub.h), so no cross-thread warning is printed.
 //
 // Floors (see docs/performance.md, "Link speed"):
 //  - Serial (Modbus RTU): every request and reply byte at 10 bits per character, plus the

@@ -75,18 +75,23 @@ void TestVirtualCanThreads::simulatorAndLinkOnTwoThreads()
     CanSettings settings;
     QVERIFY(CanSettings::parse(QStringLiteral("virtualcan:") + hub.interfaceName(0), &settings));
     bool opened = false;
-    QMetaObject::invokeMethod(link, [&] { opened = link->open(settings); }, Qt::BlockingQueuedConnection);
+    QMetaObject::invokeMethod(
+        link, [&] { opened = link->open(settings); }, Qt::BlockingQueuedConnection);
     QVERIFY(opened);
     QTRY_COMPARE_WITH_TIMEOUT(linkConnected.count(), 1, 5000);
 
     // The bus works across the threads: a frame from the link reaches the simulator.
     QMetaObject::invokeMethod(
-        link, [link] { link->send({0x601, QByteArray::fromHex("0102030405060708"), false}); },
+        link,
+        [link] {
+            link->send({0x601, QByteArray::fromHex("0102030405060708"), false});
+        },
         Qt::BlockingQueuedConnection);
     QTRY_COMPARE_WITH_TIMEOUT(received.count(), 1, 5000);
     QCOMPARE(received.at(0).at(0).value<CanFrameData>().id, 0x601u);
 
-    QMetaObject::invokeMethod(link, [link] { delete link; }, Qt::BlockingQueuedConnection);
+    QMetaObject::invokeMethod(
+        link, [link] { delete link; }, Qt::BlockingQueuedConnection);
     io.quit();
     io.wait();
     qInstallMessageHandler(g_previous);

@@ -163,15 +163,6 @@ void ModbusLink::Private::handleSuccess(const QModbusResponse &response)
     // A drive answers in order: once it answered this request, no earlier answer follows.
     m_owed.remove(req.pdu.address);
     recordRx(adu);
-    // Other bytes came with it (Qt ignored them: a late answer of another address that
-    // landed during this transaction): stray, so that a scan asks that address again.
-    if (m_sniffer.isActive() && m_rxSinceSend.size() > adu.size()) {
-        QByteArray other = m_rxSinceSend;
-        other.remove(other.indexOf(adu), adu.size());
-        recordDiscarded(other,
-                        QStringLiteral("other bytes during this transaction (a late answer to an earlier request?)"));
-        reportStray(other);
-    }
     const modbusrtu::Reply &r = *decoded.value;
     QList<quint16> registers;
     switch (r.function) {

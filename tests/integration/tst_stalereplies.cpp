@@ -297,6 +297,30 @@ private slots:
         QCOMPARE(second->registers().value(0), quint16(0x64 + 1000));
     }
 
+    // Another address's late answer lands while a request waits, and that request's reply
+    // follows: Qt ignores the first frame; the link reports it as stray (a scan asks that
+    // address again) instead of losing it with the transaction.
+    void modbusLinkReportsALateAnswerThatCameWithAReply()
+    {
+        InstantModbusPeer peer;
+        QVERIFY(peer.open());
+        modbusrtu::Request other{5, modbusrtu::ReadHoldingRegisters, 0x66, 1, {}};
+        const QByteArray late = InstantModbusPeer::readReply(other, 0);
+        peer.answer = [&](const modbusrtu::Request &r, int) {
+            peer.pty.write(late);
+            QTimer::singleShot(5, &peer.pty, [&peer, r] { peer.pty.write(InstantModbusPeer::readReply(r, 1)); });
+        };
+        ModbusLink link;
+        QVERIFY(link.open(settings(peer.pty.clientPath(), 19200, 0)));
+        QByteArray stray;
+        connect(&link, &ModbusLink::strayBytes, this, [&](const QByteArray &b) { stray += b; });
+        LinkReply *r = link.readHoldingRegisters(7, 0x64, 1);
+        QVERIFY(wait(r));
+        QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
+        QCOMPARE(r->registers(), QList<quint16>{quint16(0x64 + 1000)});
+        QTRY_COMPARE_WITH_TIMEOUT(stray, late, 2000);
+    }
+
     // End to end, both serial families (servo-modbus with retries 0, so a genuine reply
     // refused fails the read): a drive on a line that paces its bytes and one that answers
     // at once. No frame is dropped as stale unless an earlier request went unanswered.

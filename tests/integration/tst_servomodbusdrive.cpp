@@ -533,6 +533,37 @@ private slots:
         QCOMPARE(scan->probesSent(), 8);    // 6 addresses + drives 2 and 6 once more
     }
 
+    // The link reports a late reply's bytes (stray) before it reports the timeout of the
+    // probe they answer: the scanner must still ask that address again.
+    void scanAsksAgainWhenTheLateReplyCameBeforeTheTimeout()
+    {
+        Bench b({});
+        QVERIFY(b.open(115200));
+        ScanOptions o;
+        o.from = 1;
+        o.to = 3;
+        auto *scan = qobject_cast<ServoModbusScanner *>(b.backend->createDiscovery(o));
+        QVERIFY(scan);
+        ModbusLink *link = b.backend->link();
+        const QByteArray late = withCrc16(QByteArray::fromHex("0203021B8B"));
+        // While the probe of address 2 waits (its request was recorded), the link reports
+        // an answer from address 2 as stray: what it does when the answer misses the wait.
+        bool sent = false;
+        connect(&b.tap, &TrafficTap::frameRecorded, this, [&](const TrafficRecord &r) {
+            if (!sent && r.direction == TrafficRecord::Direction::Tx && quint8(r.bytes.at(0)) == 2) {
+                sent = true;
+                QMetaObject::invokeMethod(
+                    link, [link, late] { emit link->strayBytes(late); }, Qt::QueuedConnection);
+            }
+        });
+        QSignalSpy finished(scan, &Discovery::finished);
+        scan->start();
+        QVERIFY(finished.wait(10000));
+        QVERIFY(sent);
+        QVERIFY(scan->results().isEmpty()); // nobody is there when asked again
+        QCOMPARE(scan->probesSent(), 4);    // 3 addresses + address 2 once more
+    }
+
     void scanCanBeCancelled()
     {
         Bench b({driveConfig(7, 9600)});

@@ -200,6 +200,14 @@ void ServoModbusScanner::onStrayBytes(const QByteArray &bytes)
     m_stray += bytes;
     if (m_stray.size() > MaxStrayBytes)
         m_stray.remove(0, m_stray.size() - MaxStrayBytes);
+    if (findLateReplies()) {
+        m_finishingBaud = false;
+        fillWindow();
+    }
+}
+
+bool ServoModbusScanner::findLateReplies()
+{
     bool added = false;
     for (qsizetype i = 0; i + ProbeReplyBytes <= m_stray.size(); ++i) {
         const QByteArray f = m_stray.mid(i, ProbeReplyBytes);
@@ -217,10 +225,7 @@ void ServoModbusScanner::onStrayBytes(const QByteArray &bytes)
         m_rescue.append(address);
         added = true;
     }
-    if (added) {
-        m_finishingBaud = false;
-        fillWindow();
-    }
+    return added;
 }
 
 void ServoModbusScanner::onProbeFinished(LinkReply *reply, int address, Probe kind)
@@ -265,6 +270,9 @@ void ServoModbusScanner::onProbeFinished(LinkReply *reply, int address, Probe ki
     case ErrorCode::Timeout:
         m_timedOut.insert(address);
         m_lastTimedOut = true;
+        // The link reports the bytes of a reply that came too late for this probe before
+        // it reports the timeout: they may be waiting already.
+        findLateReplies();
         break;
     default: break;
     }

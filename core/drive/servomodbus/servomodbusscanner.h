@@ -66,6 +66,7 @@ private:
     void sendProbe(int address, Probe kind);
     void onProbeFinished(LinkReply *reply, int address, Probe kind);
     void onStrayBytes(const QByteArray &bytes);
+    bool findLateReplies(); // in m_stray, from timed-out addresses: queued to be asked again
     void finishBaud();
     void noteTurnaround(qint64 us);
     void endScan(const Error &error);

@@ -100,8 +100,10 @@ signals:
     void closed(const dd::Error &reason);
     void idle();
     // Raw bytes no request took (Unix, where the raw bytes are visible): bytes that arrived
-    // with no request waiting, bytes that formed no reply before a timeout, a CRC-valid
-    // frame from another address. Typically a late reply to an earlier request; the
+    // with no request waiting (also those still unread at the port when a request goes
+    // out, which the link then flushes), bytes that formed no reply before a timeout, a
+    // CRC-valid frame from another address. May come before the timeout of the request
+    // whose late answer they are. Typically a late reply to an earlier request; the
     // scanner uses them to ask such an address again. Emitted from the event loop.
     void strayBytes(const QByteArray &bytes);
 

@@ -13,6 +13,10 @@
 #include <QVariant>
 #include <cmath>
 
+#ifdef Q_OS_UNIX
+#include <unistd.h>
+#endif
+
 Q_LOGGING_CATEGORY(lcModbusLink, "drivedesk.link.modbus")
 
 // How QModbusRtuSerialClient (Qt 6.4.2) behaves, measured on a pty:
@@ -30,6 +34,25 @@ Q_LOGGING_CATEGORY(lcModbusLink, "drivedesk.link.modbus")
 namespace dd {
 
 namespace {
+// The bytes the port's driver holds that Qt has not read yet (Unix: the port is
+// non-blocking; elsewhere nothing).
+QByteArray readUnread(QSerialPort *port)
+{
+    QByteArray out;
+#ifdef Q_OS_UNIX
+    char buf[256];
+    for (int i = 0; i < 16 && port->handle() >= 0; ++i) {
+        const ssize_t n = ::read(port->handle(), buf, sizeof buf);
+        if (n <= 0)
+            break;
+        out.append(buf, qsizetype(n));
+    }
+#else
+    Q_UNUSED(port);
+#endif
+    return out;
+}
+
 constexpr int QtMinTimeoutMs = 10; // QModbusClient::setTimeout ignores less
 constexpr int WatchdogMs = 250;    // Qt's timer is the primary one above 10 ms
 constexpr qsizetype MaxSniffedBytes = 1024;
@@ -315,8 +338,20 @@ void ModbusLink::Private::transmit()
     const QModbusRequest qreq(QModbusPdu::FunctionCode(pdu.function), adu.mid(2, adu.size() - 4));
     // Nothing is pending: whatever waits unread answers no request of ours (a duplicate, a
     // late answer). Read after the request went out it would pass for its answer.
-    if (auto *port = qobject_cast<QSerialPort *>(m_client->device()))
+    if (auto *port = qobject_cast<QSerialPort *>(m_client->device())) {
+        // What the port holds unread came while nothing was pending (a late answer that
+        // landed while the client reconnected): shown as stray before it is flushed, so
+        // that a scan still asks that address again.
+        const QByteArray unread = readUnread(port);
+        if (!unread.isEmpty()) {
+            recordDiscarded(unread, QStringLiteral("late or unsolicited bytes (no request pending)"));
+            if (unread.size() >= 4 && hasValidCrc16(unread))
+                m_owed.remove(quint8(unread.at(0)));
+            ++m_strayBursts;
+            reportStray(unread);
+        }
         port->clear(QSerialPort::Input);
+    }
     QModbusReply *r = m_client->sendRawRequest(qreq, pdu.address);
     if (!r) {
         finishCurrent({ErrorCode::LinkClosed,

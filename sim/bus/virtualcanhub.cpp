@@ -1,7 +1,12 @@
 #include "sim/bus/virtualcanhub.h"
 
+#include <QCanBus>
+#include <QCanBusDevice>
 #include <QTcpServer>
 #include <QTcpSocket>
+
+#include <memory>
+#include <mutex>
 
 namespace dd {
 
@@ -26,6 +31,7 @@ bool VirtualCanHub::start(quint16 port)
 {
     if (m_server)
         return true;
+    settlePluginServer();
     auto *server = new QTcpServer(this);
     if (!server->listen(QHostAddress::LocalHost, port)) {
         delete server;
@@ -56,6 +62,23 @@ int VirtualCanHub::setLowDelay(QObject *device)
         ++n;
     }
     return n;
+}
+
+bool VirtualCanHub::settlePluginServer()
+{
+    static std::once_flag once;
+    static bool settled = false;
+    std::call_once(once, [] {
+        // Port 0: the plugin's server listens on a free port; the throw-away device's own
+        // socket then fails to connect to port 0, and nothing else ever names that port.
+        std::unique_ptr<QCanBusDevice> device(
+            QCanBus::instance()->createDevice(QStringLiteral("virtualcan"), QStringLiteral("tcp://127.0.0.1:0/can0")));
+        if (!device)
+            return;
+        device->connectDevice();
+        settled = true;
+    });
+    return settled;
 }
 
 void VirtualCanHub::onNewConnection()

@@ -22,7 +22,8 @@ namespace dd {
 // on their own socket (setLowDelay()).
 //
 // Use: start(port) before opening any virtualcan device on "tcp://127.0.0.1:<port>/canN";
-// the hub must live as long as the bus.
+// the hub must live as long as the bus. Devices on the hub may be opened from any thread
+// (the simulator's and a DriveHub's I/O thread): see settlePluginServer().
 class VirtualCanHub : public QObject
 {
     Q_OBJECT
@@ -41,6 +42,19 @@ public:
     // Sets TCP_NODELAY on the plugin's socket inside `device` (a virtualcan QCanBusDevice,
     // or any object above it). Returns how many sockets were changed; 0 if none is found.
     static int setLowDelay(QObject *device);
+
+    // Qt 6.4's virtualcan plugin asks its process-wide server object to start on every
+    // connectDevice() to a loopback address. That object lives in the thread that first
+    // did so; while it does not run (our hub holds the port), each later attempt from
+    // another thread creates a QTcpServer child across threads ("QObject: Cannot create
+    // children for a parent that is in a different thread (Parent is VirtualCanServer)"),
+    // an unsynchronised write to the shared object. Once it runs it is left alone, so this
+    // lets it run, once per process and from the calling thread, on a free loopback port
+    // no device names (tcp://127.0.0.1:0). start() calls it. Consequence: in a process that
+    // started a hub, the plugin never serves a port of its own (virtualcan:can0 then needs a
+    // server elsewhere: a drivedesk-sim, or a hub on that port). Returns false if the
+    // virtualcan plugin is missing.
+    static bool settlePluginServer();
 
 private:
     void onNewConnection();

@@ -500,6 +500,70 @@ private slots:
         QCOMPARE(progress.last().at(0).toInt(), 5);
     }
 
+    void scanWaitsForTheLastDriveAsLongAsALateOneTook()
+    {
+        Bench b({driveConfig(1, 115200, 7051), driveConfig(2, 115200, 7052), driveConfig(6, 115200, 7053)});
+        QVERIFY(b.open(115200, {}, 200)); // the normal timeout (of the second asking): 200 ms
+        if (!b.backend->link()->seesRawBytes())
+            QSKIP("late replies are only visible where the link sees raw bytes");
+        // Probes of 40 ms (Qt's own timer ends each one; the sweep's usual final wait is
+        // 2 x 40 = 80 ms). Drive 1 answers at once; drive 2 answers 60 ms after its probe, in
+        // the middle of the next probe's wait, and is asked again; drive 6, the last
+        // address, answers 140 ms after its probe: 20 ms after the usual final wait ended.
+        // The scanner waits twice as long as drive 2's reply took (> 120 ms) instead.
+        b.drives[1]->faults().setExtraLatency(60);
+        b.drives[2]->faults().setExtraLatency(140);
+        ScanOptions o;
+        o.from = 1;
+        o.to = 6;
+        o.timeoutMs = 40;
+        auto *scan = qobject_cast<ServoModbusScanner *>(b.backend->createDiscovery(o));
+        QVERIFY(scan);
+        QCOMPARE(scan->finalWaitMs(), 80); // nothing learned yet: 2 probe timeouts
+        QSignalSpy finished(scan, &Discovery::finished);
+        scan->start();
+        QVERIFY(finished.wait(10000));
+        QVERIFY(!finished.at(0).at(0).value<Error>().isError());
+        QList<int> found;
+        for (const DiscoveredDrive &d : scan->results())
+            found << d.address;
+        std::sort(found.begin(), found.end());
+        QCOMPARE(found, (QList<int>{1, 2, 6}));
+        QVERIFY(scan->finalWaitMs() > 120); // twice drive 2's lateness
+        QCOMPARE(scan->probesSent(), 8);    // 6 addresses + drives 2 and 6 once more
+    }
+
+    // The link reports a late reply's bytes (stray) before it reports the timeout of the
+    // probe they answer: the scanner must still ask that address again.
+    void scanAsksAgainWhenTheLateReplyCameBeforeTheTimeout()
+    {
+        Bench b({});
+        QVERIFY(b.open(115200));
+        ScanOptions o;
+        o.from = 1;
+        o.to = 3;
+        auto *scan = qobject_cast<ServoModbusScanner *>(b.backend->createDiscovery(o));
+        QVERIFY(scan);
+        ModbusLink *link = b.backend->link();
+        const QByteArray late = withCrc16(QByteArray::fromHex("0203021B8B"));
+        // While the probe of address 2 waits (its request was recorded), the link reports
+        // an answer from address 2 as stray: what it does when the answer misses the wait.
+        bool sent = false;
+        connect(&b.tap, &TrafficTap::frameRecorded, this, [&](const TrafficRecord &r) {
+            if (!sent && r.direction == TrafficRecord::Direction::Tx && quint8(r.bytes.at(0)) == 2) {
+                sent = true;
+                QMetaObject::invokeMethod(
+                    link, [link, late] { emit link->strayBytes(late); }, Qt::QueuedConnection);
+            }
+        });
+        QSignalSpy finished(scan, &Discovery::finished);
+        scan->start();
+        QVERIFY(finished.wait(10000));
+        QVERIFY(sent);
+        QVERIFY(scan->results().isEmpty()); // nobody is there when asked again
+        QCOMPARE(scan->probesSent(), 4);    // 3 addresses + address 2 once more
+    }
+
     void scanCanBeCancelled()
     {
         Bench b({driveConfig(7, 9600)});

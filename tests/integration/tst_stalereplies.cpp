@@ -22,6 +22,10 @@
 
 #include <memory>
 
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
+
 using namespace dd;
 
 namespace {
@@ -295,6 +299,58 @@ private slots:
         QVERIFY(wait(second));
         QVERIFY2(!second->error().isError(), qPrintable(second->error().message));
         QCOMPARE(second->registers().value(0), quint16(0x64 + 1000));
+    }
+
+    // Another address's late answer lands while a request waits, and that request's reply
+    // follows: Qt ignores the first frame; the link reports it as stray (a scan asks that
+    // address again) instead of losing it with the transaction.
+    void modbusLinkReportsALateAnswerThatCameWithAReply()
+    {
+        InstantModbusPeer peer;
+        QVERIFY(peer.open());
+        modbusrtu::Request other{5, modbusrtu::ReadHoldingRegisters, 0x66, 1, {}};
+        const QByteArray late = InstantModbusPeer::readReply(other, 0);
+        peer.answer = [&](const modbusrtu::Request &r, int) {
+            peer.pty.write(late);
+            QTimer::singleShot(5, &peer.pty, [&peer, r] { peer.pty.write(InstantModbusPeer::readReply(r, 1)); });
+        };
+        ModbusLink link;
+        QVERIFY(link.open(settings(peer.pty.clientPath(), 19200, 0)));
+        QByteArray stray;
+        connect(&link, &ModbusLink::strayBytes, this, [&](const QByteArray &b) { stray += b; });
+        LinkReply *r = link.readHoldingRegisters(7, 0x64, 1);
+        QVERIFY(wait(r));
+        QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
+        QCOMPARE(r->registers(), QList<quint16>{quint16(0x64 + 1000)});
+        QTRY_COMPARE_WITH_TIMEOUT(stray, late, 2000);
+    }
+
+    // Bytes that wait unread at the port when a request goes out (a late answer that came
+    // while the client reconnected) answer no request: the link flushes them, but shows
+    // them as stray first, so that a scan still asks that address again.
+    void modbusLinkReportsUnreadBytesItFlushes()
+    {
+        InstantModbusPeer peer;
+        QVERIFY(peer.open());
+        peer.answer = [&](const modbusrtu::Request &r, int) { peer.pty.write(InstantModbusPeer::readReply(r, 0)); };
+        ModbusLink link;
+        QVERIFY(link.open(settings(peer.pty.clientPath(), 19200, 0)));
+        QByteArray stray;
+        connect(&link, &ModbusLink::strayBytes, this, [&](const QByteArray &b) { stray += b; });
+        const QByteArray late = InstantModbusPeer::readReply({5, modbusrtu::ReadHoldingRegisters, 0x66, 1, {}}, 0);
+        // Until the request goes out no event is processed, so Qt does not read them: a
+        // second descriptor of the same pty shows when they wait at the port.
+        const int fd = ::open(QFile::encodeName(peer.pty.clientPath()).constData(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
+        QVERIFY(fd >= 0);
+        QCOMPARE(peer.pty.write(late), qint64(late.size()));
+        pollfd p{fd, POLLIN, 0};
+        const int ready = ::poll(&p, 1, 5000);
+        ::close(fd);
+        QCOMPARE(ready, 1);
+        LinkReply *r = link.readHoldingRegisters(7, 0x64, 1);
+        QVERIFY(wait(r));
+        QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
+        QTRY_COMPARE_WITH_TIMEOUT(stray, late, 2000);
     }
 
     // End to end, both serial families (servo-modbus with retries 0, so a genuine reply

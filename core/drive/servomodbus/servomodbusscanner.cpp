@@ -8,6 +8,8 @@
 #include <QMetaObject>
 #include <QTimer>
 
+#include <algorithm>
+
 Q_LOGGING_CATEGORY(lcServoModbusScan, "drivedesk.drive.servo-modbus.scan")
 
 namespace dd {
@@ -50,6 +52,12 @@ int ServoModbusScanner::probeTimeoutMs() const
     return int((wire + allowance + 999) / 1000);
 }
 
+int ServoModbusScanner::finalWaitMs() const
+{
+    const qint64 learnedUs = std::min<qint64>(2 * m_latestReplyUs, qint64(MaxFinalWaitMs) * 1000);
+    return std::max({2 * probeTimeoutMs(), MinFinalWaitMs, int((learnedUs + 999) / 1000)});
+}
+
 void ServoModbusScanner::start()
 {
     if (m_running)
@@ -73,6 +81,8 @@ void ServoModbusScanner::start()
     m_done = 0;
     m_baudIndex = -1;
     m_found.clear();
+    m_latestReplyUs = 0;
+    m_clock.start();
     emit progress(0, m_total);
     QMetaObject::invokeMethod(this, &ServoModbusScanner::startBaud, Qt::QueuedConnection);
 }
@@ -101,6 +111,7 @@ void ServoModbusScanner::startBaud()
     m_rescue.clear();
     m_timedOut.clear();
     m_rescued.clear();
+    m_probeSentUs.clear();
     m_stray.clear();
     m_lastTimedOut = false;
     m_finishingBaud = false;
@@ -144,6 +155,8 @@ void ServoModbusScanner::sendProbe(int address, Probe kind)
     q.retries = 0;
     q.note = kind == Probe::Rescue ? QStringLiteral("scan (again: its reply came late)") : QStringLiteral("scan");
     LinkReply *r = m_link->send(q);
+    if (kind == Probe::First)
+        m_probeSentUs.insert(address, m_clock.nsecsElapsed() / 1000);
     ++m_probesSent;
     m_inFlight.append(r);
     connect(r, &LinkReply::finished, this, [this, r, address, kind] { onProbeFinished(r, address, kind); });
@@ -167,11 +180,10 @@ void ServoModbusScanner::finishBaud()
         startBaud();
         return;
     }
-    // The reply to the last probe may still be on its way: give it twice the probe timeout,
-    // at least 50 ms (a busy host, a slow adapter; 50 ms per baud is little beside a sweep).
-    // onStrayBytes ends the wait early if it comes.
+    // The reply to the last probe may still be on its way: see finalWaitMs(). onStrayBytes
+    // ends the wait early if it comes.
     m_finishingBaud = true;
-    const int waitMs = std::max(2 * probeTimeoutMs(), 50);
+    const int waitMs = finalWaitMs();
     QTimer::singleShot(waitMs, this, [this, baudIndex = m_baudIndex] {
         if (!m_running || !m_finishingBaud || baudIndex != m_baudIndex)
             return;
@@ -188,6 +200,14 @@ void ServoModbusScanner::onStrayBytes(const QByteArray &bytes)
     m_stray += bytes;
     if (m_stray.size() > MaxStrayBytes)
         m_stray.remove(0, m_stray.size() - MaxStrayBytes);
+    if (findLateReplies()) {
+        m_finishingBaud = false;
+        fillWindow();
+    }
+}
+
+bool ServoModbusScanner::findLateReplies()
+{
     bool added = false;
     for (qsizetype i = 0; i + ProbeReplyBytes <= m_stray.size(); ++i) {
         const QByteArray f = m_stray.mid(i, ProbeReplyBytes);
@@ -196,15 +216,16 @@ void ServoModbusScanner::onStrayBytes(const QByteArray &bytes)
         const int address = quint8(f.at(0));
         if (!m_timedOut.contains(address) || m_rescued.contains(address) || m_found.contains(address))
             continue;
+        // How late a drive on this line can answer (from its probe being queued: an upper
+        // bound): the wait after the last probe learns from it.
+        if (m_probeSentUs.contains(address))
+            m_latestReplyUs = std::max(m_latestReplyUs, m_clock.nsecsElapsed() / 1000 - m_probeSentUs.value(address));
         qCDebug(lcServoModbusScan) << "late reply from" << address << "- asking again";
         m_rescued.insert(address);
         m_rescue.append(address);
         added = true;
     }
-    if (added) {
-        m_finishingBaud = false;
-        fillWindow();
-    }
+    return added;
 }
 
 void ServoModbusScanner::onProbeFinished(LinkReply *reply, int address, Probe kind)
@@ -249,6 +270,9 @@ void ServoModbusScanner::onProbeFinished(LinkReply *reply, int address, Probe ki
     case ErrorCode::Timeout:
         m_timedOut.insert(address);
         m_lastTimedOut = true;
+        // The link reports the bytes of a reply that came too late for this probe before
+        // it reports the timeout: they may be waiting already.
+        findLateReplies();
         break;
     default: break;
     }

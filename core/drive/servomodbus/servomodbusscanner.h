@@ -3,6 +3,8 @@
 #include "core/drive/discovery.h"
 #include "core/link/modbuslink.h"
 
+#include <QElapsedTimer>
+#include <QHash>
 #include <QList>
 #include <QPointer>
 #include <QSet>
@@ -28,8 +30,11 @@ class LinkReply;
 // A reply that comes after its probe's timeout is not lost: where the link shows raw bytes
 // (ModbusLink::strayBytes), a CRC-valid answer from an address whose probe timed out has
 // that address asked once more with the link's normal timeout. The sweep at a baud ends
-// 2 probe timeouts (at least 50 ms) after its last probe timed out, so that the last one
-// can be rescued too.
+// finalWaitMs() after its last probe timed out, so that the last one can be rescued too:
+// 2 probe timeouts, at least 50 ms, and at least twice the latest any late reply of this
+// scan came after its probe (at most 1 s): a slow peer's neighbours are likely as slow
+// (pymodbus on a pty answers in 5-90 ms, far past a 115200-baud probe's few ms, while
+// the turnaround the probes are sized from may come from a quick answer).
 // Probes are queued two at a time, so that the link sends the next one without waiting for
 // this object. Qt's inter-frame delay (2 ms; 5 ms at 9600) comes before each probe.
 // The link is left at its original baud; cancel() stops at once (finished(Cancelled)).
@@ -38,6 +43,8 @@ class ServoModbusScanner : public Discovery
     Q_OBJECT
 public:
     static constexpr int DefaultAllowanceMs = 4;
+    static constexpr int MinFinalWaitMs = 50;
+    static constexpr int MaxFinalWaitMs = 1000; // the most a late reply can teach
 
     ServoModbusScanner(ModbusLink *link, const ScanOptions &options, QObject *parent = nullptr);
     ~ServoModbusScanner() override;
@@ -48,6 +55,7 @@ public:
     void setAllowanceMs(int ms) { m_baseAllowanceUs = qint64(ms) * 1000; }
     int allowanceMs() const;
     int probeTimeoutMs() const; // at the link's current baud
+    int finalWaitMs() const;    // after the last probe at a baud, when it timed out
     int probesSent() const { return m_probesSent; }
     bool isRunning() const { return m_running; }
 
@@ -58,6 +66,7 @@ private:
     void sendProbe(int address, Probe kind);
     void onProbeFinished(LinkReply *reply, int address, Probe kind);
     void onStrayBytes(const QByteArray &bytes);
+    bool findLateReplies(); // in m_stray, from timed-out addresses: queued to be asked again
     void finishBaud();
     void noteTurnaround(qint64 us);
     void endScan(const Error &error);
@@ -80,6 +89,9 @@ private:
     int m_probesSent = 0;
     qint64 m_baseAllowanceUs = qint64(DefaultAllowanceMs) * 1000;
     qint64 m_turnaroundUs = 0; // drive turnaround the allowance is sized from
+    QElapsedTimer m_clock;
+    QHash<int, qint64> m_probeSentUs; // at this baud: address -> its first probe was queued
+    qint64 m_latestReplyUs = 0;       // the latest a late reply came after its probe
     bool m_turnaroundSeen = false;
     bool m_lastTimedOut = false; // the last finished probe timed out
     bool m_finishingBaud = false;

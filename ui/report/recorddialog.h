@@ -51,6 +51,7 @@ private:
     void buildUi();
     void retranslate();
     void fillDrives();
+    void fitDriveList();
     void loadSettings();
     void saveSettings() const;
     void start(Pending what);

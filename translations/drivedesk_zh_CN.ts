@@ -126,6 +126,10 @@
         <source>Alarm</source>
         <translation>报警</translation>
     </message>
+    <message>
+        <source>the alarm table knows no code %1: see the drive&apos;s manual. To name it here, put your own table at %2 (format: docs/dictionaries.md).</source>
+        <translation>报警表中没有代码 %1：请查阅驱动器说明书。如需在此显示其名称，请将自己的报警表放在 %2（格式见 docs/dictionaries.md）。</translation>
+    </message>
 </context>
 <context>
     <name>dd::BackupFile</name>
@@ -251,7 +255,7 @@
     </message>
     <message>
         <source>%1: field &quot;scope&quot; must be &quot;all&quot; or &quot;%2&quot; (found &quot;%3&quot;)</source>
-        <translation>%1：字段 "scope" 必须是 "all" 或 "%2"（实际为 "%3"）</translation>
+        <translation>%1：字段 &quot;scope&quot; 必须是 &quot;all&quot; 或 &quot;%2&quot;（实际为 &quot;%3&quot;）</translation>
     </message>
 </context>
 <context>
@@ -1878,7 +1882,7 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     </message>
     <message>
         <source>%1 must be an object with &quot;key&quot; and &quot;role&quot;</source>
-        <translation>%1 必须是包含 "key" 和 "role" 的对象</translation>
+        <translation>%1 必须是包含 &quot;key&quot; 和 &quot;role&quot; 的对象</translation>
     </message>
     <message>
         <source>%1: no parameter has the key &quot;%2&quot;</source>
@@ -4672,7 +4676,7 @@ Servo enable on or off.
     </message>
     <message>
         <source>&quot;%1&quot; works on one drive: give one --address. backup, restore and diff take several (--address 1,2,5).</source>
-        <translation>"%1" 只作用于一台驱动器：请只给一个 --address。backup、restore 和 diff 可接受多个（--address 1,2,5）。</translation>
+        <translation>&quot;%1&quot; 只作用于一台驱动器：请只给一个 --address。backup、restore 和 diff 可接受多个（--address 1,2,5）。</translation>
     </message>
     <message>
         <source>--sim-resonance-hz must be a frequency from 1 to 1000 Hz, not &quot;%1&quot;.</source>
@@ -4715,7 +4719,7 @@ Servo enable on or off.
   --timeout MS                   线路传输时间之外的应答等待余量
   --retries N                    超时后的额外重试次数
   --dictionary FILE              参数字典（名称、范围、单位）；
-                                 "simulator"：模拟器的参数字典，含其环路增益
+                                 &quot;simulator&quot;：模拟器的参数字典，含其环路增益
   --option FAMILY.KEY=VALUE      协议文档未明确之处的系列设置，例如
                                  shuoke.checksum=twos-complement、
                                  servo-modbus.positionRule=decimal10000
@@ -4832,7 +4836,7 @@ Servo enable on or off.
   --sim-motion                   模拟驱动器自行运动（用于 monitor 演示；
                                  仅限该系列的模拟器支持时）
   --sim-resonance-hz F           模拟负载在 F Hz 处发生谐振（1..1000）
-  使用 --sim 时采用模拟器的参数字典：其 "tuning" 组列出模拟器自身的
+  使用 --sim 时采用模拟器的参数字典：其 &quot;tuning&quot; 组列出模拟器自身的
   环路增益（docs/tuning.md）。
 </translation>
     </message>
@@ -5822,23 +5826,23 @@ then log out and log in again (or restart the computer).</source>
     </message>
     <message>
         <source>%1: a header file is one JSON object, e.g. {&quot;machine&quot;: &quot;Press 3&quot;, &quot;engineer&quot;: &quot;Li Wei&quot;}.</source>
-        <translation>%1：表头文件是一个 JSON 对象，例如 {"machine": "Press 3", "engineer": "Li Wei"}。</translation>
+        <translation>%1：表头文件是一个 JSON 对象，例如 {&quot;machine&quot;: &quot;Press 3&quot;, &quot;engineer&quot;: &quot;Li Wei&quot;}。</translation>
     </message>
     <message>
         <source>%1: unknown field &quot;%2&quot;; a header has the fields %3.</source>
-        <translation>%1：未知字段 "%2"；表头的字段为 %3。</translation>
+        <translation>%1：未知字段 &quot;%2&quot;；表头的字段为 %3。</translation>
     </message>
     <message>
         <source>%1: the field &quot;%2&quot; must be text (a JSON string).</source>
-        <translation>%1：字段 "%2" 必须是文本（JSON 字符串）。</translation>
+        <translation>%1：字段 &quot;%2&quot; 必须是文本（JSON 字符串）。</translation>
     </message>
     <message>
         <source>%1: the field &quot;%2&quot; is %3 characters long; at most %4 are allowed.</source>
-        <translation>%1：字段 "%2" 长 %3 个字符；最多允许 %4 个。</translation>
+        <translation>%1：字段 &quot;%2&quot; 长 %3 个字符；最多允许 %4 个。</translation>
     </message>
     <message>
         <source>%1: the field &quot;%2&quot; holds a control character (U+%3).</source>
-        <translation>%1：字段 "%2" 含有控制字符（U+%3）。</translation>
+        <translation>%1：字段 &quot;%2&quot; 含有控制字符（U+%3）。</translation>
     </message>
 </context>
 <context>
@@ -6480,7 +6484,7 @@ then log out and log in again (or restart the computer).</source>
     </message>
     <message>
         <source>report --page-size: &quot;%1&quot; is not a page size; use a4 or letter.</source>
-        <translation>report --page-size："%1" 不是纸张尺寸；请用 a4 或 letter。</translation>
+        <translation>report --page-size：&quot;%1&quot; 不是纸张尺寸；请用 a4 或 letter。</translation>
     </message>
     <message>
         <source>report: --from and --to limit the scan of --all; without --all the record is of --address.</source>
@@ -7095,6 +7099,33 @@ firmware %2</source>
     <message>
         <source>STOP: %1</source>
         <translation>停止：%1</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DemoMenu</name>
+    <message>
+        <source>&amp;Demo</source>
+        <translation>演示(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Inject alarm</source>
+        <translation>注入报警(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Start the demo bench first (File → Demo bench)</source>
+        <translation>请先启动演示试验台（文件 → 演示试验台）</translation>
+    </message>
+    <message>
+        <source>Alarm %1 on the %2 drive</source>
+        <translation>在 %2 驱动器上触发报警 %1</translation>
+    </message>
+    <message>
+        <source>Remove the alarm from the %1 drive</source>
+        <translation>解除 %1 驱动器的报警</translation>
+    </message>
+    <message>
+        <source>As when the cause is gone and the drive is reset at its own panel</source>
+        <translation>相当于故障原因已排除并在驱动器面板上复位</translation>
     </message>
 </context>
 </TS>

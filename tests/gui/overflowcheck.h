@@ -21,7 +21,7 @@ inline QString describe(const QWidget *w)
     QString path;
     for (const QWidget *p = w; p; p = p->parentWidget()) {
         const QString name = p->objectName().isEmpty() ? QString::fromLatin1(p->metaObject()->className())
-                                                        : p->objectName();
+                                                       : p->objectName();
         path = path.isEmpty() ? name : name + QLatin1Char('/') + path;
         if (p->inherits("dd::DrivePanel"))
             break;
@@ -80,15 +80,16 @@ inline QStringList problems(QWidget *top)
         if (inParent.right() > parent->width() + 1 || inParent.bottom() > parent->height() + 1 || inParent.left() < -1
             || inParent.top() < -1)
             out << QStringLiteral("outside its parent (%1,%2 %3×%4 in %5×%6): ")
-                       .arg(inParent.x())
-                       .arg(inParent.y())
-                       .arg(inParent.width())
-                       .arg(inParent.height())
-                       .arg(parent->width())
-                       .arg(parent->height())
-                + describe(w);
+                        .arg(inParent.x())
+                        .arg(inParent.y())
+                        .arg(inParent.width())
+                        .arg(inParent.height())
+                        .arg(parent->width())
+                        .arg(parent->height())
+                    + describe(w);
         // Texts squeezed below what they need (a button or label cut).
-        const bool showsText = (qobject_cast<QAbstractButton *>(w) && !static_cast<QAbstractButton *>(w)->text().isEmpty())
+        const bool showsText = (qobject_cast<QAbstractButton *>(w)
+                                && !static_cast<QAbstractButton *>(w)->text().isEmpty())
             || qobject_cast<QComboBox *>(w)
             || (qobject_cast<QLabel *>(w) && !static_cast<QLabel *>(w)->wordWrap()
                 && !static_cast<QLabel *>(w)->text().isEmpty());

@@ -7,16 +7,20 @@
 #include "ui/bus/bustreewidget.h"
 #include "ui/bus/connectioncontroller.h"
 #include "ui/bus/drivedirectory.h"
+#include "ui/panels/alarms/alarmspanel.h"
+#include "ui/shell/demomenu.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/mainwindow.h"
 #include "ui/shell/recentfiles.h"
 #include "ui/shell/statusbarwidget.h"
 #include "ui/shell/stopaction.h"
 #include "ui/shell/stopreporter.h"
+#include "ui/workspace/drivepanel.h"
 #include "ui/workspace/driveworkspace.h"
 
 #include <QApplication>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
@@ -80,7 +84,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(w.busTree()->isVisible());
         QVERIFY(w.workspace()->isVisible());
-        QCOMPARE(menuTitles(w), QStringList({"&File", "&View", "&Language", "&Help"}));
+        QCOMPARE(menuTitles(w), QStringList({"&File", "&View", "&Language", "&Demo", "&Help"}));
         // The platform adds the application's name: the title does not repeat it.
         QCOMPARE(w.windowTitle(), QStringLiteral("Commissioning workbench"));
     }
@@ -207,6 +211,67 @@ private slots:
         // The demo servo runs only with its power stage on: the state says so.
         if (modbusRunning)
             QVERIFY(modbusState.enabled);
+        w.connections()->disconnectAll();
+    }
+
+    // Issue #10: Demo → Inject alarm raises an alarm on a demo drive; the drive's alarm
+    // history starts when it is found, not when its Alarms tab is first opened, and the
+    // tab says what to check for a code the alarm table does not name.
+    void demoAlarmIsInTheHistoryFromDiscovery()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        DriveDirectory *dir = w.directory();
+        auto *demoMenu = w.findChild<DemoMenu *>();
+        QVERIFY(demoMenu);
+        demoMenu->rebuild();
+        QCOMPARE(demoMenu->injectMenu()->actions().size(), 1); // "start the demo bench first"
+        QVERIFY(!demoMenu->injectMenu()->actions().first()->isEnabled());
+        QVERIFY(w.startDemo());
+        QVERIFY(waitFor(
+            [&] {
+                int n = 0;
+                for (int id : dir->connections())
+                    for (int a : dir->drives(id))
+                        n += dir->info(id, a).valid ? 1 : 0;
+                return n == 3 && !w.connections()->isBusy();
+            },
+            20000));
+        const int can = connectionOf(dir, Family::ServoCan);
+        QVERIFY(can);
+        if (w.workspace()->currentDrive().connectionId == can) // see the servo-can drive later
+            w.busTree()->selectDrive(connectionOf(dir, Family::Shuoke), 1);
+        QVERIFY(!w.workspace()->tabsFor(can, 1));
+
+        demoMenu->rebuild();
+        QAction *raise = nullptr;
+        for (QAction *a : demoMenu->injectMenu()->actions())
+            if (a->data().toString() == QLatin1String("servo-can"))
+                raise = a;
+        QVERIFY(raise);
+        QVERIFY(raise->text().contains(QLatin1String("Alarm 12")));
+        raise->trigger();
+        QVERIFY2(waitFor([&] { return dir->info(can, 1).status.alarmCode == 12; }, 5000), "no alarm arrived");
+        QTest::qWait(50); // later than the alarm by a measurable time
+        const QDateTime opened = QDateTime::currentDateTime();
+        w.busTree()->selectDrive(can, 1);
+        w.workspace()->setPreferredPanel(QStringLiteral("alarms"));
+        AlarmsPanel *alarms = nullptr;
+        for (DrivePanel *p : w.workspace()->panelsFor(can, 1))
+            if (auto *a = qobject_cast<AlarmsPanel *>(p))
+                alarms = a;
+        QVERIFY(alarms);
+        QCOMPARE(alarms->currentCode(), 12);
+        QCOMPARE(alarms->history().size(), 1);
+        QVERIFY(alarms->history().first().time < opened);
+        auto *remedy = alarms->findChild<QLabel *>(QStringLiteral("alarmRemedy"));
+        QVERIFY(remedy->isVisible());
+        QVERIFY2(remedy->text().contains(QLatin1String("knows no code 12")), qPrintable(remedy->text()));
+
+        QVERIFY(demoMenu->injectAlarm(Family::ServoCan, 0));
+        QVERIFY(waitFor([&] { return alarms->currentCode() == 0; }, 5000));
+        QCOMPARE(alarms->history().size(), 2);
         w.connections()->disconnectAll();
     }
 

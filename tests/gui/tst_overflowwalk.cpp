@@ -51,7 +51,10 @@ class TestOverflowWalk : public QObject
         QTest::qWait(20);
         const QSize need = dialog->minimumSizeHint();
         if (need.width() > 1280 || need.height() > 690)
-            out << QStringLiteral("%1 needs %2×%3").arg(dialog->metaObject()->className()).arg(need.width()).arg(need.height());
+            out << QStringLiteral("%1 needs %2×%3")
+                       .arg(dialog->metaObject()->className())
+                       .arg(need.width())
+                       .arg(need.height());
         for (const QString &p : overflowcheck::problems(dialog))
             out << QString::fromLatin1(dialog->metaObject()->className()) + QStringLiteral(": ") + p;
         dialog->close();

@@ -14,6 +14,7 @@
 #include "ui/report/recordaction.h"
 #include "ui/shell/aboutdialog.h"
 #include "ui/shell/demolauncher.h"
+#include "ui/shell/demomenu.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/recentfiles.h"
 #include "ui/shell/statusbarwidget.h"
@@ -197,6 +198,7 @@ void MainWindow::createMenus()
     m_languageMenu->addAction(m_langEnglish);
     m_languageMenu->addAction(m_langChinese);
 
+    menuBar()->addMenu(new DemoMenu(m_demo, this)); // Demo → Inject alarm
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName(QStringLiteral("helpMenu"));
     m_helpMenu->addAction(m_aboutAction);

@@ -3,6 +3,7 @@
 #include "core/drive/driveresult.h"
 #include "core/protocol/familytraits.h"
 #include "ui/common/livetext.h"
+#include "ui/workspace/alarmlog.h"
 #include "ui/workspace/driveparameters.h"
 
 #include <QEvent>
@@ -23,6 +24,8 @@ DrivePanel::DrivePanel(const DriveContext &context, QWidget *parent)
     m_info.capabilities = context.capabilities;
     if (!m_context.parameters)
         m_context.parameters = new DriveParameters(familyTraits(context.family).eeOperations, this);
+    if (!m_context.alarms)
+        m_context.alarms = new AlarmLog(this);
 }
 
 void DrivePanel::setActive(bool active)

@@ -46,6 +46,8 @@ public:
     // The drive's parameter values, shared with its other panels: report reads and writes
     // here, follow its signals (never null).
     DriveParameters *parameters() const { return m_context.parameters; }
+    // The drive's alarm history since it was found (never null).
+    AlarmLog *alarmLog() const { return m_context.alarms; }
     const DriveInfo &driveInfo() const { return m_info; }
     bool isActive() const { return m_active; }
 

@@ -7128,4 +7128,50 @@ firmware %2</source>
         <translation>相当于故障原因已排除并在驱动器面板上复位</translation>
     </message>
 </context>
+<context>
+    <name>dd::MotionReadout</name>
+    <message>
+        <source>Left limit</source>
+        <translation>左限位</translation>
+    </message>
+    <message>
+        <source>Origin</source>
+        <translation>原点</translation>
+    </message>
+    <message>
+        <source>Right limit</source>
+        <translation>右限位</translation>
+    </message>
+    <message>
+        <source>%1: not read yet</source>
+        <translation>%1：尚未读取</translation>
+    </message>
+    <message>
+        <source>%1: active</source>
+        <translation>%1：已触发</translation>
+    </message>
+    <message>
+        <source>%1: not active</source>
+        <translation>%1：未触发</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Following error</source>
+        <translation>跟随误差</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DrivePanel</name>
+    <message>
+        <source>Earlier, at %1: %2</source>
+        <translation>此前（%1）：%2</translation>
+    </message>
+</context>
 </TS>

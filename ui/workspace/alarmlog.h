@@ -28,7 +28,7 @@ public:
     // Forgets the entries (the current code stays known).
     void clearHistory();
 
-    int currentCode() const { return m_code; } // -1: not known yet
+    int currentCode() const { return m_code; }                // -1: not known yet
     const QList<Entry> &entries() const { return m_entries; } // oldest first
 
 signals:

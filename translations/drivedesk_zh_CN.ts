@@ -7174,4 +7174,37 @@ firmware %2</source>
         <translation>此前（%1）：%2</translation>
     </message>
 </context>
+<context>
+    <name>dd::ParameterContextMenu</name>
+    <message numerus="yes">
+        <source>&amp;Copy %n rows</source>
+        <translation>
+            <numerusform>复制 %n 行(&amp;C)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>复制(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to default (%1)</source>
+        <translation>恢复默认值（%1）(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Reset to default (read-only parameter)</source>
+        <translation>恢复默认值（只读参数）</translation>
+    </message>
+    <message>
+        <source>Reset to default (the dictionary gives none)</source>
+        <translation>恢复默认值（参数字典未给出默认值）</translation>
+    </message>
+    <message>
+        <source>&amp;Write this row</source>
+        <translation>写入此行(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Write this row (not edited)</source>
+        <translation>写入此行（未编辑）</translation>
+    </message>
+</context>
 </TS>

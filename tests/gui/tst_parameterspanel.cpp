@@ -6,11 +6,13 @@
 #include "tests/gui/simdrivefixture.h"
 #include "ui/panels/backup/backuppanel.h"
 #include "ui/panels/ee/eepanel.h"
+#include "ui/panels/parameters/parametercontextmenu.h"
 #include "ui/panels/parameters/parameterspanel.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/shell/languagemanager.h"
 
 #include <QApplication>
+#include <QClipboard>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLoggingCategory>
@@ -130,6 +132,52 @@ private slots:
         QVERIFY(panel.model()->changedIndices().isEmpty());
         QVERIFY(!panel.findChild<QPushButton *>(QStringLiteral("writeChangedButton"))->isEnabled());
         QVERIFY2(panel.message().contains(QLatin1String("1 written and verified")), qPrintable(panel.message()));
+    }
+
+    // Issue #10: the table's context menu — copy, reset to default where the dictionary knows
+    // one (a pending, undoable edit), write this row.
+    void contextMenuCopiesResetsAndWritesARow()
+    {
+        SimDriveFixture fx;
+        QVERIFY(fx.start([](SimServoModbusDrive *d) { d->setParameter(10, 10); }));
+        ParametersPanel panel(fx.context());
+        panel.setDriveInfo(fx.info);
+        // The bundled servo-modbus dictionary gives no defaults: one that does.
+        auto dictionary = std::make_shared<ParameterDictionary>();
+        const Error loadError = dictionary->loadFromJson(R"({"format": "drivedesk-dictionary", "formatVersion": 1,
+            "family": "servo-modbus", "valueType": "int16", "parameters": [
+            {"index": 10, "key": "PA10", "name": {"en": "Speed gain", "zh": "速度增益"}, "description": {"en": "-", "zh": "-"}, "unit": "Hz",
+             "min": 0, "max": 3000, "default": 40, "access": "rw", "register": 110},
+            {"index": 11, "key": "PA11", "name": {"en": "Eleven", "zh": "十一"}, "description": {"en": "-", "zh": "-"}, "unit": "",
+             "min": -100, "max": 100, "access": "rw", "register": 111}]})",
+                                                         QStringLiteral("test"));
+        QVERIFY2(!loadError, qPrintable(loadError.message));
+        panel.model()->setDictionary(dictionary);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QVERIFY(readAll(panel));
+
+        std::unique_ptr<ParameterContextMenu> menu(panel.contextMenuFor(10));
+        QVERIFY(!menu->writeAction()->isEnabled()); // nothing edited
+        menu->copyAction()->trigger();
+        QCOMPARE(QApplication::clipboard()->text(), QStringLiteral("PA10\tSpeed gain\t10\tHz"));
+        QVERIFY(menu->resetAction()->isEnabled());
+        QVERIFY(menu->resetAction()->text().contains(QLatin1String("40")));
+        menu->resetAction()->trigger();
+        QCOMPARE(panel.model()->editedValue(10), std::optional<qint64>(40));
+        QCOMPARE(fx.drive()->parameter(10), quint16(10)); // a pending edit, nothing sent
+        QCOMPARE(panel.undoStack()->count(), 1);
+
+        menu.reset(panel.contextMenuFor(11));
+        QVERIFY(!menu->resetAction()->isEnabled()); // the dictionary gives no default
+        menu.reset(panel.contextMenuFor(10));
+        QVERIFY(menu->writeAction()->isEnabled());
+        QSignalSpy done(&panel, &ParametersPanel::operationFinished);
+        menu->writeAction()->trigger();
+        QVERIFY(done.wait(10000));
+        QVERIFY(done.last().at(0).toBool());
+        QCOMPARE(fx.drive()->parameter(10), quint16(40));
+        QCOMPARE(panel.model()->writeState(10), ParameterTableModel::WriteState::Verified);
     }
 
     void readQueuedBehindAScanIsNotCancelled()

@@ -19,7 +19,7 @@ namespace {
 const char *const kValueIds[] = {"speed", "position", "position-error"};
 const QLatin1String kStatusId("status");
 constexpr MotionReadout::Switch kSwitches[] = {MotionReadout::Switch::LeftLimit, MotionReadout::Switch::Origin,
-                                              MotionReadout::Switch::RightLimit};
+                                               MotionReadout::Switch::RightLimit};
 
 int bitOf(MotionReadout::Switch s)
 {
@@ -202,11 +202,13 @@ void MotionReadout::showSwitches()
         QLabel *l = m_switchLabels.value(s);
         const std::optional<bool> on = switchActive(s);
         // A dot and the switch's name; the state in words in the tool tip.
-        const QString colour = !on ? QStringLiteral("#9e9e9e") : (*on ? QStringLiteral("#c62828") : QStringLiteral("#2e7d32"));
+        const QString colour = !on ? QStringLiteral("#9e9e9e")
+                                   : (*on ? QStringLiteral("#c62828") : QStringLiteral("#2e7d32"));
         if (s == Switch::Origin && on && *on)
             l->setText(QStringLiteral("<span style=\"color:#1565c0\">●</span> %1").arg(switchName(s).toHtmlEscaped()));
         else
-            l->setText(QStringLiteral("<span style=\"color:%1\">●</span> %2").arg(colour, switchName(s).toHtmlEscaped()));
+            l->setText(
+                QStringLiteral("<span style=\"color:%1\">●</span> %2").arg(colour, switchName(s).toHtmlEscaped()));
         l->setToolTip(!on ? tr("%1: not read yet").arg(switchName(s))
                           : (*on ? tr("%1: active").arg(switchName(s)) : tr("%1: not active").arg(switchName(s))));
     }
@@ -216,9 +218,9 @@ void MotionReadout::retranslate()
 {
     for (auto it = m_values.begin(); it != m_values.end(); ++it) {
         const QString &id = it.key();
-        QString title = id == QLatin1String("speed")  ? tr("Speed")
-            : id == QLatin1String("position")         ? tr("Position")
-                                                      : tr("Following error");
+        QString title = id == QLatin1String("speed") ? tr("Speed")
+            : id == QLatin1String("position")        ? tr("Position")
+                                                     : tr("Following error");
         it->title->setText(title);
         it->box->setToolTip(it->channel.name);
     }

@@ -6,6 +6,7 @@
 #include "core/params/parameterdictionary.h"
 #include "core/report/verificationjournal.h"
 #include "ui/common/displaytext.h"
+#include "ui/panels/parameters/parametercontextmenu.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/panels/parameters/parametervaluedelegate.h"
 #include "ui/workspace/driveparameters.h"
@@ -131,6 +132,28 @@ void ParametersPanel::buildTable()
     m_delegate = new ParameterValueDelegate(m_model, this);
     m_view->setItemDelegateForColumn(ParameterTableModel::Value, m_delegate);
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, &ParametersPanel::updateActions);
+    m_view->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_view, &QWidget::customContextMenuRequested, this, [this](const QPoint &pos) {
+        const QModelIndex at = m_proxy->mapToSource(m_view->indexAt(pos));
+        if (!at.isValid())
+            return;
+        ParameterContextMenu *menu = contextMenuFor(m_model->parameterAt(at.row()));
+        menu->setAttribute(Qt::WA_DeleteOnClose);
+        menu->popup(m_view->viewport()->mapToGlobal(pos));
+    });
+}
+
+ParameterContextMenu *ParametersPanel::contextMenuFor(int parameterIndex)
+{
+    const bool canWrite = !m_busy && context().can(Capability::WriteParameters);
+    QPointer<ParametersPanel> self(this);
+    return new ParameterContextMenu(
+        m_model, parameterIndex, selectedParameters(),
+        [self](int p) {
+            if (self)
+                self->write({p}, false);
+        },
+        canWrite, this);
 }
 
 void ParametersPanel::connectMessages()

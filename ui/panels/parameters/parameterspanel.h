@@ -15,6 +15,8 @@ class QUndoStack;
 
 namespace dd {
 
+class ParameterContextMenu;
+
 class ParameterDictionary;
 class ParameterTableModel;
 class ParameterValueDelegate;
@@ -46,6 +48,8 @@ public:
     QTableView *view() const { return m_view; }
     QUndoStack *undoStack() const { return m_undo; }
     QString message() const;
+    // The table's context menu for a row (made on a right click; tests trigger its actions).
+    ParameterContextMenu *contextMenuFor(int parameterIndex);
 
 signals:
     // A read or a write ended (tests, and whoever waits for the drive).

@@ -4058,6 +4058,28 @@ Write anyway?</source>
         <source>The drive&apos;s values were replaced (EEPROM operation): reading them again.</source>
         <translation>驱动器的参数值已被替换（EEPROM 操作）：正在重新读取。</translation>
     </message>
+    <message>
+        <source>Most names here are generic: the protocol document does not name these parameters. Load your drive&apos;s dictionary: File → &lt;a href=&quot;load&quot;&gt;Load dictionary…&lt;/a&gt;</source>
+        <translation>此处的参数名称大多为通用名称：通讯协议文档未说明这些参数。请加载驱动器自己的参数字典：文件 → &lt;a href="load"&gt;加载参数字典…&lt;/a&gt;</translation>
+    </message>
+    <message>
+        <source>Dictionary not loaded: %1 The table is unchanged.</source>
+        <translation>参数字典未加载：%1 表格保持不变。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Loaded the dictionary %1: %n parameter(s). Read all to see their values.</source>
+        <translation>
+            <numerusform>已加载参数字典 %1：%n 个参数。点击“全部读取”查看其数值。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load a parameter dictionary</source>
+        <translation>加载参数字典</translation>
+    </message>
+    <message>
+        <source>DriveDesk dictionaries (*.json)</source>
+        <translation>DriveDesk 参数字典 (*.json)</translation>
+    </message>
 </context>
 <context>
     <name>dd::RestoreReportDialog</name>
@@ -7205,6 +7227,17 @@ firmware %2</source>
     <message>
         <source>Write this row (not edited)</source>
         <translation>写入此行（未编辑）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::LoadDictionaryAction</name>
+    <message>
+        <source>Load &amp;dictionary…</source>
+        <translation>加载参数字典(&amp;D)…</translation>
+    </message>
+    <message>
+        <source>Load your drive&apos;s parameter dictionary (names, units, ranges) for the selected drive</source>
+        <translation>为所选驱动器加载其参数字典（名称、单位、范围）</translation>
     </message>
 </context>
 </TS>

@@ -16,6 +16,7 @@
 #include "ui/shell/demolauncher.h"
 #include "ui/shell/demomenu.h"
 #include "ui/shell/languagemanager.h"
+#include "ui/shell/loaddictionaryaction.h"
 #include "ui/shell/recentfiles.h"
 #include "ui/shell/statusbarwidget.h"
 #include "ui/shell/stopaction.h"
@@ -179,7 +180,8 @@ void MainWindow::createMenus()
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_demoAction);
     m_fileMenu->addSeparator();
-    m_fileMenu->addAction(new RecordAction(this)); // File → Commissioning record… (ui/report)
+    m_fileMenu->addAction(new RecordAction(this));         // File → Commissioning record… (ui/report)
+    m_fileMenu->addAction(new LoadDictionaryAction(this)); // for the selected drive
     m_fileMenu->addSeparator();
     m_recentMenu = m_fileMenu->addMenu(QString());
     m_recent->setMenu(m_recentMenu);

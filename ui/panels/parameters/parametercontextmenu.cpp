@@ -10,9 +10,8 @@
 
 namespace dd {
 
-ParameterContextMenu::ParameterContextMenu(ParameterTableModel *model, int parameterIndex,
-                                           const QList<int> &selected, std::function<void(int)> writeRow,
-                                           bool canWrite, QWidget *parent)
+ParameterContextMenu::ParameterContextMenu(ParameterTableModel *model, int parameterIndex, const QList<int> &selected,
+                                           std::function<void(int)> writeRow, bool canWrite, QWidget *parent)
     : QMenu(parent)
 {
     setObjectName(QStringLiteral("parameterContextMenu"));
@@ -60,8 +59,8 @@ QString ParameterContextMenu::copyText(const ParameterTableModel *model, const Q
         if (!info)
             continue;
         const std::optional<qint64> v = model->value(p);
-        lines << QStringList{info->key, info->displayName(locale), v ? QString::number(*v) : QString(), info->unit}
-                     .join(QLatin1Char('\t'));
+        lines << QStringList{info->key, info->displayName(locale), v ? QString::number(*v) : QString(), info->unit}.join(
+            QLatin1Char('\t'));
     }
     return lines.join(QLatin1Char('\n'));
 }

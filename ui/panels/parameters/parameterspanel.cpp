@@ -12,6 +12,9 @@
 #include "ui/workspace/driveparameters.h"
 
 #include <QAction>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
@@ -60,6 +63,10 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     buildTable();
     m_progress = createProgressBar(this);
     m_message = createMessageLabel(this, QStringLiteral("parameterMessage"));
+    m_genericHint = createReasonLabel(this);
+    m_genericHint->setObjectName(QStringLiteral("genericNamesHint"));
+    m_genericHint->setTextFormat(Qt::RichText);
+    connect(m_genericHint, &QLabel::linkActivated, this, &ParametersPanel::chooseDictionary);
     connectMessages();
     connectSharedValues();
     layOut();
@@ -226,6 +233,7 @@ void ParametersPanel::layOut()
     bottom->addWidget(m_message, 1);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(top);
+    layout->addWidget(m_genericHint);
     layout->addWidget(m_view, 1);
     layout->addLayout(bottom);
 }
@@ -281,6 +289,7 @@ void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const Pa
     if (dictionary && dictionary != m_dictionary) {
         m_dictionary = dictionary;
         m_model->setDictionary(m_dictionary, m_modelName);
+        updateGenericHint();
     }
     // Through the shared values: every view of this drive follows (connectSharedValues()).
     parameters()->reportRead(result.parameters);
@@ -314,6 +323,71 @@ void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const Pa
         },
         MessageKind::Success);
     emit operationFinished(true);
+}
+
+bool ParametersPanel::namesAreGeneric() const
+{
+    const ParameterDictionary *d = m_model->dictionary();
+    if (!d || d->isEmpty())
+        return false;
+    // The bundled dictionaries name what the protocol documents name; the rest read
+    // "Parameter N" / "Parameter PAN".
+    int generic = 0;
+    for (const ParameterInfo &p : d->parameters())
+        generic += p.name.english().startsWith(QLatin1String("Parameter ")) ? 1 : 0;
+    return generic * 2 > d->size();
+}
+
+void ParametersPanel::updateGenericHint()
+{
+    m_genericHint->setText(tr("Most names here are generic: the protocol document does not name these "
+                              "parameters. Load your drive's dictionary: File → <a href=\"load\">Load "
+                              "dictionary…</a>"));
+    m_genericHint->setVisible(namesAreGeneric());
+}
+
+Error ParametersPanel::loadDictionary(const QString &path)
+{
+    auto dictionary = std::make_shared<ParameterDictionary>();
+    if (Error e = dictionary->loadFromFile(path, context().family)) {
+        const QString why = e.message;
+        showMessage(
+            m_message,
+            [why] { return tr("Dictionary not loaded: %1 The table is unchanged.").arg(DisplayText::sentence(why)); },
+            MessageKind::Problem);
+        return e;
+    }
+    m_dictionary = dictionary;
+    m_model->setDictionary(m_dictionary, m_modelName);
+    updateGenericHint();
+    updateCount();
+    const int count = dictionary->size();
+    const QString shown = QDir::toNativeSeparators(path);
+    showMessage(
+        m_message,
+        [count, shown] {
+            return tr("Loaded the dictionary %1: %n parameter(s). Read all to see their values.", nullptr, count)
+                .arg(shown);
+        },
+        MessageKind::Success);
+    emit fileUsed(path);
+    // The drive validates writes with it too (until the connection closes).
+    if (context().isValid())
+        context().hub->run(context().connectionId, context().address, [dictionary](Drive &d) {
+            d.setDictionary(dictionary);
+            auto *reply = new DriveReply(&d);
+            reply->finish();
+            return reply;
+        });
+    return Error::none();
+}
+
+void ParametersPanel::chooseDictionary()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load a parameter dictionary"), QString(),
+                                                      tr("DriveDesk dictionaries (*.json)"));
+    if (!path.isEmpty())
+        loadDictionary(path);
 }
 
 void ParametersPanel::writeSelected()
@@ -520,6 +594,19 @@ void ParametersPanel::retranslate()
     m_model->retranslate();
     updateCount();
     updateActions();
+    updateGenericHint();
+}
+
+bool ParametersPanel::openFile(const QString &path)
+{
+    // A parameter dictionary picked from File → Recent files (other JSON: other tabs').
+    QFile file(path);
+    if (!path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive) || !file.open(QIODevice::ReadOnly))
+        return false;
+    if (!file.read(4096).contains("\"drivedesk-dictionary\""))
+        return false;
+    loadDictionary(path);
+    return true;
 }
 
 } // namespace dd

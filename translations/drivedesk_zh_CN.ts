@@ -4060,7 +4060,7 @@ Write anyway?</source>
     </message>
     <message>
         <source>Most names here are generic: the protocol document does not name these parameters. Load your drive&apos;s dictionary: File → &lt;a href=&quot;load&quot;&gt;Load dictionary…&lt;/a&gt;</source>
-        <translation>此处的参数名称大多为通用名称：通讯协议文档未说明这些参数。请加载驱动器自己的参数字典：文件 → &lt;a href="load"&gt;加载参数字典…&lt;/a&gt;</translation>
+        <translation>此处的参数名称大多为通用名称：通讯协议文档未说明这些参数。请加载驱动器自己的参数字典：文件 → &lt;a href=&quot;load&quot;&gt;加载参数字典…&lt;/a&gt;</translation>
     </message>
     <message>
         <source>Dictionary not loaded: %1 The table is unchanged.</source>
@@ -7238,6 +7238,99 @@ firmware %2</source>
     <message>
         <source>Load your drive&apos;s parameter dictionary (names, units, ranges) for the selected drive</source>
         <translation>为所选驱动器加载其参数字典（名称、单位、范围）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::HelpActions</name>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>用户指南(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>按键</translation>
+    </message>
+    <message>
+        <source>What they do</source>
+        <translation>作用</translation>
+    </message>
+    <message>
+        <source>STOP: stop every drive on every connection (anywhere in DriveDesk)</source>
+        <translation>STOP：停止所有连接上的所有驱动器（在 DriveDesk 任何位置均有效）</translation>
+    </message>
+    <message>
+        <source>Open the user guide</source>
+        <translation>打开用户指南</translation>
+    </message>
+    <message>
+        <source>Connect… (open a port or CAN interface and scan it)</source>
+        <translation>连接…（打开串口或 CAN 接口并扫描）</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>退出</translation>
+    </message>
+    <message>
+        <source>Hold %1 on a jog button</source>
+        <translation>在点动按钮上按住 %1</translation>
+    </message>
+    <message>
+        <source>Motion: jog while held; letting go stops</source>
+        <translation>运动：按住时点动，松开即停止</translation>
+    </message>
+    <message>
+        <source>Parameters: undo / redo an edit</source>
+        <translation>参数：撤销 / 重做编辑</translation>
+    </message>
+    <message>
+        <source>Parameters: copy the selected rows (also in the right-click menu)</source>
+        <translation>参数：复制所选行（右键菜单中也有）</translation>
+    </message>
+    <message>
+        <source>Trend: zoom in / out</source>
+        <translation>趋势：放大 / 缩小</translation>
+    </message>
+    <message>
+        <source>Trend: pan in time</source>
+        <translation>趋势：沿时间平移</translation>
+    </message>
+    <message>
+        <source>Trend: reset the zoom</source>
+        <translation>趋势：复位缩放</translation>
+    </message>
+    <message>
+        <source>Alt + underlined letter</source>
+        <translation>Alt + 带下划线的字母</translation>
+    </message>
+    <message>
+        <source>Menus and buttons: the letter underlined in their name</source>
+        <translation>菜单和按钮：名称中带下划线的字母</translation>
+    </message>
+</context>
+<context>
+    <name>dd::UserGuideDialog</name>
+    <message>
+        <source>userguide-en.md</source>
+        <translation>userguide-zh_CN.md</translation>
+    </message>
+    <message>
+        <source>DriveDesk user guide</source>
+        <translation>DriveDesk 用户指南</translation>
+    </message>
+    <message>
+        <source>The user guide is missing from this build.</source>
+        <translation>此版本缺少用户指南。</translation>
     </message>
 </context>
 </TS>

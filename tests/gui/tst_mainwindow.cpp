@@ -7,6 +7,9 @@
 #include "ui/bus/bustreewidget.h"
 #include "ui/bus/connectioncontroller.h"
 #include "ui/bus/drivedirectory.h"
+#include "ui/help/helpactions.h"
+#include "ui/help/shortcutsdialog.h"
+#include "ui/help/userguidedialog.h"
 #include "ui/panels/alarms/alarmspanel.h"
 #include "ui/shell/demomenu.h"
 #include "ui/shell/languagemanager.h"
@@ -27,6 +30,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
@@ -39,6 +43,15 @@ class TestMainWindow : public QObject
     Q_OBJECT
 
     QTemporaryDir m_settingsDir;
+
+    static QStringList menuActionTexts(MainWindow &w, const QString &menu)
+    {
+        QStringList out;
+        if (auto *m = w.findChild<QMenu *>(menu))
+            for (QAction *a : m->actions())
+                out << a->text();
+        return out;
+    }
 
     static QStringList menuTitles(MainWindow &w)
     {
@@ -273,6 +286,42 @@ private slots:
         QVERIFY(waitFor([&] { return alarms->currentCode() == 0; }, 5000));
         QCOMPARE(alarms->history().size(), 2);
         w.connections()->disconnectAll();
+    }
+
+    // Issue #10: F1 opens a short user guide, bundled, in the UI language (also after a
+    // switch); Help → Keyboard shortcuts lists the keys.
+    void f1OpensTheUserGuideAndHelpListsTheShortcuts()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto *help = w.findChild<HelpActions *>();
+        QVERIFY(help);
+        QVERIFY(menuActionTexts(w, QStringLiteral("helpMenu")).contains(QStringLiteral("&User guide")));
+        QTest::keyClick(&w, Qt::Key_F1);
+        QTRY_VERIFY(help->guideDialog() && help->guideDialog()->isVisible());
+        QVERIFY2(help->guideDialog()->guideText().contains(QLatin1String("a short user guide")),
+                 qPrintable(help->guideDialog()->guideText().left(200)));
+        QVERIFY2(help->guideDialog()->guideText().contains(QStringLiteral("Demo → Inject alarm")),
+                 qPrintable(help->guideDialog()->guideText()));
+        QVERIFY(w.languageManager()->apply(LanguageManager::Language::Chinese));
+        QCoreApplication::sendPostedEvents();
+        QVERIFY2(help->guideDialog()->guideText().contains(QStringLiteral("简明使用指南")),
+                 qPrintable(help->guideDialog()->guideText().left(200)));
+        QVERIFY(menuActionTexts(w, QStringLiteral("helpMenu")).contains(QStringLiteral("用户指南(&U)")));
+        QVERIFY(w.languageManager()->apply(LanguageManager::Language::English));
+        QCoreApplication::sendPostedEvents();
+        QVERIFY(help->guideDialog()->guideText().contains(QLatin1String("a short user guide")));
+
+        help->shortcutsAction()->trigger();
+        QTRY_VERIFY(help->shortcutsDialog() && help->shortcutsDialog()->isVisible());
+        QTableWidget *table = help->shortcutsDialog()->table();
+        QStringList keys;
+        for (int r = 0; r < table->rowCount(); ++r)
+            keys << table->item(r, 0)->text();
+        QVERIFY2(keys.contains(QStringLiteral("Esc / F12")), qPrintable(keys.join(QLatin1Char('|'))));
+        QVERIFY(keys.contains(QStringLiteral("F1")));
+        QVERIFY(keys.contains(QStringLiteral("Ctrl+K")));
     }
 
     void chineseTranslationLoadsAndSwitchesLive()

@@ -10,6 +10,8 @@
 #include "ui/bus/connectioncontroller.h"
 #include "ui/bus/drivedirectory.h"
 #include "ui/compare/compareview.h"
+#include "ui/help/shortcutsdialog.h"
+#include "ui/help/userguidedialog.h"
 #include "ui/report/recordaction.h"
 #include "ui/report/recorddialog.h"
 #include "ui/shell/aboutdialog.h"
@@ -117,6 +119,8 @@ private slots:
         }
         problems << dialogProblems(new ConnectDialog(&w));
         problems << dialogProblems(new AboutDialog(&w));
+        problems << dialogProblems(new UserGuideDialog(&w));
+        problems << dialogProblems(new ShortcutsDialog(&w));
         problems << dialogProblems(new CompareView(dir, &w));
         if (auto *record = w.findChild<RecordAction *>())
             problems << dialogProblems(new RecordDialog(dir, record->session(), &w));

@@ -14,8 +14,7 @@ LoadDictionaryAction::LoadDictionaryAction(MainWindow *window)
     setObjectName(QStringLiteral("loadDictionaryAction"));
     connect(this, &QAction::triggered, this, &LoadDictionaryAction::open);
     connect(window->languageManager(), &LanguageManager::languageChanged, this, &LoadDictionaryAction::retranslate);
-    connect(window->workspace(), &DriveWorkspace::currentDriveChanged, this,
-            [this](int id) { setEnabled(id > 0); });
+    connect(window->workspace(), &DriveWorkspace::currentDriveChanged, this, [this](int id) { setEnabled(id > 0); });
     setEnabled(false);
     retranslate();
 }

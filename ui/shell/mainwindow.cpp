@@ -10,6 +10,7 @@
 #include "ui/bus/statuspoller.h"
 #include "ui/fleet/fleetactions.h"
 #include "ui/framemonitor/framemonitordock.h"
+#include "ui/help/helpactions.h"
 #include "ui/linkhealth/linkhealthdock.h"
 #include "ui/report/recordaction.h"
 #include "ui/shell/aboutdialog.h"
@@ -205,6 +206,7 @@ void MainWindow::createMenus()
     m_helpMenu->setObjectName(QStringLiteral("helpMenu"));
     m_helpMenu->addAction(m_aboutAction);
     m_helpMenu->addAction(m_aboutQtAction);
+    new HelpActions(this, m_helpMenu); // User guide (F1), Keyboard shortcuts
 }
 
 void MainWindow::createToolBar()

@@ -12,6 +12,8 @@
 #include "ui/workspace/driveparameters.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QClipboard>
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
@@ -139,6 +141,14 @@ void ParametersPanel::buildTable()
     m_delegate = new ParameterValueDelegate(m_model, this);
     m_view->setItemDelegateForColumn(ParameterTableModel::Value, m_delegate);
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, &ParametersPanel::updateActions);
+    // Ctrl+C on the table: the selected rows, as the context menu's Copy.
+    auto *copy = new QAction(m_view);
+    copy->setShortcut(QKeySequence::Copy);
+    copy->setShortcutContext(Qt::WidgetShortcut);
+    connect(copy, &QAction::triggered, this, [this] {
+        QApplication::clipboard()->setText(ParameterContextMenu::copyText(m_model, selectedParameters()));
+    });
+    m_view->addAction(copy);
     m_view->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(m_view, &QWidget::customContextMenuRequested, this, [this](const QPoint &pos) {
         const QModelIndex at = m_proxy->mapToSource(m_view->indexAt(pos));

@@ -5,6 +5,7 @@
 
 #include "core/drive/drive.h"
 #include "core/trend/channelsampler.h"
+#include "core/trend/linkrate.h"
 #include "core/trend/trendchannel.h"
 
 #include <QFile>
@@ -95,6 +96,8 @@ void MonitorCommand::start()
             return fail(e);
     }
 
+    if (m_rateHz <= 0.0)
+        m_rateHz = LinkRate::forReadUs(d->channelReadUs(m_channelIds));
     m_sampler = new ChannelSampler(d, this);
     m_sampler->setChannels(m_channelIds);
     m_sampler->setIntervalMs(qMax(1, int(std::lround(1000.0 / m_rateHz))));
@@ -169,7 +172,9 @@ void MonitorCommand::end(const Error &error)
         if (!e)
             e = ce;
     }
-    QJsonObject summary{{QStringLiteral("samples"), double(samples)}, {QStringLiteral("skipped"), double(skipped)}};
+    QJsonObject summary{{QStringLiteral("samples"), double(samples)},
+                        {QStringLiteral("skipped"), double(skipped)},
+                        {QStringLiteral("rateHz"), m_rateHz}};
     if (!m_csvPath.isEmpty())
         summary.insert(QStringLiteral("file"), m_csvPath);
     if (e)

@@ -11,6 +11,8 @@ namespace dd {
 class ChannelSampler;
 
 // monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+// Without --rate it samples as fast as the link carries the channels (LinkRate, as the GUI
+// trend does); the rate used is in the JSON summary ("rateHz").
 class MonitorCommand : public CliCommand
 {
     Q_OBJECT
@@ -29,7 +31,7 @@ private:
 
     QList<int> m_columnWidths; // text output: from the header
     QList<ChannelInfo> m_channels;
-    double m_rateHz = 10.0;
+    double m_rateHz = 0.0;    // 0: the link's rate (LinkRate), chosen when the drive is open
     double m_durationS = 0.0; // 0: until Ctrl-C
     QString m_csvPath;
     CsvWriter m_csv;

@@ -53,6 +53,16 @@ struct ChannelInfo
     int decimals = 0;
 };
 
+// The "status" channel of a drive that reports its motion state and switch inputs as one
+// value (shuoke 0x3B): these bits.
+namespace StatusChannelBits {
+constexpr int Running = 1;
+constexpr int LeftLimit = 2;
+constexpr int Origin = 4;
+constexpr int RightLimit = 8;
+constexpr int EnableInput = 16;
+} // namespace StatusChannelBits
+
 // The last known state of a drive, refreshed by heartbeats or polling.
 struct DriveStatus
 {

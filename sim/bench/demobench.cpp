@@ -47,6 +47,7 @@ Error DemoBench::start()
     }
     m_connections = m_worker->connections();
     m_descriptions = m_worker->describe();
+    m_alarmFamilies = m_worker->alarmFamilies();
     m_running = true;
     return Error::none();
 }
@@ -66,8 +67,21 @@ void DemoBench::stop()
     m_thread = nullptr;
     m_connections.clear();
     m_descriptions.clear();
+    m_alarmFamilies.clear();
     m_running = false;
     m_ready = false;
+}
+
+bool DemoBench::injectAlarm(Family family, int code)
+{
+    if (!m_running)
+        return false;
+    bool ok = false;
+    // The bench thread never waits for this one: blocking here is brief.
+    QMetaObject::invokeMethod(
+        m_worker, [this, family, code, &ok] { ok = m_worker->injectAlarm(family, Address, code); },
+        Qt::BlockingQueuedConnection);
+    return ok;
 }
 
 } // namespace dd

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/common/error.h"
+#include "core/common/family.h"
 #include "core/link/connectionsettings.h"
 
 #include <QObject>
@@ -51,6 +52,10 @@ public:
     // One line per bus ("servo-modbus: pty: /dev/pts/5"), for logs.
     QStringList describe() const { return m_descriptions; }
     QThread *benchThread() const { return m_thread; }
+    // The families whose demo drive can raise an alarm (Demo → Inject alarm), and raising one
+    // (code 0: the alarm goes, as after the cause is removed); false when that drive cannot.
+    QList<Family> alarmFamilies() const { return m_alarmFamilies; }
+    bool injectAlarm(Family family, int code);
 
 signals:
     void ready();
@@ -61,6 +66,7 @@ private:
     DemoBenchWorker *m_worker = nullptr; // lives on m_thread
     QList<ConnectionSettings> m_connections;
     QStringList m_descriptions;
+    QList<Family> m_alarmFamilies;
     bool m_running = false;
     bool m_ready = false;
     double m_resonanceHz = 0.0;

@@ -65,6 +65,23 @@ Error DemoBenchWorker::build(int address, double resonanceHz)
     return Error::none();
 }
 
+QList<Family> DemoBenchWorker::alarmFamilies() const
+{
+    QList<Family> out;
+    for (SimBench *b : m_benches)
+        if (b->canInjectAlarm())
+            out << b->options().family;
+    return out;
+}
+
+bool DemoBenchWorker::injectAlarm(Family family, int address, int code)
+{
+    for (SimBench *b : std::as_const(m_benches))
+        if (b->options().family == family && b->canInjectAlarm())
+            return b->injectAlarm(address, code);
+    return false;
+}
+
 void DemoBenchWorker::checkReady()
 {
     if (m_readySent)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/common/error.h"
+#include "core/common/family.h"
 #include "core/link/connectionsettings.h"
 
 #include <QList>
@@ -25,6 +26,8 @@ public:
     Error build(int address, double resonanceHz = 0.0);
     QList<ConnectionSettings> connections() const { return m_connections; }
     QStringList describe() const { return m_descriptions; }
+    QList<Family> alarmFamilies() const;
+    bool injectAlarm(Family family, int address, int code);
 
 signals:
     void ready();

@@ -192,6 +192,13 @@ void SimBench::setSilent(bool silent)
         m_can->device(i)->faults().setSilent(silent);
 }
 
+bool SimBench::canInjectAlarm() const
+{
+    if (m_serial && m_serial->deviceCount() > 0 && dynamic_cast<SimServoModbusDrive *>(m_serial->device(0)))
+        return true;
+    return m_can && m_can->deviceCount() > 0 && dynamic_cast<SimServoCanDrive *>(m_can->device(0));
+}
+
 bool SimBench::injectAlarm(int address, int code)
 {
     const int i = m_options.addresses.indexOf(address);

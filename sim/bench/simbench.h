@@ -41,6 +41,8 @@ public:
     void setSilent(bool silent);
     // Injects an alarm (0 clears) into the drive at `address`; false when there is none.
     bool injectAlarm(int address, int code);
+    // Whether this bench's drives take injectAlarm() (the families with an alarm code).
+    bool canInjectAlarm() const;
 
     SimSerialBus *serialBus() const { return m_serial; }
     SimCanBus *canBus() const { return m_can; }

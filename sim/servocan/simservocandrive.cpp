@@ -124,7 +124,10 @@ void SimServoCanDrive::restart()
 
 void SimServoCanDrive::injectAlarm(int code)
 {
-    m_motor.injectAlarm(code);
+    if (code == 0)
+        m_motor.clearAlarm(); // the cause gone and reset, as SimBench::injectAlarm(…, 0) promises
+    else
+        m_motor.injectAlarm(code);
 }
 
 void SimServoCanDrive::advanceTo(qint64 nowUs)

@@ -103,7 +103,7 @@ public:
     // Fault injection: the drive ignores writes to this parameter (as a drive may refuse a
     // value in its present state); a host sees it when it reads the value back.
     void setWriteProtected(int index, bool on);
-    void injectAlarm(int code); // the drive disables; 0x05 goes out on the next tick
+    void injectAlarm(int code); // the drive disables; 0x05 goes out on the next tick (0: cleared)
     int alarmCode() const { return m_motor.alarmCode(); }
     void setInputs(quint32 bits) { m_inputs = bits; }
     qint32 positioningSpeed() const { return m_positioningSpeed; }

@@ -8,9 +8,11 @@
 #include "ui/panels/backup/backupdifftable.h"
 #include "ui/panels/backup/backuppanel.h"
 #include "ui/panels/backup/restorereportdialog.h"
+#include "ui/shell/languagemanager.h"
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QDir>
 #include <QFile>
 #include <QLabel>
 #include <QLoggingCategory>
@@ -145,6 +147,32 @@ private slots:
         QCOMPARE(statusOf(table, 10), QStringLiteral("same"));
         QCOMPARE(statusOf(table, 20), QStringLiteral("different"));
         report->close();
+    }
+
+    // Issue #10: the message line follows a live language switch (it is made again, not
+    // left in the language it was written in).
+    void messageFollowsALiveLanguageSwitch()
+    {
+        QTemporaryDir dir;
+        SimDriveFixture fx;
+        QVERIFY(fx.start());
+        BackupPanel panel(fx.context());
+        panel.setDriveInfo(fx.info);
+        QSignalSpy saved(&panel, &BackupPanel::backupSaved);
+        const QString path = dir.filePath(QStringLiteral("drive1.json"));
+        panel.saveBackup(path);
+        QVERIFY(saved.wait(10000));
+        const QString english = panel.message();
+        QVERIFY2(english.startsWith(QLatin1String("Saved")), qPrintable(english));
+        LanguageManager language;
+        QVERIFY(language.apply(LanguageManager::Language::Chinese));
+        QCoreApplication::sendPostedEvents();
+        const QString chinese = panel.message();
+        QVERIFY2(!chinese.contains(QLatin1String("Saved")) && chinese.contains(QDir::toNativeSeparators(path)),
+                 qPrintable(chinese));
+        QVERIFY(language.apply(LanguageManager::Language::English));
+        QCoreApplication::sendPostedEvents();
+        QCOMPARE(panel.message(), english);
     }
 
     void badFilesAreRefusedAndNothingIsSent()

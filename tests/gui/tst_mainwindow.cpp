@@ -7,22 +7,30 @@
 #include "ui/bus/bustreewidget.h"
 #include "ui/bus/connectioncontroller.h"
 #include "ui/bus/drivedirectory.h"
+#include "ui/help/helpactions.h"
+#include "ui/help/shortcutsdialog.h"
+#include "ui/help/userguidedialog.h"
+#include "ui/panels/alarms/alarmspanel.h"
+#include "ui/shell/demomenu.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/mainwindow.h"
 #include "ui/shell/recentfiles.h"
 #include "ui/shell/statusbarwidget.h"
 #include "ui/shell/stopaction.h"
 #include "ui/shell/stopreporter.h"
+#include "ui/workspace/drivepanel.h"
 #include "ui/workspace/driveworkspace.h"
 
 #include <QApplication>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
@@ -35,6 +43,15 @@ class TestMainWindow : public QObject
     Q_OBJECT
 
     QTemporaryDir m_settingsDir;
+
+    static QStringList menuActionTexts(MainWindow &w, const QString &menu)
+    {
+        QStringList out;
+        if (auto *m = w.findChild<QMenu *>(menu))
+            for (QAction *a : m->actions())
+                out << a->text();
+        return out;
+    }
 
     static QStringList menuTitles(MainWindow &w)
     {
@@ -80,7 +97,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         QVERIFY(w.busTree()->isVisible());
         QVERIFY(w.workspace()->isVisible());
-        QCOMPARE(menuTitles(w), QStringList({"&File", "&View", "&Language", "&Help"}));
+        QCOMPARE(menuTitles(w), QStringList({"&File", "&View", "&Language", "&Demo", "&Help"}));
         // The platform adds the application's name: the title does not repeat it.
         QCOMPARE(w.windowTitle(), QStringLiteral("Commissioning workbench"));
     }
@@ -208,6 +225,103 @@ private slots:
         if (modbusRunning)
             QVERIFY(modbusState.enabled);
         w.connections()->disconnectAll();
+    }
+
+    // Issue #10: Demo → Inject alarm raises an alarm on a demo drive; the drive's alarm
+    // history starts when it is found, not when its Alarms tab is first opened, and the
+    // tab says what to check for a code the alarm table does not name.
+    void demoAlarmIsInTheHistoryFromDiscovery()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        DriveDirectory *dir = w.directory();
+        auto *demoMenu = w.findChild<DemoMenu *>();
+        QVERIFY(demoMenu);
+        demoMenu->rebuild();
+        QCOMPARE(demoMenu->injectMenu()->actions().size(), 1); // "start the demo bench first"
+        QVERIFY(!demoMenu->injectMenu()->actions().first()->isEnabled());
+        QVERIFY(w.startDemo());
+        QVERIFY(waitFor(
+            [&] {
+                int n = 0;
+                for (int id : dir->connections())
+                    for (int a : dir->drives(id))
+                        n += dir->info(id, a).valid ? 1 : 0;
+                return n == 3 && !w.connections()->isBusy();
+            },
+            20000));
+        const int can = connectionOf(dir, Family::ServoCan);
+        QVERIFY(can);
+        if (w.workspace()->currentDrive().connectionId == can) // see the servo-can drive later
+            w.busTree()->selectDrive(connectionOf(dir, Family::Shuoke), 1);
+        QVERIFY(!w.workspace()->tabsFor(can, 1));
+
+        demoMenu->rebuild();
+        QAction *raise = nullptr;
+        for (QAction *a : demoMenu->injectMenu()->actions())
+            if (a->data().toString() == QLatin1String("servo-can"))
+                raise = a;
+        QVERIFY(raise);
+        QVERIFY(raise->text().contains(QLatin1String("Alarm 12")));
+        raise->trigger();
+        QVERIFY2(waitFor([&] { return dir->info(can, 1).status.alarmCode == 12; }, 5000), "no alarm arrived");
+        QTest::qWait(50); // later than the alarm by a measurable time
+        const QDateTime opened = QDateTime::currentDateTime();
+        w.busTree()->selectDrive(can, 1);
+        w.workspace()->setPreferredPanel(QStringLiteral("alarms"));
+        AlarmsPanel *alarms = nullptr;
+        for (DrivePanel *p : w.workspace()->panelsFor(can, 1))
+            if (auto *a = qobject_cast<AlarmsPanel *>(p))
+                alarms = a;
+        QVERIFY(alarms);
+        QCOMPARE(alarms->currentCode(), 12);
+        QCOMPARE(alarms->history().size(), 1);
+        QVERIFY(alarms->history().first().time < opened);
+        auto *remedy = alarms->findChild<QLabel *>(QStringLiteral("alarmRemedy"));
+        QVERIFY(remedy->isVisible());
+        QVERIFY2(remedy->text().contains(QLatin1String("knows no code 12")), qPrintable(remedy->text()));
+
+        QVERIFY(demoMenu->injectAlarm(Family::ServoCan, 0));
+        QVERIFY(waitFor([&] { return alarms->currentCode() == 0; }, 5000));
+        QCOMPARE(alarms->history().size(), 2);
+        w.connections()->disconnectAll();
+    }
+
+    // Issue #10: F1 opens a short user guide, bundled, in the UI language (also after a
+    // switch); Help → Keyboard shortcuts lists the keys.
+    void f1OpensTheUserGuideAndHelpListsTheShortcuts()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto *help = w.findChild<HelpActions *>();
+        QVERIFY(help);
+        QVERIFY(menuActionTexts(w, QStringLiteral("helpMenu")).contains(QStringLiteral("&User guide")));
+        QTest::keyClick(&w, Qt::Key_F1);
+        QTRY_VERIFY(help->guideDialog() && help->guideDialog()->isVisible());
+        QVERIFY2(help->guideDialog()->guideText().contains(QLatin1String("a short user guide")),
+                 qPrintable(help->guideDialog()->guideText().left(200)));
+        QVERIFY2(help->guideDialog()->guideText().contains(QStringLiteral("Demo → Inject alarm")),
+                 qPrintable(help->guideDialog()->guideText()));
+        QVERIFY(w.languageManager()->apply(LanguageManager::Language::Chinese));
+        QCoreApplication::sendPostedEvents();
+        QVERIFY2(help->guideDialog()->guideText().contains(QStringLiteral("简明使用指南")),
+                 qPrintable(help->guideDialog()->guideText().left(200)));
+        QVERIFY(menuActionTexts(w, QStringLiteral("helpMenu")).contains(QStringLiteral("用户指南(&U)")));
+        QVERIFY(w.languageManager()->apply(LanguageManager::Language::English));
+        QCoreApplication::sendPostedEvents();
+        QVERIFY(help->guideDialog()->guideText().contains(QLatin1String("a short user guide")));
+
+        help->shortcutsAction()->trigger();
+        QTRY_VERIFY(help->shortcutsDialog() && help->shortcutsDialog()->isVisible());
+        QTableWidget *table = help->shortcutsDialog()->table();
+        QStringList keys;
+        for (int r = 0; r < table->rowCount(); ++r)
+            keys << table->item(r, 0)->text();
+        QVERIFY2(keys.contains(QStringLiteral("Esc / F12")), qPrintable(keys.join(QLatin1Char('|'))));
+        QVERIFY(keys.contains(QStringLiteral("F1")));
+        QVERIFY(keys.contains(QStringLiteral("Ctrl+K")));
     }
 
     void chineseTranslationLoadsAndSwitchesLive()

@@ -23,6 +23,7 @@
 #include <QLabel>
 #include <QLoggingCategory>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTest>
@@ -430,6 +431,79 @@ private slots:
         QVERIFY(!axisRunning());
         QVERIFY2(result->text().contains(QLatin1String("at rest")), qPrintable(result->text()));
         QCOMPARE(p->findChild<QLabel *>(QStringLiteral("jogState"))->text(), jogBefore);
+    }
+
+    // Issue #10: a large live readout (speed, position, following error where offered) and
+    // the limit / origin switches of a drive that reports them (shuoke 0x3B), read while the
+    // tab is shown and only then.
+    void liveReadoutAndSwitchIndicators()
+    {
+        Rig rig;
+        SimBenchOptions o;
+        o.family = Family::Shuoke;
+        QString why;
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        MotionReadout *r = rig.panel->readout();
+        QVERIFY(r->isVisible());
+        QVERIFY(r->showsSwitches());
+        // The axis starts at rest on its origin, between the limits.
+        QTRY_VERIFY_WITH_TIMEOUT(r->switchActive(MotionReadout::Switch::Origin).value_or(false), 5000);
+        QCOMPARE(r->switchActive(MotionReadout::Switch::LeftLimit), std::optional<bool>(false));
+        QCOMPARE(r->switchActive(MotionReadout::Switch::RightLimit), std::optional<bool>(false));
+        QCOMPARE(r->valueText(QStringLiteral("speed")), QStringLiteral("0 pulse/s"));
+        QCOMPARE(r->valueText(QStringLiteral("position")), QStringLiteral("0 pulse"));
+        // The left limit switch closes (moved to where the axis is), the origin moves away.
+        rig.sim.call([&rig] {
+            auto *dev = static_cast<SimShuokeSerialDevice *>(rig.sim.bench()->serialBus()->device(0));
+            SimShuokeAxis::Switches sw = dev->drive().axis().switches();
+            sw.leftLimit = 10;
+            sw.origin = 5000;
+            dev->drive().axis().setSwitches(sw);
+            return true;
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(r->switchActive(MotionReadout::Switch::LeftLimit).value_or(false), 5000);
+        QCOMPARE(r->switchActive(MotionReadout::Switch::Origin), std::optional<bool>(false));
+        QVERIFY(r->findChild<QLabel *>(QStringLiteral("switch0"))->toolTip().endsWith(QLatin1String(": active")));
+        // Not read while the tab is hidden.
+        rig.panel->setActive(false);
+        const int reads = r->readCount();
+        QSignalSpy updated(r, &MotionReadout::updated);
+        updated.wait(3 * MotionReadout::ReadGapMs); // at most the read under way arrives
+        QVERIFY(r->readCount() <= reads + 1);
+        QVERIFY(!updated.wait(3 * MotionReadout::ReadGapMs));
+    }
+
+    // Issue #10 item 9: an old error does not stay on screen as if it were the present
+    // state: once the drive answers another operation, it reads "Earlier, at …", greyed.
+    void anOldProblemAgesWhenTheDriveAnswersAgain()
+    {
+        Rig rig;
+        SimBenchOptions o;
+        o.family = Family::Shuoke;
+        QString why;
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        MotionPanel *p = rig.panel;
+        auto *moveResult = p->findChild<QLabel *>(QStringLiteral("moveResult"));
+        auto *positionResult = p->findChild<QLabel *>(QStringLiteral("positionResult"));
+        QVERIFY(moveResult && positionResult);
+        p->readout()->setPolling(false); // only the operations below on the wire
+        rig.sim.call([&rig] {
+            rig.sim.bench()->setSilent(true);
+            return true;
+        });
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("moveButton")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(moveResult->text().contains(QLatin1String("failed")), 10000);
+        const QString failure = moveResult->text();
+        QVERIFY(moveResult->styleSheet().contains(QLatin1String("#c62828")));
+        rig.sim.call([&rig] {
+            rig.sim.bench()->setSilent(false);
+            return true;
+        });
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("setPositionButton")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(positionResult->text().contains(QLatin1String("done")), 5000);
+        QVERIFY2(moveResult->text().startsWith(QLatin1String("Earlier, at ")), qPrintable(moveResult->text()));
+        QVERIFY(moveResult->text().endsWith(failure));
+        QVERIFY(!moveResult->styleSheet().contains(QLatin1String("#c62828")));
     }
 
     void servoModbusShowsEveryMotionDisabledWithTheReason()

@@ -2,15 +2,20 @@
 // (the simulated drive's value changes, the row is verified), refused values (nothing is
 // sent), undo/redo, search; the table model alone for write-only parameters (shuoke
 // dictionary) and names in the UI language.
+#include "core/drive/drive.h"
+#include "core/drive/drivereply.h"
 #include "core/params/parameterdictionary.h"
 #include "tests/gui/simdrivefixture.h"
 #include "ui/panels/backup/backuppanel.h"
 #include "ui/panels/ee/eepanel.h"
+#include "ui/panels/parameters/parametercontextmenu.h"
 #include "ui/panels/parameters/parameterspanel.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/shell/languagemanager.h"
 
 #include <QApplication>
+#include <QClipboard>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLoggingCategory>
@@ -18,6 +23,7 @@
 #include <QSignalSpy>
 #include <QSortFilterProxyModel>
 #include <QTableView>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
@@ -130,6 +136,116 @@ private slots:
         QVERIFY(panel.model()->changedIndices().isEmpty());
         QVERIFY(!panel.findChild<QPushButton *>(QStringLiteral("writeChangedButton"))->isEnabled());
         QVERIFY2(panel.message().contains(QLatin1String("1 written and verified")), qPrintable(panel.message()));
+    }
+
+    // Issue #10: the table's context menu — copy, reset to default where the dictionary knows
+    // one (a pending, undoable edit), write this row.
+    void contextMenuCopiesResetsAndWritesARow()
+    {
+        SimDriveFixture fx;
+        QVERIFY(fx.start([](SimServoModbusDrive *d) { d->setParameter(10, 10); }));
+        ParametersPanel panel(fx.context());
+        panel.setDriveInfo(fx.info);
+        // The bundled servo-modbus dictionary gives no defaults: one that does.
+        auto dictionary = std::make_shared<ParameterDictionary>();
+        const Error loadError = dictionary->loadFromJson(R"({"format": "drivedesk-dictionary", "formatVersion": 1,
+            "family": "servo-modbus", "valueType": "int16", "parameters": [
+            {"index": 10, "key": "PA10", "name": {"en": "Speed gain", "zh": "速度增益"}, "description": {"en": "-", "zh": "-"}, "unit": "Hz",
+             "min": 0, "max": 3000, "default": 40, "access": "rw", "register": 110},
+            {"index": 11, "key": "PA11", "name": {"en": "Eleven", "zh": "十一"}, "description": {"en": "-", "zh": "-"}, "unit": "",
+             "min": -100, "max": 100, "access": "rw", "register": 111}]})",
+                                                         QStringLiteral("test"));
+        QVERIFY2(!loadError, qPrintable(loadError.message));
+        panel.model()->setDictionary(dictionary);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QVERIFY(readAll(panel));
+
+        std::unique_ptr<ParameterContextMenu> menu(panel.contextMenuFor(10));
+        QVERIFY(!menu->writeAction()->isEnabled()); // nothing edited
+        menu->copyAction()->trigger();
+        QCOMPARE(QApplication::clipboard()->text(), QStringLiteral("PA10\tSpeed gain\t10\tHz"));
+        QVERIFY(menu->resetAction()->isEnabled());
+        QVERIFY(menu->resetAction()->text().contains(QLatin1String("40")));
+        menu->resetAction()->trigger();
+        QCOMPARE(panel.model()->editedValue(10), std::optional<qint64>(40));
+        QCOMPARE(fx.drive()->parameter(10), quint16(10)); // a pending edit, nothing sent
+        QCOMPARE(panel.undoStack()->count(), 1);
+
+        menu.reset(panel.contextMenuFor(11));
+        QVERIFY(!menu->resetAction()->isEnabled()); // the dictionary gives no default
+        menu.reset(panel.contextMenuFor(10));
+        QVERIFY(menu->writeAction()->isEnabled());
+        QSignalSpy done(&panel, &ParametersPanel::operationFinished);
+        menu->writeAction()->trigger();
+        QVERIFY(done.wait(10000));
+        QVERIFY(done.last().at(0).toBool());
+        QCOMPARE(fx.drive()->parameter(10), quint16(40));
+        QCOMPARE(panel.model()->writeState(10), ParameterTableModel::WriteState::Verified);
+    }
+
+    // Issue #10: generic names say where the drive's own dictionary goes; loading one is
+    // validated whole (a bad file changes nothing and says why) and relabels the table.
+    void loadsTheDrivesDictionary()
+    {
+        QTemporaryDir dir;
+        SimDriveFixture fx;
+        QVERIFY(fx.start());
+        ParametersPanel panel(fx.context());
+        panel.setDriveInfo(fx.info);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        auto *hint = panel.findChild<QLabel *>(QStringLiteral("genericNamesHint"));
+        QVERIFY(panel.namesAreGeneric());
+        QVERIFY(hint->isVisible());
+        QVERIFY(hint->text().contains(QLatin1String("Load dictionary")));
+        const QString before = cell(panel, 10, ParameterTableModel::Name);
+        QSignalSpy used(&panel, &DrivePanel::fileUsed);
+
+        const auto write = [&](const QString &name, const QByteArray &json) {
+            const QString path = dir.filePath(name);
+            QFile f(path);
+            return f.open(QIODevice::WriteOnly) && f.write(json) == json.size() ? path : QString();
+        };
+        const QByteArray good = R"({"format": "drivedesk-dictionary", "formatVersion": 1,
+            "family": "servo-modbus", "valueType": "int16", "parameters": [
+            {"index": 10, "key": "PA10", "name": {"en": "Speed gain", "zh": "速度增益"},
+             "description": {"en": "-", "zh": "-"}, "unit": "Hz", "min": 0, "max": 3000, "access": "rw",
+             "register": 110}]})";
+        QByteArray broken = good;
+        broken.replace("\"max\": 3000", "\"max\": \"lots\"");
+        QByteArray otherFamily = good;
+        otherFamily.replace("\"servo-modbus\"", "\"servo-can\"");
+        for (const QString &bad : {write(QStringLiteral("broken.json"), broken),
+                                   write(QStringLiteral("can.json"), otherFamily), dir.filePath("missing.json")}) {
+            QVERIFY(panel.loadDictionary(bad).isError());
+            QVERIFY2(panel.message().startsWith(QLatin1String("Dictionary not loaded:")), qPrintable(panel.message()));
+            QCOMPARE(cell(panel, 10, ParameterTableModel::Name), before);
+        }
+        QCOMPARE(used.count(), 0);
+
+        const QString path = write(QStringLiteral("mine.json"), good);
+        QVERIFY(!panel.loadDictionary(path).isError());
+        QCOMPARE(cell(panel, 10, ParameterTableModel::Name), QStringLiteral("Speed gain"));
+        QCOMPARE(panel.model()->rowCount(), 1);
+        QVERIFY(!panel.namesAreGeneric());
+        QVERIFY(!hint->isVisible());
+        QCOMPARE(used.count(), 1);
+        // The drive validates with it too: a value above its maximum is refused there.
+        auto max = std::make_shared<qint64>(0);
+        bool asked = false;
+        fx.hub.run(
+            fx.connectionId, fx.address,
+            [max](Drive &d) {
+                const ParameterInfo *p = d.parameterDictionary().byIndex(10);
+                *max = p ? p->max : 0;
+                auto *reply = new DriveReply(&d);
+                reply->finish();
+                return reply;
+            },
+            [&asked](const DriveResult &) { asked = true; });
+        QVERIFY(QTest::qWaitFor([&] { return asked; }, 5000));
+        QCOMPARE(*max, qint64(3000));
     }
 
     void readQueuedBehindAScanIsNotCancelled()

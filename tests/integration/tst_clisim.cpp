@@ -16,6 +16,7 @@ private slots:
     void scanFindsSimulatedDrives();
     void jogRunsAndStops();
     void monitorTextColumnsLineUp();
+    void monitorDefaultsToTheLinksRate();
     void backupOfASimulatedDrive();
     void simLeavesNoRoomForAPort();
     void stateCarriesOverBetweenRuns();
@@ -85,6 +86,20 @@ void TestCliSim::monitorTextColumnsLineUp()
     QCOMPARE(headerEnds.size(), 4);
     for (int k = 1; k < lines.size(); ++k)
         QCOMPARE(columnEnds(lines.at(k)), headerEnds);
+}
+
+void TestCliSim::monitorDefaultsToTheLinksRate()
+{
+    // Without --rate: as fast as the link carries the channels (the GUI trend's default),
+    // not a fixed 10 Hz; the summary says which rate was used.
+    CliRun r = runCli({"--sim", "--family", "servo-can", "--json", "monitor", "speed", "--duration", "0.3"});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+    const QJsonObject summary = r.jsonLines().last();
+    QVERIFY2(summary.value("rateHz").toDouble() > 10.0, qPrintable(r.text()));
+    QVERIFY(summary.value("rateHz").toDouble() <= 1000.0);
+    r = runCli({"--sim", "--family", "servo-can", "--json", "monitor", "speed", "--duration", "0.3", "--rate", "7"});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+    QCOMPARE(r.jsonLines().last().value("rateHz").toDouble(), 7.0);
 }
 
 void TestCliSim::backupOfASimulatedDrive()

@@ -29,6 +29,12 @@ void LiveText::clear(QLabel *label)
     delete label->findChild<LiveText *>(ObjectName, Qt::FindDirectChildrenOnly);
 }
 
+std::function<QString()> LiveText::maker(const QLabel *label)
+{
+    const auto *live = label->findChild<LiveText *>(ObjectName, Qt::FindDirectChildrenOnly);
+    return live ? live->m_make : std::function<QString()>();
+}
+
 bool LiveText::event(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange && m_make)

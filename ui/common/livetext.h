@@ -19,6 +19,8 @@ public:
     static void set(QLabel *label, std::function<QString()> make);
     // Forgets the label's maker (call before setting a plain text).
     static void clear(QLabel *label);
+    // The label's maker (empty when its text is plain).
+    static std::function<QString()> maker(const QLabel *label);
 
 protected:
     bool event(QEvent *event) override;

@@ -25,6 +25,7 @@
 #include <QPushButton>
 #include <QSaveFile>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QVBoxLayout>
@@ -65,6 +66,8 @@ void RecordDialog::buildUi()
     m_drivesLabel = new QLabel(this);
     m_drives = new QListWidget(this);
     m_drives->setObjectName(QStringLiteral("recordDrives"));
+    m_drives->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_drives->setTextElideMode(Qt::ElideMiddle);
     m_runsLabel = new QLabel(this);
     m_runsLabel->setWordWrap(true);
     m_runs = new QListWidget(this);
@@ -190,9 +193,20 @@ void RecordDialog::retranslate()
                           .arg(familyTraits(info.identity.family).displayName())
                           .arg(address)
                           .arg(m_directory->connectionSettings(id).linkName()));
+        item->setToolTip(item->text());
     }
+    fitDriveList();
     if (m_drives->count() == 0)
         m_message->setText(tr("No drive is connected: connect to the drives first (File → Connect…)."));
+}
+
+void RecordDialog::fitDriveList()
+{
+    // As wide as its longest entry (no sideways scrolling), up to a third of a laptop's
+    // screen; longer entries are elided in the middle (full text in the tool tip).
+    const int need = m_drives->sizeHintForColumn(0) + 2 * m_drives->frameWidth()
+        + m_drives->verticalScrollBar()->sizeHint().width() + 4;
+    m_drives->setMinimumWidth(qBound(200, need, 440));
 }
 
 void RecordDialog::changeEvent(QEvent *event)

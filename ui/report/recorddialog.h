@@ -58,6 +58,7 @@ private:
     void buildUi();
     void retranslate();
     void fillDrives();
+    void fitDriveList();
     void loadSettings();
     void saveSettings() const;
     void start(Pending what);

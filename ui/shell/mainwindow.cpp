@@ -10,11 +10,14 @@
 #include "ui/bus/statuspoller.h"
 #include "ui/fleet/fleetactions.h"
 #include "ui/framemonitor/framemonitordock.h"
+#include "ui/help/helpactions.h"
 #include "ui/linkhealth/linkhealthdock.h"
 #include "ui/report/recordaction.h"
 #include "ui/shell/aboutdialog.h"
 #include "ui/shell/demolauncher.h"
+#include "ui/shell/demomenu.h"
 #include "ui/shell/languagemanager.h"
+#include "ui/shell/loaddictionaryaction.h"
 #include "ui/shell/recentfiles.h"
 #include "ui/shell/statusbarwidget.h"
 #include "ui/shell/stopaction.h"
@@ -178,7 +181,8 @@ void MainWindow::createMenus()
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_demoAction);
     m_fileMenu->addSeparator();
-    m_fileMenu->addAction(new RecordAction(this)); // File → Commissioning record… (ui/report)
+    m_fileMenu->addAction(new RecordAction(this));         // File → Commissioning record… (ui/report)
+    m_fileMenu->addAction(new LoadDictionaryAction(this)); // for the selected drive
     m_fileMenu->addSeparator();
     m_recentMenu = m_fileMenu->addMenu(QString());
     m_recent->setMenu(m_recentMenu);
@@ -197,10 +201,12 @@ void MainWindow::createMenus()
     m_languageMenu->addAction(m_langEnglish);
     m_languageMenu->addAction(m_langChinese);
 
+    menuBar()->addMenu(new DemoMenu(m_demo, this)); // Demo → Inject alarm
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName(QStringLiteral("helpMenu"));
     m_helpMenu->addAction(m_aboutAction);
     m_helpMenu->addAction(m_aboutQtAction);
+    new HelpActions(this, m_helpMenu); // User guide (F1), Keyboard shortcuts
 }
 
 void MainWindow::createToolBar()

@@ -5,6 +5,7 @@
 
 namespace dd {
 
+class AlarmLog;
 class DriveHub;
 class DriveParameters;
 
@@ -20,6 +21,9 @@ struct DriveContext
     // The drive's parameter values, shared by all its panels (made by the workspace; a
     // panel made without one gets its own).
     DriveParameters *parameters = nullptr;
+    // The drive's alarm history since it was found (kept by the workspace; a panel made
+    // without one gets its own).
+    AlarmLog *alarms = nullptr;
 
     bool isValid() const { return hub && connectionId > 0; }
     bool can(Capability c) const { return capabilities.testFlag(c); }

@@ -3,14 +3,22 @@
 #include "core/drive/driveresult.h"
 #include "core/protocol/familytraits.h"
 #include "ui/common/livetext.h"
+#include "ui/workspace/alarmlog.h"
 #include "ui/workspace/driveparameters.h"
 
 #include <QEvent>
 #include <QLabel>
+#include <QLocale>
 #include <QPointer>
 #include <QProgressBar>
+#include <QTime>
 
 namespace dd {
+
+namespace {
+const char *const ProblemAtProperty = "ddProblemAt";
+const char *const ProblemTextProperty = "ddProblemText";
+} // namespace
 
 DrivePanel::DrivePanel(const DriveContext &context, QWidget *parent)
     : QWidget(parent)
@@ -23,6 +31,8 @@ DrivePanel::DrivePanel(const DriveContext &context, QWidget *parent)
     m_info.capabilities = context.capabilities;
     if (!m_context.parameters)
         m_context.parameters = new DriveParameters(familyTraits(context.family).eeOperations, this);
+    if (!m_context.alarms)
+        m_context.alarms = new AlarmLog(this);
 }
 
 void DrivePanel::setActive(bool active)
@@ -65,7 +75,31 @@ bool DrivePanel::reportResult(const DriveResult &result)
 {
     if (!result.ok())
         reportError(result.error);
+    else
+        ageProblems();
     return result.ok();
+}
+
+void DrivePanel::ageProblems()
+{
+    for (QLabel *label : findChildren<QLabel *>()) {
+        const QVariant at = label->property(ProblemAtProperty);
+        if (!at.isValid())
+            continue;
+        std::function<QString()> make = LiveText::maker(label);
+        const QString shown = label->property(ProblemTextProperty).toString();
+        if (!make)
+            make = [shown] { return shown; };
+        if (label->text() != make()) // replaced by other means since
+            continue;
+        const QTime time = at.toTime();
+        showMessage(
+            label,
+            [make, time] {
+                return tr("Earlier, at %1: %2").arg(QLocale().toString(time, QStringLiteral("HH:mm:ss")), make());
+            },
+            MessageKind::EarlierProblem);
+    }
 }
 
 void DrivePanel::reportError(const Error &error)
@@ -93,10 +127,14 @@ void DrivePanel::showMessage(QLabel *label, const QString &text, MessageKind kin
 {
     LiveText::clear(label);
     label->setText(text);
+    // A problem line remembers when it came (ageProblems()).
+    label->setProperty(ProblemAtProperty, kind == MessageKind::Problem ? QVariant(QTime::currentTime()) : QVariant());
+    label->setProperty(ProblemTextProperty, kind == MessageKind::Problem ? QVariant(text) : QVariant());
     switch (kind) {
     case MessageKind::Info: label->setStyleSheet(QString()); break;
     case MessageKind::Success: label->setStyleSheet(QStringLiteral("color: #2e7d32;")); break;
     case MessageKind::Problem: label->setStyleSheet(QStringLiteral("color: #c62828;")); break;
+    case MessageKind::EarlierProblem: label->setStyleSheet(QStringLiteral("color: #757575;")); break;
     }
 }
 

@@ -46,6 +46,8 @@ public:
     // The drive's parameter values, shared with its other panels: report reads and writes
     // here, follow its signals (never null).
     DriveParameters *parameters() const { return m_context.parameters; }
+    // The drive's alarm history since it was found (never null).
+    AlarmLog *alarmLog() const { return m_context.alarms; }
     const DriveInfo &driveInfo() const { return m_info; }
     bool isActive() const { return m_active; }
 
@@ -75,12 +77,17 @@ protected:
     virtual void retranslate() { }
 
     void changeEvent(QEvent *event) override;
-    // Emits errorOccurred() when `result` failed; returns result.ok().
+    // Emits errorOccurred() when `result` failed; returns result.ok(). A success ages the
+    // panel's problem lines (ageProblems()).
     bool reportResult(const DriveResult &result);
+    // The drive has answered since: every problem line of this panel still showing is
+    // marked as earlier ("Earlier, at 14:03:12: …", greyed), so an old error does not read
+    // as the drive's present state.
+    void ageProblems();
     void reportError(const Error &error);
 
     // Parts several panels build alike.
-    enum class MessageKind { Info, Success, Problem };
+    enum class MessageKind { Info, Success, Problem, EarlierProblem };
     // A panel's message line: word-wrapped, selectable text.
     static QLabel *createMessageLabel(QWidget *parent, const QString &objectName);
     // Sets a message line's text in the colour of its kind (Info: the palette's).

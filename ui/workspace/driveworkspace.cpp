@@ -2,6 +2,7 @@
 
 #include "core/protocol/familytraits.h"
 #include "ui/bus/drivedirectory.h"
+#include "ui/workspace/alarmlog.h"
 #include "ui/workspace/drivepanel.h"
 #include "ui/workspace/drivepanels.h"
 #include "ui/workspace/driveparameters.h"
@@ -35,11 +36,19 @@ DriveWorkspace::DriveWorkspace(DriveDirectory *directory, QWidget *parent)
 
     connect(directory, &DriveDirectory::connectionRemoved, this, &DriveWorkspace::removeConnection);
     connect(directory, &DriveDirectory::driveChanged, this, &DriveWorkspace::onDriveChanged);
+    // Alarm history from discovery on, whether or not the drive's tabs were ever opened.
+    connect(directory, &DriveDirectory::driveAdded, this, [this](int id, int address) {
+        const DriveStatus s = m_directory->info(id, address).status;
+        AlarmLog *log = alarmLog(id, address);
+        if (s.updatedMs || s.alarmCode)
+            log->record(s.alarmCode);
+    });
     connect(directory, &DriveDirectory::statusChanged, this, [this](int id, int address, const DriveStatus &s) {
         for (DrivePanel *p : panelsFor(id, address))
             p->setStatus(s);
     });
     connect(directory, &DriveDirectory::alarmChanged, this, [this](int id, int address, int code) {
+        alarmLog(id, address)->record(code);
         for (DrivePanel *p : panelsFor(id, address))
             p->setAlarm(code);
     });
@@ -136,6 +145,7 @@ QTabWidget *DriveWorkspace::createTabs(int id, int address)
     auto *parameters = new DriveParameters(familyTraits(ctx.family).eeOperations);
     parameters->setObjectName(QStringLiteral("driveParameters"));
     ctx.parameters = parameters;
+    ctx.alarms = alarmLog(id, address);
 
     auto *tabs = new QTabWidget(this);
     tabs->setDocumentMode(true);
@@ -164,6 +174,14 @@ QTabWidget *DriveWorkspace::createTabs(int id, int address)
     return tabs;
 }
 
+AlarmLog *DriveWorkspace::alarmLog(int id, int address)
+{
+    AlarmLog *&log = m_alarmLogs[Key(id, address)];
+    if (!log)
+        log = new AlarmLog(this);
+    return log;
+}
+
 void DriveWorkspace::removeConnection(int id)
 {
     if (m_current.first == id)
@@ -173,6 +191,15 @@ void DriveWorkspace::removeConnection(int id)
             removeWidget(it.value());
             delete it.value();
             it = m_tabs.erase(it);
+        } else {
+            ++it;
+        }
+    }
+    // After the panels that used them.
+    for (auto it = m_alarmLogs.begin(); it != m_alarmLogs.end();) {
+        if (it.key().first == id) {
+            delete it.value();
+            it = m_alarmLogs.erase(it);
         } else {
             ++it;
         }

@@ -12,6 +12,7 @@ class QTabWidget;
 
 namespace dd {
 
+class AlarmLog;
 class DriveDirectory;
 class DrivePanel;
 class DriveParameters;
@@ -33,6 +34,8 @@ public:
     QList<DrivePanel *> panelsFor(int id, int address) const;
     // The parameter values every panel of the drive shares.
     DriveParameters *parametersFor(int id, int address) const;
+    // The drive's alarm history, recorded from the moment it was found (null: no such drive).
+    AlarmLog *alarmLogFor(int id, int address) const { return m_alarmLogs.value(Key(id, address)); }
     // The tab to show when a drive is shown (a panel id: "overview", "trend", ...).
     void setPreferredPanel(const QString &panelId);
     QString preferredPanel() const { return m_currentPanelId; }
@@ -51,6 +54,7 @@ private:
     using Key = QPair<int, int>;
 
     QTabWidget *createTabs(int id, int address);
+    AlarmLog *alarmLog(int id, int address); // made when missing
     void removeConnection(int id);
     void onDriveChanged(int id, int address);
     void updateActive();
@@ -59,6 +63,7 @@ private:
     DriveDirectory *m_directory = nullptr;
     QLabel *m_hint = nullptr;
     QMap<Key, QTabWidget *> m_tabs;
+    QMap<Key, AlarmLog *> m_alarmLogs;
     Key m_current{0, 0};
     QString m_currentPanelId; // the tab to keep when switching drives
 };

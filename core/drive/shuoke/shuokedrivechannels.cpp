@@ -107,8 +107,11 @@ void ShuokeDrive::fillSamples(DriveReply *reply, const QStringList &ids, const Q
         if (c->command == CmdQueryStatus) {
             if (const auto st = decodeMotionStatus(data.value(c->command)))
                 reply->setSample(id,
-                                 (st->running ? 1 : 0) | (st->leftLimit ? 2 : 0) | (st->origin ? 4 : 0)
-                                     | (st->rightLimit ? 8 : 0) | (st->enableInput ? 16 : 0));
+                                 (st->running ? StatusChannelBits::Running : 0)
+                                     | (st->leftLimit ? StatusChannelBits::LeftLimit : 0)
+                                     | (st->origin ? StatusChannelBits::Origin : 0)
+                                     | (st->rightLimit ? StatusChannelBits::RightLimit : 0)
+                                     | (st->enableInput ? StatusChannelBits::EnableInput : 0));
         } else if (c->command == CmdReadInputs || c->command == CmdReadOtherInputs) {
             if (const auto bits = decodeInputBits(data.value(c->command)))
                 reply->setSample(id, *bits);

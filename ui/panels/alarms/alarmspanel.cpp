@@ -29,6 +29,10 @@ AlarmsPanel::AlarmsPanel(const DriveContext &context, QWidget *parent)
 
     buildCurrentBox();
     buildHistoryBox();
+    connect(alarmLog(), &AlarmLog::changed, this, [this] {
+        showCurrent();
+        showHistory();
+    });
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_currentBox);
     layout->addWidget(m_historyBox, 1);
@@ -91,10 +95,7 @@ void AlarmsPanel::buildHistoryBox()
     m_forget = new QPushButton(m_historyBox);
     m_forget->setObjectName(QStringLiteral("forgetAlarmsButton"));
     connect(m_export, &QPushButton::clicked, this, &AlarmsPanel::exportWithDialog);
-    connect(m_forget, &QPushButton::clicked, this, [this] {
-        m_history.clear();
-        showHistory();
-    });
+    connect(m_forget, &QPushButton::clicked, alarmLog(), &AlarmLog::clearHistory);
     auto *historyButtons = new QHBoxLayout;
     historyButtons->addStretch(1);
     historyButtons->addWidget(m_forget);
@@ -156,7 +157,7 @@ void AlarmsPanel::clearAlarm()
 Error AlarmsPanel::exportHistory(const QString &path) const
 {
     QByteArray bytes = "time,code,alarm\n";
-    for (const HistoryEntry &e : m_history) {
+    for (const HistoryEntry &e : history()) {
         QDateTime t = e.time;
         t = t.toOffsetFromUtc(t.offsetFromUtc());
         bytes += t.toString(Qt::ISODateWithMs).toLatin1() + ',' + QByteArray::number(e.code) + ','
@@ -203,7 +204,7 @@ void AlarmsPanel::driveInfoChanged(const DriveInfo &info)
     updateCapabilities();
     // Only the first code comes from here: the snapshot's status may be older than the
     // alarm changes that arrived since (they come through alarmChanged()).
-    if (m_code < 0 && (info.status.updatedMs || info.status.alarmCode))
+    if (currentCode() < 0 && (info.status.updatedMs || info.status.alarmCode))
         onCode(info.status.alarmCode);
     if (isActive() && !m_readOnce)
         readAlarm();
@@ -216,39 +217,39 @@ void AlarmsPanel::alarmChanged(int code)
 
 void AlarmsPanel::onCode(int code)
 {
-    if (code == m_code)
-        return;
-    // The first code known: a history entry only if there is an alarm.
-    if (m_code >= 0 || code != 0)
-        m_history.append({QDateTime::currentDateTime(), code});
-    m_code = code;
-    showCurrent();
-    showHistory();
+    alarmLog()->record(code); // shown when it changes
 }
 
 void AlarmsPanel::showCurrent()
 {
-    if (m_code < 0) {
+    const int code = currentCode();
+    if (code < 0) {
         m_codeLabel->setText(QStringLiteral("—"));
         m_codeLabel->setStyleSheet(QString());
         m_textLabel->setText(tr("Not read yet."));
         m_remedyLabel->hide();
         return;
     }
-    m_codeLabel->setText(m_code ? tr("Alarm %1").arg(m_code) : tr("No alarm"));
-    m_codeLabel->setStyleSheet(m_code ? QStringLiteral("color: #c62828;") : QStringLiteral("color: #2e7d32;"));
-    m_textLabel->setText(m_code ? alarmText(m_code) : tr("The drive reports no alarm."));
-    const QString remedy = m_code && m_dictionary.isLoaded() ? m_dictionary.remedy(m_code, QLocale()) : QString();
+    m_codeLabel->setText(code ? tr("Alarm %1").arg(code) : tr("No alarm"));
+    m_codeLabel->setStyleSheet(code ? QStringLiteral("color: #c62828;") : QStringLiteral("color: #2e7d32;"));
+    m_textLabel->setText(code ? alarmText(code) : tr("The drive reports no alarm."));
+    QString remedy = code && m_dictionary.isLoaded() ? m_dictionary.remedy(code, QLocale()) : QString();
+    if (code && remedy.isEmpty() && !(m_dictionary.isLoaded() && m_dictionary.contains(code)))
+        remedy = tr("the alarm table knows no code %1: see the drive's manual. To name it here, put your "
+                    "own table at %2 (format: docs/dictionaries.md).")
+                     .arg(code)
+                     .arg(QDir::toNativeSeparators(AlarmDictionary::userFilePath(context().family)));
     m_remedyLabel->setText(tr("What to check: %1").arg(remedy));
     m_remedyLabel->setVisible(!remedy.isEmpty());
 }
 
 void AlarmsPanel::showHistory()
 {
-    m_table->setRowCount(int(m_history.size()));
+    const QList<HistoryEntry> &entries = history();
+    m_table->setRowCount(int(entries.size()));
     const QLocale locale;
-    for (int i = 0; i < m_history.size(); ++i) {
-        const HistoryEntry &e = m_history.at(m_history.size() - 1 - i); // newest first
+    for (int i = 0; i < entries.size(); ++i) {
+        const HistoryEntry &e = entries.at(entries.size() - 1 - i); // newest first
         auto *time = new QTableWidgetItem(locale.toString(e.time, QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")));
         auto *code = new QTableWidgetItem(QString::number(e.code));
         code->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -259,8 +260,8 @@ void AlarmsPanel::showHistory()
         m_table->setItem(i, 1, code);
         m_table->setItem(i, 2, text);
     }
-    m_export->setEnabled(!m_history.isEmpty());
-    m_forget->setEnabled(!m_history.isEmpty());
+    m_export->setEnabled(!entries.isEmpty());
+    m_forget->setEnabled(!entries.isEmpty());
 }
 
 void AlarmsPanel::updateCapabilities()

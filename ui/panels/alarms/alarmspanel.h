@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/params/alarmdictionary.h"
+#include "ui/workspace/alarmlog.h"
 #include "ui/workspace/drivepanel.h"
 
 #include <QDateTime>
@@ -14,26 +15,25 @@ namespace dd {
 
 // The Alarms tab: the current alarm (code and text from the family's alarm dictionary, in
 // the UI language; the user's own table when there is one), Read and Clear, and a history
-// of every change with its time since the tab was opened (newest first), exportable as CSV.
+// of every change with its time since the drive was found (newest first; AlarmLog, kept
+// by the workspace), exportable as CSV. A code the alarm table does not name says where
+// to look and where the user's own table goes.
 // Clear is offered only where the family has it (servo-modbus: the drive's panel or a power
 // cycle clears an alarm), otherwise shown disabled with the reason.
 class AlarmsPanel : public DrivePanel
 {
     Q_OBJECT
 public:
-    struct HistoryEntry
-    {
-        QDateTime time;
-        int code = 0;
-    };
+    using HistoryEntry = AlarmLog::Entry;
 
     explicit AlarmsPanel(const DriveContext &context, QWidget *parent = nullptr);
 
     QString panelId() const override { return QStringLiteral("alarms"); }
     QString title() const override;
 
-    int currentCode() const { return m_code; }
-    const QList<HistoryEntry> &history() const { return m_history; }
+    int currentCode() const { return alarmLog()->currentCode(); }
+    // Since the drive was found (AlarmLog), oldest first.
+    const QList<HistoryEntry> &history() const { return alarmLog()->entries(); }
     // The text of `code` in the current language ("No alarm" for 0).
     QString alarmText(int code) const;
 
@@ -58,8 +58,6 @@ private:
     void exportWithDialog();
 
     AlarmDictionary m_dictionary;
-    int m_code = -1;               // -1: not known yet
-    QList<HistoryEntry> m_history; // oldest first
     bool m_readOnce = false;
 
     QGroupBox *m_currentBox = nullptr;

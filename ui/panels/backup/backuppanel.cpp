@@ -165,7 +165,7 @@ void BackupPanel::saveBackup(const QString &path)
     if (m_busy || !context().isValid())
         return;
     auto out = std::make_shared<TransferOutcome>();
-    setBusy(true, tr("Reading the drive's parameters…"));
+    setBusy(true, [] { return tr("Reading the drive's parameters…"); });
     QPointer<BackupPanel> self(this);
     run(TransferOperation::backup(out), [self, out, path](const DriveResult &r) {
         if (self)
@@ -177,19 +177,20 @@ void BackupPanel::onBackedUp(const DriveResult &result, const TransferOutcome &o
 {
     setBusy(false);
     if (!result.ok())
-        return fail(result.error, tr("No backup was saved:"));
+        return fail(result.error, [] { return tr("No backup was saved:"); });
     BackupFile backup = outcome.backup;
     if (m_saveChangedOnly->isChecked()) { // as backup --changed-only (docs/backup-format.md)
         backup.setValues(DefaultValues::changedOnly(*outcome.dictionary, backup.values()));
         backup.setChangedOnly(true);
     }
     if (Error e = backup.save(path, *outcome.dictionary))
-        return fail(e, tr("No backup was saved:"));
+        return fail(e, [] { return tr("No backup was saved:"); });
     // For the commissioning record (core/report/verificationjournal.h): best effort.
     VerificationJournal().recordBackup(context().family, context().address,
                                        {QStringLiteral("backup"), QFileInfo(path).absoluteFilePath(),
                                         BackupFile::checksum(backup.values()), QDateTime::currentDateTimeUtc()});
-    setMessage(tr("Saved %n parameter(s) to %1.", nullptr, backup.values().size()).arg(QDir::toNativeSeparators(path)),
+    setMessage([n = int(backup.values().size()),
+                path] { return tr("Saved %n parameter(s) to %1.", nullptr, n).arg(QDir::toNativeSeparators(path)); },
                MessageKind::Success);
     emit fileUsed(path);
     emit backupSaved(path);
@@ -218,8 +219,11 @@ bool BackupPanel::openFile(const QString &path)
 void BackupPanel::loadFile(const QString &path)
 {
     if (m_busy) {
-        setMessage(tr("Wait until the drive has answered, then open %1 again.").arg(QDir::toNativeSeparators(path)),
-                   MessageKind::Info);
+        setMessage(
+            [path] {
+                return tr("Wait until the drive has answered, then open %1 again.").arg(QDir::toNativeSeparators(path));
+            },
+            MessageKind::Info);
         return;
     }
     BackupFile file;
@@ -234,7 +238,7 @@ void BackupPanel::loadFile(const QString &path)
         m_loadError = e.message;
         m_diffTable->clearDiff();
         showFileInfo();
-        fail(e, tr("This file cannot be used, nothing was sent to the drive:"));
+        fail(e, [] { return tr("This file cannot be used, nothing was sent to the drive:"); });
         return;
     }
     m_file = file;
@@ -249,7 +253,7 @@ void BackupPanel::compare()
     if (m_busy || !context().isValid() || m_file.values().isEmpty())
         return;
     auto out = std::make_shared<TransferOutcome>();
-    setBusy(true, tr("Reading the drive to compare it with the file…"));
+    setBusy(true, [] { return tr("Reading the drive to compare it with the file…"); });
     QPointer<BackupPanel> self(this);
     run(TransferOperation::compare(m_file, out), [self, out](const DriveResult &r) {
         if (self)
@@ -262,19 +266,24 @@ void BackupPanel::onCompared(const DriveResult &result, const TransferOutcome &o
     setBusy(false);
     if (!result.ok()) {
         m_diffTable->clearDiff();
-        return fail(result.error, tr("The drive could not be compared with the file:"));
+        return fail(result.error, [] { return tr("The drive could not be compared with the file:"); });
     }
     m_dictionary = outcome.dictionary;
     m_diffTable->setDiff(outcome.diff, *m_dictionary);
     const ParameterDiff &d = outcome.diff;
-    QStringList parts;
-    parts << tr("%n different", nullptr, d.count(DiffStatus::Different));
-    if (const int n = d.count(DiffStatus::NotReadable))
-        parts << tr("%n write-only (cannot be compared)", nullptr, n);
-    if (const int n = d.count(DiffStatus::OnlyInFile))
-        parts << tr("%n not read from the drive", nullptr, n);
-    parts << tr("%n the same", nullptr, d.count(DiffStatus::Same));
-    setMessage(tr("Compared with the drive: %1.").arg(parts.join(QLatin1String(", "))), MessageKind::Info);
+    setMessage(
+        [different = d.count(DiffStatus::Different), writeOnly = d.count(DiffStatus::NotReadable),
+         notRead = d.count(DiffStatus::OnlyInFile), same = d.count(DiffStatus::Same)] {
+            QStringList parts;
+            parts << tr("%n different", nullptr, different);
+            if (writeOnly)
+                parts << tr("%n write-only (cannot be compared)", nullptr, writeOnly);
+            if (notRead)
+                parts << tr("%n not read from the drive", nullptr, notRead);
+            parts << tr("%n the same", nullptr, same);
+            return tr("Compared with the drive: %1.").arg(parts.join(QLatin1String(", ")));
+        },
+        MessageKind::Info);
     emit compared();
 }
 
@@ -286,17 +295,17 @@ void BackupPanel::applySelected()
         return;
     const QList<int> indices = m_diffTable->checkedIndices();
     if (indices.isEmpty()) {
-        setMessage(tr("Tick the parameters to restore first."), MessageKind::Info);
+        setMessage([] { return tr("Tick the parameters to restore first."); }, MessageKind::Info);
         return;
     }
     RestoreOptions options;
     options.only = indices;
     if (!confirmRestore(indices, &options.force)) {
-        setMessage(tr("Restore cancelled: nothing was sent to the drive."), MessageKind::Info);
+        setMessage([] { return tr("Restore cancelled: nothing was sent to the drive."); }, MessageKind::Info);
         return;
     }
     auto out = std::make_shared<TransferOutcome>();
-    setBusy(true, tr("Restoring %n parameter(s)…", nullptr, int(indices.size())));
+    setBusy(true, [n = int(indices.size())] { return tr("Restoring %n parameter(s)…", nullptr, n); });
     QPointer<BackupPanel> self(this);
     run(TransferOperation::restore(m_file, options, out), [self, out](const DriveResult &r) {
         if (self)
@@ -350,7 +359,7 @@ void BackupPanel::onRestored(const DriveResult &result, const TransferOutcome &o
     }
     if (m_report.selected.isEmpty() || m_report.results.isEmpty()) {
         if (!result.ok())
-            return fail(result.error, tr("Nothing was restored:"));
+            return fail(result.error, [] { return tr("Nothing was restored:"); });
     }
     if (m_reportDialog)
         m_reportDialog->close();
@@ -360,7 +369,8 @@ void BackupPanel::onRestored(const DriveResult &result, const TransferOutcome &o
     const bool complete = m_report.isComplete();
     // Every view of the drive's parameters shows what the restore wrote.
     parameters()->reportWrites(m_report.results, this);
-    setMessage(m_reportDialog->summary(), complete ? MessageKind::Success : MessageKind::Problem);
+    setMessage([report = m_report] { return RestoreReportDialog::summaryOf(report); },
+               complete ? MessageKind::Success : MessageKind::Problem);
     if (!result.ok())
         reportError(result.error);
     emit restored(complete);
@@ -375,14 +385,15 @@ void BackupPanel::run(std::function<DriveReply *(Drive &)> op, std::function<voi
                        progressOn(m_progress));
 }
 
-void BackupPanel::fail(const Error &error, const QString &context)
+void BackupPanel::fail(const Error &error, const Text &context)
 {
-    setMessage(context + QLatin1Char(' ') + error.message, MessageKind::Problem);
+    setMessage([context, message = error.message] { return context() + QLatin1Char(' ') + message; },
+               MessageKind::Problem);
     reportError(error);
     emit operationFailed(error);
 }
 
-void BackupPanel::setBusy(bool busy, const QString &what)
+void BackupPanel::setBusy(bool busy, const Text &what)
 {
     m_busy = busy;
     m_progress->setVisible(busy);
@@ -392,7 +403,7 @@ void BackupPanel::setBusy(bool busy, const QString &what)
     updateActions();
 }
 
-void BackupPanel::setMessage(const QString &text, MessageKind kind)
+void BackupPanel::setMessage(const Text &text, MessageKind kind)
 {
     showMessage(m_message, text, kind);
 }

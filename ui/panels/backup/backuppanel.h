@@ -81,10 +81,13 @@ private:
     void onBackedUp(const DriveResult &result, const TransferOutcome &outcome, const QString &path);
     void onCompared(const DriveResult &result, const TransferOutcome &outcome);
     void onRestored(const DriveResult &result, const TransferOutcome &outcome);
-    void fail(const Error &error, const QString &context);
+    // The message lines are made again after a language switch (LiveText); a drive's or a
+    // file's own error text stays as it came.
+    using Text = std::function<QString()>;
+    void fail(const Error &error, const Text &context);
     bool confirmRestore(const QList<int> &indices, bool *force);
-    void setBusy(bool busy, const QString &what = {});
-    void setMessage(const QString &text, MessageKind kind);
+    void setBusy(bool busy, const Text &what = {});
+    void setMessage(const Text &text, MessageKind kind);
     void updateActions();
     void showFileInfo();
     void run(std::function<DriveReply *(Drive &)> op, std::function<void(const DriveResult &)> done);

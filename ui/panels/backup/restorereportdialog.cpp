@@ -64,22 +64,22 @@ RestoreReportDialog::RestoreReportDialog(const RestoreReport &report, const Para
     resize(640, 360);
 }
 
-QString RestoreReportDialog::summary() const
+QString RestoreReportDialog::summaryOf(const RestoreReport &report)
 {
     using O = RestoreReport::Outcome;
-    const int failed = int(m_report.indices(O::Failed).size() + m_report.indices(O::Mismatch).size());
+    const int failed = int(report.indices(O::Failed).size() + report.indices(O::Mismatch).size());
     QString text = tr("%1 selected: %2 written, %3 verified, %4 failed, %5 not attempted.")
-                       .arg(m_report.selected.size())
-                       .arg(m_report.written().size())
-                       .arg(m_report.indices(O::Verified).size())
+                       .arg(report.selected.size())
+                       .arg(report.written().size())
+                       .arg(report.indices(O::Verified).size())
                        .arg(failed)
-                       .arg(m_report.indices(O::NotAttempted).size());
-    if (const int unconfirmed = int(m_report.indices(O::Unconfirmed).size()))
+                       .arg(report.indices(O::NotAttempted).size());
+    if (const int unconfirmed = int(report.indices(O::Unconfirmed).size()))
         text += QLatin1Char(' ')
             + tr("%n parameter(s) could not be read back: what the drive holds is unknown; "
                  "compare again.",
                  nullptr, unconfirmed);
-    if (const int writeOnly = int(m_report.indices(O::WrittenOnly).size()))
+    if (const int writeOnly = int(report.indices(O::WrittenOnly).size()))
         text += QLatin1Char(' ')
             + tr("%n write-only parameter(s) written; the drive cannot report them back.", nullptr, writeOnly);
     return text;

@@ -22,7 +22,9 @@ public:
                         QWidget *parent = nullptr);
 
     const RestoreReport &report() const { return m_report; }
-    QString summary() const;
+    QString summary() const { return summaryOf(m_report); }
+    // "N selected: … written, … verified, …" in the current language.
+    static QString summaryOf(const RestoreReport &report);
     QTableWidget *table() const { return m_table; }
 
     // Translated outcome ("verified", "failed", ...).

@@ -84,6 +84,7 @@ MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
     m_position = new QLabel(this);
     m_position->setObjectName(QStringLiteral("motionPosition"));
     m_position->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_readout = new MotionReadout(context, this);
 
     // Made in this order, which is the Tab order.
     buildPowerBox();
@@ -269,6 +270,7 @@ void MotionPanel::layOut()
     columns->addLayout(right, 2);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_banner);
+    layout->addWidget(m_readout);
     layout->addLayout(columns, 1);
     layout->addLayout(stopRow);
 }
@@ -328,6 +330,8 @@ void MotionPanel::runCommand(const Text &what, DriveHub::Operation op, QLabel *r
         [self, what, label, motion, generation](const DriveResult &r) {
             if (!self || !label)
                 return;
+            if (r.ok())
+                self->ageProblems(); // the drive answers again: earlier failures are history
             if (!r.ok()) {
                 const QString error = r.error.message;
                 showMessage(
@@ -460,14 +464,16 @@ void MotionPanel::onJogStopped(JogButton::StopReason reason)
 
 void MotionPanel::activeChanged(bool active)
 {
+    m_readout->setPolling(active);
     if (!active) {
         m_jogMinus->stopHold(JogButton::StopReason::Hidden);
         m_jogPlus->stopHold(JogButton::StopReason::Hidden);
     }
 }
 
-void MotionPanel::driveInfoChanged(const DriveInfo &)
+void MotionPanel::driveInfoChanged(const DriveInfo &info)
 {
+    m_readout->setChannels(info.channels);
     updateCapabilities();
     showStatus();
 }
@@ -548,6 +554,8 @@ void MotionPanel::showStatus()
     const DriveStatus &s = driveInfo().status;
     m_state->setText(tr("State: %1").arg(DisplayText::summary(s)));
     m_position->setText(tr("Position: %1 %2").arg(DisplayText::position(s), distanceUnit()));
+    // The live readout shows the position large when the drive offers it as a channel.
+    m_position->setHidden(!m_readout->valueText(QStringLiteral("position")).isNull());
 }
 
 void MotionPanel::retranslate()
@@ -589,6 +597,7 @@ void MotionPanel::retranslate()
 
     m_stop->setText(tr("Stop this drive"));
     m_stopHint->setText(tr("STOP in the tool bar (Esc or F12) stops every drive on every connection."));
+    m_readout->retranslate();
     updateCapabilities();
     showStatus();
 }

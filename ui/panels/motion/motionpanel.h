@@ -2,6 +2,7 @@
 
 #include "core/drive/drivehub.h"
 #include "ui/panels/motion/jogbutton.h"
+#include "ui/panels/motion/motionreadout.h"
 #include "ui/workspace/drivepanel.h"
 
 class QComboBox;
@@ -13,7 +14,9 @@ class QSpinBox;
 
 namespace dd {
 
-// The Motion tab: power stage on/off, hold-to-run jog (JogButton) at a chosen speed,
+// The Motion tab: a large live readout of speed, position and following error with the limit
+// and origin switches where the drive reports them (MotionReadout, read while the tab is
+// shown), power stage on/off, hold-to-run jog (JogButton) at a chosen speed,
 // relative / absolute moves, homing, setting the position, and a stop for this drive.
 // Each function is enabled only where the drive family has it; otherwise it is disabled,
 // with the family's reason as tooltip and written under it. The STOP in the tool bar
@@ -42,6 +45,7 @@ public:
 
     JogButton *jogPositive() const { return m_jogPlus; }
     JogButton *jogNegative() const { return m_jogMinus; }
+    MotionReadout *readout() const { return m_readout; }
 
     // Stops this drive (and ends any jog hold).
     void stopDrive();
@@ -81,6 +85,7 @@ private:
     QString distanceUnit() const;
 
     QLabel *m_banner = nullptr;
+    MotionReadout *m_readout = nullptr;
     QLabel *m_state = nullptr;
     QLabel *m_position = nullptr;
     QLabel *m_jogState = nullptr;

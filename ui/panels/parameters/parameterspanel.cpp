@@ -6,11 +6,17 @@
 #include "core/params/parameterdictionary.h"
 #include "core/report/verificationjournal.h"
 #include "ui/common/displaytext.h"
+#include "ui/panels/parameters/parametercontextmenu.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/panels/parameters/parametervaluedelegate.h"
 #include "ui/workspace/driveparameters.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QClipboard>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
@@ -59,6 +65,10 @@ ParametersPanel::ParametersPanel(const DriveContext &context, QWidget *parent)
     buildTable();
     m_progress = createProgressBar(this);
     m_message = createMessageLabel(this, QStringLiteral("parameterMessage"));
+    m_genericHint = createReasonLabel(this);
+    m_genericHint->setObjectName(QStringLiteral("genericNamesHint"));
+    m_genericHint->setTextFormat(Qt::RichText);
+    connect(m_genericHint, &QLabel::linkActivated, this, &ParametersPanel::chooseDictionary);
     connectMessages();
     connectSharedValues();
     layOut();
@@ -131,6 +141,36 @@ void ParametersPanel::buildTable()
     m_delegate = new ParameterValueDelegate(m_model, this);
     m_view->setItemDelegateForColumn(ParameterTableModel::Value, m_delegate);
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, &ParametersPanel::updateActions);
+    // Ctrl+C on the table: the selected rows, as the context menu's Copy.
+    auto *copy = new QAction(m_view);
+    copy->setShortcut(QKeySequence::Copy);
+    copy->setShortcutContext(Qt::WidgetShortcut);
+    connect(copy, &QAction::triggered, this, [this] {
+        QApplication::clipboard()->setText(ParameterContextMenu::copyText(m_model, selectedParameters()));
+    });
+    m_view->addAction(copy);
+    m_view->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_view, &QWidget::customContextMenuRequested, this, [this](const QPoint &pos) {
+        const QModelIndex at = m_proxy->mapToSource(m_view->indexAt(pos));
+        if (!at.isValid())
+            return;
+        ParameterContextMenu *menu = contextMenuFor(m_model->parameterAt(at.row()));
+        menu->setAttribute(Qt::WA_DeleteOnClose);
+        menu->popup(m_view->viewport()->mapToGlobal(pos));
+    });
+}
+
+ParameterContextMenu *ParametersPanel::contextMenuFor(int parameterIndex)
+{
+    const bool canWrite = !m_busy && context().can(Capability::WriteParameters);
+    QPointer<ParametersPanel> self(this);
+    return new ParameterContextMenu(
+        m_model, parameterIndex, selectedParameters(),
+        [self](int p) {
+            if (self)
+                self->write({p}, false);
+        },
+        canWrite, this);
 }
 
 void ParametersPanel::connectMessages()
@@ -203,6 +243,7 @@ void ParametersPanel::layOut()
     bottom->addWidget(m_message, 1);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(top);
+    layout->addWidget(m_genericHint);
     layout->addWidget(m_view, 1);
     layout->addLayout(bottom);
 }
@@ -258,6 +299,7 @@ void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const Pa
     if (dictionary && dictionary != m_dictionary) {
         m_dictionary = dictionary;
         m_model->setDictionary(m_dictionary, m_modelName);
+        updateGenericHint();
     }
     // Through the shared values: every view of this drive follows (connectSharedValues()).
     parameters()->reportRead(result.parameters);
@@ -291,6 +333,71 @@ void ParametersPanel::onRead(const DriveResult &result, std::shared_ptr<const Pa
         },
         MessageKind::Success);
     emit operationFinished(true);
+}
+
+bool ParametersPanel::namesAreGeneric() const
+{
+    const ParameterDictionary *d = m_model->dictionary();
+    if (!d || d->isEmpty())
+        return false;
+    // The bundled dictionaries name what the protocol documents name; the rest read
+    // "Parameter N" / "Parameter PAN".
+    int generic = 0;
+    for (const ParameterInfo &p : d->parameters())
+        generic += p.name.english().startsWith(QLatin1String("Parameter ")) ? 1 : 0;
+    return generic * 2 > d->size();
+}
+
+void ParametersPanel::updateGenericHint()
+{
+    m_genericHint->setText(tr("Most names here are generic: the protocol document does not name these "
+                              "parameters. Load your drive's dictionary: File → <a href=\"load\">Load "
+                              "dictionary…</a>"));
+    m_genericHint->setVisible(namesAreGeneric());
+}
+
+Error ParametersPanel::loadDictionary(const QString &path)
+{
+    auto dictionary = std::make_shared<ParameterDictionary>();
+    if (Error e = dictionary->loadFromFile(path, context().family)) {
+        const QString why = e.message;
+        showMessage(
+            m_message,
+            [why] { return tr("Dictionary not loaded: %1 The table is unchanged.").arg(DisplayText::sentence(why)); },
+            MessageKind::Problem);
+        return e;
+    }
+    m_dictionary = dictionary;
+    m_model->setDictionary(m_dictionary, m_modelName);
+    updateGenericHint();
+    updateCount();
+    const int count = dictionary->size();
+    const QString shown = QDir::toNativeSeparators(path);
+    showMessage(
+        m_message,
+        [count, shown] {
+            return tr("Loaded the dictionary %1: %n parameter(s). Read all to see their values.", nullptr, count)
+                .arg(shown);
+        },
+        MessageKind::Success);
+    emit fileUsed(path);
+    // The drive validates writes with it too (until the connection closes).
+    if (context().isValid())
+        context().hub->run(context().connectionId, context().address, [dictionary](Drive &d) {
+            d.setDictionary(dictionary);
+            auto *reply = new DriveReply(&d);
+            reply->finish();
+            return reply;
+        });
+    return Error::none();
+}
+
+void ParametersPanel::chooseDictionary()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load a parameter dictionary"), QString(),
+                                                      tr("DriveDesk dictionaries (*.json)"));
+    if (!path.isEmpty())
+        loadDictionary(path);
 }
 
 void ParametersPanel::writeSelected()
@@ -497,6 +604,19 @@ void ParametersPanel::retranslate()
     m_model->retranslate();
     updateCount();
     updateActions();
+    updateGenericHint();
+}
+
+bool ParametersPanel::openFile(const QString &path)
+{
+    // A parameter dictionary picked from File → Recent files (other JSON: other tabs').
+    QFile file(path);
+    if (!path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive) || !file.open(QIODevice::ReadOnly))
+        return false;
+    if (!file.read(4096).contains("\"drivedesk-dictionary\""))
+        return false;
+    loadDictionary(path);
+    return true;
 }
 
 } // namespace dd

@@ -15,6 +15,8 @@ class QUndoStack;
 
 namespace dd {
 
+class ParameterContextMenu;
+
 class ParameterDictionary;
 class ParameterTableModel;
 class ParameterValueDelegate;
@@ -46,6 +48,19 @@ public:
     QTableView *view() const { return m_view; }
     QUndoStack *undoStack() const { return m_undo; }
     QString message() const;
+    // Most names of the dictionary in use are generic ("Parameter 12"): the tab says how to
+    // load the drive's own dictionary.
+    bool namesAreGeneric() const;
+    // Loads a parameter dictionary (JSON, docs/dictionaries.md) for this drive: validated
+    // whole against the drive's family; on success the table is relabelled and the drive
+    // validates writes with it (for this session); on failure nothing changes and the
+    // message line says why.
+    Error loadDictionary(const QString &path);
+    // File → Load dictionary…: asks for the file, then loadDictionary().
+    void chooseDictionary();
+    bool openFile(const QString &path) override;
+    // The table's context menu for a row (made on a right click; tests trigger its actions).
+    ParameterContextMenu *contextMenuFor(int parameterIndex);
 
 signals:
     // A read or a write ended (tests, and whoever waits for the drive).
@@ -72,6 +87,7 @@ private:
     void setMessage(const QString &text, MessageKind kind);
     void updateActions();
     void updateCount();
+    void updateGenericHint();
     void maybeReadFirstTime();
     QList<int> selectedParameters() const;
 
@@ -91,6 +107,7 @@ private:
     QAction *m_redoAction = nullptr;
     QProgressBar *m_progress = nullptr;
     QLabel *m_message = nullptr;
+    QLabel *m_genericHint = nullptr;
     std::shared_ptr<const ParameterDictionary> m_dictionary; // the drive's
     QString m_modelName;                                     // the drive model the rows are chosen for
     bool m_busy = false;

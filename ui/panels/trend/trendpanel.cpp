@@ -4,6 +4,7 @@
 #include "core/drive/drivehub.h"
 #include "core/drive/driveresult.h"
 #include "core/protocol/familytraits.h"
+#include "core/trend/linkrate.h"
 #include "core/trend/trendrecorder.h"
 #include "ui/bus/driveinfo.h"
 #include "ui/panels/trend/trendview.h"
@@ -69,11 +70,7 @@ void TrendPanel::setRate(double hz)
 
 double TrendPanel::rateForReadUs(double readUs)
 {
-    if (!(readUs > 0.0))
-        return FallbackRateHz;
-    const double hz = std::min(1000.0, 1e6 / readUs);
-    const double unit = std::pow(10.0, std::floor(std::log10(hz)) - 1); // two digits
-    return std::max(0.1, std::floor(hz / unit) * unit);
+    return LinkRate::forReadUs(readUs, FallbackRateHz); // the CLI's monitor uses the same
 }
 
 void TrendPanel::setRecording(bool recording)

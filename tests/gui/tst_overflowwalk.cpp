@@ -1,0 +1,136 @@
+// The whole window at a laptop's 1280×720, in English and in Chinese (issue #10): the demo
+// bench, every tab of every family's drive shown in turn, and the dialogs the menus open —
+// no visible widget cut (outside its parent, narrower than its text needs), no horizontal
+// scroll bar, no tab bar scrolling its titles, no tool bar folding buttons away
+// (tests/gui/overflowcheck.h).
+#include "core/drive/drivehub.h"
+#include "tests/gui/overflowcheck.h"
+#include "ui/bus/bustreewidget.h"
+#include "ui/bus/connectdialog.h"
+#include "ui/bus/connectioncontroller.h"
+#include "ui/bus/drivedirectory.h"
+#include "ui/compare/compareview.h"
+#include "ui/help/shortcutsdialog.h"
+#include "ui/help/userguidedialog.h"
+#include "ui/report/recordaction.h"
+#include "ui/report/recorddialog.h"
+#include "ui/shell/aboutdialog.h"
+#include "ui/shell/languagemanager.h"
+#include "ui/shell/mainwindow.h"
+#include "ui/workspace/drivepanel.h"
+#include "ui/workspace/driveworkspace.h"
+
+#include <QApplication>
+#include <QLoggingCategory>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace dd;
+
+class TestOverflowWalk : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_settingsDir;
+
+    template <typename Cond>
+    static bool waitFor(Cond cond, int timeoutMs)
+    {
+        QDeadlineTimer deadline(timeoutMs);
+        while (!cond() && !deadline.hasExpired())
+            QTest::qWait(20);
+        return cond();
+    }
+
+    // A dialog as it opens (its own size), then at the most a 1280×720 screen leaves it.
+    static QStringList dialogProblems(QDialog *dialog)
+    {
+        QStringList out;
+        dialog->show();
+        QTest::qWait(20);
+        const QSize need = dialog->minimumSizeHint();
+        if (need.width() > 1280 || need.height() > 690)
+            out << QStringLiteral("%1 needs %2×%3")
+                       .arg(dialog->metaObject()->className())
+                       .arg(need.width())
+                       .arg(need.height());
+        for (const QString &p : overflowcheck::problems(dialog))
+            out << QString::fromLatin1(dialog->metaObject()->className()) + QStringLiteral(": ") + p;
+        dialog->close();
+        return out;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QLoggingCategory::setFilterRules(QStringLiteral("drivedesk.*.debug=false"));
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY(m_settingsDir.isValid());
+        QSettings::setDefaultFormat(QSettings::IniFormat);
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+        QCoreApplication::setOrganizationName(QStringLiteral("DriveDeskTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("tst_overflowwalk"));
+    }
+
+    void nothingIsCutAt1280x720_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("zh_CN") << QStringLiteral("zh_CN");
+    }
+
+    void nothingIsCutAt1280x720()
+    {
+        QFETCH(QString, language);
+        LanguageManager languages;
+        QVERIFY(languages.apply(LanguageManager::languageFromId(language)));
+        MainWindow w(&languages);
+        w.resize(1280, 720);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.size(), QSize(1280, 720)); // its minimum fits
+        DriveDirectory *dir = w.directory();
+        QVERIFY(w.startDemo());
+        QVERIFY(waitFor(
+            [&] {
+                int n = 0;
+                for (int id : dir->connections())
+                    for (int a : dir->drives(id))
+                        n += dir->info(id, a).valid ? 1 : 0;
+                return n == 3 && !w.connections()->isBusy();
+            },
+            20000));
+
+        QStringList problems;
+        for (int id : dir->connections()) {
+            w.busTree()->selectDrive(id, 1);
+            QTabWidget *tabs = w.workspace()->tabsFor(id, 1);
+            QVERIFY(tabs);
+            const QString family = familyId(dir->connectionSettings(id).family);
+            for (int i = 0; i < tabs->count(); ++i) {
+                tabs->setCurrentIndex(i);
+                QTest::qWait(150); // what each tab fills in when shown (reads, polls)
+                for (const QString &p : overflowcheck::problems(&w))
+                    problems << QStringLiteral("%1 / %2: %3").arg(family, tabs->tabText(i), p);
+            }
+        }
+        problems << dialogProblems(new ConnectDialog(&w));
+        problems << dialogProblems(new AboutDialog(&w));
+        problems << dialogProblems(new UserGuideDialog(&w));
+        problems << dialogProblems(new ShortcutsDialog(&w));
+        problems << dialogProblems(new CompareView(dir, &w));
+        if (auto *record = w.findChild<RecordAction *>())
+            problems << dialogProblems(new RecordDialog(dir, record->session(), &w));
+        problems.removeDuplicates();
+        for (const QString &p : std::as_const(problems))
+            qWarning("%s", qPrintable(p));
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+        w.connections()->disconnectAll();
+    }
+};
+
+QTEST_MAIN(TestOverflowWalk)
+#include "tst_overflowwalk.moc"

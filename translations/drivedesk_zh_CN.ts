@@ -126,6 +126,10 @@
         <source>Alarm</source>
         <translation>报警</translation>
     </message>
+    <message>
+        <source>the alarm table knows no code %1: see the drive&apos;s manual. To name it here, put your own table at %2 (format: docs/dictionaries.md).</source>
+        <translation>报警表中没有代码 %1：请查阅驱动器说明书。如需在此显示其名称，请将自己的报警表放在 %2（格式见 docs/dictionaries.md）。</translation>
+    </message>
 </context>
 <context>
     <name>dd::BackupFile</name>
@@ -3673,6 +3677,14 @@ Restore anyway?</source>
         <source>Wait until the drive has answered, then open %1 again.</source>
         <translation>请等待驱动器应答后，再打开 %1。</translation>
     </message>
+    <message>
+        <source>Only the settings changed from the defaults</source>
+        <translation>仅保存与默认值不同的设置</translation>
+    </message>
+    <message>
+        <source>Leaves out the settings equal to the dictionary&apos;s default and the read-only values; settings the dictionary gives no default for are kept. The file says it holds changes only, and restoring it touches only what it lists.</source>
+        <translation>不保存等于字典默认值的设置和只读值；字典未给出默认值的设置予以保留。文件会注明只含改动，恢复它时只改动其中列出的参数。</translation>
+    </message>
 </context>
 <context>
     <name>dd::EePanel</name>
@@ -4053,6 +4065,28 @@ Write anyway?</source>
     <message>
         <source>The drive&apos;s values were replaced (EEPROM operation): reading them again.</source>
         <translation>驱动器的参数值已被替换（EEPROM 操作）：正在重新读取。</translation>
+    </message>
+    <message>
+        <source>Most names here are generic: the protocol document does not name these parameters. Load your drive&apos;s dictionary: File → &lt;a href=&quot;load&quot;&gt;Load dictionary…&lt;/a&gt;</source>
+        <translation>此处的参数名称大多为通用名称：通讯协议文档未说明这些参数。请加载驱动器自己的参数字典：文件 → &lt;a href="load"&gt;加载参数字典…&lt;/a&gt;</translation>
+    </message>
+    <message>
+        <source>Dictionary not loaded: %1 The table is unchanged.</source>
+        <translation>参数字典未加载：%1 表格保持不变。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Loaded the dictionary %1: %n parameter(s). Read all to see their values.</source>
+        <translation>
+            <numerusform>已加载参数字典 %1：%n 个参数。点击“全部读取”查看其数值。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Load a parameter dictionary</source>
+        <translation>加载参数字典</translation>
+    </message>
+    <message>
+        <source>DriveDesk dictionaries (*.json)</source>
+        <translation>DriveDesk 参数字典 (*.json)</translation>
     </message>
 </context>
 <context>
@@ -4732,14 +4766,6 @@ Servo enable on or off.
 </translation>
     </message>
     <message>
-        <source>  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]
-                                 the commissioning record (PDF and JSON)
-</source>
-        <translation>  report -o RECORD.pdf [--all] [--header FILE.json] [--json-out RECORD.json]
-                                 调试记录（PDF 与 JSON）
-</translation>
-    </message>
-    <message>
         <source>Simulator:
   --sim runs the command against simulated drives of --family inside this
   process, with nothing plugged in: serial families on a pseudo-terminal,
@@ -4806,28 +4832,6 @@ no link. Sources of different families are refused. Exit code as diff(1):
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
-Write the parameters that differ from the file and verify each by reading it
-back. The file is checked completely before anything is sent. A file from
-another family is refused; from another firmware only with --force.
---dry-run shows what would be written. On failure the report says exactly
-which parameters were written and which were not.
-With --all (every drive a scan finds) or --address 1,2,5 the file goes to
-each drive at its own address; communication settings are never copied
-unless --only names them. --stop-on-failure: one drive after the other,
-none after the first that fails. The exit code is the worst drive&apos;s.
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
-写入与文件不同的参数，并逐个回读校验。发送任何数据之前会完整检查文件。
-其他系列的备份文件一律拒绝；其他固件版本的备份文件须加 --force。
---dry-run 只显示将写入的内容。失败时报告会准确列出哪些参数已写入、
-哪些未写入。
-使用 --all（扫描找到的每一台）或 --address 1,2,5 时，文件写入每台驱动器各自
-的地址；通信设置除非在 --only 中指明，否则从不复制。--stop-on-failure：逐台
-进行，第一台失败后不再继续。退出码取最差的那台驱动器的。
-</translation>
-    </message>
-    <message>
         <source>Usage: drivedesk-cli [OPTIONS] ping [--count N]
 Ask the drive for its status N times (default 10), one request at a time, and
 report the link&apos;s health: turnaround min / median / max, timeouts, checksum
@@ -4869,29 +4873,6 @@ consecutive runs with what the metrics did. Reads files only.
         <translation>用法：drivedesk-cli runs RUN.ddrun [RUN2.ddrun ...]
 并列显示各次运行的指标，以及相邻两次运行之间不同的整定参数和指标随之
 发生的变化。只读取文件。
-</translation>
-    </message>
-    <message>
-        <source>Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--header FILE.json]
-                     [--json-out RECORD.json] [--page-size a4|letter]
-The commissioning record of the drive at --address (--all: of every drive a scan
-of the link finds): identity, firmware, link, the parameters that differ from the
-dictionary&apos;s defaults (all of them in the appendix), the last restore or write
-verification, alarms, link health and backup files, as a PDF in the language of
---lang, and the same as JSON whose SHA-256 the PDF prints (docs/record.md).
---all [--from A] [--to B]: the scan&apos;s address range (default: the family&apos;s).
---header: machine, customer, site, engineer, notes from a JSON file.
---runs RUN.ddrun,...: tuning runs (not supported by this build yet).
-</source>
-        <translation>用法：drivedesk-cli [选项] report -o RECORD.pdf [--all] [--header FILE.json]
-                     [--json-out RECORD.json] [--page-size a4|letter]
-生成 --address 所指驱动器的调试记录（--all：扫描链路找到的全部驱动器）：身份、固件、
-链路、与字典默认值不同的参数（附录中列出全部参数）、最近一次恢复或写入的校验结果、
-报警、链路状况和备份文件；PDF 使用 --lang 的语言，另有内容相同的 JSON，
-PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
---all [--from A] [--to B]：扫描的地址范围（默认：该系列的范围）。
---header：从 JSON 文件读取机器、客户、现场、工程师、备注。
---runs RUN.ddrun,...：调试运行记录（本版本尚不支持）。
 </translation>
     </message>
     <message>
@@ -5035,6 +5016,72 @@ reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止�
 秒（默认：阶跃时间 + 0.3 秒；定位阶跃：直到轴静止后再加 0.3 秒）。测试完成后
 回到起始位置（--no-return：留在原处），打印各项指标及其分辨率或无法分辨的原因，
 并将运行记录连同从驱动器读取的调谐参数保存到 RUN.ddrun（docs/tuning.md）。
+</translation>
+    </message>
+    <message>
+        <source>  report -o RECORD.pdf [--all] [--runs RUN.ddrun,...] [--header FILE.json]
+         [--json-out RECORD.json]
+                                 the commissioning record (PDF and JSON)
+</source>
+        <translation>  report -o RECORD.pdf [--all] [--runs RUN.ddrun,...] [--header FILE.json]
+         [--json-out RECORD.json]
+                                 调试记录（PDF 与 JSON）
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+Write the parameters that differ from the file and verify each by reading it
+back. The file is checked completely before anything is sent. A file from
+another family is refused; from another firmware only with --force.
+--dry-run shows what would be written. On failure the report says exactly
+which parameters were written and which were not.
+With --all (every drive a scan finds) or --address 1,2,5 the file goes to
+each drive at its own address; communication settings are never copied
+unless --only names them. --stop-on-failure: one drive after the other,
+none after the first that fails. The exit code is the worst drive&apos;s.
+restore DIR [--address 1,2,5]: a folder written by backup --all -o DIR put
+back, every drive its index.json lists (or those of --address) from its own
+file, at its address; each file is checked to be that drive&apos;s before anything
+is sent.
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] restore FILE [--dry-run] [--only PARAM,...] [--force]
+写入与文件不同的参数，并逐个回读校验。发送任何数据之前会完整检查文件。
+其他系列的备份文件一律拒绝；其他固件版本的备份文件须加 --force。
+--dry-run 只显示将写入的内容。失败时报告会准确列出哪些参数已写入、
+哪些未写入。
+使用 --all（扫描找到的每一台）或 --address 1,2,5 时，文件写入每台驱动器各自
+的地址；通信设置除非在 --only 中指明，否则从不复制。--stop-on-failure：逐台
+进行，第一台失败后不再继续。退出码取最差的那台驱动器的。
+restore DIR [--address 1,2,5]：将 backup --all -o DIR 写出的文件夹恢复回去，
+index.json 中列出的每台驱动器（或 --address 指定的驱动器）各用自己的文件、
+按其地址恢复；发送任何数据之前会逐个确认文件属于该驱动器。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] report -o RECORD.pdf [--all] [--runs RUN.ddrun,...]
+                     [--header FILE.json] [--json-out RECORD.json] [--page-size a4|letter]
+The commissioning record of the drive at --address (--all: of every drive a scan
+of the link finds): identity, firmware, link, the parameters that differ from the
+dictionary&apos;s defaults (all of them in the appendix), the last restore or write
+verification, alarms, link health and backup files, as a PDF in the language of
+--lang, and the same as JSON whose SHA-256 the PDF prints (docs/record.md).
+--all [--from A] [--to B]: the scan&apos;s address range (default: the family&apos;s).
+--header: machine, customer, site, engineer, notes from a JSON file.
+--runs RUN.ddrun,...: tuning runs (capture or step test files) shown with the drive
+they were taken on: plot, metrics, parameter snapshot. A bad run file, or one of a
+drive not in the record, exits 2 with the reason and writes nothing.
+</source>
+        <translation>用法：drivedesk-cli [选项] report -o RECORD.pdf [--all] [--runs RUN.ddrun,...]
+                     [--header FILE.json] [--json-out RECORD.json] [--page-size a4|letter]
+生成 --address 所指驱动器的调试记录（--all：扫描链路找到的全部驱动器）：身份、固件、
+链路、与字典默认值不同的参数（附录中列出全部参数）、最近一次恢复或写入的校验结果、
+报警、链路状况和备份文件；PDF 使用 --lang 的语言，另有内容相同的 JSON，
+PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
+--all [--from A] [--to B]：扫描的地址范围（默认：该系列的范围）。
+--header：从 JSON 文件读取机器、客户、现场、工程师、备注。
+--runs RUN.ddrun,...：调试运行（采集或阶跃测试文件），显示在其所测的驱动器下：
+曲线、指标、参数快照。运行文件有误，或其驱动器不在记录中时，以退出码 2 结束并说明原因，
+不写任何文件。
 </translation>
     </message>
 </context>
@@ -6070,12 +6117,6 @@ then log out and log in again (or restart the computer).</source>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
-    <message numerus="yes">
-        <source>%n parameter(s) could not be compared: the dictionary gives no default for them.</source>
-        <translation>
-            <numerusform>%n 个参数无法比较：字典中没有它们的默认值。</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Every parameter with its value and default is listed in the appendix.</source>
         <translation>附录中列出每个参数及其值和默认值。</translation>
@@ -6170,10 +6211,6 @@ then log out and log in again (or restart the computer).</source>
         <source>Not measured.</source>
         <translation>未统计。</translation>
     </message>
-    <message>
-        <source>%1: %2 frame(s) sent, %3 received, %4 discarded, %5 retries, %6 failed operation(s).</source>
-        <translation>%1：发送 %2 帧，接收 %3 帧，丢弃 %4 帧，重试 %5 次，失败操作 %6 次。</translation>
-    </message>
     <message numerus="yes">
         <source>Tuning runs (%n)</source>
         <translation>
@@ -6243,6 +6280,58 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 (%2 not compared)</source>
+        <translation>%1（%2 个未比较）</translation>
+    </message>
+    <message numerus="yes">
+        <source>Not compared: the dictionary gives no factory default for any of the %n parameter(s) read, so this record cannot say which of them were changed.</source>
+        <translation>
+            <numerusform>未比较：字典没有为已读取的 %n 个参数中的任何一个给出出厂默认值，因此本记录无法说明其中哪些被修改过。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) not compared: the dictionary gives no factory default for them (shown as “—” in the Default column of the appendix).</source>
+        <translation>
+            <numerusform>%n 个参数未比较：字典没有给出它们的出厂默认值（附录的“默认值”列中显示为“—”）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The protocol documents of this drive family list no factory defaults for these parameters. A dictionary with the drive&apos;s factory settings (drivedesk-cli --dictionary, or the user dictionary of the family) makes the comparison complete.</source>
+        <translation>该驱动器系列的协议文档没有列出这些参数的出厂默认值。使用包含驱动器出厂设置的字典（drivedesk-cli --dictionary，或该系列的用户字典）即可完成比较。</translation>
+    </message>
+    <message>
+        <source>turnaround %1 / %2 / %3 ms (min / median / max)</source>
+        <translation>往返时间 %1 / %2 / %3 ms（最小 / 中位 / 最大）</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>%1: %2 request(s), %3 answered, %4; %5 timeout(s), %6 checksum error(s), %7 late or duplicated reply(ies), %8 retries, %9 failed operation(s).</source>
+        <translation>%1：%2 次请求，%3 次应答，%4；%5 次超时，%6 次校验错误，%7 次迟到或重复的应答，%8 次重试，%9 次操作失败。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n sample(s), one every %1 ms on average</source>
+        <translation>
+            <numerusform>%n 个采样，平均每 %1 ms 一个</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n gap(s) in the sampling, the longest %1 ms (the plot breaks its lines at those it can show)</source>
+        <translation>
+            <numerusform>采样中有 %n 处间断，最长 %1 ms（曲线在能显示出的间断处断开）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Run file %1, checksum</source>
+        <translation>运行文件 %1，校验和</translation>
+    </message>
+    <message>
+        <source>not measured: %1</source>
+        <translation>未测得：%1</translation>
     </message>
 </context>
 <context>
@@ -6459,6 +6548,46 @@ then log out and log in again (or restart the computer).</source>
             <numerusform>%n 台驱动器中有 %1 台已从 %2 恢复。</numerusform>
         </translation>
     </message>
+    <message>
+        <source>restore %1: a backup folder names its drives; --from and --to do not apply.</source>
+        <translation>restore %1：备份文件夹已列明其驱动器；--from 和 --to 不适用。</translation>
+    </message>
+    <message>
+        <source>restore %1: the folder has no index.json (write one with backup --all -o %1): %2</source>
+        <translation>restore %1：该文件夹中没有 index.json（可用 backup --all -o %1 生成）：%2</translation>
+    </message>
+    <message>
+        <source>restore %1: %2 is not the index of a backup folder (format &quot;%3&quot;).</source>
+        <translation>restore %1：%2 不是备份文件夹的索引（格式应为“%3”）。</translation>
+    </message>
+    <message>
+        <source>restore %1: index format version %2 is not supported (this DriveDesk reads 1).</source>
+        <translation>restore %1：不支持索引格式版本 %2（本 DriveDesk 读取版本 1）。</translation>
+    </message>
+    <message>
+        <source>restore %1: the folder holds backups of %2 drives; this link is for %3 drives.</source>
+        <translation>restore %1：该文件夹保存的是 %2 驱动器的备份；此链路用于 %3 驱动器。</translation>
+    </message>
+    <message>
+        <source>restore %1: index.json lists a drive without a valid address or file name.</source>
+        <translation>restore %1：index.json 中有驱动器缺少有效的地址或文件名。</translation>
+    </message>
+    <message>
+        <source>restore %1: index.json lists no drive.</source>
+        <translation>restore %1：index.json 中没有列出驱动器。</translation>
+    </message>
+    <message>
+        <source>restore %1: drive %2 is not in the folder&apos;s index.</source>
+        <translation>restore %1：驱动器 %2 不在该文件夹的索引中。</translation>
+    </message>
+    <message>
+        <source>restore %1: drive %2 has no file in the folder (its backup failed). Restore the others with --address %3.</source>
+        <translation>restore %1：驱动器 %2 在该文件夹中没有文件（其备份失败）。可用 --address %3 恢复其余驱动器。</translation>
+    </message>
+    <message>
+        <source>restore %1: %2 is the backup of the drive at address %3, but the index gives it to address %4.</source>
+        <translation>restore %1：%2 是地址 %3 驱动器的备份，但索引将其分配给地址 %4。</translation>
+    </message>
 </context>
 <context>
     <name>dd::PingCommand</name>
@@ -6536,10 +6665,6 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>report: the PDF and the JSON file must be two different files.</source>
         <translation>report：PDF 与 JSON 必须是两个不同的文件。</translation>
-    </message>
-    <message>
-        <source>report --runs: run files are not supported by this build yet.</source>
-        <translation>report --runs：本版本尚不支持运行记录文件。</translation>
     </message>
     <message>
         <source>report --header: %1</source>
@@ -6622,6 +6747,34 @@ then log out and log in again (or restart the computer).</source>
         <translation>
             <numerusform>%n 台驱动器最近一次校验失败；记录中已注明。</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>report --runs: %1 was taken on a %2 drive; this link is of the %3 family.</source>
+        <translation>report --runs：%1 是在 %2 驱动器上测得的；此链路属于 %3 系列。</translation>
+    </message>
+    <message>
+        <source>report --runs: %1 was taken on the drive at address %2; this record is of address %3.</source>
+        <translation>report --runs：%1 是在地址 %2 的驱动器上测得的；本记录针对地址 %3。</translation>
+    </message>
+    <message>
+        <source>report --runs: &quot;%1&quot; has an empty file name; give RUN.ddrun,RUN2.ddrun,...</source>
+        <translation>report --runs：“%1”中有空文件名；请写成 RUN.ddrun,RUN2.ddrun,...</translation>
+    </message>
+    <message>
+        <source>report --runs: %1</source>
+        <translation>report --runs：%1</translation>
+    </message>
+    <message>
+        <source>report --runs: %1 is listed twice.</source>
+        <translation>report --runs：%1 列出了两次。</translation>
+    </message>
+    <message>
+        <source>Run %1 left out: its drive (address %2) could not be read.</source>
+        <translation>运行 %1 未收入：其驱动器（地址 %2）无法读取。</translation>
+    </message>
+    <message>
+        <source>run %1: its drive could not be read</source>
+        <translation>运行 %1：其驱动器无法读取</translation>
     </message>
 </context>
 <context>
@@ -7031,10 +7184,6 @@ firmware %2</source>
         <translation>记录中的驱动器：</translation>
     </message>
     <message>
-        <source>Tuning runs: run files are not supported by this build yet.</source>
-        <translation>调试运行：本版本尚不支持运行记录文件。</translation>
-    </message>
-    <message>
         <source>Machine / project:</source>
         <translation>机器 / 项目：</translation>
     </message>
@@ -7117,6 +7266,38 @@ firmware %2</source>
     <message>
         <source>No Chinese font is installed: Chinese text is missing from the PDF.</source>
         <translation>未安装中文字体：PDF 中缺少中文文字。</translation>
+    </message>
+    <message>
+        <source>Tuning runs (run files, each shown with the drive it was taken on):</source>
+        <translation>调试运行（运行文件，各自显示在其所测的驱动器下）：</translation>
+    </message>
+    <message>
+        <source>Add run files…</source>
+        <translation>添加运行文件…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>%1 — %2, %3 at address %4</source>
+        <translation>%1 — %2，%3，地址 %4</translation>
+    </message>
+    <message>
+        <source>Not added: %1</source>
+        <translation>未添加：%1</translation>
+    </message>
+    <message>
+        <source>Choose tuning runs for the record</source>
+        <translation>选择要收入记录的调试运行</translation>
+    </message>
+    <message>
+        <source>Run files (*.ddrun)</source>
+        <translation>运行文件 (*.ddrun)</translation>
+    </message>
+    <message>
+        <source>No record was made: %1</source>
+        <translation>未生成记录：%1</translation>
     </message>
 </context>
 <context>
@@ -7512,6 +7693,1018 @@ firmware %2</source>
     <message>
         <source>Left at %1 (--no-return; started at %2).</source>
         <translation>停留在 %1（--no-return；起始于 %2）。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RecordRuns</name>
+    <message>
+        <source>Capture</source>
+        <translation>采集</translation>
+    </message>
+    <message>
+        <source>Velocity step</source>
+        <translation>速度阶跃</translation>
+    </message>
+    <message>
+        <source>Position step</source>
+        <translation>位置阶跃</translation>
+    </message>
+    <message>
+        <source>Reversal</source>
+        <translation>换向</translation>
+    </message>
+    <message>
+        <source>Rise time (10–90 %)</source>
+        <translation>上升时间（10–90 %）</translation>
+    </message>
+    <message>
+        <source>Overshoot</source>
+        <translation>超调量</translation>
+    </message>
+    <message>
+        <source>Settling time (±2 %)</source>
+        <translation>调节时间（±2 %）</translation>
+    </message>
+    <message>
+        <source>Settling time (±5 %)</source>
+        <translation>调节时间（±5 %）</translation>
+    </message>
+    <message>
+        <source>Steady-state error</source>
+        <translation>稳态误差</translation>
+    </message>
+    <message>
+        <source>Steady-state ripple</source>
+        <translation>稳态波动</translation>
+    </message>
+    <message>
+        <source>Peak following error</source>
+        <translation>最大跟随误差</translation>
+    </message>
+    <message>
+        <source>Peak torque</source>
+        <translation>峰值转矩</translation>
+    </message>
+    <message>
+        <source>Peak current</source>
+        <translation>峰值电流</translation>
+    </message>
+    <message>
+        <source>Sample interval</source>
+        <translation>采样间隔</translation>
+    </message>
+    <message>
+        <source>Cannot open the run file %1: %2</source>
+        <translation>无法打开运行文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than %2 MiB: not a run file</source>
+        <translation>%1 大于 %2 MiB：不是运行文件</translation>
+    </message>
+    <message>
+        <source>The run file %1 is chosen twice.</source>
+        <translation>运行文件 %1 被选了两次。</translation>
+    </message>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1，地址 %2</translation>
+    </message>
+    <message>
+        <source>The run %1 was taken on %2 at address %3, which is not in this record (it holds %4).</source>
+        <translation>运行 %1 是在 %2（地址 %3）上测得的，该驱动器不在本记录中（本记录包含：%4）。</translation>
+    </message>
+    <message>
+        <source>no drive</source>
+        <translation>无驱动器</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RunPlot</name>
+    <message>
+        <source>time from the trigger (s)</source>
+        <translation>相对触发点的时间（s）</translation>
+    </message>
+    <message>
+        <source>%1: no sample</source>
+        <translation>%1：无采样</translation>
+    </message>
+</context>
+<context>
+    <name>dd::HelpActions</name>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>用户指南(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>按键</translation>
+    </message>
+    <message>
+        <source>What they do</source>
+        <translation>作用</translation>
+    </message>
+    <message>
+        <source>STOP: stop every drive on every connection (anywhere in DriveDesk)</source>
+        <translation>STOP：停止所有连接上的所有驱动器（在 DriveDesk 任何位置均有效）</translation>
+    </message>
+    <message>
+        <source>Open the user guide</source>
+        <translation>打开用户指南</translation>
+    </message>
+    <message>
+        <source>Connect… (open a port or CAN interface and scan it)</source>
+        <translation>连接…（打开串口或 CAN 接口并扫描）</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>退出</translation>
+    </message>
+    <message>
+        <source>Hold %1 on a jog button</source>
+        <translation>在点动按钮上按住 %1</translation>
+    </message>
+    <message>
+        <source>Motion: jog while held; letting go stops</source>
+        <translation>运动：按住时点动，松开即停止</translation>
+    </message>
+    <message>
+        <source>Parameters: undo / redo an edit</source>
+        <translation>参数：撤销 / 重做编辑</translation>
+    </message>
+    <message>
+        <source>Parameters: copy the selected rows (also in the right-click menu)</source>
+        <translation>参数：复制所选行（右键菜单中也有）</translation>
+    </message>
+    <message>
+        <source>Trend: zoom in / out</source>
+        <translation>趋势：放大 / 缩小</translation>
+    </message>
+    <message>
+        <source>Trend: pan in time</source>
+        <translation>趋势：沿时间平移</translation>
+    </message>
+    <message>
+        <source>Trend: reset the zoom</source>
+        <translation>趋势：复位缩放</translation>
+    </message>
+    <message>
+        <source>Alt + underlined letter</source>
+        <translation>Alt + 带下划线的字母</translation>
+    </message>
+    <message>
+        <source>Menus and buttons: the letter underlined in their name</source>
+        <translation>菜单和按钮：名称中带下划线的字母</translation>
+    </message>
+</context>
+<context>
+    <name>dd::UserGuideDialog</name>
+    <message>
+        <source>userguide-en.md</source>
+        <translation>userguide-zh_CN.md</translation>
+    </message>
+    <message>
+        <source>DriveDesk user guide</source>
+        <translation>DriveDesk 用户指南</translation>
+    </message>
+    <message>
+        <source>The user guide is missing from this build.</source>
+        <translation>此版本缺少用户指南。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::MotionReadout</name>
+    <message>
+        <source>Left limit</source>
+        <translation>左限位</translation>
+    </message>
+    <message>
+        <source>Origin</source>
+        <translation>原点</translation>
+    </message>
+    <message>
+        <source>Right limit</source>
+        <translation>右限位</translation>
+    </message>
+    <message>
+        <source>%1: not read yet</source>
+        <translation>%1：尚未读取</translation>
+    </message>
+    <message>
+        <source>%1: active</source>
+        <translation>%1：已触发</translation>
+    </message>
+    <message>
+        <source>%1: not active</source>
+        <translation>%1：未触发</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Following error</source>
+        <translation>跟随误差</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ParameterContextMenu</name>
+    <message numerus="yes">
+        <source>&amp;Copy %n rows</source>
+        <translation>
+            <numerusform>复制 %n 行(&amp;C)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>复制(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to default (%1)</source>
+        <translation>恢复默认值（%1）(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Reset to default (read-only parameter)</source>
+        <translation>恢复默认值（只读参数）</translation>
+    </message>
+    <message>
+        <source>Reset to default (the dictionary gives none)</source>
+        <translation>恢复默认值（参数字典未给出默认值）</translation>
+    </message>
+    <message>
+        <source>&amp;Write this row</source>
+        <translation>写入此行(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Write this row (not edited)</source>
+        <translation>写入此行（未编辑）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CaptureControls</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>At once</source>
+        <translation>立即</translation>
+    </message>
+    <message>
+        <source>Rising through level</source>
+        <translation>上升穿过电平</translation>
+    </message>
+    <message>
+        <source>Falling through level</source>
+        <translation>下降穿过电平</translation>
+    </message>
+    <message>
+        <source>Either way through level</source>
+        <translation>双向穿过电平</translation>
+    </message>
+    <message>
+        <source>Above level</source>
+        <translation>高于电平</translation>
+    </message>
+    <message>
+        <source>Below level</source>
+        <translation>低于电平</translation>
+    </message>
+    <message>
+        <source>Alarm raised</source>
+        <translation>出现报警</translation>
+    </message>
+    <message>
+        <source>Single</source>
+        <translation>单次</translation>
+    </message>
+    <message>
+        <source>Normal (re-arm)</source>
+        <translation>常规（自动重新布防）</translation>
+    </message>
+    <message>
+        <source>Auto (time-out)</source>
+        <translation>自动（超时触发）</translation>
+    </message>
+    <message>
+        <source>Trigger:</source>
+        <translation>触发：</translation>
+    </message>
+    <message>
+        <source>Channel:</source>
+        <translation>通道：</translation>
+    </message>
+    <message>
+        <source>Level:</source>
+        <translation>电平：</translation>
+    </message>
+    <message>
+        <source>Pre-trigger:</source>
+        <translation>预触发：</translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation>时长：</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>模式：</translation>
+    </message>
+    <message>
+        <source>Auto after:</source>
+        <translation>超时：</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>Arm</source>
+        <translation>布防</translation>
+    </message>
+    <message>
+        <source>Force</source>
+        <translation>强制触发</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Start sampling; the capture is taken when the trigger fires.</source>
+        <translation>开始采样；触发条件满足时进行捕获。</translation>
+    </message>
+    <message>
+        <source>Fire the trigger now.</source>
+        <translation>立即触发。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CapturePlot</name>
+    <message>
+        <source>Click the plot to place cursor A, Shift + click for cursor B.</source>
+        <translation>单击曲线图放置光标 A，Shift + 单击放置光标 B。</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 毫秒</translation>
+    </message>
+    <message>
+        <source>A: %1</source>
+        <translation>A：%1</translation>
+    </message>
+    <message>
+        <source>B: %1</source>
+        <translation>B：%1</translation>
+    </message>
+    <message>
+        <source>Δt: %1</source>
+        <translation>Δt：%1</translation>
+    </message>
+    <message>
+        <source>A %1</source>
+        <translation>A %1</translation>
+    </message>
+    <message>
+        <source>B %1</source>
+        <translation>B %1</translation>
+    </message>
+    <message>
+        <source>Δvalue %1</source>
+        <translation>Δ值 %1</translation>
+    </message>
+    <message>
+        <source>Time from the trigger (s)</source>
+        <translation>相对触发时刻的时间（秒）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RunComparison</name>
+    <message>
+        <source>Rise time (10–90 %)</source>
+        <translation>上升时间（10–90 %）</translation>
+    </message>
+    <message>
+        <source>Overshoot</source>
+        <translation>超调量</translation>
+    </message>
+    <message>
+        <source>Settling (±2 %)</source>
+        <translation>调节时间（±2 %）</translation>
+    </message>
+    <message>
+        <source>Settling (±5 %)</source>
+        <translation>调节时间（±5 %）</translation>
+    </message>
+    <message>
+        <source>Steady-state error</source>
+        <translation>稳态误差</translation>
+    </message>
+    <message>
+        <source>Steady-state ripple</source>
+        <translation>稳态波动</translation>
+    </message>
+    <message>
+        <source>Peak following error</source>
+        <translation>最大跟随误差</translation>
+    </message>
+    <message>
+        <source>Peak torque</source>
+        <translation>峰值转矩</translation>
+    </message>
+    <message>
+        <source>Peak current</source>
+        <translation>峰值电流</translation>
+    </message>
+    <message>
+        <source>Sample interval</source>
+        <translation>采样间隔</translation>
+    </message>
+    <message>
+        <source>not resolvable</source>
+        <translation>无法分辨</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 毫秒</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3</source>
+        <translation>%1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>no tuning parameter differs</source>
+        <translation>调谐参数无差异</translation>
+    </message>
+    <message>
+        <source>%1 → %2: %3: %4</source>
+        <translation>%1 → %2：%3：%4</translation>
+    </message>
+    <message>
+        <source>%1, %2: %3</source>
+        <translation>%1，%2：%3</translation>
+    </message>
+    <message>
+        <source>Resolution: %1</source>
+        <translation>分辨率：%1</translation>
+    </message>
+    <message>
+        <source>Tick runs in the list to compare them here.</source>
+        <translation>在列表中勾选运行记录，即可在此比较。</translation>
+    </message>
+    <message>
+        <source>Tick a second run to see the parameter differences.</source>
+        <translation>再勾选一条运行记录即可查看参数差异。</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more (the cells&apos; tool tips give every reason).</source>
+        <translation>
+            <numerusform>…另有 %n 条（每个单元格的提示中给出全部原因）。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>dd::RunList</name>
+    <message>
+        <source>%1 · %2 samples · trigger %3</source>
+        <translation>%1 · %2 个样本 · 触发 %3</translation>
+    </message>
+    <message>
+        <source>Not opened: %1</source>
+        <translation>未打开：%1</translation>
+    </message>
+    <message>
+        <source>Opened %1.</source>
+        <translation>已打开 %1。</translation>
+    </message>
+    <message>
+        <source>Select a run to save.</source>
+        <translation>请选择要保存的运行记录。</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>未保存：%1</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>已保存 %1。</translation>
+    </message>
+    <message>
+        <source>Open run</source>
+        <translation>打开运行记录</translation>
+    </message>
+    <message>
+        <source>DriveDesk runs (*.ddrun);;All files (*)</source>
+        <translation>DriveDesk 运行记录 (*.ddrun);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Save run</source>
+        <translation>保存运行记录</translation>
+    </message>
+    <message>
+        <source>DriveDesk runs (*.ddrun)</source>
+        <translation>DriveDesk 运行记录 (*.ddrun)</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>打开…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>保存…</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>Tick the runs to overlay; the selected run is the one saved, analysed and applied.</source>
+        <translation>勾选要叠加显示的运行记录；保存、分析和应用的对象是选中的那一条。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::SpectrumView</name>
+    <message>
+        <source>Channel:</source>
+        <translation>通道：</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz)</source>
+        <translation>频率（Hz）</translation>
+    </message>
+    <message>
+        <source>Select a run to see its spectrum.</source>
+        <translation>选择一条运行记录以查看其频谱。</translation>
+    </message>
+    <message>
+        <source>No spectrum: %1</source>
+        <translation>无频谱：%1</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz) · %1 window, resolution %2 Hz, %3 points at %4 Hz</source>
+        <translation>频率（Hz）· %1 窗，分辨率 %2 Hz，%3 点，采样率 %4 Hz</translation>
+    </message>
+    <message>
+        <source>Amplitude of %1</source>
+        <translation>%1 的幅值</translation>
+    </message>
+    <message>
+        <source>Amplitude</source>
+        <translation>幅值</translation>
+    </message>
+    <message>
+        <source>Peaks:</source>
+        <translation>峰值：</translation>
+    </message>
+    <message>
+        <source>%1 Hz (%2)</source>
+        <translation>%1 Hz（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepTestControls</name>
+    <message>
+        <source>maximum speed</source>
+        <translation>最高速度</translation>
+    </message>
+    <message>
+        <source>maximum travel</source>
+        <translation>最大行程</translation>
+    </message>
+    <message>
+        <source>maximum duration</source>
+        <translation>最长时间</translation>
+    </message>
+    <message>
+        <source>Set the limits first: %1.</source>
+        <translation>请先设置限值：%1。</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>Give the step a speed above 0.</source>
+        <translation>请为阶跃设置大于 0 的速度。</translation>
+    </message>
+    <message>
+        <source>The step&apos;s speed %1 is above the maximum speed %2.</source>
+        <translation>阶跃速度 %1 高于最高速度 %2。</translation>
+    </message>
+    <message>
+        <source>Give the position step a distance.</source>
+        <translation>请为位置阶跃设置距离。</translation>
+    </message>
+    <message>
+        <source>The distance %1 is beyond the maximum travel %2.</source>
+        <translation>距离 %1 超出最大行程 %2。</translation>
+    </message>
+    <message>
+        <source>Give the step a duration.</source>
+        <translation>请为阶跃设置持续时间。</translation>
+    </message>
+    <message>
+        <source>The test takes %1 s, longer than the maximum duration %2 s.</source>
+        <translation>测试需要 %1 秒，超过最长时间 %2 秒。</translation>
+    </message>
+    <message>
+        <source>Limits (none is assumed)</source>
+        <translation>限值（不设默认值）</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>测试</translation>
+    </message>
+    <message>
+        <source>Velocity step</source>
+        <translation>速度阶跃</translation>
+    </message>
+    <message>
+        <source>Position step</source>
+        <translation>位置阶跃</translation>
+    </message>
+    <message>
+        <source>Reversal (+V, then −V)</source>
+        <translation>正反转（先 +V，再 −V）</translation>
+    </message>
+    <message>
+        <source>Max. speed:</source>
+        <translation>最高速度：</translation>
+    </message>
+    <message>
+        <source>Max. travel:</source>
+        <translation>最大行程：</translation>
+    </message>
+    <message>
+        <source>Max. duration:</source>
+        <translation>最长时间：</translation>
+    </message>
+    <message>
+        <source>Test:</source>
+        <translation>测试：</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>速度：</translation>
+    </message>
+    <message>
+        <source>Duration:</source>
+        <translation>持续时间：</translation>
+    </message>
+    <message>
+        <source>Distance:</source>
+        <translation>距离：</translation>
+    </message>
+    <message>
+        <source>not set</source>
+        <translation>未设置</translation>
+    </message>
+    <message>
+        <source> counts</source>
+        <translation> 脉冲</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>From the start position, in the drive&apos;s position counts.</source>
+        <translation>自起始位置算起，单位为驱动器的位置脉冲数。</translation>
+    </message>
+    <message>
+        <source>Stop the test</source>
+        <translation>停止测试</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>Back to the start afterwards</source>
+        <translation>完成后回到起始位置</translation>
+    </message>
+    <message>
+        <source>After a completed test the axis moves back to where it started. An aborted test leaves it where it stopped.</source>
+        <translation>测试完成后轴会移回起始位置。中止的测试会让轴停在停止处。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TuningParametersEditor</name>
+    <message>
+        <source>The drive&apos;s dictionary is not known yet.</source>
+        <translation>尚未获得驱动器的参数字典。</translation>
+    </message>
+    <message>
+        <source>Edited, not yet written</source>
+        <translation>已编辑，尚未写入</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>未读取</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a whole number.</source>
+        <translation>“%1”不是整数。</translation>
+    </message>
+    <message>
+        <source>Not taken: %1</source>
+        <translation>未采用：%1</translation>
+    </message>
+    <message>
+        <source>Reading the tuning parameters failed: %1</source>
+        <translation>读取调谐参数失败：%1</translation>
+    </message>
+    <message>
+        <source>Not written: %1 Nothing was sent.</source>
+        <translation>未写入：%1 未向驱动器发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Not applied: %1 Nothing was sent.</source>
+        <translation>未应用：%1 未向驱动器发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Not applied: reading the drive failed: %1</source>
+        <translation>未应用：读取驱动器失败：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: the drive already has these %n value(s); nothing written.</source>
+        <translation>
+            <numerusform>%1：驱动器已是这 %n 个值；未写入任何内容。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n written and read back.</source>
+        <translation>
+            <numerusform>%n 个已写入并回读校验。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 applied:</source>
+        <translation>已应用 %1：</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n already equal.</source>
+        <translation>
+            <numerusform>%n 个本已相同。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not verified: %1.</source>
+        <translation>未经校验：%1。</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>读取</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>写入</translation>
+    </message>
+    <message>
+        <source>Write the edited values and read them back.</source>
+        <translation>写入已编辑的值并回读校验。</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s dictionary…</source>
+        <translation>正在读取驱动器的参数字典…</translation>
+    </message>
+    <message>
+        <source>This drive&apos;s dictionary names no tuning parameters. A dictionary with a &quot;tuning&quot; group names them (docs/dictionaries.md).</source>
+        <translation>该驱动器的参数字典未列出调谐参数。带有 "tuning" 组的字典可以列出它们（见 docs/dictionaries.md）。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s dictionary names no tuning parameters: shown are the DriveDesk simulator&apos;s loop gains (its own model). On a real drive these parameters may mean something else.</source>
+        <translation>该驱动器的参数字典未列出调谐参数：此处显示的是 DriveDesk 模拟器的环路增益（模拟器自身的模型）。在真实驱动器上，这些参数可能另有含义。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::TuningPanel</name>
+    <message>
+        <source>Step test: reading the drive&apos;s state…</source>
+        <translation>阶跃测试：正在读取驱动器状态…</translation>
+    </message>
+    <message>
+        <source>Step test: filling the capture before the motion…</source>
+        <translation>阶跃测试：正在填充运动前的采集数据…</translation>
+    </message>
+    <message>
+        <source>Step test: moving…</source>
+        <translation>阶跃测试：正在运动…</translation>
+    </message>
+    <message>
+        <source>Step test: stopping…</source>
+        <translation>阶跃测试：正在停止…</translation>
+    </message>
+    <message>
+        <source>Step test: going back to the start…</source>
+        <translation>阶跃测试：正在返回起始位置…</translation>
+    </message>
+    <message>
+        <source>Step test: running…</source>
+        <translation>阶跃测试：正在运行…</translation>
+    </message>
+    <message>
+        <source>Capture stopped: %1</source>
+        <translation>捕获已停止：%1</translation>
+    </message>
+    <message>
+        <source>Tuning</source>
+        <translation>调谐</translation>
+    </message>
+    <message>
+        <source>This drive reports no live channels to capture.</source>
+        <translation>该驱动器没有可捕获的实时通道。</translation>
+    </message>
+    <message>
+        <source>Filling the pre-trigger window…</source>
+        <translation>正在填充预触发窗口…</translation>
+    </message>
+    <message>
+        <source>Armed: waiting for the trigger %1.</source>
+        <translation>已布防：等待触发 %1。</translation>
+    </message>
+    <message>
+        <source>Triggered: recording…</source>
+        <translation>已触发：正在记录…</translation>
+    </message>
+    <message>
+        <source>Capturing…</source>
+        <translation>正在捕获…</translation>
+    </message>
+    <message>
+        <source>Captured %1 samples (%2 before the trigger), interval %3 ms.</source>
+        <translation>已捕获 %1 个样本（触发前 %2 个），采样间隔 %3 毫秒。</translation>
+    </message>
+    <message>
+        <source>capture %1 · %2</source>
+        <translation>捕获 %1 · %2</translation>
+    </message>
+    <message>
+        <source>Not started: stop the free capture first.</source>
+        <translation>未启动：请先停止自由捕获。</translation>
+    </message>
+    <message>
+        <source>Not started: %1</source>
+        <translation>未启动：%1</translation>
+    </message>
+    <message>
+        <source>Step test done; the axis is back at its start position.</source>
+        <translation>阶跃测试完成；轴已回到起始位置。</translation>
+    </message>
+    <message>
+        <source>Step test done; the axis did not return to its start position.</source>
+        <translation>阶跃测试完成；轴未回到起始位置。</translation>
+    </message>
+    <message>
+        <source>Step test ended early: %1</source>
+        <translation>阶跃测试提前结束：%1</translation>
+    </message>
+    <message>
+        <source>The axis was not seen at rest.</source>
+        <translation>未确认轴已静止。</translation>
+    </message>
+    <message>
+        <source>%1 %2 · %3</source>
+        <translation>%1 %2 · %3</translation>
+    </message>
+    <message>
+        <source>The tuning parameters could not be read: %1</source>
+        <translation>无法读取调谐参数：%1</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>Select a run whose parameters to apply.</source>
+        <translation>请选择要应用其参数的运行记录。</translation>
+    </message>
+    <message>
+        <source>The selected run holds no tuning parameters.</source>
+        <translation>所选运行记录不含调谐参数。</translation>
+    </message>
+    <message>
+        <source>Busy with the drive.</source>
+        <translation>正在与驱动器通信。</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s identity…</source>
+        <translation>正在读取驱动器信息…</translation>
+    </message>
+    <message>
+        <source>This drive offers no live values to capture: %1</source>
+        <translation>该驱动器不提供可捕获的实时值：%1</translation>
+    </message>
+    <message>
+        <source>Show:</source>
+        <translation>显示：</translation>
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation>运行记录</translation>
+    </message>
+    <message>
+        <source>Spectrum</source>
+        <translation>频谱</translation>
+    </message>
+    <message>
+        <source>Step test</source>
+        <translation>阶跃测试</translation>
+    </message>
+    <message>
+        <source>Capture</source>
+        <translation>捕获</translation>
+    </message>
+    <message>
+        <source>Tuning parameters</source>
+        <translation>调谐参数</translation>
+    </message>
+    <message>
+        <source>Apply this run&apos;s parameters</source>
+        <translation>应用此运行记录的参数</translation>
+    </message>
+    <message>
+        <source>This drive cannot be moved from here: %1</source>
+        <translation>无法从此处使该驱动器运动：%1</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s live values are needed for a step test.</source>
+        <translation>阶跃测试需要驱动器的实时值。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DemoMenu</name>
+    <message>
+        <source>&amp;Demo</source>
+        <translation>演示(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Inject alarm</source>
+        <translation>注入报警(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Start the demo bench first (File → Demo bench)</source>
+        <translation>请先启动演示试验台（文件 → 演示试验台）</translation>
+    </message>
+    <message>
+        <source>Alarm %1 on the %2 drive</source>
+        <translation>在 %2 驱动器上触发报警 %1</translation>
+    </message>
+    <message>
+        <source>Remove the alarm from the %1 drive</source>
+        <translation>解除 %1 驱动器的报警</translation>
+    </message>
+    <message>
+        <source>As when the cause is gone and the drive is reset at its own panel</source>
+        <translation>相当于故障原因已排除并在驱动器面板上复位</translation>
+    </message>
+</context>
+<context>
+    <name>dd::LoadDictionaryAction</name>
+    <message>
+        <source>Load &amp;dictionary…</source>
+        <translation>加载参数字典(&amp;D)…</translation>
+    </message>
+    <message>
+        <source>Load your drive&apos;s parameter dictionary (names, units, ranges) for the selected drive</source>
+        <translation>为所选驱动器加载其参数字典（名称、单位、范围）</translation>
+    </message>
+</context>
+<context>
+    <name>dd::DrivePanel</name>
+    <message>
+        <source>Earlier, at %1: %2</source>
+        <translation>此前（%1）：%2</translation>
     </message>
 </context>
 </TS>

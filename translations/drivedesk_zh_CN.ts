@@ -2909,8 +2909,8 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>PNG 图片 (*.png)</translation>
     </message>
     <message>
-        <source>Drag: zoom · wheel: zoom time (Shift: pan) · click: cursor A, Shift+click: cursor B · +/−, ←/→, Home: zoom, pan, reset · Esc: remove cursors</source>
-        <translation>拖动：缩放 · 滚轮：缩放时间（Shift：平移）· 单击：光标 A，Shift+单击：光标 B · +/−、←/→、Home：缩放、平移、复位 · Esc：移除光标</translation>
+        <source>Drag: zoom · wheel: zoom time (Shift: pan) · click: cursor A, Shift+click: cursor B · +/−, ←/→, Home: zoom, pan, reset · Del: remove cursors</source>
+        <translation>拖动：缩放 · 滚轮：缩放时间（Shift：平移）· 单击：光标 A，Shift+单击：光标 B · +/−、←/→、Home：缩放、平移、复位 · Del：移除光标</translation>
     </message>
     <message>
         <source>%1 (left)</source>
@@ -4068,7 +4068,7 @@ Write anyway?</source>
     </message>
     <message>
         <source>Most names here are generic: the protocol document does not name these parameters. Load your drive&apos;s dictionary: File → &lt;a href=&quot;load&quot;&gt;Load dictionary…&lt;/a&gt;</source>
-        <translation>此处的参数名称大多为通用名称：通讯协议文档未说明这些参数。请加载驱动器自己的参数字典：文件 → &lt;a href="load"&gt;加载参数字典…&lt;/a&gt;</translation>
+        <translation>此处的参数名称大多为通用名称：通讯协议文档未说明这些参数。请加载驱动器自己的参数字典：文件 → &lt;a href=&quot;load&quot;&gt;加载参数字典…&lt;/a&gt;</translation>
     </message>
     <message>
         <source>Dictionary not loaded: %1 The table is unchanged.</source>
@@ -7866,6 +7866,10 @@ firmware %2</source>
         <source>Menus and buttons: the letter underlined in their name</source>
         <translation>菜单和按钮：名称中带下划线的字母</translation>
     </message>
+    <message>
+        <source>Trend and Tuning plots: remove the cursors</source>
+        <translation>趋势与整定图：移除光标</translation>
+    </message>
 </context>
 <context>
     <name>dd::UserGuideDialog</name>
@@ -8500,7 +8504,7 @@ firmware %2</source>
     </message>
     <message>
         <source>This drive&apos;s dictionary names no tuning parameters. A dictionary with a &quot;tuning&quot; group names them (docs/dictionaries.md).</source>
-        <translation>该驱动器的参数字典未列出调谐参数。带有 "tuning" 组的字典可以列出它们（见 docs/dictionaries.md）。</translation>
+        <translation>该驱动器的参数字典未列出调谐参数。带有 &quot;tuning&quot; 组的字典可以列出它们（见 docs/dictionaries.md）。</translation>
     </message>
     <message>
         <source>The drive&apos;s dictionary names no tuning parameters: shown are the DriveDesk simulator&apos;s loop gains (its own model). On a real drive these parameters may mean something else.</source>

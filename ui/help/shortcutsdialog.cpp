@@ -61,6 +61,8 @@ void ShortcutsDialog::retranslate()
         {keys({QKeySequence(Qt::Key_Plus), QKeySequence(Qt::Key_Minus)}), tr("Trend: zoom in / out")},
         {keys({QKeySequence(Qt::Key_Left), QKeySequence(Qt::Key_Right)}), tr("Trend: pan in time")},
         {keys({QKeySequence(Qt::Key_Home), QKeySequence(Qt::Key_0)}), tr("Trend: reset the zoom")},
+        {keys({QKeySequence(Qt::Key_Delete), QKeySequence(Qt::Key_Backspace)}),
+         tr("Trend and Tuning plots: remove the cursors")},
         {tr("Alt + underlined letter"), tr("Menus and buttons: the letter underlined in their name")},
     };
     m_table->setRowCount(int(rows.size()));

@@ -460,7 +460,9 @@ void TrendPlot::keyPressEvent(QKeyEvent *event)
     case Qt::Key_Right: emit panBy(0.1); break;
     case Qt::Key_Home:
     case Qt::Key_0: emit resetRequested(); break;
-    case Qt::Key_Escape: emit markersCleared(); break;
+    // Esc is STOP everywhere in the application (ui/shell/stopaction.h): never taken here.
+    case Qt::Key_Delete:
+    case Qt::Key_Backspace: emit markersCleared(); break;
     default: QWidget::keyPressEvent(event); return;
     }
     event->accept();

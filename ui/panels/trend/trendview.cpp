@@ -164,7 +164,7 @@ void TrendView::connectPlot()
 void TrendView::retranslateUi()
 {
     m_plot->setToolTip(tr("Drag: zoom · wheel: zoom time (Shift: pan) · click: cursor A, Shift+click: "
-                          "cursor B · +/−, ←/→, Home: zoom, pan, reset · Esc: remove cursors"));
+                          "cursor B · +/−, ←/→, Home: zoom, pan, reset · Del: remove cursors"));
     m_plot->setTimeTitle(tr("Time [s]"));
     invalidate();
     refreshNow();

@@ -26,22 +26,22 @@ shoot() {   # shoot LANG PANEL FILE [FAMILY: the drive to select] [a file to ope
   [ -n "${4:-}" ] && drive=(--drive "$4")
   [ -n "${5:-}" ] && open=("$5")
   XDG_CONFIG_HOME="$settings/$1" QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" \
-    xvfb-run --auto-servernum --server-args="-screen 0 1440x900x24" \
-    "$app" -geometry 1400x860+0+0 --demo --lang "$1" --panel "$2" "${drive[@]}" --screenshot "$out/$3" \
+    xvfb-run --auto-servernum --server-args="-screen 0 1280x720x24" \
+    "$app" -geometry 1280x720+0+0 --demo --lang "$1" --panel "$2" "${drive[@]}" --screenshot "$out/$3" \
       --screenshot-delay "$delay" "${open[@]}"
   echo "screenshots: $out/$3"
 }
 
-shoot en overview main-window-en.png
-shoot zh_CN overview main-window-zh_CN.png
-shoot en trend trend-en.png
-shoot en parameters parameters-en.png
-shoot zh_CN parameters parameters-zh_CN.png
-shoot en backup backup-en.png
-shoot en alarms alarms-en.png
-shoot en ee eeprom-en.png
-shoot en motion motion-en.png servo-can
-shoot zh_CN motion motion-zh_CN.png servo-can
+# A laptop's 1280x720, every tab in both languages.
+for lang in en zh_CN; do
+  shoot "$lang" overview "main-window-$lang.png"
+  shoot "$lang" trend "trend-$lang.png"
+  shoot "$lang" parameters "parameters-$lang.png"
+  shoot "$lang" backup "backup-$lang.png"
+  shoot "$lang" alarms "alarms-$lang.png"
+  shoot "$lang" ee "eeprom-$lang.png"
+  shoot "$lang" motion "motion-$lang.png" servo-can
+done
 # The Tuning tab with a run in it: a velocity step taken by the CLI on its own simulator.
 run="$settings/velocity-step.ddrun"
 QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" "$build/app/drivedesk-cli" --sim --family servo-can \

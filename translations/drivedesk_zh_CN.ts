@@ -328,6 +328,10 @@
             <numerusform>比较 %n 台驱动器…</numerusform>
         </translation>
     </message>
+    <message>
+        <source>#%1 %2</source>
+        <translation>#%1 %2</translation>
+    </message>
 </context>
 <context>
     <name>dd::CanLink</name>

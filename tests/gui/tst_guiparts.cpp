@@ -67,7 +67,8 @@ private slots:
         QTreeWidgetItem *d = tree.driveItem(7, 5);
         QVERIFY(d);
         QCOMPARE(d->text(BusTreeWidget::FirmwareColumn), QStringLiteral("V2.1"));
-        QVERIFY(d->text(BusTreeWidget::NameColumn).contains(QLatin1String("#5")));
+        QVERIFY2(d->text(BusTreeWidget::NameColumn).startsWith(QLatin1String("#5 ")), // address first
+                 qPrintable(d->text(BusTreeWidget::NameColumn)));
         QVERIFY(c->text(BusTreeWidget::NameColumn).contains(QLatin1String("2 drive(s)")));
 
         // Narrow: position and firmware stay in view (no sideways scrolling); the name is

@@ -1,5 +1,6 @@
 #include "ui/bus/bustreewidget.h"
 
+#include "ui/bus/bustreedelegate.h"
 #include "ui/bus/drivedirectory.h"
 #include "ui/common/displaytext.h"
 
@@ -32,9 +33,10 @@ BusTreeWidget::BusTreeWidget(DriveDirectory *directory, QWidget *parent)
     setSelectionMode(QAbstractItemView::ExtendedSelection);
     setContextMenuPolicy(Qt::CustomContextMenu);
     // Every column in view without sideways scrolling: the name takes what is left and is
-    // elided in the middle (two links differ at their ends: "/dev/ttyUSB0 …" vs "…USB1");
+    // elided (links in the middle, drives at the end after their address: BusTreeDelegate);
     // its tool tip has the full text. State, position and firmware fit their contents.
     setTextElideMode(Qt::ElideMiddle);
+    setItemDelegate(new BusTreeDelegate(this));
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     header()->setStretchLastSection(false);
     header()->setSectionResizeMode(NameColumn, QHeaderView::Stretch);
@@ -153,7 +155,8 @@ void BusTreeWidget::updateDrive(int id, int address)
         return;
     const DriveInfo info = m_directory->info(id, address);
     const DriveStatus &s = info.status;
-    item->setText(NameColumn, DisplayText::driveName(info.identity.family, address));
+    // Address first: what tells two drives of a link apart stays in view when elided.
+    item->setText(NameColumn, tr("#%1 %2").arg(address).arg(DisplayText::familyName(info.identity.family)));
     QString tip = tr("%1, address %2").arg(DisplayText::familyName(info.identity.family)).arg(address);
     if (!info.identity.model.isEmpty())
         tip += QStringLiteral("\n") + tr("Model: %1").arg(info.identity.model);

@@ -71,9 +71,7 @@ StepTest::StepTest(Drive *drive, QObject *parent)
     connect(&m_renew, &QTimer::timeout, drive, &Drive::renewJogLease);
     connect(drive, &Drive::alarmChanged, this, [this](int code) {
         if (code != 0 && isRunning())
-            abortWith(
-                QStringLiteral("alarm"),
-                {ErrorCode::DriveException, tr("The drive raised alarm %1 during the step test.").arg(code), code});
+            abortOnAlarm(code);
     });
     connect(drive, &Drive::stopRequested, this, [this] {
         if (isRunning() && !m_ownStop && m_result.moved)
@@ -440,22 +438,35 @@ void StepTest::waitAtRest()
     pollAtRest();
 }
 
+void StepTest::abortOnAlarm(int code)
+{
+    abortWith(QStringLiteral("alarm"),
+              {ErrorCode::DriveException, tr("The drive raised alarm %1 during the step test.").arg(code), code});
+}
+
+std::optional<DriveStatus> StepTest::statusWhile(DriveReply *reply, Phase phase)
+{
+    if (m_aborting || m_phase != phase)
+        return std::nullopt;
+    if (!reply->ok()) {
+        abortWith(QStringLiteral("link-lost"), reply->error());
+        return std::nullopt;
+    }
+    const DriveStatus status = reply->status();
+    if (status.alarmCode != 0) {
+        abortOnAlarm(status.alarmCode);
+        return std::nullopt;
+    }
+    return status;
+}
+
 void StepTest::pollAtRest()
 {
     watch(m_drive->readStatus(), [this](DriveReply *r) {
-        if (m_aborting || m_phase != Phase::Stopping)
+        const std::optional<DriveStatus> status = statusWhile(r, Phase::Stopping);
+        if (!status)
             return;
-        if (!r->ok()) {
-            abortWith(QStringLiteral("link-lost"), r->error());
-            return;
-        }
-        const DriveStatus s = r->status();
-        if (s.alarmCode != 0) {
-            abortWith(QStringLiteral("alarm"),
-                      {ErrorCode::DriveException,
-                       tr("The drive raised alarm %1 during the step test.").arg(s.alarmCode), s.alarmCode});
-            return;
-        }
+        const DriveStatus &s = *status;
         if (s.positionValid && !checkTravel(s.position))
             return;
         countRest(s);
@@ -602,19 +613,10 @@ void StepTest::goBack()
 void StepTest::pollBack()
 {
     watch(m_drive->readStatus(), [this](DriveReply *r) {
-        if (m_aborting || m_phase != Phase::Returning)
+        const std::optional<DriveStatus> status = statusWhile(r, Phase::Returning);
+        if (!status)
             return;
-        if (!r->ok()) {
-            abortWith(QStringLiteral("link-lost"), r->error());
-            return;
-        }
-        const DriveStatus s = r->status();
-        if (s.alarmCode != 0) {
-            abortWith(QStringLiteral("alarm"),
-                      {ErrorCode::DriveException,
-                       tr("The drive raised alarm %1 during the step test.").arg(s.alarmCode), s.alarmCode});
-            return;
-        }
+        const DriveStatus &s = *status;
         if (s.positionValid)
             m_result.endPosition = s.position;
         if (s.running)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/common/error.h"
+#include "core/drive/drivetypes.h"
 #include "core/tuning/capturesettings.h"
 #include "core/tuning/steplimits.h"
 #include "core/tuning/stepresult.h"
@@ -11,6 +12,7 @@
 #include <QPointer>
 #include <QTimer>
 #include <functional>
+#include <optional>
 
 namespace dd {
 
@@ -18,7 +20,6 @@ class CaptureSession;
 class Drive;
 class DriveReply;
 struct ChannelInfo;
-struct DriveStatus;
 
 // A step-response test on a live drive (docs/tuning.md), for the CLI's `step` and the GUI's
 // Tuning tab:
@@ -98,6 +99,10 @@ private:
     void goBack();
     void pollBack();
     void abortWith(const QString &cause, const Error &error);
+    void abortOnAlarm(int code);
+    // The status a poll read while the test is still in `phase`; aborts (link lost, alarm)
+    // and returns nothing otherwise.
+    std::optional<DriveStatus> statusWhile(DriveReply *reply, Phase phase);
     void confirmStopped();
     void finish(StepResult::Outcome outcome);
 

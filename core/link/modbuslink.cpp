@@ -87,6 +87,10 @@ void ModbusLink::setRetries(int retries)
 {
     d->m_settings.retries = std::max(0, retries);
 }
+void ModbusLink::setRetriedExceptionCode(int code)
+{
+    d->m_retriedExceptionCode = code;
+}
 void ModbusLink::setMinGapMs(int ms)
 {
     d->m_settings.minGapMs = std::max(0, ms);

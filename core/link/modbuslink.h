@@ -68,6 +68,9 @@ public:
     bool setBaudRate(qint32 baud); // between transactions only
     void setResponseTimeoutMs(int ms);
     void setRetries(int retries);
+    // An exception reply with this code takes one of the request's retries instead of ending
+    // it (servo-modbus: 0x04, also the answer to a damaged request); -1 (default): none.
+    void setRetriedExceptionCode(int code);
     void setMinGapMs(int ms);
     void setMinCommandSpacingMs(int ms);
 

@@ -80,6 +80,7 @@ public:
     quint64 m_timeouts = 0;
     quint64 m_retries = 0;
     quint64 m_checksumErrors = 0;
+    int m_retriedExceptionCode = -1; // ModbusLink::setRetriedExceptionCode
     quint64 m_lateReplies = 0;
     quint64 m_reconnects = 0;
     qint64 m_reconnectCostUs = 1000; // running average of a client reconnect
@@ -100,6 +101,7 @@ private:
     void noteStrayActivity();
     void finishCurrent(const Error &error, const QList<quint16> &registers = {});
     void retryOrFail(const Error &error, int quietMs);
+    void finishException(const Error &error); // exception reply: retried code or the end
     void taint(int address, qint64 untilUs);
     qint64 cleanAtUs(int address) const;
     void recordTx(const QByteArray &adu, const QString &note);

@@ -73,7 +73,7 @@ void ModbusLink::Private::onQtFinished(QModbusReply *reply)
                         .arg(hexByte(code))
                         .arg(modbusrtu::exceptionCodeName(quint8(code))),
                     code};
-            finishCurrent(e);
+            finishException(e);
             return;
         }
         break;
@@ -281,14 +281,25 @@ void ModbusLink::Private::onQtIntermediateError(QModbusReply *reply, QModbusDevi
     recordRx(adu,
              QStringLiteral("exception %1 with address byte %2")
                  .arg(modbusrtu::exceptionCodeName(quint8(code)), hexByte(quint8(adu.at(0)))));
-    finishCurrent({ErrorCode::DriveException,
-                   ModbusLink::tr("The drive at address %1 rejected the request (Modbus exception "
-                                  "%2: %3; the reply carried address byte %4).")
-                       .arg(pdu.address)
-                       .arg(hexByte(code))
-                       .arg(modbusrtu::exceptionCodeName(quint8(code)))
-                       .arg(hexByte(quint8(adu.at(0)))),
-                   code});
+    finishException({ErrorCode::DriveException,
+                     ModbusLink::tr("The drive at address %1 rejected the request (Modbus exception "
+                                    "%2: %3; the reply carried address byte %4).")
+                         .arg(pdu.address)
+                         .arg(hexByte(code))
+                         .arg(modbusrtu::exceptionCodeName(quint8(code)))
+                         .arg(hexByte(quint8(adu.at(0)))),
+                     code});
+}
+
+void ModbusLink::Private::finishException(const Error &error)
+{
+    // servo-modbus: exception 0x04, the seed's only one, is also a drive's answer to a
+    // request that reached it damaged (bad CRC; docs/protocols/servo-modbus.md, "Exceptions"):
+    // it takes one of the request's retries, like a garbled reply. Other codes are final.
+    if (m_retriedExceptionCode >= 0 && error.driveCode == m_retriedExceptionCode)
+        retryOrFail(error, 0);
+    else
+        finishCurrent(error);
 }
 
 QByteArray ModbusLink::Private::exceptionInSniffedBytes() const

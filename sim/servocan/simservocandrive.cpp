@@ -154,6 +154,8 @@ QList<CanFrameData> SimServoCanDrive::onCanFrame(const CanFrameData &frame, qint
     if (!d.ok())
         return {}; // a real drive ignores what it does not understand
     const sc::Message &m = *d.value;
+    if (!m.reservedByteOk)
+        return {}; // DATE[7] "目前需固定的填入 0xff": a frame without it is not taken
     if (sc::commandDirection(m.command) == sc::Direction::DriveToHost)
         return {}; // another drive's frame on our ID (a misconfigured bus): not for us
     ++m_stats.framesForUs;

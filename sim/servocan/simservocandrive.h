@@ -40,7 +40,8 @@ namespace dd {
 // move, as the seed says; 0x23 during a move changes its speed; 0x25 enables / disables;
 // 0x26 decelerates to rest and stays enabled; 0x28 decelerates and disables at rest;
 // 0x50 redefines the position; 0x81 clears the alarm (the servo stays disabled).
-// Nothing is echoed: only 0x12 is answered.
+// Nothing is echoed: only 0x12 is answered. A frame whose b7 is not 0xFF (the seed's
+// reserved checksum, "目前需固定的填入 0xff") is not taken.
 //
 // Closed loop (the simulator's own model, docs/tuning.md; the seed names no gain
 // parameter): P60 speed-loop gain (Hz, default 30), P61 speed-loop integral gain (1/s, 30),

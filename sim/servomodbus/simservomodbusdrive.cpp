@@ -1,6 +1,7 @@
 #include "sim/servomodbus/simservomodbusdrive.h"
 
 #include "core/link/wiretime.h"
+#include "core/protocol/modbus/crc16.h"
 #include "sim/bus/simlogging.h"
 
 #include <QJsonArray>
@@ -151,15 +152,57 @@ QList<QByteArray> SimServoModbusDrive::onBusBytes(const QByteArray &bytes, qint6
     advanceTo(nowUs);
     // RTU frames end with 3.5 quiet characters: bytes after a longer gap start afresh.
     const qint64 chunkStartUs = nowUs - qint64(WireTime::serialBytesUs(bytes.size(), m_baud, bitsPerChar()));
-    if (m_lastBytesUs >= 0 && m_parser.pendingBytes() > 0
-        && chunkStartUs - m_lastBytesUs > qint64(WireTime::modbusSilenceUs(m_baud, bitsPerChar())))
+    const bool silenceBefore = m_lastBytesUs < 0
+        || chunkStartUs - m_lastBytesUs > qint64(WireTime::modbusSilenceUs(m_baud, bitsPerChar()));
+    if (silenceBefore) {
         m_parser.discardPending();
+        m_frameBytes.clear();
+    }
     m_lastBytesUs = nowUs;
-    m_parser.feed(bytes);
+    QByteArray heard = bytes;
+    if (m_damageRequests > 0 && silenceBefore && !heard.isEmpty() && quint8(heard.at(0)) == m_address) {
+        --m_damageRequests;
+        heard.back() = char(heard.back() ^ 0x01);
+    }
+    m_frameBytes += heard;
+    if (m_frameBytes.size() > ModbusRtuStreamParser::DefaultBufferCap)
+        m_frameBytes.remove(0, m_frameBytes.size() - ModbusRtuStreamParser::DefaultBufferCap);
+    m_parser.feed(heard);
     QList<QByteArray> replies;
-    while (m_parser.hasFrame())
+    bool framed = false;
+    while (m_parser.hasFrame()) {
+        framed = true;
         replies += handleFrame(m_parser.takeFrame(), nowUs);
+    }
+    if (framed)
+        m_frameBytes.clear();
+    else
+        replies += answerDamagedRequest();
     return replies;
+}
+
+QList<QByteArray> SimServoModbusDrive::answerDamagedRequest()
+{
+    // What arrived since the last silence, if it is a whole request to this drive by its
+    // function's length and its CRC fails, gets the seed's error reply.
+    if (m_frameBytes.size() < 2 || quint8(m_frameBytes.at(0)) != m_address)
+        return {};
+    const quint8 function = quint8(m_frameBytes.at(1));
+    qsizetype length = 0;
+    if (function == modbusrtu::ReadHoldingRegisters || function == modbusrtu::WriteSingleRegister)
+        length = 8;
+    else if (function == modbusrtu::WriteMultipleRegisters && m_frameBytes.size() >= 7)
+        length = 9 + quint8(m_frameBytes.at(6));
+    if (length == 0 || m_frameBytes.size() < length || hasValidCrc16(m_frameBytes.left(length)))
+        return {};
+    m_frameBytes.clear();
+    m_parser.discardPending();
+    ++m_checksumErrors;
+    modbusrtu::Request r;
+    r.address = static_cast<quint8>(m_address);
+    r.function = function;
+    ++m_answered;
+    return {exceptionReply(r)};
 }
 
 QList<QByteArray> SimServoModbusDrive::handleFrame(const QByteArray &adu, qint64 nowUs)

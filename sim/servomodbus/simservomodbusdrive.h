@@ -23,7 +23,12 @@ namespace dd {
 //  - Exceptions (code 0x04, the only one the seed lists) for: a range outside one block,
 //    a count of 0 or above 20, an EE code outside 1..5, the EE format the firmware lacks.
 //    The address byte of an exception reply is 0x01, as the seed says (config option:
-//    the drive's own address). A frame with a bad CRC or an unknown function gets no reply.
+//    the drive's own address). A frame with an unknown function gets no reply.
+//  - A request to this drive's address whose CRC fails gets the seed's error reply
+//    [0x01][function | 0x80][0x04] (驱动器在对接收的数据进行校验后，若检测出错误 … 若读操作
+//    校验出错，则出错码为读操作功能码+0x80; docs/protocols/servo-modbus.md, "Exceptions").
+//    A damaged frame for another address, the broadcast or with an unknown function code
+//    gets no reply. The frame is delimited by the RTU silence and the function's length.
 //  - Broadcast (address 0): writes and EE operations are carried out, nothing is answered.
 //  - PA2 (firmware) is read-only: writes to it are accepted and ignored.
 //  - The address the drive answers to is PA51 as loaded at power-up (powerCycle() or
@@ -111,6 +116,10 @@ public:
     quint64 exceptionsSent() const { return m_exceptions; }
     quint64 broadcastsHandled() const { return m_broadcasts; }
     quint64 framesIgnored() const { return m_ignored; }
+    quint64 checksumErrors() const { return m_checksumErrors; }
+    // Line noise on the way to the drive (tests): the next `count` requests addressed to it
+    // arrive with one bit of their last byte flipped (a bad CRC).
+    void damageIncomingRequests(int count) { m_damageRequests = count < 0 ? 0 : count; }
 
     // --state files of drivedesk-sim: working set, EEPROM, backup area, alarm, address.
     QJsonObject saveState() const;
@@ -118,6 +127,7 @@ public:
 
 private:
     QList<QByteArray> handleFrame(const QByteArray &adu, qint64 nowUs);
+    QList<QByteArray> answerDamagedRequest();
     QByteArray exceptionReply(const modbusrtu::Request &request);
     QByteArray handleRead(const modbusrtu::Request &request);
     QByteArray handleWrite(const modbusrtu::Request &request, bool broadcast);
@@ -137,6 +147,9 @@ private:
     bool m_servoOnInput = true;
     ModbusRtuStreamParser m_parser{ModbusRtuStreamParser::Mode::Requests};
     qint64 m_lastBytesUs = -1;
+    QByteArray m_frameBytes; // since the last RTU silence: a request whose CRC may fail
+    int m_damageRequests = 0;
+    quint64 m_checksumErrors = 0;
     qint64 m_nowUs = 0;
 
     std::optional<servomodbus::EeOp> m_ee; // the legacy operation started / finished

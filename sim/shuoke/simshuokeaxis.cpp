@@ -70,10 +70,12 @@ void SimShuokeAxis::checkSwitches(double before, double after)
 {
     if (m_homing) {
         const double o = static_cast<double>(m_switches.origin);
-        if ((before - o) * (after - o) <= 0.0) {
+        const bool searching = m_homingHow != Homing::LimitFirst || m_homingReversed;
+        if (searching && (before - o) * (after - o) <= 0.0) {
             m_motor.emergencyStop();
             m_homing = false;
-            zeroCounters();
+            if (m_homingHow != Homing::KeepCounters)
+                zeroCounters();
             return;
         }
         const bool atLimit = (m_homingDir < 0 && leftLimit()) || (m_homingDir > 0 && rightLimit());
@@ -126,7 +128,7 @@ void SimShuokeAxis::changeSpeed(double speed)
         const double dir = m_motor.targetSpeed() < 0.0 ? -1.0 : 1.0;
         m_motor.runSpeed(dir * magnitude);
     } else {
-        m_motor.setMoveSpeed(magnitude);
+        m_motor.setMoveSpeed(std::max(magnitude, 1.0)); // a move never stalls on its way
     }
 }
 
@@ -154,8 +156,14 @@ void SimShuokeAxis::emergencyStop()
     m_motor.emergencyStop();
 }
 
-void SimShuokeAxis::startHoming(bool positiveFirst, double speed)
+double SimShuokeAxis::cruiseSpeed() const
 {
+    return std::abs(m_motor.mode() == MotorModel::Mode::Speed ? m_motor.targetSpeed() : m_motor.moveSpeed());
+}
+
+void SimShuokeAxis::startHoming(bool positiveFirst, double speed, Homing how)
+{
+    m_homingHow = how;
     m_homingDir = positiveFirst ? 1 : -1;
     m_homingSpeed = std::max(std::abs(speed), 1.0);
     m_homingReversed = false;

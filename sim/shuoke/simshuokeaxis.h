@@ -60,12 +60,20 @@ public:
     void moveToMotorPosition(qint64 target, double speed);
     void stop();
     void emergencyStop();
-    void startHoming(bool positiveFirst, double speed);
+    // How a homing run searches (seed 0x3E and the 1-byte forms of 0x4E / 0x4F).
+    enum class Homing {
+        ReverseAtLimit, // 0x3E: toward the origin, reverse once at a limit, zero the counters
+        LimitFirst,     // 0x4E: to the limit first, then back to the origin, zero the counters
+        KeepCounters,   // 0x4F: as 0x3E, the counters are not zeroed
+    };
+    void startHoming(bool positiveFirst, double speed, Homing how = Homing::ReverseAtLimit);
 
     bool isRunning() const;
     bool isHoming() const { return m_homing; }
     bool homingFailed() const { return m_homingFailed; }
     double speed() const { return m_motor.speed(); }
+    // The speed magnitude the motion is heading for: a jog's target speed, a move's cruise speed.
+    double cruiseSpeed() const;
     qint64 motorPosition() const { return m_motor.position(); }
 
     bool leftLimit() const;
@@ -108,6 +116,7 @@ private:
     bool m_homingFailed = false;
     bool m_homingReversed = false;
     int m_homingDir = 0;
+    Homing m_homingHow = Homing::ReverseAtLimit;
     double m_homingSpeed = 0.0;
 };
 

@@ -8,6 +8,10 @@ namespace dd {
 
 using namespace shuoke;
 
+namespace {
+constexpr quint8 kCanMaxAddress = 250; // 251..255 仍然保留 (reserved)
+} // namespace
+
 SimShuokeCanDevice::SimShuokeCanDevice(const SimShuokeDrive::Config &config)
     : m_drive(config)
 {
@@ -16,8 +20,12 @@ SimShuokeCanDevice::SimShuokeCanDevice(const SimShuokeDrive::Config &config)
 QList<CanFrameData> SimShuokeCanDevice::onCanFrame(const CanFrameData &frame, qint64 nowUs)
 {
     advanceTo(nowUs);
+    // The seed's filter: ID = first data byte = device address (1..250, 0 = broadcast,
+    // 251..255 reserved) and CAN的数据长度 = 8. Anything else is not for the drive.
+    if (frame.data.size() != kCanFrameBytes)
+        return {};
     const Decoded<Frame> request = decodeCan(frame);
-    if (!request.ok())
+    if (!request.ok() || request.value->address > kCanMaxAddress)
         return {};
     const std::optional<Frame> reply = m_drive.handle(*request.value, SimShuokeDrive::Medium::Can, nowUs);
     if (!reply)

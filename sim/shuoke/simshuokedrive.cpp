@@ -1,5 +1,6 @@
 #include "sim/shuoke/simshuokedrive.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace dd {
@@ -8,6 +9,7 @@ using namespace shuoke;
 
 namespace {
 constexpr int kMaxRecordedRequests = 4096;
+constexpr qint64 kMaxPulses31 = 0x7FFFFFFF; // "31位"
 } // namespace
 
 SimShuokeDrive::SimShuokeDrive()
@@ -208,6 +210,11 @@ std::optional<Frame> SimShuokeDrive::handle(const Frame &request, Medium medium,
     std::optional<Frame> reply = execute(request, medium);
     if (broadcast && cmd != CmdQueryAddress)
         return std::nullopt;
+    // The reply command the seed prints: 0x41 for 0x42..0x46, 0x3E for the homing forms of
+    // 0x4E / 0x4F (1 data byte); every other command answers with its own code.
+    if (reply && !reply->failure && info->replyCommands[1] != 0
+        && (len == 1 || (cmd != CmdHomeOrSCurveInt32 && cmd != CmdHomeOrSCurveDirection24)))
+        reply->command = info->replyCommands[1];
     return reply;
 }
 
@@ -222,18 +229,21 @@ std::optional<Frame> SimShuokeDrive::execute(const Frame &request, Medium medium
     switch (cmd) {
     case CmdHandshake:
     case CmdQueryAddress: return ok();
-    case CmdChangeAddress: m_pendingAddress = byte0; return ok(data);
+    // The seed's worked example (ASCII and CAN chapters: 发送 01 22 01 02, 应答 02 22 01 02)
+    // answers from the new address; the drive listens on the old one until it restarts.
+    case CmdChangeAddress: m_pendingAddress = byte0; return Frame::make(byte0, cmd, data);
     case CmdGetBaudCode: return ok(QByteArray(1, static_cast<char>(m_config.baudCode)));
     case CmdSetBaudCode:
         setSetting(CmdSetBaudCode, byte0); // the new rate applies to the next request
         return ok(data);
+    // Gear numerator / denominator: the low 16 bits (大于16位，只取16无符号位数).
+    case CmdSetGearNumerator:
+    case CmdSetGearDenominator: setSetting(cmd, dataUInt(data) & 0xFFFFu); return ok();
     case CmdSetStartSpeed:
     case CmdSetMaxSpeed:
     case CmdSetStopSpeed:
     case CmdSetAcceleration:
     case CmdSetDeceleration:
-    case CmdSetGearNumerator:
-    case CmdSetGearDenominator: setSetting(cmd, dataUInt(data) & 0xFFFFu); return ok();
     case CmdSetHomingSpeed:
     case CmdSetSpeedStep:
     case CmdEncoderAbTolerance:
@@ -301,24 +311,37 @@ std::optional<Frame> SimShuokeDrive::executeMotion(const Frame &request)
         m_axis.moveRelative(decodeDirection24(data, m_config.byteOrder).value_or(0), maxSpeed);
         return done;
     case CmdClosedLoopGearedMove: {
+        // 实际反馈脉冲数 = 设定反馈脉冲数 * 齿轮分子 / 齿轮分母; 最高支持 … 31位: a product
+        // beyond 31 bits is out of range (0x04).
         const qint64 num = m_settings.value(CmdSetGearNumerator);
         const qint64 den = std::max<qint64>(1, m_settings.value(CmdSetGearDenominator));
-        m_axis.moveRelative(qint64(dataInt(data)) * num / den, maxSpeed);
+        const qint64 pulses = qint64(dataInt(data)) * num / den;
+        if (pulses > kMaxPulses31 || pulses < -kMaxPulses31)
+            return failure(cmd, FailureOutOfRange);
+        m_axis.moveRelative(pulses, maxSpeed);
         return done;
     }
-    case CmdClosedLoopMoveAbsolute:
-        m_axis.moveToMotorPosition(m_axis.motorPositionForClosedLoop(dataInt(data)), maxSpeed);
+    case CmdClosedLoopMoveAbsolute: {
+        // 计算后的实际运动距离最大为31位数据: the distance to the target fits 31 bits.
+        const qint64 target = m_axis.motorPositionForClosedLoop(dataInt(data));
+        const qint64 distance = target - m_axis.motorPosition();
+        if (distance > kMaxPulses31 || distance < -kMaxPulses31)
+            return failure(cmd, FailureOutOfRange);
+        m_axis.moveToMotorPosition(target, maxSpeed);
         return done;
+    }
     case CmdRunSpeed: m_axis.runSpeed(dataInt(data)); return done;
     case CmdRunSpeedDirection24: m_axis.runSpeed(decodeDirection24(data, m_config.byteOrder).value_or(0)); return done;
     case CmdChangeSpeed: m_axis.changeSpeed(dataUInt(data)); return done;
     case CmdSpeedStepUp:
     case CmdSpeedStepDown: {
+        // 运动中定量改变速度: 运动速度 = 当前运动速度 ± F, during motion only: a jog keeps
+        // its direction, a move its target; at rest nothing starts.
+        if (!m_axis.isRunning() || m_axis.isHoming())
+            return done;
         const double step = static_cast<double>(m_settings.value(CmdSetSpeedStep));
-        const double v = m_axis.speed();
-        const double dir = v < 0 ? -1.0 : 1.0;
-        const double magnitude = std::max(0.0, std::abs(v) + (cmd == CmdSpeedStepUp ? step : -step));
-        m_axis.runSpeed(dir * std::min(magnitude, static_cast<double>(kMaxSpeed)));
+        const double magnitude = m_axis.cruiseSpeed() + (cmd == CmdSpeedStepUp ? step : -step);
+        m_axis.changeSpeed(std::clamp(magnitude, 0.0, static_cast<double>(kMaxSpeed)));
         return done;
     }
     // "4BYTE 运动速度": the magnitude; only the position (0x37) is signed.
@@ -342,7 +365,11 @@ std::optional<Frame> SimShuokeDrive::executeMotion(const Frame &request)
     case CmdHomeOrSCurveInt32:
     case CmdHomeOrSCurveDirection24:
         if (data.size() == 1) {
-            m_axis.startHoming(static_cast<quint8>(data.at(0)) == 1, homing);
+            // 0x4E: 先到限位，然后反方向查找 (limit first, then back to the origin), zeroes;
+            // 0x4F: as 0x3E but without 自动将相对位置和绝对位置清零 (no zeroing).
+            m_axis.startHoming(static_cast<quint8>(data.at(0)) == 1, homing,
+                               cmd == CmdHomeOrSCurveInt32 ? SimShuokeAxis::Homing::LimitFirst
+                                                           : SimShuokeAxis::Homing::KeepCounters);
         } else {
             const qint64 distance = cmd == CmdHomeOrSCurveInt32
                 ? dataInt(data)

@@ -173,8 +173,15 @@ QList<QByteArray> SimShuokeSerialDevice::frameBinary(qint64 nowUs)
         const qsizetype size = kRtuOverhead + len;
         if (m_rx.size() < size)
             break;
-        const QByteArray bytes = m_rx.left(size);
-        const bool crcOk = hasValidCrc16(bytes) || command == CmdHandshake || m_drive.skipsCrcCheck();
+        QByteArray bytes = m_rx.left(size);
+        bool crcOk = hasValidCrc16(bytes) || command == CmdHandshake || m_drive.skipsCrcCheck();
+        // 驱动器接受命令同时支持这两种格式 (0x49): a request may also come in the fixed 8 + CRC
+        // layout, its data zero-padded to 5 bytes (when it arrives whole).
+        if (!crcOk && len <= kFixedDataSize && m_rx.size() >= kFixedFrameSize
+            && hasValidCrc16(m_rx.left(kFixedFrameSize))) {
+            bytes = m_rx.left(kFixedFrameSize);
+            crcOk = true;
+        }
         if (!crcOk) {
             if (address == m_drive.address()) {
                 ++m_checksumErrors;
@@ -185,7 +192,7 @@ QList<QByteArray> SimShuokeSerialDevice::frameBinary(qint64 nowUs)
             }
             continue;
         }
-        m_rx.remove(0, size);
+        m_rx.remove(0, bytes.size());
         const Frame request = Frame::make(address, command, bytes.mid(3, len));
         if (const std::optional<Frame> reply = m_drive.handle(request, SimShuokeDrive::Medium::Serial, nowUs))
             out.append(encodeRtuReply(*reply));

@@ -49,6 +49,7 @@ private slots:
     void parameterReadAndWrite();
     void everyReadTypeIsAnswered();
     void framesForOthersAreIgnored();
+    void reservedByteMustBe0xFF();
     void heartbeatEvery30ms();
     void noHeartbeatWithoutCanMode();
     void alarmFramesOnChangeAndEvery2s();
@@ -131,6 +132,23 @@ void TestSimServoCanDrive::framesForOthersAreIgnored()
     QVERIFY(feed(d, {0x66, QByteArray::fromHex("0212FA01000000FF"), true}, 0).isEmpty()); // extended
     QVERIFY(feed(d, sc::heartbeat(2, 0x88, 0), 0).isEmpty());                             // drive -> host
     QCOMPARE(d.stats().readsAnswered, 0u);
+}
+
+// DATE[7] "预留的通讯数据软件校验值，目前需固定的填入 0xff": a frame whose b7 is not 0xFF is
+// not taken (it used to be read, written and run like any other).
+void TestSimServoCanDrive::reservedByteMustBe0xFF()
+{
+    SimServoCanDrive d(0);
+    QVERIFY(feed(d, {0x64, QByteArray::fromHex("0012FA4B00000000"), false}, 0).isEmpty());       // read P75, b7 = 0
+    QVERIFY(feed(d, {0x64, QByteArray::fromHex("0015010A00D4FE00"), false}, 1 * kMs).isEmpty()); // P10 = -300
+    QCOMPARE(feed(d, {0x64, QByteArray::fromHex("0012FA0A000000FF"), false}, 2 * kMs),
+             QList<CanFrameData>({{0x64, QByteArray::fromHex("0012FA0A0095FDFF"), false}})); // P10 kept its -619
+    // The seed's speed-mode example (+100) with b7 = 0x00: no motion.
+    feed(d, {0x64, QByteArray::fromHex("0020006400000000"), false}, 3 * kMs);
+    run(d, 3 * kMs, 200 * kMs);
+    QVERIFY(!d.motor().isEnabled());
+    QCOMPARE(d.motor().speed(), 0.0);
+    QCOMPARE(d.stats().readsAnswered, 1u);
 }
 
 void TestSimServoCanDrive::heartbeatEvery30ms()

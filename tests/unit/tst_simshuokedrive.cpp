@@ -111,7 +111,7 @@ private slots:
         SimShuokeDrive d(config());
         auto r = d.handle(req(CmdChangeAddress, QByteArray(1, '\x07')), SimShuokeDrive::Medium::Serial, 0);
         QCOMPARE(r->data, QByteArray(1, '\x07'));
-        QCOMPARE(r->address, quint8(1)); // the old address answers
+        QCOMPARE(r->address, quint8(7)); // the new address answers (the seed's worked example)
         d.handle(req(CmdCanBitrate, QByteArray(1, '\x08')), SimShuokeDrive::Medium::Serial, 0);
         d.handle(req(CmdCanFrameFormat, QByteArray(1, '\x01')), SimShuokeDrive::Medium::Serial, 0);
         QCOMPARE(d.address(), quint8(1));

@@ -43,6 +43,8 @@ bool ServoModbusBackend::open(const ConnectionSettings &settings, TrafficTap *ta
     s.retries = settings.retries >= 0 ? settings.retries : DefaultRetries;
     auto *link = new ModbusLink(this);
     link->setTap(tap);
+    // The seed's error reply (code 0x04) also answers a request that arrived damaged.
+    link->setRetriedExceptionCode(modbusrtu::ServerDeviceFailure);
     if (!link->open(s, error)) {
         delete link;
         return false;

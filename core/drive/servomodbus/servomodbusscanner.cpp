@@ -256,7 +256,16 @@ void ServoModbusScanner::onProbeFinished(LinkReply *reply, int address, Probe ki
         found(QString::number(reply->registers().value(0)), QString());
         break;
     }
-    case ErrorCode::DriveException: found(QString(), tr("exception %1").arg(e.driveCode)); break;
+    case ErrorCode::DriveException:
+        // A drive is there. Exception 0x04 is also its answer to a probe that reached it
+        // damaged (docs/protocols/servo-modbus.md, "Exceptions"): once more, for the firmware.
+        if (kind == Probe::First && e.driveCode == modbusrtu::ServerDeviceFailure) {
+            m_repeat.append(address);
+            fillWindow();
+            return;
+        }
+        found(QString(), tr("exception %1").arg(e.driveCode));
+        break;
     case ErrorCode::ChecksumError:
     case ErrorCode::Malformed:
         if (kind == Probe::First) {

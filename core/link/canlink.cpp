@@ -181,7 +181,7 @@ bool CanLink::writeNow(const CanFrameData &frame, const QString &note)
         m_tap->recordCan(TrafficRecord::Direction::Tx, m_settings.toString(), frame, note);
     const qint64 now = nowUs();
     m_ownBusEndUs = std::max(now, m_ownBusEndUs) + frameBusUs(frame);
-    excuse(frame);
+    excuse(frame, true);
     return true;
 }
 
@@ -194,12 +194,19 @@ qint64 CanLink::frameBusUs(const CanFrameData &frame) const
 }
 
 // `frame` was (or will be) on the bus: the answers it outranks could not be sent meanwhile.
-void CanLink::excuse(const CanFrameData &frame)
+// Our own frames (`own`) count only when they outrank the answer strictly: our retries to a
+// silent station (its own identifier) must not postpone each other's timeouts.
+void CanLink::excuse(const CanFrameData &frame, bool own)
 {
     const qint64 busUs = frameBusUs(frame);
     const quint64 key = priorityKey(frame.id, frame.extended);
     for (Pending &p : m_inFlight) {
-        if (p.request.answerId < 0 || key <= priorityKey(quint32(p.request.answerId), p.request.answerExtended))
+        if (p.request.answerId < 0) {
+            p.excusedUs += busUs;
+            continue;
+        }
+        const quint64 answer = priorityKey(quint32(p.request.answerId), p.request.answerExtended);
+        if (key < answer || (!own && key == answer))
             p.excusedUs += busUs;
     }
 }

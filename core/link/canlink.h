@@ -121,7 +121,7 @@ private:
     void dispatch(Pending p);
     void release(const Pending &p);
     bool writeNow(const CanFrameData &frame, const QString &note);
-    void excuse(const CanFrameData &frame);
+    void excuse(const CanFrameData &frame, bool own = false);
     qint64 frameBusUs(const CanFrameData &frame) const;
     qint64 dueUs(const Pending &p) const;
     void failAll(const Error &why);

@@ -55,12 +55,12 @@ struct CanRequest
 // send while another frame is on the bus, and loses arbitration to every frame with a lower
 // identifier: a station whose answer is ready may wait behind our own queued requests and
 // the other stations' answers for as long as they keep the bus busy (a saturated bus, as
-// several stations' pipelined reads make it). So the bus time of every frame seen after the
-// request was written (ours and received ones) that outranks the answer (CanRequest::
-// answerId; all of them when unknown), and of our own frames still queued ahead of it, is
-// not counted as the station's silence (worst-case stuffed frame times at
-// settings.bitrate). A request gives up regardless after StarvedTimeoutFactor times its
-// timeout in wall-clock time (a bus held by a babbling node).
+// several stations' pipelined reads make it). So the bus time of every frame received after
+// the request was written that outranks the answer or has its identifier (CanRequest::
+// answerId; all of them when unknown), of our own later frames that outrank it strictly,
+// and of our own frames still queued ahead of it, is not counted as the station's silence
+// (worst-case stuffed frame times at settings.bitrate). A request gives up regardless after
+// StarvedTimeoutFactor times its timeout in wall-clock time (a bus held by a babbling node).
 // The QCanBusDevice is created in open(), so the link may be moved to a worker thread first.
 class CanLink : public QObject
 {

@@ -2,6 +2,7 @@
 #include "cli/cli.h"
 
 #include "core/common/coreresources.h"
+#include "core/common/localtimezone.h"
 
 #include <QCoreApplication>
 #include <QGuiApplication>
@@ -9,6 +10,7 @@
 
 int main(int argc, char *argv[])
 {
+    dd::pinLocalTimeZone(); // before any thread: see localtimezone.h
     QStringList arguments;
     for (int i = 1; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);

@@ -1,7 +1,7 @@
 #include "core/link/canlink.h"
 
 #include "core/link/traffictap.h"
-#include "core/link/urgentqueue.h"
+#include "core/link/wiretime.h"
 
 #include <QCanBus>
 #include <QCanBusFrame>
@@ -9,9 +9,31 @@
 #include <QTcpSocket>
 #include <QVariant>
 
+#include <algorithm>
+#include <cmath>
+
 Q_LOGGING_CATEGORY(lcCanLink, "drivedesk.link.can")
 
 namespace dd {
+
+namespace {
+
+// Arbitration order: the lower key wins the bus. A standard frame beats an extended one with
+// the same 11-bit base identifier (its RTR / IDE bits are dominant where the extended one's
+// SRR / IDE are recessive).
+quint64 priorityKey(quint32 id, bool extended)
+{
+    if (!extended)
+        return quint64(id & 0x7FF) << 19;
+    return (quint64((id >> 18) & 0x7FF) << 19) | (quint64(1) << 18) | (id & 0x3FFFF);
+}
+
+quint64 laneKey(const CanFrameData &frame)
+{
+    return (quint64(frame.extended) << 32) | frame.id;
+}
+
+} // namespace
 
 CanLink::CanLink(QObject *parent)
     : QObject(parent)
@@ -113,7 +135,11 @@ LinkReply *CanLink::request(const CanRequest &request)
         reply->finishWithError({ErrorCode::LinkClosed, tr("The CAN link is not open.")});
         return reply;
     }
-    enqueueByUrgency(m_waiting, Pending{request, reply, 0, 0, 0});
+    Pending p{request, reply, 0, 0, 0};
+    if (request.urgent)
+        m_urgent.enqueue(std::move(p));
+    else
+        laneFor(laneKey(request.frame)).queue.enqueue(std::move(p));
     pump();
     return reply;
 }
@@ -129,11 +155,17 @@ void CanLink::failAll(const Error &why)
         if (p.reply)
             p.reply->finishWithError(why);
     m_inFlight.clear();
-    while (!m_waiting.isEmpty()) {
-        Pending p = m_waiting.dequeue();
+    QList<Pending> waiting;
+    while (!m_urgent.isEmpty())
+        waiting.append(m_urgent.dequeue());
+    for (Lane &lane : m_lanes)
+        while (!lane.queue.isEmpty())
+            waiting.append(lane.queue.dequeue());
+    m_lanes.clear();
+    m_nextLane = 0;
+    for (Pending &p : waiting)
         if (p.reply)
             p.reply->finishWithError(why);
-    }
     m_timer.stop();
 }
 
@@ -147,40 +179,141 @@ bool CanLink::writeNow(const CanFrameData &frame, const QString &note)
     }
     if (m_tap)
         m_tap->recordCan(TrafficRecord::Direction::Tx, m_settings.toString(), frame, note);
+    const qint64 now = nowUs();
+    m_ownBusEndUs = std::max(now, m_ownBusEndUs) + frameBusUs(frame);
+    excuse(frame, true);
     return true;
+}
+
+qint64 CanLink::frameBusUs(const CanFrameData &frame) const
+{
+    const int bitrate = m_settings.bitrate > 0 ? m_settings.bitrate : 1000000;
+    const double us = WireTime::canFrameUs(int(std::min<qsizetype>(frame.data.size(), 8)), frame.extended, bitrate,
+                                           CanStuffing::WorstCase);
+    return qint64(std::ceil(us));
+}
+
+// `frame` was (or will be) on the bus: the answers it outranks could not be sent meanwhile.
+// Our own frames (`own`) count only when they outrank the answer strictly: our retries to a
+// silent station (its own identifier) must not postpone each other's timeouts.
+void CanLink::excuse(const CanFrameData &frame, bool own)
+{
+    const qint64 busUs = frameBusUs(frame);
+    const quint64 key = priorityKey(frame.id, frame.extended);
+    for (Pending &p : m_inFlight) {
+        if (p.request.answerId < 0) {
+            p.excusedUs += busUs;
+            continue;
+        }
+        const quint64 answer = priorityKey(quint32(p.request.answerId), p.request.answerExtended);
+        if (key < answer || (!own && key == answer))
+            p.excusedUs += busUs;
+    }
+}
+
+// When `p` times out unless more frames hold its answer back.
+qint64 CanLink::dueUs(const Pending &p) const
+{
+    const int timeout = p.request.timeoutMs >= 0 ? p.request.timeoutMs : m_settings.responseTimeoutMs;
+    const qint64 timeoutUs = qint64(timeout) * 1000;
+    return std::min(p.sentUs + p.excusedUs + timeoutUs, p.sentUs + timeoutUs * StarvedTimeoutFactor);
+}
+
+CanLink::Lane &CanLink::laneFor(quint64 key)
+{
+    for (Lane &lane : m_lanes)
+        if (lane.key == key)
+            return lane;
+    m_lanes.push_back(Lane{key, {}, 0});
+    return m_lanes.back();
+}
+
+// The lane whose next request goes out next: of those with requests waiting, the one with
+// the fewest in flight; between equals, round robin.
+CanLink::Lane *CanLink::pickLane()
+{
+    // Forget lanes with nothing waiting and nothing in flight.
+    for (size_t i = 0; i < m_lanes.size();) {
+        if (m_lanes[i].queue.isEmpty() && m_lanes[i].inFlight == 0) {
+            m_lanes.erase(m_lanes.begin() + qsizetype(i));
+            if (m_nextLane > i)
+                --m_nextLane;
+        } else {
+            ++i;
+        }
+    }
+    const size_t n = m_lanes.size();
+    Lane *best = nullptr;
+    size_t bestIndex = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const size_t i = (m_nextLane + k) % n;
+        Lane &lane = m_lanes[i];
+        if (lane.queue.isEmpty())
+            continue;
+        if (!best || lane.inFlight < best->inFlight) {
+            best = &lane;
+            bestIndex = i;
+        }
+    }
+    if (best)
+        m_nextLane = (bestIndex + 1) % n;
+    return best;
+}
+
+void CanLink::release(const Pending &p)
+{
+    const quint64 key = laneKey(p.request.frame);
+    for (Lane &lane : m_lanes)
+        if (lane.key == key) {
+            lane.inFlight = std::max(0, lane.inFlight - 1);
+            return;
+        }
 }
 
 void CanLink::pump()
 {
     if (!isConnected())
         return;
-    auto fitsWindow = [this] {
-        const CanRequest &next = m_waiting.head().request;
-        // An urgent frame that expects no reply does not wait for the window.
-        return m_inFlight.size() < m_settings.maxInFlight || (next.urgent && !next.matcher);
-    };
-    while (!m_waiting.isEmpty() && fitsWindow()) {
-        Pending p = m_waiting.dequeue();
-        if (!p.reply)
-            continue;
-        ++p.attempts;
-        if (!writeNow(p.request.frame, p.request.note)) {
-            p.reply->finishWithError(
-                {ErrorCode::LinkClosed,
-                 tr("Cannot write to CAN interface %1: %2").arg(m_settings.toString(), m_device->errorString())});
+    for (;;) {
+        const bool windowFull = m_inFlight.size() >= m_settings.maxInFlight;
+        if (!m_urgent.isEmpty()) {
+            // An urgent frame that expects no reply does not wait for the window.
+            if (windowFull && m_urgent.head().request.matcher)
+                break;
+            dispatch(m_urgent.dequeue());
             continue;
         }
-        if (!p.request.matcher) {
-            p.reply->setAttempts(p.attempts);
-            p.reply->finishEmpty();
-            continue;
-        }
-        const int timeout = p.request.timeoutMs >= 0 ? p.request.timeoutMs : m_settings.responseTimeoutMs;
-        p.sentUs = nowUs();
-        p.deadlineUs = p.sentUs + qint64(timeout) * 1000;
-        m_inFlight.append(p);
+        if (windowFull)
+            break;
+        Lane *lane = pickLane();
+        if (!lane)
+            break;
+        dispatch(lane->queue.dequeue());
     }
     armTimer();
+}
+
+void CanLink::dispatch(Pending p)
+{
+    if (!p.reply)
+        return;
+    ++p.attempts;
+    if (!writeNow(p.request.frame, p.request.note)) {
+        p.reply->finishWithError(
+            {ErrorCode::LinkClosed,
+             tr("Cannot write to CAN interface %1: %2").arg(m_settings.toString(), m_device->errorString())});
+        return;
+    }
+    if (!p.request.matcher) {
+        p.reply->setAttempts(p.attempts);
+        p.reply->finishEmpty();
+        return;
+    }
+    p.sentUs = nowUs();
+    // Our own frames queued ahead of it (and itself) must leave before the drive can answer.
+    p.excusedUs = std::max<qint64>(0, m_ownBusEndUs - p.sentUs);
+    ++laneFor(laneKey(p.request.frame)).inFlight;
+    m_inFlight.append(p);
 }
 
 void CanLink::armTimer()
@@ -189,9 +322,9 @@ void CanLink::armTimer()
         m_timer.stop();
         return;
     }
-    qint64 earliest = m_inFlight.first().deadlineUs;
+    qint64 earliest = dueUs(m_inFlight.first());
     for (const Pending &p : m_inFlight)
-        earliest = std::min(earliest, p.deadlineUs);
+        earliest = std::min(earliest, dueUs(p));
     const qint64 waitMs = std::max<qint64>(0, (earliest - nowUs() + 999) / 1000);
     m_timer.start(static_cast<int>(waitMs));
 }
@@ -202,10 +335,11 @@ void CanLink::onTick()
     for (int i = 0; i < m_inFlight.size();) {
         Pending &p = m_inFlight[i];
         if (!p.reply) {
+            release(p);
             m_inFlight.removeAt(i);
             continue;
         }
-        if (p.deadlineUs > now) {
+        if (dueUs(p) > now) {
             ++i;
             continue;
         }
@@ -217,8 +351,9 @@ void CanLink::onTick()
             ++p.attempts;
             writeNow(p.request.frame,
                      QStringLiteral("%1 (retry %2)").arg(p.request.note).arg(p.attempts - 1).trimmed());
-            p.sentUs = now;
-            p.deadlineUs = now + qint64(timeout) * 1000;
+            Pending &q = m_inFlight[i]; // writeNow() touched the list's elements
+            q.sentUs = nowUs();
+            q.excusedUs = std::max<qint64>(0, m_ownBusEndUs - q.sentUs);
             ++i;
             continue;
         }
@@ -229,6 +364,7 @@ void CanLink::onTick()
                                       .arg(m_settings.toString())
                                       .arg(timeout)
                                       .arg(p.attempts)});
+        release(p);
         m_inFlight.removeAt(i);
     }
     pump();
@@ -251,10 +387,12 @@ void CanLink::onFramesReceived()
                 p.reply->setAttempts(p.attempts);
                 p.reply->setRoundTripUs(nowUs() - p.sentUs);
                 p.reply->finishWithCanFrame(frame);
+                release(p);
                 m_inFlight.removeAt(i);
                 break;
             }
         }
+        excuse(frame);
         emit frameReceived(frame);
     }
     pump();

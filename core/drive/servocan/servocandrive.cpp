@@ -132,6 +132,7 @@ void ServoCanDrive::readRaw(ReadType type, quint8 index, const ReadDone &done)
     const quint8 typeByte = static_cast<quint8>(type);
     CanRequest req;
     req.frame = isParam ? sc::readParameter(st, index) : sc::read(st, type);
+    req.answerId = id; // the station answers with its own ID: arbitration decides when it can
     // Cheap byte test: a reply has the request's station, command, type (and index).
     req.matcher = [id, st, typeByte, index, isParam](const CanFrameData &f) {
         if (f.extended || f.id != id || f.data.size() != sc::kFrameLength)

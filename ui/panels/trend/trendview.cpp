@@ -251,6 +251,7 @@ int TrendView::channelAxis(const QString &id) const
 void TrendView::onChannelsChanged()
 {
     m_channels = m_recorder->channels();
+    m_decimation.clear();
     m_panel->setChannels(m_channels);
     assignColors();
     invalidate();
@@ -380,7 +381,8 @@ void TrendView::refreshNow()
             continue;
         const size_t a = st.axis == 0 ? 0 : 1;
         used[a] = true;
-        TrendPlotBuilder::Result r = TrendPlotBuilder::build(*buf, from, to, width, origin, st.scale, st.offset);
+        TrendPlotBuilder::Result r = TrendPlotBuilder::build(*buf, from, to, width, origin, st.scale, st.offset,
+                                                             &m_decimation[c.id]);
         if (r.hasData()) {
             lo[a] = std::min(lo[a], r.yMin);
             hi[a] = std::max(hi[a], r.yMax);

@@ -21,12 +21,15 @@
 #include "ui/workspace/driveworkspace.h"
 
 #include <QApplication>
+#include <QHeaderView>
 #include <QLoggingCategory>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeWidgetItem>
 
 using namespace dd;
 
@@ -60,6 +63,47 @@ class TestOverflowWalk : public QObject
         for (const QString &p : overflowcheck::problems(dialog))
             out << QString::fromLatin1(dialog->metaObject()->className()) + QStringLiteral(": ") + p;
         dialog->close();
+        return out;
+    }
+
+    // Every drive row of the bus tree in view whole: its label not elided, its state,
+    // position and firmware columns inside the viewport and as wide as their texts.
+    static QStringList busDockProblems(MainWindow *w)
+    {
+        QStringList out;
+        BusTreeWidget *tree = w->busTree();
+        const int viewport = tree->viewport()->width();
+        QWidget *dock = tree->window()->findChild<QWidget *>(QStringLiteral("busDock"));
+        const QString where = QStringLiteral("bus dock %1 px wide (tree viewport %2 px, workspace minimum %3 px): ")
+                                  .arg(dock ? dock->width() : -1)
+                                  .arg(viewport)
+                                  .arg(w->workspace()->minimumSizeHint().width());
+        const QFontMetrics fm(tree->font());
+        const int margin = tree->style()->pixelMetric(QStyle::PM_FocusFrameHMargin, nullptr, tree) * 2 + 2;
+        for (int c = 0; c < tree->topLevelItemCount(); ++c) {
+            QTreeWidgetItem *link = tree->topLevelItem(c);
+            for (int d = 0; d < link->childCount(); ++d) {
+                QTreeWidgetItem *drive = link->child(d);
+                const int nameRoom = tree->header()->sectionSize(BusTreeWidget::NameColumn) - tree->indentation();
+                const int nameNeeds = fm.horizontalAdvance(drive->text(BusTreeWidget::NameColumn)) + margin;
+                if (nameRoom < nameNeeds)
+                    out << where
+                            + QStringLiteral("label \"%1\" elided (%2 px for %3)")
+                                  .arg(drive->text(BusTreeWidget::NameColumn))
+                                  .arg(nameRoom)
+                                  .arg(nameNeeds);
+                for (int col : {int(BusTreeWidget::StateColumn), int(BusTreeWidget::PositionColumn),
+                                int(BusTreeWidget::FirmwareColumn)}) {
+                    const int right = tree->header()->sectionViewportPosition(col) + tree->header()->sectionSize(col);
+                    if (right > viewport)
+                        out << where
+                                + QStringLiteral("column %1 (\"%2\") ends at %3 px, beyond the view")
+                                      .arg(col)
+                                      .arg(drive->text(col))
+                                      .arg(right);
+                }
+            }
+        }
         return out;
     }
 
@@ -128,6 +172,15 @@ private slots:
         for (const QString &p : std::as_const(problems))
             qWarning("%s", qPrintable(p));
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+
+        // The bus dock shows each drive's label, state, position and firmware whole, without
+        // sideways scrolling: the tab pages' minimum widths left it room (every tab of every
+        // drive has been shown above, so the workspace's minimum is the widest page's).
+        QApplication::processEvents();
+        QStringList dock = busDockProblems(&w);
+        for (const QString &p : std::as_const(dock))
+            qWarning("%s", qPrintable(p));
+        QVERIFY2(dock.isEmpty(), qPrintable(dock.join(QLatin1Char('\n'))));
         w.connections()->disconnectAll();
     }
 };

@@ -1,4 +1,5 @@
 #include "ui/panels/tuning/runcomparison.h"
+#include "ui/common/displaytext.h"
 
 #include <QEvent>
 #include <QHeaderView>
@@ -100,7 +101,7 @@ QString RunComparison::metricText(const TuningRun &run, const QString &key)
         return tr("%1 %").arg(v, 0, 'f', 1);
     if (isTime(key))
         return tr("%1 ms").arg(v * 1000.0, 0, 'f', 1);
-    const QString unit = unitOf(run, channelOf(run, key));
+    const QString unit = DisplayText::unit(unitOf(run, channelOf(run, key)));
     const QString number = QString::number(v, 'g', 4);
     return unit.isEmpty() ? number : number + QLatin1Char(' ') + unit;
 }

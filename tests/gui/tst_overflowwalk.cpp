@@ -1,8 +1,9 @@
 // The whole window at a laptop's 1280×720, in English and in Chinese (issue #10): the demo
 // bench, every tab of every family's drive shown in turn, and the dialogs the menus open —
-// no visible widget cut (outside its parent, narrower than its text needs), no horizontal
+// no visible widget cut (outside its parent, narrower than its text needs, a button's text
+// cut, a wrapped label clipped or with an unbreakable piece wider than it), no horizontal
 // scroll bar, no tab bar scrolling its titles, no tool bar folding buttons away
-// (tests/gui/overflowcheck.h).
+// (tests/gui/overflowcheck.h); the bus dock shows every drive's label and columns whole.
 #include "core/drive/drivehub.h"
 #include "tests/gui/overflowcheck.h"
 #include "ui/bus/bustreewidget.h"
@@ -22,7 +23,9 @@
 
 #include <QApplication>
 #include <QHeaderView>
+#include <QLabel>
 #include <QLoggingCategory>
+#include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStyle>
@@ -30,6 +33,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTreeWidgetItem>
+#include <algorithm>
 
 using namespace dd;
 
@@ -117,6 +121,38 @@ private slots:
         QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
         QCoreApplication::setOrganizationName(QStringLiteral("DriveDeskTest"));
         QCoreApplication::setApplicationName(QStringLiteral("tst_overflowwalk"));
+    }
+
+    // The check itself sees cut texts: a button squeezed below its text (its layout may
+    // ignore its size hint), a wrapped label lower than its lines, an unbreakable checksum
+    // wider than its wrapped label; and nothing in a window that fits.
+    void theCheckSeesCutTexts()
+    {
+        QWidget top;
+        top.resize(400, 200);
+        auto *button = new QPushButton(QStringLiteral("Export the whole recording as CSV"), &top);
+        button->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        button->setGeometry(0, 0, 60, 30);
+        auto *wrapped = new QLabel(QStringLiteral("A long sentence that needs three or four lines at this width."),
+                                   &top);
+        wrapped->setWordWrap(true);
+        wrapped->setGeometry(0, 40, 120, 18);
+        auto *path = new QLabel(QStringLiteral("SHA-256 6f81970026c0063a636545b09fd4a8b7aef9c120144a14be"), &top);
+        path->setWordWrap(true);
+        path->setGeometry(0, 100, 150, 120);
+        top.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&top));
+        const QStringList found = overflowcheck::problems(&top);
+        const auto has = [&found](const QString &what) {
+            return std::any_of(found.cbegin(), found.cend(), [&what](const QString &p) { return p.startsWith(what); });
+        };
+        QVERIFY2(has(QStringLiteral("button text cut")), qPrintable(found.join(u'\n')));
+        QVERIFY2(has(QStringLiteral("wrapped text clipped")), qPrintable(found.join(u'\n')));
+        QVERIFY2(has(QStringLiteral("unbreakable \"6f81970026")), qPrintable(found.join(u'\n')));
+        button->setGeometry(0, 0, 380, 30);
+        wrapped->setGeometry(0, 40, 380, 40);
+        path->setGeometry(0, 100, 395, 60);
+        QVERIFY2(overflowcheck::problems(&top).isEmpty(), qPrintable(overflowcheck::problems(&top).join(u'\n')));
     }
 
     void nothingIsCutAt1280x720_data()

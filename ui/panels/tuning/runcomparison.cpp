@@ -29,6 +29,17 @@ QString channelOf(const TuningRun &run, const QString &key)
     return run.metricsChannel;
 }
 
+// Why a metric has no value. A run file keeps the reason in the language of the tool that
+// measured it (the CLI's English, say); where the run itself tells the reason again (the
+// channel the metric needs is not in its capture) it is worded in the UI language.
+QString reasonOf(const TuningRun &run, const QString &key, const Metric &m)
+{
+    const QString channel = channelOf(run, key);
+    if (!channel.isEmpty() && run.capture.columnOf(channel) < 0)
+        return StepMetrics::tr("channel %1 was not captured").arg(channel);
+    return m.reason;
+}
+
 bool isTime(const QString &key)
 {
     return key == QLatin1String("riseTime") || key.startsWith(QLatin1String("settlingTime"))
@@ -151,10 +162,11 @@ void RunComparison::refresh()
             const Metric &m = run.metrics.byKey(keys.at(r));
             auto *item = new QTableWidgetItem(metricText(run, keys.at(r)));
             if (!m.value) {
-                item->setToolTip(m.reason);
+                const QString reason = reasonOf(run, keys.at(r), m);
+                item->setToolTip(reason);
                 item->setForeground(palette().color(QPalette::Disabled, QPalette::Text));
-                if (!m.reason.isEmpty())
-                    notes << tr("%1, %2: %3").arg(run.label, metricName(keys.at(r)).toLower(), m.reason);
+                if (!reason.isEmpty())
+                    notes << tr("%1, %2: %3").arg(run.label, metricName(keys.at(r)).toLower(), reason);
             } else if (m.resolution > 0.0) {
                 item->setToolTip(tr("Resolution: %1")
                                      .arg(isTime(keys.at(r)) ? tr("%1 ms").arg(m.resolution * 1000.0, 0, 'g', 3)

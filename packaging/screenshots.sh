@@ -48,3 +48,19 @@ QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" "$build/app/drivedesk-cli" --
   step velocity 500 --duration 0.4 --max-speed 800 --max-travel 1000000 -o "$run" >/dev/null
 shoot en tuning tuning-en.png servo-can "$run"
 shoot zh_CN tuning tuning-zh_CN.png servo-can "$run"
+# The commissioning record (docs/record.md): page 1 of a record of two simulated servo-modbus
+# drives (one with a parameter written and verified), and page 3 of a servo-can record with
+# the run above. Rendered with pdftoppm (poppler-utils).
+if command -v pdftoppm >/dev/null; then
+  cli() { XDG_DATA_HOME="$settings/data" QT_LOGGING_RULES="*.debug=false;qt.canbus.*=false" "$build/app/drivedesk-cli" "$@"; }
+  printf '%s' '{"machine": "Press line 3", "customer": "ACME Stamping", "site": "Hall B", "engineer": "Li Wei", "notes": "Axis 2 retuned after the gearbox change."}' >"$settings/header.json"
+  cli --sim-state "$settings/bench.json" --sim-drives 1,2 --family servo-modbus --address 2 set PA12=300 >/dev/null
+  cli --sim-state "$settings/bench.json" --sim-drives 1,2 --family servo-modbus report --all \
+    --header "$settings/header.json" -o "$settings/record.pdf" >/dev/null
+  pdftoppm -r 80 -f 1 -l 1 -png -singlefile "$settings/record.pdf" "$out/record-page1"
+  cli --sim --family servo-can report --runs "$run" --header "$settings/header.json" -o "$settings/run.pdf" >/dev/null
+  pdftoppm -r 80 -f 3 -l 3 -png -singlefile "$settings/run.pdf" "$out/record-run"
+  echo "screenshots: $out/record-page1.png $out/record-run.png"
+else
+  echo "screenshots: pdftoppm is missing (apt install poppler-utils): record pictures not taken" >&2
+fi

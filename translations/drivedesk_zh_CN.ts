@@ -699,6 +699,10 @@
         <source>%1 · %2</source>
         <translation>%1 · %2</translation>
     </message>
+    <message>
+        <source>%1 [%2]</source>
+        <translation>%1 [%2]</translation>
+    </message>
 </context>
 <context>
     <name>dd::Drive</name>
@@ -8713,6 +8717,61 @@ firmware %2</source>
     <message>
         <source>Earlier, at %1: %2</source>
         <translation>此前（%1）：%2</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ChannelUnit</name>
+    <message>
+        <source>r/min</source>
+        <translation>r/min</translation>
+    </message>
+    <message>
+        <source>pulse</source>
+        <translation>脉冲</translation>
+    </message>
+    <message>
+        <source>pulses</source>
+        <translation>脉冲</translation>
+    </message>
+    <message>
+        <source>pulse/s</source>
+        <translation>脉冲/秒</translation>
+    </message>
+    <message>
+        <source>%</source>
+        <translation>%</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>V</source>
+        <translation>V</translation>
+    </message>
+    <message>
+        <source>°C</source>
+        <translation>°C</translation>
+    </message>
+    <message>
+        <source>kHz</source>
+        <translation>kHz</translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation>Hz</translation>
+    </message>
+    <message>
+        <source>pulse/s²</source>
+        <translation>脉冲/秒²</translation>
+    </message>
+    <message>
+        <source>1/s</source>
+        <translation>1/s</translation>
+    </message>
+    <message>
+        <source>r/min/ms</source>
+        <translation>r/min/ms</translation>
     </message>
 </context>
 </TS>

@@ -6,6 +6,38 @@
 
 namespace dd {
 
+QStringList channelUnits()
+{
+    static const char *const units[] = {
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "r/min"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "pulse"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "pulses"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "pulse/s"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "%"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "A"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "V"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "°C"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "kHz"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "Hz"),
+        // Units of the bundled parameter dictionaries (resources/dictionaries).
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "pulse/s²"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "1/s"),
+        QT_TRANSLATE_NOOP("dd::ChannelUnit", "r/min/ms"),
+    };
+    QStringList out;
+    for (const char *u : units)
+        out << QString::fromUtf8(u);
+    return out;
+}
+
+QString channelUnitText(const QString &unit)
+{
+    if (unit.isEmpty())
+        return unit;
+    const QByteArray utf8 = unit.toUtf8();
+    return QCoreApplication::translate("dd::ChannelUnit", utf8.constData());
+}
+
 QString capabilityId(Capability c)
 {
     switch (c) {

@@ -49,9 +49,18 @@ struct ChannelInfo
     QString id;   // stable: "speed", "torque", "current", "bus-voltage", "position",
                   // "position-error", "temperature", "inputs", "outputs", ...
     QString name; // translated display name
-    QString unit; // "r/min", "%", "A", "V", "pulse", "°C", ""
+    QString unit; // untranslated, one of channelUnits() or "": "r/min", "%", "A", "pulse", ...
     int decimals = 0;
 };
+
+// The units a ChannelInfo (or a bundled dictionary's parameter) may carry. They stay
+// untranslated in the drive layer (they name CSV columns, the CLI's output and run files); each is registered for translation in the
+// context "dd::ChannelUnit", and what shows them to a user translates them there
+// (channelUnitText; DisplayText::unit in the GUI), so they follow a live language switch.
+QStringList channelUnits();
+// A unit in the language of the moment ("pulse/s" -> "脉冲/秒"); one not in channelUnits()
+// as it is.
+QString channelUnitText(const QString &unit);
 
 // The "status" channel of a drive that reports its motion state and switch inputs as one
 // value (shuoke 0x3B): these bits.

@@ -1,5 +1,6 @@
 #include "core/report/recordrenderer.h"
 
+#include "core/drive/drivetypes.h"
 #include "core/protocol/familytraits.h"
 #include "core/report/recordfont.h"
 #include "core/report/recordruns.h"
@@ -358,7 +359,7 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
                         + cell(m.value ? QString::number(*m.value, 'g', 4)
                                        : QStringLiteral("— <span class=\"note\">%1</span>")
                                              .arg(esc(tr("not measured: %1").arg(m.note))))
-                        + cell(esc(m.unit)) + QStringLiteral("</tr>");
+                        + cell(esc(channelUnitText(m.unit))) + QStringLiteral("</tr>");
                 html += QStringLiteral("</table>");
             }
             if (!run.snapshot.isEmpty()) {

@@ -1,5 +1,6 @@
 #include "core/report/runplot.h"
 
+#include "core/drive/drivetypes.h"
 #include "core/report/recordfont.h"
 #include "core/trend/trendaxisscale.h"
 #include "core/tuning/tuningrun.h"
@@ -160,7 +161,7 @@ QImage RunPlot::render(const TuningRun &run, const QLocale &locale, int width)
             }
         p.setPen(axisPen);
         p.drawRect(strip);
-        const QString unit = run.units.value(s);
+        const QString unit = channelUnitText(run.units.value(s)); // run files keep the untranslated unit
         const QString title = unit.isEmpty() ? c.channels.at(s) : QStringLiteral("%1 (%2)").arg(c.channels.at(s), unit);
         if (lo > hi) {
             p.setPen(textPen);

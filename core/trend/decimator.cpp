@@ -81,16 +81,11 @@ bool makeWindow(qint64 fromUs, qint64 toUs, int buckets, Window *w)
     return true;
 }
 
-} // namespace
-
-QList<TrendSample> Decimator::minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, int buckets,
-                                     Strategy strategy)
+// The samples with index in [i, end), all at or after w.from, decimated into w's buckets.
+QList<TrendSample> decimateBuffer(const SampleBuffer &buffer, const Window &w, qsizetype i, qsizetype end,
+                                  Decimator::Strategy strategy)
 {
-    Window w{};
-    if (!makeWindow(fromUs, toUs, buckets, &w))
-        return {};
-    qsizetype i = buffer.lowerBound(fromUs);
-    const qsizetype end = buffer.upperBound(toUs);
+    using Strategy = Decimator::Strategy;
     if (strategy == Strategy::Auto) {
         // Measured (docs/performance.md): summaries win from a few hundred samples per bucket.
         strategy = end - i < w.n * 4 * SampleBuffer::BlockSize ? Strategy::Scan : Strategy::Summaries;
@@ -137,6 +132,37 @@ QList<TrendSample> Decimator::minMax(const SampleBuffer &buffer, qint64 fromUs, 
         i = j;
     }
     return out;
+}
+
+} // namespace
+
+QList<TrendSample> Decimator::minMax(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, int buckets,
+                                     Strategy strategy)
+{
+    Window w{};
+    if (!makeWindow(fromUs, toUs, buckets, &w))
+        return {};
+    return decimateBuffer(buffer, w, buffer.lowerBound(fromUs), buffer.upperBound(toUs), strategy);
+}
+
+qint64 Decimator::alignedBucket(qint64 timeUs, qint64 bucketUs)
+{
+    const qint64 q = timeUs / bucketUs;
+    return (timeUs % bucketUs != 0 && timeUs < 0) ? q - 1 : q; // floor
+}
+
+QList<TrendSample> Decimator::minMaxAligned(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, qint64 bucketUs,
+                                            Strategy strategy)
+{
+    if (toUs < fromUs || bucketUs < 1)
+        return {};
+    // Aligned buckets are a window that starts on the first bucket's start and spans whole
+    // buckets: there (t - from) × n / span is (t - from) / bucketUs. Only the samples in
+    // [fromUs, toUs] are taken.
+    const qint64 first = alignedBucket(fromUs, bucketUs);
+    const qint64 count = alignedBucket(toUs, bucketUs) - first + 1;
+    const Window w{first * bucketUs, count * bucketUs, count};
+    return decimateBuffer(buffer, w, buffer.lowerBound(fromUs), buffer.upperBound(toUs), strategy);
 }
 
 QList<TrendSample> Decimator::minMax(const QList<TrendSample> &sorted, qint64 fromUs, qint64 toUs, int buckets)

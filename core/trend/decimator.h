@@ -38,6 +38,17 @@ public:
     // The same over samples sorted by time (non-decreasing).
     static QList<TrendSample> minMax(const QList<TrendSample> &sorted, qint64 fromUs, qint64 toUs, int buckets);
 
+    // Buckets anchored to absolute time instead of the window: bucket k holds the times
+    // [k × bucketUs, (k + 1) × bucketUs), whatever the window. Only samples in
+    // [fromUs, toUs] are taken, so the first and the last bucket may be partial. The same
+    // rules otherwise (earliest on equal values, NaN skipped, ≤ 2 points a bucket). As the
+    // window slides, a bucket's points do not change once the buffer holds a sample after
+    // it (DecimationCache keeps them). bucketUs < 1 or toUs < fromUs: empty.
+    static QList<TrendSample> minMaxAligned(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, qint64 bucketUs,
+                                            Strategy strategy = Strategy::Auto);
+    // floor(timeUs / bucketUs): the aligned bucket of a time (bucketUs >= 1).
+    static qint64 alignedBucket(qint64 timeUs, qint64 bucketUs);
+
     // The bucket of timeUs, or -1 when it lies outside the window.
     static int bucketOf(qint64 timeUs, qint64 fromUs, qint64 toUs, int buckets);
 };

@@ -1,12 +1,24 @@
 #include "core/trend/samplebuffer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace dd {
 
+namespace {
+
+quint64 nextGeneration()
+{
+    static std::atomic<quint64> last{0};
+    return ++last;
+}
+
+} // namespace
+
 SampleBuffer::SampleBuffer(qsizetype capacity)
     : m_capacity(std::max<qsizetype>(1, capacity))
+    , m_generation(nextGeneration())
 {
 }
 
@@ -142,6 +154,7 @@ void SampleBuffer::clear()
     m_size = 0;
     m_dropped = 0;
     m_rejected = 0;
+    m_generation = nextGeneration();
 }
 
 void SampleBuffer::setCapacity(qsizetype capacity)
@@ -167,6 +180,7 @@ void SampleBuffer::setCapacity(qsizetype capacity)
     m_dropped += static_cast<quint64>(skip);
     rebuildSummaries();
     rebuildGaps();
+    m_generation = nextGeneration();
 }
 
 void SampleBuffer::rebuildGaps()

@@ -59,6 +59,10 @@ public:
     void setCapacity(qsizetype capacity);
     quint64 droppedCount() const { return m_dropped; }
     quint64 rejectedCount() const { return m_rejected; }
+    // A stamp unique in the process, new on construction, clear() and setCapacity(): where
+    // it changed, what was computed from the buffer's samples (DecimationCache) no longer
+    // holds. Appending and evicting the oldest sample keep it (droppedCount() tells those).
+    quint64 generation() const { return m_generation; }
     // Bytes held by the sample storage (allocated, not just used).
     qsizetype memoryBytes() const;
 
@@ -118,6 +122,7 @@ private:
     qsizetype m_size = 0;
     quint64 m_dropped = 0;
     quint64 m_rejected = 0;
+    quint64 m_generation;
 };
 
 } // namespace dd

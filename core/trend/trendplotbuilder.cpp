@@ -1,5 +1,6 @@
 #include "core/trend/trendplotbuilder.h"
 
+#include "core/trend/decimationcache.h"
 #include "core/trend/decimator.h"
 
 #include <algorithm>
@@ -8,8 +9,17 @@
 
 namespace dd {
 
+qint64 TrendPlotBuilder::bucketUs(qint64 fromUs, qint64 toUs, int widthPx)
+{
+    // A window of span ticks starting anywhere touches at most floor((span - 1) / w) + 2
+    // buckets of width w; with w >= span / (buckets - 1) that is at most `buckets`.
+    const qint64 span = std::max<qint64>(1, toUs - fromUs + 1);
+    const qint64 buckets = std::max(3, widthPx) - 1;
+    return std::max<qint64>(1, (span + buckets - 2) / (buckets - 1));
+}
+
 TrendPlotBuilder::Result TrendPlotBuilder::build(const SampleBuffer &buffer, qint64 fromUs, qint64 toUs, int widthPx,
-                                                 qint64 originUs, double scale, double offset)
+                                                 qint64 originUs, double scale, double offset, DecimationCache *cache)
 {
     Result r;
     if (toUs < fromUs || buffer.isEmpty())
@@ -17,8 +27,14 @@ TrendPlotBuilder::Result TrendPlotBuilder::build(const SampleBuffer &buffer, qin
     // width - 1 buckets of <= 2 points, plus two edge points; a plot narrower than two
     // pixels gets one bucket and no edge points.
     const bool edges = widthPx >= 2;
-    const int buckets = edges ? widthPx - 1 : 1;
-    const QList<TrendSample> inside = Decimator::minMax(buffer, fromUs, toUs, buckets);
+    QList<TrendSample> inside;
+    if (widthPx < 3) {
+        inside = Decimator::minMax(buffer, fromUs, toUs, 1);
+    } else {
+        const qint64 width = bucketUs(fromUs, toUs, widthPx);
+        inside = cache ? cache->minMax(buffer, fromUs, toUs, width)
+                       : Decimator::minMaxAligned(buffer, fromUs, toUs, width);
+    }
     const auto map = [&](const TrendSample &s) {
         // Subtract in integers first: doubles lose µs beyond ~285 years but not differences.
         return QPointF(static_cast<double>(s.timeUs - originUs) * 1e-6, s.value * scale + offset);

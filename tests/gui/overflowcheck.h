@@ -11,8 +11,11 @@
 #include <QLineEdit>
 #include <QScrollBar>
 #include <QTabBar>
+#include <QTextDocument>
+#include <QTextLayout>
 #include <QToolBar>
 #include <QWidget>
+#include <algorithm>
 
 namespace overflowcheck {
 
@@ -43,6 +46,45 @@ inline bool scrolled(const QWidget *w, const QWidget *top)
             return true;
     }
     return false;
+}
+
+// A word-wrapping label cut: lower than its text needs at its width (the last lines
+// clipped), or a piece of text that cannot be broken (a path, a long number) wider than it.
+inline QStringList wrappedLabelProblems(QLabel *label)
+{
+    QStringList out;
+    const int room = label->contentsRect().width() - 2 * label->margin() - std::max(0, label->indent());
+    const int needHeight = label->heightForWidth(label->width());
+    if (needHeight > label->height() + 1)
+        out << QStringLiteral("wrapped text clipped (%1 px high for %2): ").arg(label->height()).arg(needHeight)
+                + describe(label);
+    QString text = label->text();
+    if (Qt::mightBeRichText(text)) {
+        QTextDocument d;
+        d.setHtml(text);
+        text = d.toPlainText();
+    }
+    // Laid out as the label wraps (at word boundaries; Chinese between characters): a line
+    // wider than the label is a piece that cannot be broken, and is cut.
+    text.replace(QLatin1Char('\n'), QChar::LineSeparator);
+    QTextLayout layout(text, label->font());
+    QTextOption option;
+    option.setWrapMode(QTextOption::WordWrap);
+    layout.setTextOption(option);
+    layout.beginLayout();
+    for (QTextLine line = layout.createLine(); line.isValid(); line = layout.createLine()) {
+        line.setLineWidth(room);
+        if (line.naturalTextWidth() > room + 1) {
+            out << QStringLiteral("unbreakable \"%1\" wider (%2) than the wrapped label (%3): ")
+                        .arg(text.mid(line.textStart(), line.textLength()).trimmed().left(40))
+                        .arg(int(line.naturalTextWidth()))
+                        .arg(room)
+                    + describe(label);
+            break;
+        }
+    }
+    layout.endLayout();
+    return out;
 }
 
 // What a user would see cut in `top` as laid out now (empty: nothing).
@@ -98,7 +140,15 @@ inline QStringList problems(QWidget *top)
             if (need.isValid() && w->width() < need.width() - 1)
                 out << QStringLiteral("narrower (%1) than it needs (%2): ").arg(w->width()).arg(need.width())
                         + describe(w);
+        } else if (showsText && qobject_cast<QAbstractButton *>(w)) {
+            // A button that lets its layout squeeze it (Ignored) still must show its text.
+            const QSize need = w->sizeHint();
+            if (need.isValid() && w->width() < need.width() - 1)
+                out << QStringLiteral("button text cut (%1 px for %2): ").arg(w->width()).arg(need.width())
+                        + describe(w);
         }
+        if (auto *label = qobject_cast<QLabel *>(w); label && label->wordWrap() && !label->text().isEmpty())
+            out << wrappedLabelProblems(label);
     }
     out.removeDuplicates();
     return out;

@@ -4,10 +4,12 @@
 // messages shown earlier). The walk is generic (tests/gui/widgetwalk.h).
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
+#include "core/drive/drivetypes.h"
 #include "tests/gui/widgetwalk.h"
 #include "ui/bus/bustreewidget.h"
 #include "ui/bus/connectioncontroller.h"
 #include "ui/bus/drivedirectory.h"
+#include "ui/panels/trend/trendplot.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/shell/mainwindow.h"
 #include "ui/shell/stopaction.h"
@@ -54,6 +56,36 @@ class TestLanguageWalk : public QObject
                            .arg(QString::fromLatin1(t.widget->metaObject()->className()), t.widget->objectName(),
                                 t.what, t.text.left(160));
         }
+        out.removeDuplicates();
+        return out;
+    }
+
+    // Channel units (from the drive layer, untranslated: channelUnits()) spelled as English
+    // words ("pulse", "pulse/s") in any widget's text, the trend plots' legends or axis titles
+    // (painted, not widgets). Symbols (r/min, %, A, V, °C) read the same in both languages.
+    static QStringList englishUnits(MainWindow &w)
+    {
+        static const QRegularExpression word(QStringLiteral("[a-z]{4,}"));
+        QStringList patterns;
+        for (const QString &u : channelUnits())
+            if (word.match(u).hasMatch())
+                patterns << QRegularExpression::escape(u);
+        if (patterns.isEmpty())
+            return {QStringLiteral("no channel unit is an English word")};
+        const QRegularExpression unit(QStringLiteral("(?<![A-Za-z/])(?:%1)(?![A-Za-z/])").arg(patterns.join(u'|')));
+        QList<widgetwalk::Text> texts = widgetwalk::texts(&w);
+        for (TrendPlot *plot : w.findChildren<TrendPlot *>()) {
+            for (const TrendPlot::Series &series : plot->series())
+                texts.append({plot, QStringLiteral("legend"), series.label});
+            for (int a : {int(TrendPlot::Left), int(TrendPlot::Right)})
+                texts.append({plot, QStringLiteral("axis title"), plot->valueAxis(a).title});
+        }
+        QStringList out;
+        for (const widgetwalk::Text &t : std::as_const(texts))
+            if (unit.match(t.text).hasMatch())
+                out << QStringLiteral("%1 %2 (%3): %4")
+                           .arg(QString::fromLatin1(t.widget->metaObject()->className()), t.widget->objectName(),
+                                t.what, t.text.left(160));
         out.removeDuplicates();
         return out;
     }
@@ -105,6 +137,12 @@ private slots:
         w.stopAction()->trigger();
         QVERIFY(stopped.wait(5000));
         QVERIFY(!english(w).isEmpty()); // the walk does see English texts
+        // Every unit a drive offers is one the UI can translate.
+        for (int id : dir->connections())
+            for (int a : dir->drives(id))
+                for (const ChannelInfo &c : dir->info(id, a).channels)
+                    QVERIFY2(c.unit.isEmpty() || channelUnits().contains(c.unit), qPrintable(c.id + u' ' + c.unit));
+        QTRY_VERIFY_WITH_TIMEOUT(!englishUnits(w).isEmpty(), 5000); // readouts, legends show units
 
         QVERIFY(w.languageManager()->apply(LanguageManager::Language::Chinese));
         QCoreApplication::sendPostedEvents();
@@ -119,6 +157,16 @@ private slots:
         for (const QString &l : std::as_const(left))
             qWarning("left in English: %s", qPrintable(l));
         QVERIFY2(left.isEmpty(), qPrintable(left.join(QLatin1Char('\n'))));
+        QStringList units;
+        waitFor(
+            [&] {
+                units = englishUnits(w);
+                return units.isEmpty();
+            },
+            5000);
+        for (const QString &l : std::as_const(units))
+            qWarning("unit left in English: %s", qPrintable(l));
+        QVERIFY2(units.isEmpty(), qPrintable(units.join(QLatin1Char('\n'))));
         QVERIFY(w.languageManager()->apply(LanguageManager::Language::English));
         QCoreApplication::sendPostedEvents();
         w.connections()->disconnectAll();

@@ -411,6 +411,39 @@ private slots:
             language.apply(LanguageManager::Language::English);
     }
 
+    // A run made by the CLI in English, shown in Chinese: a metric it could not measure
+    // because a channel was not captured says so in Chinese (the file keeps English).
+    void aMissingChannelIsSaidInTheUiLanguage()
+    {
+        TuningRun run;
+        run.label = QStringLiteral("velocity-step");
+        run.capture.channels = {QStringLiteral("speed")};
+        run.capture.columns = {{}};
+        for (int i = 0; i <= 500; ++i) { // a clean first-order step: every speed metric resolves
+            const double t = i * 0.001;
+            run.capture.time << t;
+            run.capture.columns[0] << (t < 0.0 ? 0.0 : 100.0 * (1.0 - std::exp(-t / 0.02)));
+        }
+        run.capture.interval = IntervalStats::of(run.capture.time);
+        run.metricsChannel = QStringLiteral("speed");
+        run.metrics = StepMetrics::compute(run.capture, StepMetrics::Input{});
+        const QString english = run.metrics.peakFollowingError.reason;
+        QVERIFY(english.contains(QStringLiteral("position-error was not captured")));
+        LanguageManager language;
+        QVERIFY(language.apply(LanguageManager::Language::Chinese));
+        QCoreApplication::sendPostedEvents();
+        const QString chinese = StepMetrics::tr("channel %1 was not captured").arg(QStringLiteral("position-error"));
+        QVERIFY(chinese != english);
+        RunComparison comparison;
+        comparison.setRuns({run});
+        QVERIFY2(!comparison.notesText().contains(QStringLiteral("was not captured")),
+                 qPrintable(comparison.notesText()));
+        QVERIFY2(comparison.notesText().contains(chinese), qPrintable(comparison.notesText()));
+        QVERIFY(language.apply(LanguageManager::Language::English));
+        QCoreApplication::sendPostedEvents();
+        QVERIFY(comparison.notesText().contains(english)); // and back, live
+    }
+
     void followsALiveLanguageSwitch()
     {
         PanelRig rig;

@@ -85,4 +85,14 @@ QString DisplayText::capabilityName(Capability c)
     return capabilityId(c);
 }
 
+QString DisplayText::unit(const QString &unit)
+{
+    return channelUnitText(unit);
+}
+
+QString DisplayText::channelLabel(const QString &name, const QString &unit)
+{
+    return unit.isEmpty() ? name : tr("%1 [%2]").arg(name, DisplayText::unit(unit));
+}
+
 } // namespace dd

@@ -21,6 +21,11 @@ public:
     static QString alarm(int code);                       // "Alarm 12" / "No alarm"
     static QString position(const DriveStatus &s);        // "12345" / "—"
     static QString capabilityName(Capability c);          // "Jog", "EEPROM operations"
+    // A channel's unit ("pulse/s", untranslated from the drive layer: channelUnits()) in the
+    // UI language.
+    static QString unit(const QString &unit);
+    // "Speed [r/min]", the unit translated; just the name without a unit.
+    static QString channelLabel(const QString &name, const QString &unit);
     // `text` as a sentence: a full stop added when it ends without one (。 after Chinese).
     static QString sentence(const QString &text);
     // One line in words: "Enabled · moving", "Alarm 12 · Disabled · at rest", "Offline".

@@ -42,7 +42,7 @@ ChannelInfo info(const Channel &channel)
     ChannelInfo i;
     i.id = QString::fromLatin1(channel.id);
     i.name = QCoreApplication::translate("dd::servocan", t.name);
-    i.unit = *t.unit ? QCoreApplication::translate("dd::servocan", t.unit) : QString();
+    i.unit = QString::fromUtf8(t.unit); // untranslated: the display translates it (channelUnits())
     i.decimals = t.decimals;
     return i;
 }

@@ -185,14 +185,19 @@ void MotionPanel::buildMoveBox(const SpeedRange &range)
     m_moveSpeedLabel->setBuddy(m_moveSpeed);
     m_moveButton = new QPushButton(m_moveBox);
     m_moveButton->setObjectName(QStringLiteral("moveButton"));
+    // Three short rows rather than two long ones: the tab's minimum width decides how much
+    // of a 1280 px screen the bus dock gets (tst_overflowwalk).
+    //   ○ Relative by   ○ Absolute to
+    //   [ distance / target      ] [Move]
+    //   Positioning speed: [speed]
     auto *moveGrid = new QGridLayout;
     moveGrid->addWidget(m_relative, 0, 0);
     moveGrid->addWidget(m_absolute, 0, 1);
-    moveGrid->addWidget(m_moveValue, 0, 2);
-    moveGrid->addWidget(m_moveSpeedLabel, 1, 0);
-    moveGrid->addWidget(m_moveSpeed, 1, 2);
-    moveGrid->addWidget(m_moveButton, 1, 3);
-    moveGrid->setColumnStretch(4, 1);
+    moveGrid->addWidget(m_moveValue, 1, 0, 1, 2);
+    moveGrid->addWidget(m_moveButton, 1, 2);
+    moveGrid->addWidget(m_moveSpeedLabel, 2, 0);
+    moveGrid->addWidget(m_moveSpeed, 2, 1);
+    moveGrid->setColumnStretch(3, 1);
     qobject_cast<QVBoxLayout *>(m_moveBox->layout())->insertLayout(0, moveGrid);
     m_moveResult = makeResultLabel(m_moveBox, QStringLiteral("moveResult"));
     connect(m_moveButton, &QPushButton::clicked, this, &MotionPanel::move);
@@ -223,7 +228,9 @@ void MotionPanel::buildPositionBox()
     m_setPositionLabel->setBuddy(m_setPositionValue);
     m_setPositionButton = new QPushButton(m_positionBox);
     m_setPositionButton->setObjectName(QStringLiteral("setPositionButton"));
-    insertRow(m_positionBox, {m_setPositionLabel, m_setPositionValue, m_setPositionButton});
+    // The label above its value: one row of all three is the widest row of the tab.
+    insertRow(m_positionBox, {m_setPositionValue, m_setPositionButton});
+    qobject_cast<QVBoxLayout *>(m_positionBox->layout())->insertWidget(0, m_setPositionLabel);
     m_positionResult = makeResultLabel(m_positionBox, QStringLiteral("positionResult"));
     connect(m_setPositionButton, &QPushButton::clicked, this, [this] {
         const qint64 p = m_setPositionValue->value();

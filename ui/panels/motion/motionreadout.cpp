@@ -3,6 +3,7 @@
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
 #include "core/drive/driveresult.h"
+#include "ui/common/displaytext.h"
 
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -145,19 +146,12 @@ void MotionReadout::readNow()
 void MotionReadout::onSamples(bool ok, const QMap<QString, double> &samples)
 {
     ++m_reads;
-    const QLocale locale;
     for (auto it = m_values.begin(); it != m_values.end(); ++it) {
         if (it->channel.id.isEmpty())
             continue;
         const auto s = samples.constFind(it->channel.id);
-        if (!ok || s == samples.cend()) {
-            it->value->setText(QStringLiteral("—"));
-            continue;
-        }
-        QString text = locale.toString(*s, 'f', it->channel.decimals);
-        if (!it->channel.unit.isEmpty())
-            text += QLatin1Char(' ') + it->channel.unit;
-        it->value->setText(text);
+        it->last = ok && s != samples.cend() ? std::optional<double>(*s) : std::nullopt;
+        showValue(*it);
     }
     const auto status = samples.constFind(kStatusId);
     if (ok && status != samples.cend())
@@ -214,6 +208,18 @@ void MotionReadout::showSwitches()
     }
 }
 
+void MotionReadout::showValue(const Value &v)
+{
+    if (!v.last) {
+        v.value->setText(QStringLiteral("—"));
+        return;
+    }
+    QString text = QLocale().toString(*v.last, 'f', v.channel.decimals);
+    if (!v.channel.unit.isEmpty())
+        text += QLatin1Char(' ') + DisplayText::unit(v.channel.unit);
+    v.value->setText(text);
+}
+
 void MotionReadout::retranslate()
 {
     for (auto it = m_values.begin(); it != m_values.end(); ++it) {
@@ -223,6 +229,8 @@ void MotionReadout::retranslate()
                                                      : tr("Following error");
         it->title->setText(title);
         it->box->setToolTip(it->channel.name);
+        if (!it->channel.id.isEmpty())
+            showValue(*it); // the unit in the new language, also on a tab not read now
     }
     showSwitches();
 }

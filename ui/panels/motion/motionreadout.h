@@ -49,7 +49,9 @@ private:
         QWidget *box = nullptr;
         QLabel *title = nullptr;
         QLabel *value = nullptr;
+        std::optional<double> last; // nullopt: not read, or the last read failed ("—")
     };
+    static void showValue(const Value &v); // its number with the unit in the UI language
     void readNow();
     void onSamples(bool ok, const QMap<QString, double> &samples);
     void showSwitches();

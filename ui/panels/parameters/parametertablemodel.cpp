@@ -1,6 +1,7 @@
 #include "ui/panels/parameters/parametertablemodel.h"
 
 #include "core/params/parameterdictionary.h"
+#include "ui/common/displaytext.h"
 #include "ui/panels/parameters/parametereditcommand.h"
 #include "ui/panels/parameters/parametervaluevalidator.h"
 
@@ -348,7 +349,7 @@ QVariant ParameterTableModel::display(const Row &r, int column) const
         return v ? QVariant(QString::number(*v)) : QVariant(QString());
     }
     case DriveValue: return driveText(r);
-    case Unit: return p.unit;
+    case Unit: return DisplayText::unit(p.unit);
     case Range: return QStringLiteral("%1 … %2").arg(p.min).arg(p.max);
     case Default: return p.defaultValue ? QString::number(*p.defaultValue) : QStringLiteral("—");
     case Access:

@@ -1,4 +1,5 @@
 #include "ui/panels/trend/trendchannelpanel.h"
+#include "ui/common/displaytext.h"
 
 #include <QActionGroup>
 #include <QDialog>
@@ -151,7 +152,7 @@ void TrendChannelPanel::updateItem(const QString &id)
     const Settings s = m_settings.value(id);
     const bool filling = m_filling;
     m_filling = true;
-    QString text = channel.label();
+    QString text = DisplayText::channelLabel(channel.name.isEmpty() ? channel.id : channel.name, channel.unit);
     const QLocale locale;
     if (s.scale != 1.0 || s.offset != 0.0)
         text += QStringLiteral(" ×") + locale.toString(s.scale, 'g', 6);
@@ -235,7 +236,9 @@ void TrendChannelPanel::editScale(const QString &id)
     for (const TrendChannel &c : std::as_const(m_channels))
         if (c.id == id)
             channel = c;
-    dialog.setWindowTitle(tr("Scale and offset: %1").arg(channel.label()));
+    dialog.setWindowTitle(
+        tr("Scale and offset: %1")
+            .arg(DisplayText::channelLabel(channel.name.isEmpty() ? channel.id : channel.name, channel.unit)));
     auto *scale = new QDoubleSpinBox(&dialog);
     scale->setRange(-1e6, 1e6);
     scale->setDecimals(6);

@@ -4,6 +4,7 @@
 #include "core/trend/trendaxisscale.h"
 #include "core/trend/trendplotbuilder.h"
 #include "core/trend/trendrecorder.h"
+#include "ui/common/displaytext.h"
 #include "ui/panels/trend/trendchannelpanel.h"
 #include "ui/panels/trend/trendcontrols.h"
 #include "ui/panels/trend/trendplot.h"
@@ -251,6 +252,7 @@ int TrendView::channelAxis(const QString &id) const
 void TrendView::onChannelsChanged()
 {
     m_channels = m_recorder->channels();
+    m_decimation.clear();
     m_panel->setChannels(m_channels);
     assignColors();
     invalidate();
@@ -288,7 +290,7 @@ void TrendView::assignColors()
 QString TrendView::seriesLabel(const TrendChannel &c) const
 {
     const TrendChannelPanel::Settings st = m_panel->settings(c.id);
-    QString name = c.label();
+    QString name = DisplayText::channelLabel(c.name.isEmpty() ? c.id : c.name, c.unit);
     const QLocale locale;
     if (st.scale != 1.0)
         name += QStringLiteral(" ×") + locale.toString(st.scale, 'g', 6);
@@ -308,8 +310,8 @@ QString TrendView::axisTitle(int axis) const
         const TrendChannelPanel::Settings st = m_panel->settings(c.id);
         if (!st.visible || st.axis != axis)
             continue;
-        labels.append(c.label());
-        const QString unit = c.unit.isEmpty() ? tr("no unit") : c.unit;
+        labels.append(DisplayText::channelLabel(c.name.isEmpty() ? c.id : c.name, c.unit));
+        const QString unit = c.unit.isEmpty() ? tr("no unit") : DisplayText::unit(c.unit);
         if (!units.contains(unit))
             units.append(unit);
         scaled = scaled || st.scale != 1.0 || st.offset != 0.0;
@@ -380,7 +382,8 @@ void TrendView::refreshNow()
             continue;
         const size_t a = st.axis == 0 ? 0 : 1;
         used[a] = true;
-        TrendPlotBuilder::Result r = TrendPlotBuilder::build(*buf, from, to, width, origin, st.scale, st.offset);
+        TrendPlotBuilder::Result r = TrendPlotBuilder::build(*buf, from, to, width, origin, st.scale, st.offset,
+                                                             &m_decimation[c.id]);
         if (r.hasData()) {
             lo[a] = std::min(lo[a], r.yMin);
             hi[a] = std::max(hi[a], r.yMax);
@@ -489,7 +492,8 @@ QString TrendView::valueText(const TrendChannel &c, std::optional<double> v) con
 {
     const QString value = v ? QLocale().toString(*v, 'f', c.decimals) : tr("–");
     const QString name = c.name.isEmpty() ? c.id : c.name;
-    return c.unit.isEmpty() ? tr("%1: %2").arg(name, value) : tr("%1: %2 %3").arg(name, value, c.unit);
+    return c.unit.isEmpty() ? tr("%1: %2").arg(name, value)
+                            : tr("%1: %2 %3").arg(name, value, DisplayText::unit(c.unit));
 }
 
 void TrendView::setHoverTime(std::optional<double> timeS)
@@ -544,7 +548,7 @@ void TrendView::updateReadouts()
             const QString name = c.name.isEmpty() ? c.id : c.name;
             const QString value = d ? locale.toString(*d, 'f', c.decimals) : tr("–");
             parts.append(c.unit.isEmpty() ? tr("Δ %1: %2").arg(name, value)
-                                          : tr("Δ %1: %2 %3").arg(name, value, c.unit));
+                                          : tr("Δ %1: %2 %3").arg(name, value, DisplayText::unit(c.unit)));
         }
     }
     m_markerReadout->setText(parts.join(QStringLiteral("   ")));

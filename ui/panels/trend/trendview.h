@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/common/error.h"
+#include "core/trend/decimationcache.h"
 #include "core/trend/trendchannel.h"
 
 #include <QHash>
@@ -28,8 +29,9 @@ class TrendRecorder;
 //   right) and a scale and offset. Each axis fits its own channels; ticks sit on 1-2-5
 //   steps. No two shown channels share a colour.
 // - A refresh timer (25 Hz, only while shown; slower, down to 5 Hz, if a refresh takes
-//   over 10 ms) min/max-decimates the visible window to the plot width (TrendPlotBuilder)
-//   and repaints. A frozen (paused or zoomed) view is redrawn only when its window, size
+//   over 10 ms) min/max-decimates the visible window to the plot width (TrendPlotBuilder,
+//   buckets anchored to time; each channel's DecimationCache keeps the finished ones, so a
+//   live update recomputes only the window's edges) and repaints. A frozen (paused or zoomed) view is redrawn only when its window, size
 //   or settings change. Gaps in the recording (TrendRecorder::appendGap) are drawn as
 //   gaps, never as a ramp.
 // - Window 10 s … 10 min; following the newest sample unless paused. Pause freezes the
@@ -148,6 +150,7 @@ private:
     TrendRecorder *m_recorder;
     QList<TrendChannel> m_channels;
     QHash<QString, QColor> m_colors;
+    QHash<QString, DecimationCache> m_decimation; // per channel: finished buckets of the window
     QString m_driveTitle;
 
     TrendPlot *m_plot = nullptr;

@@ -1,4 +1,5 @@
 #include "ui/panels/tuning/capturecontrols.h"
+#include "ui/common/displaytext.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -98,7 +99,7 @@ void CaptureControls::setChannels(const QList<ChannelInfo> &channels)
     m_channels = channels;
     m_channel->clear();
     for (const ChannelInfo &c : channels)
-        m_channel->addItem(c.unit.isEmpty() ? c.name : tr("%1 (%2)").arg(c.name, c.unit), c.id);
+        m_channel->addItem(c.unit.isEmpty() ? c.name : tr("%1 (%2)").arg(c.name, DisplayText::unit(c.unit)), c.id);
     const int keep = m_channel->findData(current.isEmpty() ? QStringLiteral("speed") : current);
     if (keep >= 0)
         m_channel->setCurrentIndex(keep);

@@ -1,4 +1,5 @@
 #include "ui/panels/tuning/runcomparison.h"
+#include "ui/common/displaytext.h"
 
 #include <QEvent>
 #include <QHeaderView>
@@ -26,6 +27,17 @@ QString channelOf(const TuningRun &run, const QString &key)
     if (key == QLatin1String("peakCurrent"))
         return QStringLiteral("current");
     return run.metricsChannel;
+}
+
+// Why a metric has no value. A run file keeps the reason in the language of the tool that
+// measured it (the CLI's English, say); where the run itself tells the reason again (the
+// channel the metric needs is not in its capture) it is worded in the UI language.
+QString reasonOf(const TuningRun &run, const QString &key, const Metric &m)
+{
+    const QString channel = channelOf(run, key);
+    if (!channel.isEmpty() && run.capture.columnOf(channel) < 0)
+        return StepMetrics::tr("channel %1 was not captured").arg(channel);
+    return m.reason;
 }
 
 bool isTime(const QString &key)
@@ -100,7 +112,7 @@ QString RunComparison::metricText(const TuningRun &run, const QString &key)
         return tr("%1 %").arg(v, 0, 'f', 1);
     if (isTime(key))
         return tr("%1 ms").arg(v * 1000.0, 0, 'f', 1);
-    const QString unit = unitOf(run, channelOf(run, key));
+    const QString unit = DisplayText::unit(unitOf(run, channelOf(run, key)));
     const QString number = QString::number(v, 'g', 4);
     return unit.isEmpty() ? number : number + QLatin1Char(' ') + unit;
 }
@@ -150,10 +162,11 @@ void RunComparison::refresh()
             const Metric &m = run.metrics.byKey(keys.at(r));
             auto *item = new QTableWidgetItem(metricText(run, keys.at(r)));
             if (!m.value) {
-                item->setToolTip(m.reason);
+                const QString reason = reasonOf(run, keys.at(r), m);
+                item->setToolTip(reason);
                 item->setForeground(palette().color(QPalette::Disabled, QPalette::Text));
-                if (!m.reason.isEmpty())
-                    notes << tr("%1, %2: %3").arg(run.label, metricName(keys.at(r)).toLower(), m.reason);
+                if (!reason.isEmpty())
+                    notes << tr("%1, %2: %3").arg(run.label, metricName(keys.at(r)).toLower(), reason);
             } else if (m.resolution > 0.0) {
                 item->setToolTip(tr("Resolution: %1")
                                      .arg(isTime(keys.at(r)) ? tr("%1 ms").arg(m.resolution * 1000.0, 0, 'g', 3)

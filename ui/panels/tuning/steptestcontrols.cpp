@@ -1,4 +1,5 @@
 #include "ui/panels/tuning/steptestcontrols.h"
+#include "ui/common/displaytext.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -216,8 +217,8 @@ void StepTestControls::retranslate()
     label(m_size, m_distance, tr("Distance:"));
     for (QDoubleSpinBox *s : {m_maxSpeed, m_maxTravel, m_maxDuration})
         s->setSpecialValueText(tr("not set"));
-    m_maxSpeed->setSuffix(QLatin1Char(' ') + m_speedUnit);
-    m_speed->setSuffix(QLatin1Char(' ') + m_speedUnit);
+    m_maxSpeed->setSuffix(QLatin1Char(' ') + DisplayText::unit(m_speedUnit));
+    m_speed->setSuffix(QLatin1Char(' ') + DisplayText::unit(m_speedUnit));
     m_maxTravel->setSuffix(tr(" counts"));
     m_distance->setSuffix(tr(" counts"));
     m_maxDuration->setSuffix(tr(" s"));

@@ -4,6 +4,7 @@
 #include "core/drive/drivehub.h"
 #include "core/drive/driveresult.h"
 #include "core/params/parameterdictionary.h"
+#include "ui/common/displaytext.h"
 #include "ui/common/livetext.h"
 #include "ui/panels/tuning/capturecontrols.h"
 #include "ui/panels/tuning/captureplot.h"
@@ -479,7 +480,7 @@ void TuningPanel::updateOverlay()
         curves.append({r.label, runColor(i), r.capture.time, r.capture.columns.at(c)});
     }
     const QString name = m_plotChannel->currentText();
-    m_plot->setCurves(curves, unit.isEmpty() ? name : tr("%1 (%2)").arg(name, unit));
+    m_plot->setCurves(curves, unit.isEmpty() ? name : tr("%1 (%2)").arg(name, DisplayText::unit(unit)));
     m_comparison->setRuns(m_runs->overlaidRuns());
     updateSelection();
 }

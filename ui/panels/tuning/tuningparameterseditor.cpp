@@ -4,6 +4,7 @@
 #include "core/drive/drivehub.h"
 #include "core/drive/driveresult.h"
 #include "core/params/parameterdictionary.h"
+#include "ui/common/displaytext.h"
 #include "ui/common/livetext.h"
 #include "ui/workspace/driveparameters.h"
 
@@ -154,7 +155,7 @@ void TuningParametersEditor::refreshValues()
         if (!name || !value)
             continue;
         const ParameterInfo *p = m_names ? m_names->byIndex(index) : nullptr;
-        const QString unit = p ? p->unit : QString();
+        const QString unit = p ? DisplayText::unit(p->unit) : QString();
         name->setText(m_names ? m_names->label(index) : keyOf(index));
         name->setToolTip(p ? p->description.text(QLocale()) : QString());
         QFont f = value->font();
@@ -183,8 +184,9 @@ void TuningParametersEditor::onItemChanged(QTableWidgetItem *item)
     const int index = item->data(Qt::UserRole).toInt();
     QString text = item->text().trimmed();
     const ParameterInfo *p = m_names ? m_names->byIndex(index) : nullptr;
-    if (p && !p->unit.isEmpty() && text.endsWith(p->unit))
-        text = text.chopped(p->unit.size()).trimmed();
+    const QString unit = p ? DisplayText::unit(p->unit) : QString();
+    if (!unit.isEmpty() && text.endsWith(unit))
+        text = text.chopped(unit.size()).trimmed();
     bool ok = false;
     const qint64 value = text.toLongLong(&ok);
     Error e = ok ? setEdited(index, value)

@@ -416,7 +416,10 @@ bool MotorModel::moveAbsolute(qint64 target, double speed)
 
 bool MotorModel::moveRelative(qint64 delta, double speed)
 {
-    return moveAbsolute(position() + delta, speed);
+    // Closed loop: from the commanded position, as a servo in position mode adds an increment
+    // to its position command; the shaft may still be settling a few counts away from it.
+    const qint64 from = loopActive() ? std::llround(m_pos) : position();
+    return moveAbsolute(from + delta, speed);
 }
 
 void MotorModel::setMoveSpeed(double speed)
@@ -485,8 +488,6 @@ bool MotorModel::isMoving() const
 {
     if (m_speed != 0.0 || m_mode != Mode::Idle)
         return true;
-    // Closed loop: still braking, or turning faster than 1 r/min (a disturbance at rest
-    // keeps the shaft trembling without moving it).
     // Closed loop: still braking, turning faster than 1 r/min, or not yet within half a count of
     // the reference: in position, the position reads the target
     // (a disturbance at rest trembles the shaft without moving it).

@@ -111,7 +111,8 @@ public:
     // Speed loop toward `countsPerSecond` (clamped to ±maxSpeed) with the accel/decel limits.
     bool runSpeed(double countsPerSecond);
     // Trapezoidal moves at up to `speed` counts/s; they end exactly on the target (integer
-    // counts) with zero speed. A relative move is relative to the current (rounded) position.
+    // counts) with zero speed. A relative move is relative to the current (rounded) position; closed
+    // loop: to the commanded one (referencePosition), where the shaft settles.
     bool moveAbsolute(qint64 target, double speed);
     bool moveRelative(qint64 delta, double speed);
     // Changes the cruise speed of a move in progress (and of later homing / moves).

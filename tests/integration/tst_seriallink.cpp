@@ -124,7 +124,7 @@ private slots:
             const qint64 apart = commandAt[i] - commandAt[i - 1];
             QVERIFY2(apart >= 30000, qPrintable(QString::number(apart)));
         }
-        // 30 ms + the 2 ms allowance + the answer's 2 ms, and timer rounding; under what counting
+        // 30 ms + the 1 ms margin + the answer's 2 ms, and timer wake-ups; under what counting
         // from the reply's end plus a second gap would give (>= 62 ms). Measured 50-52 ms while
         // other builds loaded the machine (the old bound, 45 ms, failed there every time).
         const qint64 mean = (commandAt.last() - commandAt.first()) / (commandAt.size() - 1);

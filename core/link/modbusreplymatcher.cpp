@@ -2,7 +2,6 @@
 
 #include "core/protocol/modbus/modbusrtuparser.h"
 
-
 namespace dd {
 
 namespace {
@@ -51,9 +50,10 @@ FrameMatch ModbusReplyMatcher::match(const modbusrtu::Request &request, const QS
         }
         if (!ownAddress)
             return FrameMatch::garbage(c.length);
-        return FrameMatch::unfit(c.length, tr("The reply from address %1 on %2 does not fit the request (%3).")
-                                               .arg(request.address)
-                                               .arg(port, decoded.error));
+        return FrameMatch::unfit(c.length,
+                                 tr("The reply from address %1 on %2 does not fit the request (%3).")
+                                     .arg(request.address)
+                                     .arg(port, decoded.error));
     }
     // No valid frame yet. As many bytes as the reply, and the first of them cannot start a
     // frame that is still arriving (a longer one): a damaged reply.

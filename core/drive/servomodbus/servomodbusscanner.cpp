@@ -40,7 +40,9 @@ qint64 ServoModbusScanner::allowanceUs() const
     // Until a drive answered: the base allowance; then what the drives' turnaround needs.
     if (!m_turnaroundSeen || m_allowanceSet)
         return m_baseAllowanceUs;
-    return 2 * m_turnaroundUs + 1000;
+    // Twice the turnaround, at least the turnaround + 1 ms (the host's wake-ups, a reply
+    // delivered whole rather than byte by byte).
+    return m_turnaroundUs + std::max<qint64>(m_turnaroundUs, 1000);
 }
 
 int ServoModbusScanner::allowanceMs() const

@@ -20,8 +20,9 @@ class LinkReply;
 // Per-probe timeout (ScanOptions::timeoutMs = -1): no first byte by the end of the request
 // + an allowance, or no whole reply by the wire time of request and 7-byte reply + the
 // allowance (ModbusRequest::firstByteTimeoutUs). The allowance is 4 ms (or setAllowanceMs)
-// until a drive answered, then 2 x the drives' turnaround + 1 ms: the quickest turnaround
-// seen (one answer slowed by a busy host must not slow every later probe; a drive that is
+// until a drive answered, then twice the drives' turnaround, at least the turnaround + 1 ms
+// (the quickest turnaround
+// seen: one answer slowed by a busy host must not slow every later probe; a drive that is
 // always slower is asked again, below). The round trip it comes from runs from the request
 // leaving for the port to the reply's last byte. After a silent address the line is quiet
 // only t3.5 (ModbusRequest::quietAfterTimeoutUs): late replies are caught here. A drive

@@ -237,16 +237,23 @@ void SerialLink::transmit()
         discardBuffer(QStringLiteral("stale bytes before request"));
     }
     m_port->clear(QSerialPort::Input);
+    if (!m_port || !m_current)
+        return; // the port failed (adapter gone): onPortError() failed everything
     m_recoveryQuietUs = 0;
     m_bytesSinceSend = false;
-    m_port->write(p.request.bytes);
-    m_port->flush(); // to the driver now, not on the next event-loop pass
     if (m_tap) {
         QString note = p.request.note;
         if (p.attempts > 1)
             note = QStringLiteral("%1 (retry %2)").arg(note).arg(p.attempts - 1).trimmed();
         m_tap->recordSerial(TrafficRecord::Direction::Tx, m_settings.portName, p.request.bytes, note);
     }
+    m_port->write(p.request.bytes);
+    // To the driver now, not on the next event-loop pass. A failing port reports it from
+    // inside flush() (or clear(), above): onPortError() has then failed every request and
+    // dropped the port.
+    m_port->flush();
+    if (!m_port || !m_current)
+        return;
     m_sentAtUs = nowUs();
     m_lastCommandEndUs = m_sentAtUs + wireTimeUs(p.request.bytes.size());
     if (!p.request.matcher) {

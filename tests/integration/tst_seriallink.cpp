@@ -3,9 +3,11 @@
 #include <QtTest>
 
 #include <QElapsedTimer>
+#include <QSignalSpy>
 
 #include "core/link/linkreply.h"
 #include "core/link/seriallink.h"
+#include "core/link/traffictap.h"
 #include "sim/bus/ptyendpoint.h"
 #include "tests/support/requiretool.h"
 
@@ -77,6 +79,35 @@ private slots:
         QVERIFY(waitFinished(r));
         QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
         QCOMPARE(r->frame(), reply('Q', 0x22));
+    }
+
+    // The adapter is gone when a request goes out: the port reports it from inside the
+    // write (the link pushes the request to the driver at once). The request fails with
+    // LinkClosed and the link closes; before, the link went on using the request it had
+    // just failed (a crash in tst_faultshuoke under load, and in the trace).
+    void portFailingAsARequestLeavesFailsItCleanly()
+    {
+        PtyEndpoint pty;
+        QVERIFY(!pty.open());
+        SerialLink link;
+        TrafficTap tap;
+        link.setTap(&tap);
+        SerialSettings s;
+        s.portName = pty.clientPath();
+        s.baud = 115200;
+        s.retries = 0;
+        QVERIFY(link.open(s));
+        QSignalSpy closed(&link, &SerialLink::closed);
+        pty.close(); // no event loop yet: the link has not noticed
+        SerialRequest q;
+        q.bytes = "Q1";
+        q.matcher = replyOf('Q');
+        LinkReply *r = link.send(q);
+        QVERIFY(waitFinished(r));
+        QCOMPARE(r->error().code, ErrorCode::LinkClosed);
+        QTRY_COMPARE(closed.count(), 1);
+        QVERIFY(!link.isOpen());
+        QVERIFY(link.isIdle());
     }
 
     // Commands reach the drive minCommandSpacingMs apart (last byte to last byte), however

@@ -26,13 +26,11 @@ Cli::Cli(QObject *parent)
 
 Cli::~Cli() = default;
 
-void Cli::configureLogging(bool sim, bool trace)
+void Cli::configureLogging(bool sim)
 {
     QString rules = QStringLiteral("drivedesk.*.debug=false\ndrivedesk.*.info=false\n"
                                    "drivedesk.debug=false\ndrivedesk.info=false\n"
                                    "qt.canbus.*.debug=false\nqt.canbus.*.info=false\n");
-    if (!trace)
-        rules += QStringLiteral("qt.modbus.warning=false\nqt.modbus.*.warning=false\n");
     if (sim)
         rules += QStringLiteral("qt.canbus.plugins.virtualcan.warning=false\n");
     QLoggingCategory::setFilterRules(rules);
@@ -210,11 +208,11 @@ int Cli::runCommand(CliCommand *command, CliContext &context)
     DriveConnection connection;
     if (context.globals.trace)
         connect(connection.tap(), &TrafficTap::frameRecorded, this, [&out](const TrafficRecord &r) { out.trace(r); });
-    configureLogging(false, context.globals.trace);
+    configureLogging(false);
 
     SimBench bench;
     if (context.globals.sim && command->needsLink()) {
-        configureLogging(true, context.globals.trace);
+        configureLogging(true);
         if (Error e = startBench(&bench, &context.globals)) {
             const CliExit code = e.code == ErrorCode::InvalidArgument ? CliExit::Usage : CliExit::OpenFailed;
             out.failure(command->name(), int(code), e);

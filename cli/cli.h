@@ -31,11 +31,9 @@ public:
 
     // stderr is for the CLI's own messages and --trace: the libraries' debug and info
     // chatter stays off (QT_LOGGING_RULES in the environment still overrides this); with the
-    // simulator also virtualcan's expected warnings about its private hub. Qt Modbus's own
-    // warnings ("Cannot match response with open request, ignoring": a stray or late frame,
-    // which the link handles and --trace shows as a discarded frame) are shown only with
-    // --trace.
-    static void configureLogging(bool sim, bool trace = false);
+    // simulator also virtualcan's expected warnings about its private hub. (Stray or late
+    // frames are the link's to handle; --trace shows them as discarded frames.)
+    static void configureLogging(bool sim);
     // Whether the command line asks for a command that needs a QGuiApplication (report); main()
     // then makes one on the offscreen platform, so that no display is needed.
     static bool needsGuiApplication(const QStringList &arguments);

@@ -1348,22 +1348,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>Modbus 连接已被销毁。</translation>
     </message>
     <message>
-        <source>The serial port %1 was closed.</source>
-        <translation>串口 %1 已关闭。</translation>
-    </message>
-    <message>
-        <source>The Modbus link was reopened.</source>
-        <translation>Modbus 连接已重新打开。</translation>
-    </message>
-    <message>
-        <source>Cannot open serial port %1: %2. Check the device name, that no other program is using it, and that you may access it (dialout group).</source>
-        <translation>无法打开串口 %1：%2。请检查设备名称、是否被其他程序占用，以及是否有访问权限（dialout 组）。</translation>
-    </message>
-    <message>
-        <source>The serial port %1 could not be reopened: %2. Was the adapter unplugged?</source>
-        <translation>无法重新打开串口 %1：%2。适配器是否已拔出？</translation>
-    </message>
-    <message>
         <source>The serial port is not open.</source>
         <translation>串口未打开。</translation>
     </message>
@@ -1372,68 +1356,16 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>无效的 Modbus 请求（功能码 %1，地址 %2，%3 个寄存器）：未发送任何数据。</translation>
     </message>
     <message>
-        <source>The Modbus client refused the request: %1</source>
-        <translation>Modbus 客户端拒绝了请求：%1</translation>
-    </message>
-    <message>
-        <source>The serial port %1 failed (%2). Was the adapter unplugged?</source>
-        <translation>串口 %1 出错（%2）。适配器是否已拔出？</translation>
-    </message>
-    <message>
-        <source>The broadcast could not be sent on %1: %2</source>
-        <translation>无法在 %1 上发送广播：%2</translation>
-    </message>
-    <message>
         <source>The drive at address %1 rejected the request (Modbus exception %2: %3).</source>
         <translation>地址 %1 的驱动器拒绝了请求（Modbus 异常 %2：%3）。</translation>
-    </message>
-    <message>
-        <source>The Modbus request to address %1 on %2 failed: %3</source>
-        <translation>%2 上发往地址 %1 的 Modbus 请求失败：%3</translation>
     </message>
     <message>
         <source>The reply from address %1 on %2 does not fit the request (%3).</source>
         <translation>%2 上地址 %1 的应答与请求不符（%3）。</translation>
     </message>
     <message>
-        <source>The reply from address %1 on %2 failed its CRC. Check the cable shielding, the bus termination and the baud rate.</source>
-        <translation>%2 上地址 %1 的应答 CRC 校验失败。请检查电缆屏蔽、总线终端电阻和波特率。</translation>
-    </message>
-    <message>
-        <source>No reply from address %1 on %2 within %3 ms. Check the drive address (PA51), the baud rate, the wiring (A/B swapped?) and the bus termination.</source>
-        <translation>%2 上地址 %1 在 %3 ms 内无应答。请检查驱动器地址（PA51）、波特率、接线（A/B 是否接反？）和总线终端电阻。</translation>
-    </message>
-    <message>
-        <source>A frame with another address arrived meanwhile; servo drives send exception replies with address 1, so the drive may have rejected the request.</source>
-        <translation>期间收到了其他地址的帧；伺服驱动器的异常应答使用地址 1，驱动器可能拒绝了该请求。</translation>
-    </message>
-    <message>
         <source>The drive at address %1 rejected the request (Modbus exception %2: %3; the reply carried address byte %4).</source>
         <translation>地址 %1 的驱动器拒绝了请求（Modbus 异常 %2：%3；应答中的地址字节为 %4）。</translation>
-    </message>
-    <message>
-        <source>No complete reply from address %1 on %2 within %3 ms: only %4 byte(s) arrived, which form no valid frame (an incomplete or garbled reply). Check the baud rate, the wiring and the bus termination.</source>
-        <translation>%3 ms 内 %2 上地址 %1 没有完整应答：只收到 %4 个字节，构不成有效帧（应答不完整或已损坏）。请检查波特率、接线和总线终端电阻。</translation>
-    </message>
-    <message>
-        <source>A frame with function %1 came from that address instead, which does not answer this request (function %2).</source>
-        <translation>该地址发来的是功能码 %1 的帧，不是对本请求（功能码 %2）的应答。</translation>
-    </message>
-    <message>
-        <source>A frame from address %1 arrived instead: do two drives share an address, or does another master talk on the bus?</source>
-        <translation>收到的是地址 %1 的帧：是否有两台驱动器使用同一地址，或总线上有另一个主站？</translation>
-    </message>
-    <message>
-        <source>A reply from address %1 on %2 reached the port before the request was written: a duplicated or late answer to an earlier request, dropped.</source>
-        <translation>来自地址 %1（%2）的应答在请求写出之前就已到达端口：这是对先前请求的重复或迟到应答，已丢弃。</translation>
-    </message>
-    <message>
-        <source>A reply from address %1 on %2 came %3 us after the request, sooner than the wire can carry request and reply at %4 baud (%5 us), while the last request to that address was still unanswered: it was dropped as that request&apos;s late answer.</source>
-        <translation>来自地址 %1（%2）的应答在请求发出后 %3 微秒即到达，早于 %4 波特率下线路传送请求和应答所需的时间（%5 微秒），而发往该地址的上一个请求尚未得到应答：该应答被视为上一个请求的迟到应答而丢弃。</translation>
-    </message>
-    <message>
-        <source>The next attempt takes a fast reply; if this was the last attempt, raise the retries (--retries).</source>
-        <translation>下一次尝试会接受快速应答；如果这已是最后一次尝试，请增加重试次数（--retries）。</translation>
     </message>
 </context>
 <context>
@@ -8772,6 +8704,33 @@ firmware %2</source>
     <message>
         <source>r/min/ms</source>
         <translation>r/min/ms</translation>
+    </message>
+</context>
+<context>
+    <name>dd::ModbusReplyMatcher</name>
+    <message>
+        <source>The reply from address %1 on %2 does not fit the request (%3).</source>
+        <translation>%2 上地址 %1 的应答与请求不符（%3）。</translation>
+    </message>
+    <message>
+        <source>The reply from address %1 on %2 failed its CRC. Check the cable shielding, the bus termination and the baud rate.</source>
+        <translation>%2 上地址 %1 的应答 CRC 校验失败。请检查电缆屏蔽、总线终端电阻和波特率。</translation>
+    </message>
+    <message>
+        <source>No complete reply from address %1 on %2 within %3 ms: only %4 byte(s) arrived, which form no valid frame (an incomplete or garbled reply). Check the baud rate, the wiring and the bus termination.</source>
+        <translation>%3 ms 内 %2 上地址 %1 没有完整应答：只收到 %4 个字节，构不成有效帧（应答不完整或已损坏）。请检查波特率、接线和总线终端电阻。</translation>
+    </message>
+    <message>
+        <source>No reply from address %1 on %2 within %3 ms. Check the drive address (PA51), the baud rate, the wiring (A/B swapped?) and the bus termination.</source>
+        <translation>%2 上地址 %1 在 %3 ms 内无应答。请检查驱动器地址（PA51）、波特率、接线（A/B 是否接反？）和总线终端电阻。</translation>
+    </message>
+    <message>
+        <source>A frame with function %1 came from that address instead, which does not answer this request (function %2).</source>
+        <translation>该地址发来的是功能码 %1 的帧，不是对本请求（功能码 %2）的应答。</translation>
+    </message>
+    <message>
+        <source>A frame from address %1 arrived instead: do two drives share an address, or does another master talk on the bus?</source>
+        <translation>收到的是地址 %1 的帧：是否有两台驱动器使用同一地址，或总线上有另一个主站？</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,7 @@
 
 #include "core/common/error.h"
 #include "core/link/linkreply.h"
+#include "core/link/seriallink.h"
 #include "core/link/serialsettings.h"
 #include "core/protocol/modbus/modbusrtu.h"
 
@@ -19,42 +20,38 @@ struct ModbusRequest
     int retries = -1;       // -1: settings.retries
     QString note;           // shown in the trace
     bool urgent = false;    // stop / disable: ahead of every waiting ordinary request
+    // After a timeout the line stays quiet this long; -1: the link's rule (max(2 x timeout,
+    // 20 ms), so that a late reply lands while nothing waits). The scanner, which catches
+    // late replies itself (strayBytes), passes interFrameGapUs().
+    qint64 quietAfterTimeoutUs = -1;
+    // > 0: time out when no byte came this long after the request went out (scan probes:
+    // the request's wire time + the allowance), not after the whole reply's wire time.
+    qint64 firstByteTimeoutUs = 0;
 };
 
-// Modbus RTU client transport on QModbusRtuSerialClient (servo-modbus, shuoke PLC mode),
-// with the Qt 6.4 pitfalls of docs/qt-notes.md handled:
-//  - requests go one at a time through our own queue; the client's own retries are off;
-//  - after a timeout the address is kept quiet (see below) so that a late reply can never
-//    be handed to the next request with the same address and function;
-//  - setInterFrameDelay(-1) before every connectDevice() (baud changes reconnect);
-//  - the response timeout covers the request's and the reply's byte time at the baud;
+// Modbus RTU client transport (servo-modbus, shuoke PLC mode): the project's SerialLink
+// with the RTU codec (modbusrtu::) and the reply matcher of modbusreplymatcher.h.
+//  - requests go one at a time (SerialLink's queue, urgent ones first), each after the
+//    Modbus inter-frame silence t3.5 (3.5 characters; 1750 us above 19200 baud) counted
+//    from the last byte seen on the line, to the microsecond;
+//  - a reply is the first CRC-valid frame that answers the request: its address and
+//    function, or an exception for its function whatever the address byte (the
+//    servo-modbus drive sends exception replies with address 0x01). Frames from other
+//    addresses or of other functions are passed over (strayBytes, the timeout's words);
+//    a frame from the address that does not fit (byte count, echo) is Malformed and the
+//    request is asked again; a frame-shaped run with a bad CRC is ChecksumError, again;
+//  - the stale-reply rule of docs/reliability.md (SerialLink): a fast reply is dropped as
+//    a stale answer only when its address owes one;
+//  - a broadcast (address 0) finishes when written; the line then stays quiet 100 ms;
 //  - a serial error (adapter unplugged) closes the link and fails everything pending.
-// An urgent request (stop, disable) goes ahead of every waiting ordinary request, behind
-// the urgent ones queued before it, right after the request in flight (never aborted; its
-// retries come first). The quiet times below apply to it as to any request.
 // Exceptions finish the reply with ErrorCode::DriveException and Error::driveCode set.
-// The tap receives the request and reply ADUs (rebuilt from the PDUs; CRC included).
-//
-// Details (measured with Qt 6.4.2, see modbuslink.cpp):
-//  - Qt matches a reply by address and function only. The late-reply guard: after a
-//    timeout the address is "tainted" for max(2 x timeout, 20 ms), extended while stray
-//    bytes arrive; a request to a tainted address (or to address 1, where exception replies
-//    with the seed's fixed address byte would land) waits until it is clean. A reply that
-//    completes sooner than half the wire time of request + reply after the request went out
-//    is discarded as a late answer and the request is repeated after a quiet period.
-//  - Qt's shortest response timeout is 10 ms; shorter timeouts (scans at high baud) and
-//    aborts (see below) end Qt's wait by disconnecting and reconnecting the client (when a
-//    reconnect, whose cost is measured, is quicker than Qt's own timer).
-//  - Qt drops a CRC-valid reply whose address byte differs (the servo-modbus exception
-//    reply carries 0x01 whatever the drive's address). The raw bytes are seen through a
-//    SerialReadSniffer (Unix): such an exception is reported with its code at once and the
-//    client is reconnected to end Qt's wait. Without the sniffer the request times out and
-//    the error says that a frame from another address arrived.
-//  - Qt waits its inter-frame delay (at least 2 ms; 5 ms at 9600 baud) before each request.
+// The tap receives the request and reply ADUs as they were on the wire.
 class ModbusLink : public QObject
 {
     Q_OBJECT
 public:
+    static constexpr int BroadcastTurnaroundMs = 100; // Modbus: let servers act on a broadcast
+
     explicit ModbusLink(QObject *parent = nullptr);
     ~ModbusLink() override;
 
@@ -87,32 +84,36 @@ public:
     quint64 timeoutCount() const;
     quint64 retryCount() const;
     quint64 checksumErrorCount() const;
-    quint64 lateReplyCount() const; // replies discarded as late answers
-    quint64 reconnectCount() const; // client reconnects (short timeouts, aborts)
-    bool seesRawBytes() const;      // the SerialReadSniffer works on this platform
+    quint64 lateReplyCount() const; // fast replies dropped as stale answers
 
     // Wire time of `bytes` characters at the current settings, in microseconds.
     qint64 wireTimeUs(qsizetype bytes) const;
     // The response timeout a request gets when it does not set one.
     int defaultTimeoutMs(const modbusrtu::Request &pdu) const;
-    // Qt's inter-frame delay before each request at the current baud, in microseconds.
-    int interFrameDelayUs() const;
+    // The Modbus inter-frame silence t3.5 at the current baud, in microseconds.
+    qint64 interFrameGapUs() const;
+    static qint64 interFrameGapUs(qint32 baud, int bitsPerChar);
 
 signals:
     void opened();
     void closed(const dd::Error &reason);
     void idle();
-    // Raw bytes no request took (Unix, where the raw bytes are visible): bytes that arrived
-    // with no request waiting (also those still unread at the port when a request goes
-    // out, which the link then flushes), bytes that formed no reply before a timeout, a
-    // CRC-valid frame from another address. May come before the timeout of the request
-    // whose late answer they are. Typically a late reply to an earlier request; the
-    // scanner uses them to ask such an address again. Emitted from the event loop.
+    // Raw bytes no request took: bytes that arrived with no request waiting (also those
+    // still unread at the port when a request goes out, which the link then flushes),
+    // frames from other addresses or of other functions, bytes that formed no reply before
+    // a timeout. Typically a late reply to an earlier request: the scanner asks such an
+    // address again. May come before the timeout of the request whose late answer they
+    // are. Emitted from the event loop.
     void strayBytes(const QByteArray &bytes);
 
 private:
-    class Private;
-    Private *d;
+    // Sends `s` for `outer`, which has already used `attemptsBefore` attempts.
+    void transmit(LinkReply *outer, const SerialRequest &s, const modbusrtu::Request &pdu, int attemptsBefore);
+    void finishFrom(LinkReply *outer, LinkReply *inner, const SerialRequest &s, const modbusrtu::Request &pdu,
+                    int attemptsBefore);
+
+    SerialLink *m_serial;
+    int m_retriedExceptionCode = -1; // setRetriedExceptionCode
 };
 
 } // namespace dd

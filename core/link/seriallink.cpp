@@ -9,6 +9,10 @@
 #include <QLoggingCategory>
 #include <cmath>
 
+#ifdef Q_OS_UNIX
+#include <sys/ioctl.h>
+#endif
+
 Q_LOGGING_CATEGORY(lcSerialLink, "drivedesk.link.serial")
 
 namespace dd {
@@ -16,6 +20,9 @@ namespace dd {
 namespace {
 constexpr qsizetype kMaxRxBuffer = 4096;
 constexpr int kDefaultReplyBytes = 8;
+constexpr int MaxDeferrals = 8; // waits for the port to read what its driver holds
+constexpr qint64 DeferralUs = 100;
+
 } // namespace
 
 SerialLink::SerialLink(QObject *parent)
@@ -23,12 +30,8 @@ SerialLink::SerialLink(QObject *parent)
     , m_responseTimer(this)
     , m_gapTimer(this)
 {
-    m_responseTimer.setSingleShot(true);
-    m_responseTimer.setTimerType(Qt::PreciseTimer);
-    m_gapTimer.setSingleShot(true);
-    m_gapTimer.setTimerType(Qt::PreciseTimer);
-    connect(&m_responseTimer, &QTimer::timeout, this, &SerialLink::onResponseTimeout);
-    connect(&m_gapTimer, &QTimer::timeout, this, &SerialLink::onGapElapsed);
+    connect(&m_responseTimer, &MicroTimer::timeout, this, &SerialLink::onResponseTimeout);
+    connect(&m_gapTimer, &MicroTimer::timeout, this, &SerialLink::onGapElapsed);
     m_clock.start();
 }
 
@@ -134,6 +137,15 @@ void SerialLink::failAll(const Error &why)
     m_responseTimer.stop();
     m_gapTimer.stop();
     if (m_current) {
+        if (m_state == State::AwaitingReply) {
+            // Aborted in flight: its answer may still come (the stale-reply rule), and the
+            // line stays quiet as after a timeout.
+            m_owed.insert(m_current->request.peer);
+            const qint64 quiet = m_current->request.quietAfterTimeoutUs >= 0
+                ? m_current->request.quietAfterTimeoutUs
+                : qint64(std::max(2 * effectiveTimeoutMs(m_current->request), 20)) * 1000;
+            enterRecovery(quiet);
+        }
         if (m_current->reply)
             m_current->reply->finishWithError(why);
         m_current.reset();
@@ -160,11 +172,11 @@ void SerialLink::scheduleNext()
             return;
         }
     }
-    const qint64 now = m_clock.nsecsElapsed() / 1000;
+    const qint64 now = nowUs();
     const qint64 earliest = earliestSendUs(m_current ? m_current->request : m_queue.head().request);
     if (now < earliest) {
         m_state = State::Gap;
-        m_gapTimer.start(static_cast<int>((earliest - now + 999) / 1000));
+        m_gapTimer.start(earliest - now);
         return;
     }
     if (!m_current) {
@@ -177,10 +189,12 @@ void SerialLink::scheduleNext()
 qint64 SerialLink::earliestSendUs(const SerialRequest &next) const
 {
     qint64 earliest = m_quietUntilUs;
+    if (m_interFrameGapUs > 0 && m_lastRxUs > 0)
+        earliest = std::max(earliest, m_lastRxUs + m_interFrameGapUs); // silence since the last byte
     if (m_settings.minCommandSpacingMs > 0 && m_lastCommandEndUs >= 0) {
         // The drive counts from each command it receives, i.e. from its last byte.
-        constexpr qint64 JitterUs = 2000;
-        const qint64 nextEnd = m_lastCommandEndUs + qint64(m_settings.minCommandSpacingMs) * 1000 + JitterUs;
+        const qint64 nextEnd = m_lastCommandEndUs + qint64(m_settings.minCommandSpacingMs) * 1000
+            + CommandSpacingMarginUs;
         earliest = std::max(earliest, nextEnd - wireTimeUs(next.bytes.size()));
     }
     return earliest;
@@ -197,34 +211,68 @@ void SerialLink::transmit()
         failAll({ErrorCode::LinkClosed, tr("The serial port is not open.")});
         return;
     }
+    if (bytesWaitInDriver() && m_deferrals < MaxDeferrals) {
+        // Bytes came that the port has not read yet (a late answer, a duplicate): let them
+        // be read and shown first, and the silence before the request count from them.
+        ++m_deferrals;
+        m_state = State::Gap;
+        m_gapTimer.start(DeferralUs);
+        return;
+    }
+    m_deferrals = 0;
     Pending &p = *m_current;
     ++p.attempts;
     // Whatever waits unread answers no request of ours (a duplicate, a late answer): read
     // after the request went out it could pass for its answer. Qt's buffer is shown in the
     // trace; what the OS still holds is dropped.
     m_rx += m_port->readAll();
-    m_flushedForCurrent = !m_rx.isEmpty();
-    if (!m_rx.isEmpty())
+    m_flushedForCurrent = false;
+    if (!m_rx.isEmpty()) {
+        // Stale bytes just before this request: when they end in the start of a frame, its
+        // rest may come right after the request and pass for a fast answer. Complete frames
+        // (a late answer, a duplicate) and noise predict nothing.
+        m_flushedForCurrent = endsInPartialFrame(p.request, m_rx);
+        payDebtsOf(m_rx);
+        reportStray(m_rx);
         discardBuffer(QStringLiteral("stale bytes before request"));
+    }
     m_port->clear(QSerialPort::Input);
-    m_recoveryQuietMs = 0;
-    m_port->write(p.request.bytes);
+    if (!m_port || !m_current)
+        return; // the port failed (adapter gone): onPortError() failed everything
+    m_recoveryQuietUs = 0;
+    m_bytesSinceSend = false;
     if (m_tap) {
         QString note = p.request.note;
         if (p.attempts > 1)
             note = QStringLiteral("%1 (retry %2)").arg(note).arg(p.attempts - 1).trimmed();
         m_tap->recordSerial(TrafficRecord::Direction::Tx, m_settings.portName, p.request.bytes, note);
     }
-    m_sentAtUs = m_clock.nsecsElapsed() / 1000;
+    m_port->write(p.request.bytes);
+    // To the driver now, not on the next event-loop pass. A failing port reports it from
+    // inside flush() (or clear(), above): onPortError() has then failed every request and
+    // dropped the port.
+    m_port->flush();
+    if (!m_port || !m_current)
+        return;
+    m_sentAtUs = nowUs();
     m_lastCommandEndUs = m_sentAtUs + wireTimeUs(p.request.bytes.size());
     if (!p.request.matcher) {
         m_state = State::AwaitingWrite;
-        const qint64 us = wireTimeUs(p.request.bytes.size());
-        m_responseTimer.start(static_cast<int>(std::max<qint64>(1, (us + 999) / 1000)));
+        m_responseTimer.start(std::max<qint64>(1, wireTimeUs(p.request.bytes.size())));
     } else {
         m_state = State::AwaitingReply;
-        m_responseTimer.start(effectiveTimeoutMs(p.request));
+        m_deadlineUs = m_sentAtUs + qint64(effectiveTimeoutMs(p.request)) * 1000;
+        armResponseTimer();
     }
+}
+
+void SerialLink::armResponseTimer()
+{
+    const qint64 firstByte = m_current ? m_current->request.firstByteTimeoutUs : 0;
+    qint64 until = m_deadlineUs;
+    if (firstByte > 0 && !m_bytesSinceSend)
+        until = std::min(until, m_sentAtUs + firstByte);
+    m_responseTimer.start(until - nowUs());
 }
 
 int SerialLink::effectiveTimeoutMs(const SerialRequest &r) const
@@ -240,22 +288,45 @@ void SerialLink::onReadyRead()
 {
     if (!m_port)
         return;
-    const QByteArray data = m_port->readAll();
+    onBytes(m_port->readAll());
+}
+
+bool SerialLink::bytesWaitInDriver() const
+{
+    // QSerialPort reads only when its notifier fires; reading the descriptor behind its back
+    // would make that read fail (EAGAIN), which it reports as a port error.
+#ifdef Q_OS_UNIX
+    int n = 0;
+    return m_port && m_port->handle() >= 0 && ::ioctl(m_port->handle(), FIONREAD, &n) == 0 && n > 0;
+#else
+    return false;
+#endif
+}
+
+void SerialLink::onBytes(const QByteArray &data)
+{
     if (data.isEmpty())
         return;
-    const qint64 now = m_clock.nsecsElapsed() / 1000;
+    const qint64 now = nowUs();
     m_lastRxUs = now;
     if (m_state != State::AwaitingReply) {
         if (m_tap)
             m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, data,
                                 QStringLiteral("unsolicited or late bytes"));
-        if (m_recoveryQuietMs > 0)
-            m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(m_recoveryQuietMs) * 1000);
+        if (m_recoveryQuietUs > 0)
+            m_quietUntilUs = std::max(m_quietUntilUs, now + m_recoveryQuietUs);
         if (m_current && m_state == State::Gap) {
             m_lateForCurrent = true;                // after a timeout of the current request: its late answer,
             m_owed.remove(m_current->request.peer); // which is no longer owed
         }
+        payDebtsOf(data);  // a late answer landing while nothing waits pays its peer's debt
+        reportStray(data); // (the silence before the next request counts from this byte: m_lastRxUs)
         return;
+    }
+    if (!m_bytesSinceSend) {
+        m_bytesSinceSend = true;
+        if (m_current && m_current->request.firstByteTimeoutUs > 0)
+            armResponseTimer(); // the whole timeout applies now
     }
     m_rx += data;
     if (m_rx.size() > kMaxRxBuffer)
@@ -270,12 +341,26 @@ void SerialLink::processBuffer()
         const qsizetype consumed = std::clamp<qsizetype>(m.consumed, 1, m_rx.size());
         switch (m.status) {
         case FrameMatch::Status::Incomplete: return;
-        case FrameMatch::Status::Garbage:
+        case FrameMatch::Status::Garbage: {
+            const QByteArray dropped = m_rx.left(consumed);
             if (m_tap)
-                m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, m_rx.left(consumed),
+                m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, dropped,
                                     QStringLiteral("not the awaited reply"));
             m_rx.remove(0, consumed);
+            payDebtsOf(dropped);
+            reportStray(dropped);
             continue;
+        }
+        case FrameMatch::Status::Unfit: {
+            if (m_tap)
+                m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, m_rx.left(consumed),
+                                    QStringLiteral("reply does not fit the request"));
+            m_rx.remove(0, consumed);
+            m_responseTimer.stop();
+            const qint64 quiet = std::max<qint64>(m_interFrameGapUs, wireTimeUs(4));
+            retryOrFail({ErrorCode::Malformed, m.reason}, quiet);
+            return;
+        }
         case FrameMatch::Status::Corrupt: {
             ++m_checksumErrors;
             if (m_tap)
@@ -283,16 +368,19 @@ void SerialLink::processBuffer()
                                     QStringLiteral("bad checksum"));
             m_rx.remove(0, consumed);
             m_responseTimer.stop();
-            const int quiet = static_cast<int>(std::max<qint64>(5, wireTimeUs(8) / 1000 + 2));
-            retryOrFail({ErrorCode::ChecksumError,
-                         tr("The drive's reply on %1 failed its checksum. Check the cable "
-                            "shielding, the bus termination and the baud rate.")
-                             .arg(m_settings.portName)},
-                        quiet);
+            // The rest of the damaged frame passes before the retry.
+            const qint64 quiet = m_interFrameGapUs > 0 ? std::max<qint64>(m_interFrameGapUs, wireTimeUs(8))
+                                                       : std::max<qint64>(5000, wireTimeUs(8) + 2000);
+            const QString why = !m_current->request.describeCorrupt.isEmpty()
+                ? m_current->request.describeCorrupt
+                : tr("The drive's reply on %1 failed its checksum. Check the cable "
+                     "shielding, the bus termination and the baud rate.")
+                      .arg(m_settings.portName);
+            retryOrFail({ErrorCode::ChecksumError, why}, quiet);
             return;
         }
         case FrameMatch::Status::Match: {
-            const qint64 now = m_clock.nsecsElapsed() / 1000;
+            const qint64 now = nowUs();
             const qint64 need = (wireTimeUs(m_current->request.bytes.size()) + wireTimeUs(consumed)) / 2;
             const bool early = now - m_sentAtUs < need;
             const int peer = m_current->request.peer;
@@ -320,8 +408,10 @@ void SerialLink::processBuffer()
             if (m_tap)
                 m_tap->recordSerial(TrafficRecord::Direction::Rx, m_settings.portName, m.frame);
             m_rx.remove(0, consumed);
-            if (!m_rx.isEmpty())
+            if (!m_rx.isEmpty()) {
+                reportStray(m_rx);
                 discardBuffer(QStringLiteral("bytes after the reply"));
+            }
             finishCurrent(Error::none(), m.frame);
             return;
         }
@@ -339,19 +429,35 @@ void SerialLink::onResponseTimeout()
     }
     if (m_state != State::AwaitingReply)
         return;
+    if (bytesWaitInDriver() && m_deferrals < MaxDeferrals) {
+        // The timer came before the port's notifier: what arrived in time counts.
+        ++m_deferrals;
+        m_responseTimer.start(DeferralUs);
+        return;
+    }
+    m_deferrals = 0;
+    if (nowUs() < m_deadlineUs && m_bytesSinceSend) {
+        armResponseTimer(); // the first byte came: the whole timeout applies
+        return;
+    }
     ++m_timeouts;
-    if (!m_rx.isEmpty())
+    const QByteArray unmatched = m_rx;
+    if (!m_rx.isEmpty()) {
+        reportStray(m_rx);
         discardBuffer(QStringLiteral("incomplete reply at timeout"));
+    }
     const int timeout = effectiveTimeoutMs(m_current->request);
     // Unanswered: its answer may still come, and could pass for the next one's. Not when a
     // frame of its shape was dropped as stale: that may have been its answer.
     if (!m_current->droppedEarly)
         m_owed.insert(m_current->request.peer);
     Error e{ErrorCode::Timeout,
-            tr("No reply on %1 within %2 ms. Check the drive address, the baud rate, the "
-               "wiring (A/B swapped?) and the bus termination.")
-                .arg(m_settings.portName)
-                .arg(timeout)};
+            m_current->request.describeTimeout
+                ? m_current->request.describeTimeout(timeout, unmatched)
+                : tr("No reply on %1 within %2 ms. Check the drive address, the baud rate, the "
+                     "wiring (A/B swapped?) and the bus termination.")
+                      .arg(m_settings.portName)
+                      .arg(timeout)};
     if (m_current->droppedEarly)
         e.message = tr("No reply on %1 within %2 ms but a frame of the awaited shape that came %3 us after "
                        "the request, sooner than the wire can carry request and reply (%4 us), while an "
@@ -362,14 +468,15 @@ void SerialLink::onResponseTimeout()
                         .arg(timeout)
                         .arg(m_lastEarlyUs)
                         .arg(m_lastEarlyNeedUs);
-    retryOrFail(e,
-                // Keep the line quiet long enough that a late reply lands while nothing waits.
-                std::max(2 * timeout, 20));
+    // Keep the line quiet long enough that a late reply lands while nothing waits.
+    const qint64 quiet = m_current->request.quietAfterTimeoutUs >= 0 ? m_current->request.quietAfterTimeoutUs
+                                                                     : qint64(std::max(2 * timeout, 20)) * 1000;
+    retryOrFail(e, quiet);
 }
 
-void SerialLink::retryOrFail(const Error &error, int quietMs)
+void SerialLink::retryOrFail(const Error &error, qint64 quietUs)
 {
-    enterRecovery(quietMs);
+    enterRecovery(quietUs);
     const int retries = m_current->request.retries >= 0 ? m_current->request.retries : m_settings.retries;
     if (m_current->attempts <= retries && m_current->reply) {
         ++m_retryCount;
@@ -389,12 +496,12 @@ void SerialLink::retryOrFail(const Error &error, int quietMs)
     finishCurrent(error);
 }
 
-void SerialLink::enterRecovery(int quietMs)
+void SerialLink::enterRecovery(qint64 quietUs)
 {
-    const qint64 now = m_clock.nsecsElapsed() / 1000;
-    m_recoveryQuietMs = quietMs;
+    const qint64 now = nowUs();
+    m_recoveryQuietUs = quietUs;
     // A retry is a command like any other: the minimum gap applies to it too.
-    m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(std::max(quietMs, m_settings.minGapMs)) * 1000);
+    m_quietUntilUs = std::max(m_quietUntilUs, now + std::max(quietUs, qint64(m_settings.minGapMs) * 1000));
 }
 
 void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)
@@ -404,7 +511,7 @@ void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)
         return;
     Pending p = std::move(*m_current);
     m_current.reset();
-    const qint64 now = m_clock.nsecsElapsed() / 1000;
+    const qint64 now = nowUs();
     if (p.reply) {
         p.reply->setAttempts(p.attempts);
         p.reply->setRoundTripUs(now - m_sentAtUs);
@@ -421,9 +528,40 @@ void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)
     // write cannot see.
     if (!error.isError() && !frame.isEmpty())
         m_lastCommandEndUs = std::max(m_lastCommandEndUs, now - wireTimeUs(frame.size()));
-    m_quietUntilUs = std::max(m_quietUntilUs, now + qint64(m_settings.minGapMs) * 1000);
+    m_quietUntilUs = std::max(m_quietUntilUs,
+                              now + std::max(qint64(m_settings.minGapMs) * 1000, p.request.quietAfterUs));
     m_state = State::Idle;
     scheduleNext();
+}
+
+void SerialLink::reportStray(const QByteArray &bytes)
+{
+    if (bytes.isEmpty())
+        return;
+    // From the event loop: a receiver may send the next request.
+    QMetaObject::invokeMethod(
+        this, [this, bytes] { emit strayBytes(bytes); }, Qt::QueuedConnection);
+}
+
+bool SerialLink::endsInPartialFrame(const SerialRequest &request, QByteArray bytes)
+{
+    if (!request.matcher)
+        return false;
+    while (!bytes.isEmpty()) {
+        const FrameMatch m = request.matcher(bytes);
+        if (m.status == FrameMatch::Status::Incomplete)
+            return true;
+        bytes.remove(0, std::clamp<qsizetype>(m.consumed, 1, bytes.size()));
+    }
+    return false;
+}
+
+void SerialLink::payDebtsOf(const QByteArray &strayBytes)
+{
+    if (!m_strayPeers || m_owed.isEmpty())
+        return;
+    for (int peer : m_strayPeers(strayBytes))
+        m_owed.remove(peer);
 }
 
 void SerialLink::discardBuffer(const QString &why)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/common/error.h"
+#include "core/common/microtimer.h"
 #include "core/link/framematch.h"
 #include "core/link/linkreply.h"
 #include "core/link/serialsettings.h"
@@ -11,8 +12,8 @@
 #include <QQueue>
 #include <QSerialPort>
 #include <QSet>
-#include <QTimer>
 
+#include <functional>
 #include <optional>
 
 namespace dd {
@@ -30,6 +31,21 @@ struct SerialRequest
     QString note;               // shown in the trace
     bool urgent = false;        // stop / disable: ahead of every waiting ordinary request
     int peer = -1;              // the drive addressed, for the stale-reply rule; -1: any
+    // After a timeout the line stays quiet this long (extended while bytes keep coming), so
+    // that a late reply lands while nothing waits. -1: max(2 x timeout, 20 ms). A caller that
+    // catches late replies itself (the Modbus scanner, from strayBytes) passes t3.5.
+    qint64 quietAfterTimeoutUs = -1;
+    // > 0: the request times out when no byte has come this long after it went out, without
+    // waiting for the whole reply's wire time (scan probes: request + allowance). Once a byte
+    // has come, the whole timeout applies.
+    qint64 firstByteTimeoutUs = 0;
+    // The line stays quiet this long after the transaction (a Modbus broadcast's turnaround).
+    qint64 quietAfterUs = 0;
+    // The words of a timeout, when the peer's protocol knows better than the link (which
+    // address, what came instead): given the timeout in ms and the bytes that formed no
+    // reply. Empty: the link's own message. Not used when a fast frame was dropped as stale.
+    std::function<QString(int timeoutMs, const QByteArray &unmatched)> describeTimeout;
+    QString describeCorrupt; // the words of a failed check; empty: the link's own
 };
 
 // Half-duplex request/reply transport on QSerialPort (RS485 / RS232).
@@ -37,16 +53,24 @@ struct SerialRequest
 // Requests queue and go out one at a time. Before each request the receive buffer is
 // cleared (anything there is stale); after each transaction the link keeps the line quiet
 // for settings.minGapMs, and commands reach the drive at least settings.minCommandSpacingMs
-// apart (last byte to last byte, plus 2 ms for timer and adapter jitter). A reply is
+// apart (last byte to last byte, plus CommandSpacingMarginUs; the count starts at the
+// reply's first byte where there is a reply, which already lies the drive's latency after
+// the command, so an adapter holding our bytes back cannot squeeze two commands). A reply is
 // accepted only through the request's matcher. The stale-reply rule (docs/reliability.md):
 // a frame that completes sooner than the wire allows (half the wire time of request plus
 // reply) is taken for a stale answer, and dropped, only when one could be on its way: an
 // earlier request to the same peer went unanswered (and nothing has paid that debt since),
-// or stale bytes were flushed just before this request. Dropping it pays the debt, so a
+// or the stale bytes flushed just before this request ended in the start of a frame. Dropping it pays the debt, so a
 // fast peer (a pty, a socat pair, a USB adapter with a deep FIFO) loses at most one
 // attempt; with nothing owed a fast reply is the answer. After a timeout the link also
 // waits until the line has been quiet for the reply's wire time (plus margin) before it
 // sends again.
+//
+// Modbus RTU (ModbusLink) also sets an inter-frame silence (setInterFrameGapUs: t3.5), kept
+// after the last byte seen on the line before each request, to the microsecond, and a
+// function naming the peers whose complete frames are among stray bytes (setStrayPeers):
+// such a frame pays that peer's debt wherever it lands. Bytes no request took are
+// reported by strayBytes() (from the event loop).
 //
 // An urgent request (stop, disable) goes ahead of every waiting ordinary request, behind
 // the urgent ones queued before it, right after the transaction on the wire now (which is
@@ -58,6 +82,10 @@ class SerialLink : public QObject
 {
     Q_OBJECT
 public:
+    // Added to settings.minCommandSpacingMs: the drive's clock and our timer's wake-up (the
+    // timer is to the microsecond and never early).
+    static constexpr qint64 CommandSpacingMarginUs = 1000;
+
     explicit SerialLink(QObject *parent = nullptr);
     ~SerialLink() override;
 
@@ -76,6 +104,13 @@ public:
     void setMinCommandSpacingMs(int ms) { m_settings.minCommandSpacingMs = ms; }
     void setResponseTimeoutMs(int ms) { m_settings.responseTimeoutMs = ms; }
     void setRetries(int retries) { m_settings.retries = retries; }
+    // Silence kept after the last byte on the line before a request, in microseconds
+    // (Modbus t3.5). 0: none (only settings.minGapMs).
+    void setInterFrameGapUs(qint64 us) { m_interFrameGapUs = std::max<qint64>(0, us); }
+    qint64 interFrameGapUs() const { return m_interFrameGapUs; }
+    // The peers whose complete, check-valid frames are among `bytes` (see above).
+    using StrayPeers = std::function<QList<int>(const QByteArray &bytes)>;
+    void setStrayPeers(StrayPeers f) { m_strayPeers = std::move(f); }
 
     // Queue a request. The reply is parented to the link; delete it when done.
     LinkReply *send(const SerialRequest &request);
@@ -96,6 +131,10 @@ signals:
     void opened();
     void closed(const dd::Error &reason); // by close() (no error) or because the port failed
     void idle();                          // queue drained
+    // Bytes no request took: unsolicited or late bytes, bytes flushed before a request,
+    // frames the awaited reply's matcher passed over, bytes that formed no reply before a
+    // timeout. Typically a late reply to an earlier request. Emitted from the event loop.
+    void strayBytes(const QByteArray &bytes);
 
 private:
     struct Pending
@@ -110,14 +149,21 @@ private:
     void scheduleNext();
     void transmit();
     void onReadyRead();
+    void onBytes(const QByteArray &data);
+    bool bytesWaitInDriver() const; // received, not yet read by the port (Unix)
     void processBuffer();
     void onResponseTimeout();
     void onGapElapsed();
     void onPortError(QSerialPort::SerialPortError error);
     void finishCurrent(const Error &error, const QByteArray &frame = {});
-    void retryOrFail(const Error &error, int quietMs);
-    void enterRecovery(int quietMs);
+    void retryOrFail(const Error &error, qint64 quietUs);
+    void enterRecovery(qint64 quietUs);
     void discardBuffer(const QString &why);
+    void reportStray(const QByteArray &bytes);
+    void payDebtsOf(const QByteArray &strayBytes);
+    static bool endsInPartialFrame(const SerialRequest &request, QByteArray bytes);
+    void armResponseTimer();
+    qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
     int effectiveTimeoutMs(const SerialRequest &r) const;
     qint64 earliestSendUs(const SerialRequest &next) const;
     void failAll(const Error &why);
@@ -129,14 +175,19 @@ private:
     std::optional<Pending> m_current;
     State m_state = State::Idle;
     QByteArray m_rx;
-    QTimer m_responseTimer;
-    QTimer m_gapTimer;
+    MicroTimer m_responseTimer;
+    MicroTimer m_gapTimer;
     QElapsedTimer m_clock;
     qint64 m_sentAtUs = 0;
+    qint64 m_deadlineUs = 0;       // the whole timeout of the request in flight
+    bool m_bytesSinceSend = false; // a byte came since the request went out
+    qint64 m_interFrameGapUs = 0;
+    StrayPeers m_strayPeers;
+    int m_deferrals = 0;            // a send or a timeout waited for the port to read what came
     qint64 m_quietUntilUs = 0;      // no transmission before this (gap / recovery)
     qint64 m_lastCommandEndUs = -1; // when the last command's last byte left (estimated)
     qint64 m_lastRxUs = 0;
-    int m_recoveryQuietMs = 0;
+    qint64 m_recoveryQuietUs = 0;
     bool m_lateForCurrent = false;    // bytes came between attempts of the current request
     bool m_flushedForCurrent = false; // stale bytes were flushed just before this attempt
     QSet<int> m_owed;                 // peers whose last request went unanswered

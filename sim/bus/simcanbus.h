@@ -1,7 +1,7 @@
 #pragma once
 
 #include "core/common/error.h"
-#include "sim/bus/microtimer.h"
+#include "core/common/microtimer.h"
 #include "sim/bus/simcandevice.h"
 
 #include <QCanBusDevice>

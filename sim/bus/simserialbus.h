@@ -1,7 +1,7 @@
 #pragma once
 
+#include "core/common/microtimer.h"
 #include "sim/bus/byteendpoint.h"
-#include "sim/bus/microtimer.h"
 #include "sim/bus/simserialdevice.h"
 
 #include <QElapsedTimer>

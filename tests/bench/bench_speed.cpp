@@ -50,6 +50,7 @@
 #include "core/link/seriallink.h"
 #include "core/link/wiretime.h"
 #include "core/protocol/modbus/modbusrtu.h"
+#include "core/protocol/servomodbus/servomodbus.h"
 #include "core/trend/channelsampler.h"
 #include "core/tuning/capturesession.h"
 #include "sim/bench/simbench.h"
@@ -69,6 +70,11 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+
+#ifdef DD_BENCH_LIBMODBUS
+#include <cerrno>
+#include <modbus.h>
+#endif
 
 using namespace dd;
 
@@ -111,6 +117,7 @@ QList<Row> g_rows;
 // the link's rate (or, with --gui-rates, of the rate the GUI's trend asks for).
 constexpr double BackupLimit = 1.10;
 constexpr double MonitorLimit = 1 / 0.95;
+constexpr double LibmodbusLimit = 1.05; // a backup against libmodbus on the same drive
 bool g_guiRates = false;
 
 // The GUI trend's default rate for a read of `readUs` (TrendPanel::rateForReadUs, which
@@ -184,6 +191,14 @@ void waitForSignal(Sender *sender, Signal signal, int timeoutMs)
 }
 
 // Waits for `reply` to finish; returns its error (Timeout if it never did). Deletes it.
+// Lets `ms` pass in the event loop (the simulator thread and the link carry on).
+void idle(int ms)
+{
+    QEventLoop loop;
+    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+    loop.exec();
+}
+
 Error await(DriveReply *reply, int timeoutMs, double *elapsedMs = nullptr)
 {
     QElapsedTimer t;
@@ -408,12 +423,66 @@ void benchModbusBackup(int baud)
         indices << i;
     QList<double> runs;
     for (int i = 0; i < g_runs; ++i) {
+        idle(20); // a backup starts on a quiet line (else it waits t3.5 after the last run)
         double t = 0;
         if (Error e = await(s->drive->readParameters(indices), 10000, &t))
             return addFailure(name, ms(floorMs), BackupLimit, e);
         runs << t;
     }
+    const Stats ours = statsOf(runs);
     addTimed(name, runs, floorMs, BackupLimit);
+#ifdef DD_BENCH_LIBMODBUS
+    // The same simulated drive read by libmodbus (modbus_read_registers, 3 x 20 registers),
+    // after DriveDesk's client let go of the port.
+    const QString vs = QStringLiteral("backup PA0-PA59 @ %1 vs libmodbus").arg(baud);
+    const QString port = s->connection->settings().port;
+    s->connection->close();
+    modbus_t *ctx = modbus_new_rtu(qPrintable(port), baud, 'N', 8, 1);
+    if (!ctx || modbus_connect(ctx) != 0) {
+        if (ctx)
+            modbus_free(ctx);
+        return addFailure(vs, QStringLiteral("-"), LibmodbusLimit,
+                          {ErrorCode::OpenFailed, QStringLiteral("libmodbus")});
+    }
+    modbus_set_slave(ctx, SimBenchOptions::defaultAddress(Family::ServoModbus));
+    modbus_set_response_timeout(ctx, 1, 0);
+    QList<double> theirs;
+    for (int i = 0; i <= g_runs; ++i) { // the first run warms up, as our identity read did
+        idle(20);
+        QElapsedTimer t;
+        t.start();
+        bool ok = true;
+        for (int block = 0; block < 3 && ok; ++block) {
+            quint16 regs[20];
+            ok = modbus_read_registers(ctx, servomodbus::parameterRegister(20 * block), 20, regs) == 20;
+        }
+        if (!ok) {
+            modbus_close(ctx);
+            modbus_free(ctx);
+            return addFailure(
+                vs, QStringLiteral("-"), LibmodbusLimit,
+                {ErrorCode::Timeout, QStringLiteral("libmodbus: %1").arg(QLatin1String(modbus_strerror(errno)))});
+        }
+        if (i > 0)
+            theirs << double(t.nsecsElapsed()) / 1e6;
+    }
+    modbus_close(ctx);
+    modbus_free(ctx);
+    QStringList each;
+    for (double v : theirs)
+        each << QString::number(v, 'f', 1);
+    out(QStringLiteral("  libmodbus PA0-PA59 @ %1: runs [%2] ms").arg(baud).arg(each.join(QStringLiteral(", "))));
+    const Stats lm = statsOf(theirs);
+    Row r;
+    r.name = vs;
+    r.measured = QStringLiteral("%1 (%2)").arg(ms(ours.median), ms(ours.min));
+    r.floor = ms(lm.median);
+    r.ratio = ours.median / lm.median;
+    r.limit = LibmodbusLimit;
+    r.medianMs = ours.median;
+    r.note = QStringLiteral("\"floor\" here is libmodbus's median on the same drive (min %1)").arg(ms(lm.min));
+    g_rows.append(r);
+#endif
 }
 
 void benchCanBackup()
@@ -442,9 +511,10 @@ void benchCanBackup()
 }
 
 // What an absent address costs a probe (8-byte read of one register, 7-byte reply, timeout
-// = wire time + 4 ms, no retries) on a pty nobody answers: on ModbusLink (Qt's client) and
-// on SerialLink (the project's own transport), as they are. Printed, not judged: it is the
-// measurement behind the choice of transport for servo-modbus (docs/performance.md).
+// = wire time + 4 ms, no retries) on a pty nobody answers, on ModbusLink: with the link's
+// default quiet time after a timeout (max(2 x timeout, 20 ms)), and as the scanner probes
+// (no first byte by request + 3 ms, then only t3.5). Printed, not judged: what a scan's
+// absent address costs (docs/performance.md).
 void benchDeadProbes(int baud)
 {
     const QString name = QStringLiteral("dead-address probes @ %1").arg(baud);
@@ -461,7 +531,7 @@ void benchDeadProbes(int baud)
     const double wireUs = WireTime::serialBytesUs(15, baud);
     const int timeoutMs = int(std::ceil((wireUs + 4000) / 1000));
     QStringList parts;
-    {
+    for (const bool asScanner : {false, true}) {
         ModbusLink link;
         if (!link.open(ss))
             return out(QStringLiteral("  %1: ModbusLink did not open").arg(name));
@@ -472,31 +542,17 @@ void benchDeadProbes(int baud)
             q.pdu = {quint8(2 + i), modbusrtu::ReadHoldingRegisters, 0x66, 1, {}};
             q.timeoutMs = timeoutMs;
             q.retries = 0;
+            if (asScanner) {
+                q.quietAfterTimeoutUs = link.interFrameGapUs();
+                q.firstByteTimeoutUs = link.wireTimeUs(8) + 3000;
+            }
             LinkReply *r = link.send(q);
             waitForSignal(r, &LinkReply::finished, 5000);
             delete r;
         }
-        parts << QStringLiteral("ModbusLink (Qt client) %1 ms").arg(t.nsecsElapsed() / 1e6 / N, 0, 'f', 1);
-    }
-    {
-        SerialLink link;
-        if (!link.open(ss))
-            return out(QStringLiteral("  %1: SerialLink did not open").arg(name));
-        QElapsedTimer t;
-        t.start();
-        for (int i = 0; i < N; ++i) {
-            SerialRequest q;
-            q.bytes = modbusrtu::encodeRequest({quint8(2 + i), modbusrtu::ReadHoldingRegisters, 0x66, 1, {}});
-            q.matcher = [](const QByteArray &) { return FrameMatch::incomplete(); };
-            q.expectedReplyBytes = 7;
-            q.timeoutMs = timeoutMs;
-            q.retries = 0;
-            q.peer = 2 + i;
-            LinkReply *r = link.send(q);
-            waitForSignal(r, &LinkReply::finished, 5000);
-            delete r;
-        }
-        parts << QStringLiteral("SerialLink %1 ms").arg(t.nsecsElapsed() / 1e6 / N, 0, 'f', 1);
+        parts << QStringLiteral("%1 %2 ms")
+                     .arg(asScanner ? QStringLiteral("as the scanner probes") : QStringLiteral("default quiet"))
+                     .arg(t.nsecsElapsed() / 1e6 / N, 0, 'f', 1);
     }
     out(QStringLiteral("  %1 (timeout %2 ms, wire %3 ms + t3.5 %4 ms): per address %5")
             .arg(name)

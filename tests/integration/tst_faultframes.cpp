@@ -1,7 +1,7 @@
 // Frames from a misbehaving drive. A scripted servo-modbus drive on a pty (a real
 // SimServoModbusDrive whose replies a wrapper rewrites: wrong address, wrong function code,
 // truncated, wrong byte count, garbage, bad CRC, an exception, a duplicated reply) answers
-// the real host stack (ServoModbusBackend: ModbusLink on QModbusRtuSerialClient). Each
+// the real host stack (ServoModbusBackend: ModbusLink on SerialLink). Each
 // misbehaviour must give a specific error, no value may be reported, and nothing may be
 // written to the drive. Writes whose reply is damaged are judged by their read-back: the
 // report never says "not written" for a value the drive holds, nor "verified" for one it
@@ -226,7 +226,7 @@ void TestFaultFrames::duplicatedRepliesAreNeverTakenForTheNextAnswer()
         sim().setParameter(n, quint16(1000 + n));
     m_before = sim().parameters();
     // Each read has the same length, address and function as the next one: a stale second
-    // copy would fit it (Qt keeps it in its buffer and hands it to the next request).
+    // copy would fit it, were it taken for the next request's answer.
     int ok = 0;
     for (int round = 0; round < 3; ++round) {
         for (int n = 10; n < 20; ++n) {

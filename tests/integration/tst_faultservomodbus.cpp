@@ -1,5 +1,5 @@
 // Fault injection against the servo-modbus host stack (ServoModbusBackend: ModbusLink on
-// QModbusRtuSerialClient over a pty) and SimServoModbusDrive on a SimSerialBus:
+// SerialLink over a pty) and SimServoModbusDrive on a SimSerialBus:
 //  - 5-10 % dropped, corrupted and late replies (later than the timeout): a full backup
 //    either holds every value the drive really has, or fails with a clear message and leaves
 //    no file (an older backup at the same path stays byte for byte);

@@ -1,5 +1,5 @@
 // The shuoke family end to end in PLC mode: the real ShuokeBackend on ModbusLink
-// (QModbusRtuSerialClient) over a pty, against simulated drives answering Modbus RTU on
+// (on SerialLink) over a pty, against simulated drives answering Modbus RTU on
 // the mapped registers.
 #include <QtTest>
 

@@ -302,8 +302,8 @@ private slots:
     }
 
     // Another address's late answer lands while a request waits, and that request's reply
-    // follows: Qt ignores the first frame; the link reports it as stray (a scan asks that
-    // address again) instead of losing it with the transaction.
+    // follows: the link passes over the first frame and reports it as stray (a scan asks
+    // that address again) instead of losing it with the transaction.
     void modbusLinkReportsALateAnswerThatCameWithAReply()
     {
         InstantModbusPeer peer;
@@ -326,8 +326,9 @@ private slots:
     }
 
     // Bytes that wait unread at the port when a request goes out (a late answer that came
-    // while the client reconnected) answer no request: the link flushes them, but shows
-    // them as stray first, so that a scan still asks that address again.
+    // while no event was processed) answer no request: the link flushes them, but shows
+    // them as stray first, so that a scan still asks that address again; being another
+    // address's answer, they do not make this request's fast reply stale.
     void modbusLinkReportsUnreadBytesItFlushes()
     {
         InstantModbusPeer peer;
@@ -338,7 +339,7 @@ private slots:
         QByteArray stray;
         connect(&link, &ModbusLink::strayBytes, this, [&](const QByteArray &b) { stray += b; });
         const QByteArray late = InstantModbusPeer::readReply({5, modbusrtu::ReadHoldingRegisters, 0x66, 1, {}}, 0);
-        // Until the request goes out no event is processed, so Qt does not read them: a
+        // Until the request goes out no event is processed, so the link does not read them: a
         // second descriptor of the same pty shows when they wait at the port.
         const int fd = ::open(QFile::encodeName(peer.pty.clientPath()).constData(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
         QVERIFY(fd >= 0);

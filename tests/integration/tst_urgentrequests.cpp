@@ -2,7 +2,7 @@
 // one goes out right after the transaction on the wire, ahead of every waiting ordinary
 // one, urgent ones in the order they came; the one on the wire is never aborted.
 //  - SerialLink over a pty against an echoing peer;
-//  - ModbusLink (QModbusRtuSerialClient) over a pty against a Modbus server;
+//  - ModbusLink (on SerialLink) over a pty against a Modbus server;
 //  - CanLink on a private virtualcan hub against an answering CanLink.
 // The order is checked on the wire (what the peer received) and in the TrafficTap.
 

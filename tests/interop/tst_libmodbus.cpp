@@ -1,4 +1,4 @@
-// Interop: DriveDesk's Modbus path (ModbusLink on QModbusRtuSerialClient, and
+// Interop: DriveDesk's Modbus path (ModbusLink on SerialLink, and
 // ServoModbusDrive on it) against a server built on libmodbus (tests/interop/
 // dd_modbus_server.c, libmodbus from Debian). The test joins two ptys into a null-modem
 // cable: the server opens one end, DriveDesk the other.

@@ -3,7 +3,7 @@
 #include <QElapsedTimer>
 #include <QSignalSpy>
 
-#include "sim/bus/microtimer.h"
+#include "core/common/microtimer.h"
 
 using namespace dd;
 

@@ -8,7 +8,7 @@
 
 namespace dd {
 
-// The servo-modbus family on a ModbusLink (QModbusRtuSerialClient).
+// The servo-modbus family on a ModbusLink (Modbus RTU on SerialLink).
 //
 // Defaults where the seed is silent: 19200 baud (ConnectionSettings::baud = 0; the seed gives
 // no rate, 19200 is this drive class's most common factory setting; a scan sweeps the

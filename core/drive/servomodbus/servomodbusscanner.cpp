@@ -35,10 +35,26 @@ ServoModbusScanner::~ServoModbusScanner()
         delete r.data();
 }
 
+qint64 ServoModbusScanner::allowanceUs() const
+{
+    // Until a drive answered: the base allowance; then what the drives' turnaround needs.
+    if (!m_turnaroundSeen || m_allowanceSet)
+        return m_baseAllowanceUs;
+    // Twice the turnaround, at least the turnaround + 1 ms (the host's wake-ups, a reply
+    // delivered whole rather than byte by byte).
+    return m_turnaroundUs + std::max<qint64>(m_turnaroundUs, 1000);
+}
+
 int ServoModbusScanner::allowanceMs() const
 {
-    const qint64 us = std::max(m_baseAllowanceUs, 2 * m_turnaroundUs + 1000);
-    return int((us + 999) / 1000);
+    return int((allowanceUs() + 999) / 1000);
+}
+
+qint64 ServoModbusScanner::firstByteTimeoutUs() const
+{
+    if (m_options.timeoutMs >= 0 || !m_link)
+        return 0; // an explicit timeout is the whole timeout
+    return m_link->wireTimeUs(ProbeRequestBytes) + allowanceUs();
 }
 
 int ServoModbusScanner::probeTimeoutMs() const
@@ -48,8 +64,7 @@ int ServoModbusScanner::probeTimeoutMs() const
     if (!m_link)
         return 0;
     const qint64 wire = m_link->wireTimeUs(ProbeRequestBytes) + m_link->wireTimeUs(ProbeReplyBytes);
-    const qint64 allowance = std::max(m_baseAllowanceUs, 2 * m_turnaroundUs + 1000);
-    return int((wire + allowance + 999) / 1000);
+    return int((wire + allowanceUs() + 999) / 1000);
 }
 
 int ServoModbusScanner::finalWaitMs() const
@@ -153,6 +168,12 @@ void ServoModbusScanner::sendProbe(int address, Probe kind)
     // A drive that answered late gets the link's normal timeout the second time.
     q.timeoutMs = kind == Probe::Rescue ? -1 : probeTimeoutMs();
     q.retries = 0;
+    if (kind != Probe::Rescue) {
+        // Late replies are caught (strayBytes): after a silent address only t3.5, and an
+        // absent drive costs its request + the allowance, not the reply's wire time too.
+        q.quietAfterTimeoutUs = m_link->interFrameGapUs();
+        q.firstByteTimeoutUs = firstByteTimeoutUs();
+    }
     q.note = kind == Probe::Rescue ? QStringLiteral("scan (again: its reply came late)") : QStringLiteral("scan");
     LinkReply *r = m_link->send(q);
     if (kind == Probe::First)
@@ -165,12 +186,9 @@ void ServoModbusScanner::sendProbe(int address, Probe kind)
 void ServoModbusScanner::noteTurnaround(qint64 us)
 {
     us = std::max<qint64>(0, us);
-    if (!m_turnaroundSeen)
-        m_turnaroundUs = us;
-    else if (m_link && m_link->seesRawBytes())
-        m_turnaroundUs = std::min(m_turnaroundUs, us); // late replies are caught: the quickest
-    else
-        m_turnaroundUs = std::max(m_turnaroundUs, us); // nothing catches them: the slowest
+    // Late replies are caught (a slower drive is asked again): the quickest turnaround, so
+    // that one answer slowed by a busy host does not slow every later probe.
+    m_turnaroundUs = m_turnaroundSeen ? std::min(m_turnaroundUs, us) : us;
     m_turnaroundSeen = true;
 }
 

@@ -17,18 +17,21 @@ class LinkReply;
 // port is reopened once per rate), asks every address of from..to that has not answered yet
 // for PA2 (one register: the firmware version, reported with the drive).
 //
-// Per-probe timeout (ScanOptions::timeoutMs = -1): the wire time of the request and its
-// 7-byte reply at that baud plus an allowance: allowanceMs() (4 ms unless set), raised to
-// 2 x the drives' turnaround + 1 ms once drives answer. The turnaround is the quickest one
-// seen where late replies are caught (see below: one answer slowed by a busy host must not
-// slow every later probe; a drive that is always slower is asked again), else the slowest
-// one seen. The round trip it comes from runs from the request reaching the port to the
-// reply's last byte (ModbusLink, where raw bytes are visible). A drive behind a slow
-// USB adapter (latency timer 16 ms) needs an explicit timeout (e.g. 40 ms). No retries,
-// except one repeat of a probe whose reply was garbled. An exception reply also counts as
-// "a device answers here" (state "exception <code>").
-// A reply that comes after its probe's timeout is not lost: where the link shows raw bytes
-// (ModbusLink::strayBytes), a CRC-valid answer from an address whose probe timed out has
+// Per-probe timeout (ScanOptions::timeoutMs = -1): no first byte by the end of the request
+// + an allowance, or no whole reply by the wire time of request and 7-byte reply + the
+// allowance (ModbusRequest::firstByteTimeoutUs). The allowance is 4 ms (or setAllowanceMs)
+// until a drive answered, then twice the drives' turnaround, at least the turnaround + 1 ms
+// (the quickest turnaround
+// seen: one answer slowed by a busy host must not slow every later probe; a drive that is
+// always slower is asked again, below). The round trip it comes from runs from the request
+// leaving for the port to the reply's last byte. After a silent address the line is quiet
+// only t3.5 (ModbusRequest::quietAfterTimeoutUs): late replies are caught here. A drive
+// behind a slow USB adapter (latency timer 16 ms) is found through that too, or faster with
+// an explicit timeout (e.g. 40 ms), which is then the whole timeout. No retries, except one
+// repeat of a probe whose reply was garbled. An exception reply also counts as "a device
+// answers here" (state "exception <code>").
+// A reply that comes after its probe's timeout is not lost: a CRC-valid answer among the
+// link's stray bytes (ModbusLink::strayBytes) from an address whose probe timed out has
 // that address asked once more with the link's normal timeout. The sweep at a baud ends
 // finalWaitMs() after its last probe timed out, so that the last one can be rescued too:
 // 2 probe timeouts, at least 50 ms, and at least twice the latest any late reply of this
@@ -36,7 +39,7 @@ class LinkReply;
 // (pymodbus on a pty answers in 5-90 ms, far past a 115200-baud probe's few ms, while
 // the turnaround the probes are sized from may come from a quick answer).
 // Probes are queued two at a time, so that the link sends the next one without waiting for
-// this object. Qt's inter-frame delay (2 ms; 5 ms at 9600) comes before each probe.
+// this object; the link keeps t3.5 of silence before each.
 // The link is left at its original baud; cancel() stops at once (finished(Cancelled)).
 class ServoModbusScanner : public Discovery
 {
@@ -52,10 +55,15 @@ public:
     void start() override;
     void cancel() override;
 
-    void setAllowanceMs(int ms) { m_baseAllowanceUs = qint64(ms) * 1000; }
+    void setAllowanceMs(int ms)
+    {
+        m_baseAllowanceUs = qint64(ms) * 1000;
+        m_allowanceSet = true;
+    }
     int allowanceMs() const;
-    int probeTimeoutMs() const; // at the link's current baud
-    int finalWaitMs() const;    // after the last probe at a baud, when it timed out
+    qint64 firstByteTimeoutUs() const; // a probe's: request + allowance (0: none)
+    int probeTimeoutMs() const;        // at the link's current baud
+    int finalWaitMs() const;           // after the last probe at a baud, when it timed out
     int probesSent() const { return m_probesSent; }
     bool isRunning() const { return m_running; }
 
@@ -69,6 +77,7 @@ private:
     bool findLateReplies(); // in m_stray, from timed-out addresses: queued to be asked again
     void finishBaud();
     void noteTurnaround(qint64 us);
+    qint64 allowanceUs() const;
     void endScan(const Error &error);
 
     QPointer<ModbusLink> m_link;
@@ -93,6 +102,7 @@ private:
     QHash<int, qint64> m_probeSentUs; // at this baud: address -> its first probe was queued
     qint64 m_latestReplyUs = 0;       // the latest a late reply came after its probe
     bool m_turnaroundSeen = false;
+    bool m_allowanceSet = false; // setAllowanceMs(): fixed, not learned
     bool m_lastTimedOut = false; // the last finished probe timed out
     bool m_finishingBaud = false;
     bool m_running = false;

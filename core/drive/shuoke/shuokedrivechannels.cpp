@@ -1,6 +1,8 @@
 // ShuokeDrive: monitor channels (see shuokedrive.h).
 #include "core/drive/shuoke/shuokedrive.h"
 
+#include "core/link/seriallink.h"
+
 #include "core/drive/shuoke/shuokecantransport.h"
 #include "core/link/wiretime.h"
 #include "core/protocol/shuoke/shuokevalues.h"
@@ -142,12 +144,16 @@ double ShuokeDrive::channelReadUs(const QStringList &channelIds) const
     if (const auto *can = qobject_cast<const ShuokeCanTransport *>(m_transport.data()))
         return commands * (2.0 * WireTime::canFrameUs(8, false, can->bitrate()) + 200.0);
     // Serial: a query is 5 bytes out and up to 9 back, and the seed's rule leaves
-    // minGapMs (50 ms) between commands.
+    // minGapMs (50 ms) between commands. The link counts those from the reply's first byte,
+    // i.e. the drive's latency (1 ms) after the command, and adds its margin: what a
+    // command really takes, so that the trend's default rate is one the link can keep.
     const int baud = m_transport->baud();
     if (baud <= 0)
         return 0.0;
     const double transaction = WireTime::serialBytesUs(14, baud) + 1000.0;
-    return commands * std::max(transaction, 1000.0 * m_transport->options().minGapMs);
+    const double spaced = 1000.0 * m_transport->options().minGapMs + double(SerialLink::CommandSpacingMarginUs)
+        + 1000.0;
+    return commands * std::max(transaction, spaced);
 }
 
 DriveReply *ShuokeDrive::readChannels(const QStringList &channelIds)

@@ -1,4 +1,4 @@
-#include "sim/bus/microtimer.h"
+#include "core/common/microtimer.h"
 
 #include <QSocketNotifier>
 

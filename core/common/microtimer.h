@@ -7,9 +7,10 @@ class QSocketNotifier;
 
 namespace dd {
 
-// A single-shot timer with microsecond resolution, for the simulated buses' wire-timing
-// model. QTimer counts whole milliseconds: a reply due in 2.7 ms would leave at 3 ms, up to
-// a millisecond late — a quarter of a 45-byte frame at 115200 baud, or seven CAN frames at
+// A single-shot timer with microsecond resolution: the simulated buses' wire-timing model,
+// and SerialLink's Modbus silences and probe timeouts (t3.5 is 1.75 ms at 115200 baud).
+// QTimer counts whole milliseconds: a reply due in 2.7 ms would leave at 3 ms, up to a
+// millisecond late — a quarter of a 45-byte frame at 115200 baud, or seven CAN frames at
 // 1 Mbit/s. On Linux this is a timerfd (CLOCK_MONOTONIC) watched by a QSocketNotifier, so
 // the event loop wakes when the time is due; elsewhere a Qt::PreciseTimer rounded up to the
 // next millisecond (never early, as before). Lives in the thread that created it.

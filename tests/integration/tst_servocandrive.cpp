@@ -411,8 +411,7 @@ void TestServoCanDrive::movesEndOnTarget()
     QVERIFY(waitFinished(r));
     QVERIFY2(r->ok(), qPrintable(errorText(r)));
     QCOMPARE(m_sim7->positioningSpeed(), 600);
-    QVERIFY(waitUntil([d, start] { return !d->status().running && d->status().position == start + 25000; },
-                      5000));
+    QVERIFY(waitUntil([d, start] { return !d->status().running && d->status().position == start + 25000; }, 5000));
     QCOMPARE(m_sim7->motor().position(), start + 25000);
     QCOMPARE(d->status().position, start + 25000);
 

@@ -47,10 +47,12 @@ class TestCliShuokePeer : public QObject
 
     CliRun cli(const QStringList &args)
     {
-        const QStringList all{QStringLiteral("--family"),  QStringLiteral("shuoke"),  QStringLiteral("--framing"),
-                              m_framing,                   QStringLiteral("--port"),  port(),
-                              QStringLiteral("--baud"),    QStringLiteral("9600"),    QStringLiteral("--address"),
-                              QString::number(Address),    QStringLiteral("--json")};
+        const QStringList all{QStringLiteral("--family"),  QStringLiteral("shuoke"),
+                              QStringLiteral("--framing"), m_framing,
+                              QStringLiteral("--port"),    port(),
+                              QStringLiteral("--baud"),    QStringLiteral("9600"),
+                              QStringLiteral("--address"), QString::number(Address),
+                              QStringLiteral("--json")};
         return runCli(all + args, 30000);
     }
 

@@ -1,5 +1,6 @@
 // drivedesk: the commissioning workbench (GUI).
 #include "core/common/coreresources.h"
+#include "core/common/eventdispatcherchoice.h"
 #include "core/common/localtimezone.h"
 #include "ui/bus/connectrequest.h"
 #include "ui/shell/commandlinefile.h"
@@ -184,7 +185,8 @@ void scheduleScreenshot(dd::MainWindow &window, const Options &options)
 
 int main(int argc, char *argv[])
 {
-    dd::pinLocalTimeZone(); // before any thread: see localtimezone.h
+    dd::pinLocalTimeZone();           // before any thread: see localtimezone.h
+    dd::preferPlainEventDispatcher(); // before the application object: see eventdispatcherchoice.h
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("DriveDesk"));
     QCoreApplication::setOrganizationDomain(QStringLiteral("drivedesk.invalid"));

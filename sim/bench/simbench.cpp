@@ -158,8 +158,21 @@ Error SimBench::startCan()
         m_clientCan = m_options.can;
     }
     m_can = new SimCanBus(this);
-    if (const Error e = m_can->open(cs.plugin, iface, m_options.bitrate); e.isError())
-        return e;
+    // On our own hub the simulated drives attach to it directly (one socket hop per frame
+    // instead of two: see hubcandevice.h); anywhere else through the plugin.
+    int hubChannel = -1;
+    if (m_hub) {
+        bool ok = false;
+        const QString name = iface.section(QLatin1Char('/'), -1);
+        const int n = name.startsWith(QLatin1String("can")) ? name.mid(3).toInt(&ok) : -1;
+        if (ok && n >= 0)
+            hubChannel = n;
+    }
+    const Error opened = hubChannel >= 0
+        ? m_can->open(m_hub->createLocalDevice(hubChannel), cs.plugin, iface, m_options.bitrate)
+        : m_can->open(cs.plugin, iface, m_options.bitrate);
+    if (opened.isError())
+        return opened;
     connect(m_can, &SimCanBus::connected, this, [this] { VirtualCanHub::setLowDelay(m_can->canDevice()); });
     const SimFamily &family = simFamily(m_options.family);
     if (!family.can)

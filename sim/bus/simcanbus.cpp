@@ -49,10 +49,6 @@ Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int b
 {
     if (m_device)
         return {ErrorCode::Busy, tr("The simulated CAN bus %1 is already open.").arg(description())};
-    setBitrate(bitrate);
-    m_plugin = plugin;
-    m_interface = interfaceName;
-
     QString errorString;
     QCanBusDevice *dev = QCanBus::instance()->createDevice(plugin, interfaceName, &errorString);
     if (!dev) {
@@ -60,16 +56,31 @@ Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int b
                 tr("Cannot create the CAN interface %1:%2 (%3). Is the plugin installed?")
                     .arg(plugin, interfaceName, errorString.isEmpty() ? tr("unknown plugin") : errorString)};
     }
-    dev->setParent(this);
-    m_device = dev;
-
     if (plugin == QLatin1String("socketcan")) {
         // Qt would configure the bitrate itself (privileges, libsocketcan): use the
         // interface as the system configured it unless told otherwise.
-        dev->setConfigurationParameter(QCanBusDevice::BitRateKey, configureBitrate ? QVariant(m_bitrate) : QVariant());
+        dev->setConfigurationParameter(QCanBusDevice::BitRateKey,
+                                       configureBitrate ? QVariant(bitrate > 0 ? bitrate : DefaultBitrate)
+                                                        : QVariant());
     } else if (plugin != QLatin1String("virtualcan") || configureBitrate) {
-        dev->setConfigurationParameter(QCanBusDevice::BitRateKey, m_bitrate);
+        dev->setConfigurationParameter(QCanBusDevice::BitRateKey, bitrate > 0 ? bitrate : DefaultBitrate);
     }
+    return open(dev, plugin, interfaceName, bitrate);
+}
+
+Error SimCanBus::open(QCanBusDevice *dev, const QString &plugin, const QString &interfaceName, int bitrate)
+{
+    if (!dev)
+        return {ErrorCode::InvalidArgument, tr("No CAN device to open the simulated bus on.")};
+    if (m_device) {
+        delete dev;
+        return {ErrorCode::Busy, tr("The simulated CAN bus %1 is already open.").arg(description())};
+    }
+    setBitrate(bitrate);
+    m_plugin = plugin;
+    m_interface = interfaceName;
+    dev->setParent(this);
+    m_device = dev;
     dev->setConfigurationParameter(QCanBusDevice::ReceiveOwnKey, false);
 
     connect(dev, &QCanBusDevice::framesReceived, this, &SimCanBus::onFramesReceived);
@@ -81,6 +92,7 @@ Error SimCanBus::open(const QString &plugin, const QString &interfaceName, int b
     if (!dev->connectDevice()) {
         const QString why = dev->errorString();
         disconnect(dev, nullptr, this, nullptr);
+        m_device = nullptr;
         delete dev;
         return {ErrorCode::OpenFailed,
                 tr("Cannot connect to the CAN interface %1:%2 (%3).").arg(plugin, interfaceName, why)};

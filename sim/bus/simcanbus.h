@@ -65,6 +65,10 @@ public:
     // plugin or interface cannot be created or connectDevice() refuses.
     Error open(const QString &plugin, const QString &interfaceName, int bitrate = DefaultBitrate,
                bool configureBitrate = false);
+    // The same on a device made elsewhere (e.g. VirtualCanHub::createLocalDevice()); the bus
+    // takes ownership, also when it fails. `plugin` and `interfaceName` name it in messages.
+    Error open(QCanBusDevice *device, const QString &plugin, const QString &interfaceName,
+               int bitrate = DefaultBitrate);
     void close();
     bool isOpen() const;         // a device exists (connecting or connected)
     bool isConnected() const;    // ConnectedState

@@ -1,13 +1,19 @@
 #pragma once
 
+#include <QHash>
 #include <QHostAddress>
 #include <QList>
 #include <QObject>
+#include <QPointer>
 
+class QCanBusDevice;
+class QCanBusFrame;
 class QTcpServer;
 class QTcpSocket;
 
 namespace dd {
+
+class HubCanDevice;
 
 // A stand-in for the TCP server inside Qt's virtualcan plugin, speaking its line protocol
 // ("connect:can0", "can0:<id>#<flags>#<hex>", "disconnect:can0"; frames are forwarded as
@@ -56,12 +62,29 @@ public:
     // virtualcan plugin is missing.
     static bool settlePluginServer();
 
+    // A CAN device on `channel` of this hub inside this process (HubCanDevice: no socket of
+    // its own). Connect it like any QCanBusDevice; it must live in the hub's thread.
+    QCanBusDevice *createLocalDevice(int channel, QObject *parent = nullptr);
+
+    // HubCanDevice's side.
+    void attachLocal(HubCanDevice *device);
+    void detachLocal(HubCanDevice *device);
+    void forwardFromLocal(HubCanDevice *from, const QCanBusFrame &frame);
+
 private:
     void onNewConnection();
     void onReadyRead(QTcpSocket *socket);
+    // Writes `line` to `to` if it listens on `channel` (true); keeps it for a client that
+    // has not said which channel yet.
+    bool sendLine(QTcpSocket *to, const QString &channel, const QByteArray &line);
+
+    static constexpr int MaxEarlyLines = 1024;
 
     QTcpServer *m_server = nullptr;
     QList<QTcpSocket *> m_clients;
+    QList<QPointer<HubCanDevice>> m_locals;
+    QHash<QTcpSocket *, QList<std::pair<QString, QByteArray>>> m_early; // before "connect:"
+
     quint64 m_forwarded = 0;
 };
 

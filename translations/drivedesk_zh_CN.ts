@@ -8326,16 +8326,8 @@ firmware %2</source>
         <translation>未设置</translation>
     </message>
     <message>
-        <source> counts</source>
-        <translation> 脉冲</translation>
-    </message>
-    <message>
         <source> s</source>
         <translation> 秒</translation>
-    </message>
-    <message>
-        <source>From the start position, in the drive&apos;s position counts.</source>
-        <translation>自起始位置算起，单位为驱动器的位置脉冲数。</translation>
     </message>
     <message>
         <source>Stop the test</source>
@@ -8352,6 +8344,10 @@ firmware %2</source>
     <message>
         <source>After a completed test the axis moves back to where it started. An aborted test leaves it where it stopped.</source>
         <translation>测试完成后轴会移回起始位置。中止的测试会让轴停在停止处。</translation>
+    </message>
+    <message>
+        <source>From the start position, in the drive&apos;s position pulses.</source>
+        <translation>自起始位置算起，单位为驱动器的位置脉冲数。</translation>
     </message>
 </context>
 <context>

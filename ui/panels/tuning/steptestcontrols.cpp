@@ -219,11 +219,13 @@ void StepTestControls::retranslate()
         s->setSpecialValueText(tr("not set"));
     m_maxSpeed->setSuffix(QLatin1Char(' ') + DisplayText::unit(m_speedUnit));
     m_speed->setSuffix(QLatin1Char(' ') + DisplayText::unit(m_speedUnit));
-    m_maxTravel->setSuffix(tr(" counts"));
-    m_distance->setSuffix(tr(" counts"));
+    // Positions in the motion readout's unit.
+    const QString positionSuffix = QLatin1Char(' ') + DisplayText::unit(QStringLiteral("pulses"));
+    m_maxTravel->setSuffix(positionSuffix);
+    m_distance->setSuffix(positionSuffix);
     m_maxDuration->setSuffix(tr(" s"));
     m_duration->setSuffix(tr(" s"));
-    m_maxTravel->setToolTip(tr("From the start position, in the drive's position counts."));
+    m_maxTravel->setToolTip(tr("From the start position, in the drive's position pulses."));
     m_run->setText(m_running ? tr("Stop the test") : tr("Run"));
     m_return->setText(tr("Back to the start afterwards"));
     m_return->setToolTip(tr("After a completed test the axis moves back to where it started. An aborted test "

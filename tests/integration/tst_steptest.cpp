@@ -248,12 +248,17 @@ void TestStepTest::abortsWhenTheSpeedLimitIsPassed()
     QVERIFY(write({{60, 60}, {64, 1000}, {65, 0}}));
     StepTest test(m_drive);
     const StepResult r = run(test, velocity(300, 0.5), limits(330));
+    // At the confirmed stop the shaft is at rest; the stiff loop (no integral action) may
+    // still hold it a count or so off its reference until the gains are put back (it failed
+    // 1 full ctest run in 4 on a busy machine when checked at once).
+    const double speedAtStop = m_sim->motor().speedRpm();
     QVERIFY(write({{60, 30}, {64, 6}, {65, 100}}));
     QCOMPARE(r.outcome, StepResult::Outcome::Aborted);
     QCOMPARE(r.abortCause, QStringLiteral("speed-limit"));
     QVERIFY2(r.reason.contains(QStringLiteral("above the maximum speed 330")), qPrintable(r.reason));
     QVERIFY2(r.stopConfirmed, qPrintable(r.stopNote));
-    QVERIFY(!m_sim->motor().isMoving());
+    QVERIFY2(std::abs(speedAtStop) < 5, qPrintable(QString::number(speedAtStop)));
+    QVERIFY(waitUntil([this] { return !m_sim->motor().isMoving(); }, 1000));
 }
 
 void TestStepTest::aLostLinkSaysWhatStopsTheAxis()

@@ -61,6 +61,7 @@ void MicroTimer::start(qint64 waitUs)
 #ifdef Q_OS_LINUX
     if (m_fd >= 0) {
         qint64 sleepUs = waitUs;
+        m_dueNs = 0;
         if (m_earlyWakeUs > 0) {
             m_dueNs = monotonicNs() + std::max<qint64>(waitUs, 0) * 1000;
             sleepUs = waitUs - m_earlyWakeUs;
@@ -103,7 +104,7 @@ void MicroTimer::onFired(bool fromFd)
     if (!m_active)
         return;
 #ifdef Q_OS_LINUX
-    if (fromFd && m_earlyWakeUs > 0) {
+    if (fromFd && m_dueNs > 0) {
         // Woken early on purpose: wait out the rest awake (at most m_earlyWakeUs).
         while (monotonicNs() < m_dueNs) {
         }

@@ -54,7 +54,7 @@ private:
     QTimer m_fallback;
     bool m_active = false;
     qint64 m_earlyWakeUs = 0;
-    qint64 m_dueNs = 0; // CLOCK_MONOTONIC, when waking early
+    qint64 m_dueNs = 0; // CLOCK_MONOTONIC, when this start() wakes early (else 0)
 };
 
 } // namespace dd

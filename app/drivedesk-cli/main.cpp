@@ -2,7 +2,6 @@
 #include "cli/cli.h"
 
 #include "core/common/coreresources.h"
-#include "core/common/eventdispatcherchoice.h"
 #include "core/common/localtimezone.h"
 
 #include <QCoreApplication>
@@ -11,8 +10,7 @@
 
 int main(int argc, char *argv[])
 {
-    dd::pinLocalTimeZone();           // before any thread: see localtimezone.h
-    dd::preferPlainEventDispatcher(); // before the application object: see eventdispatcherchoice.h
+    dd::pinLocalTimeZone(); // before any thread: see localtimezone.h
     QStringList arguments;
     for (int i = 1; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);

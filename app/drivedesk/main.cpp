@@ -1,6 +1,5 @@
 // drivedesk: the commissioning workbench (GUI).
 #include "core/common/coreresources.h"
-#include "core/common/eventdispatcherchoice.h"
 #include "core/common/localtimezone.h"
 #include "ui/bus/connectrequest.h"
 #include "ui/shell/commandlinefile.h"
@@ -185,8 +184,7 @@ void scheduleScreenshot(dd::MainWindow &window, const Options &options)
 
 int main(int argc, char *argv[])
 {
-    dd::pinLocalTimeZone();           // before any thread: see localtimezone.h
-    dd::preferPlainEventDispatcher(); // before the application object: see eventdispatcherchoice.h
+    dd::pinLocalTimeZone(); // before any thread: see localtimezone.h
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("DriveDesk"));
     QCoreApplication::setOrganizationDomain(QStringLiteral("drivedesk.invalid"));

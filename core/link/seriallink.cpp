@@ -32,8 +32,6 @@ SerialLink::SerialLink(QObject *parent)
 {
     connect(&m_responseTimer, &MicroTimer::timeout, this, &SerialLink::onResponseTimeout);
     connect(&m_gapTimer, &MicroTimer::timeout, this, &SerialLink::onGapElapsed);
-    // The silence before a request is on every transaction's path: end it on time.
-    m_gapTimer.setEarlyWakeUs(MicroTimer::WireTimeEarlyWakeUs);
     m_clock.start();
 }
 

@@ -132,6 +132,40 @@ private slots:
         QVERIFY(lines.value(2).endsWith(",0,No alarm"));
     }
 
+    void readAnswerOvertakenByAnAlarmChangeIsDropped()
+    {
+        // The drive reports an alarm change while a read of the alarm is on its way: the
+        // read's answer may have left the drive before the change, so it must not undo it
+        // (it did: the panel fell back to "No alarm" and the history got a false "cleared"
+        // between two 12s, 1 run in 8 of injectedAlarmShowsAndClears).
+        DD_REQUIRE_TOOL(QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")),
+                        "Qt's virtualcan plugin is not installed");
+        PanelRig rig;
+        SimBenchOptions o;
+        o.family = Family::ServoCan;
+        o.can = QStringLiteral("virtualcan:auto");
+        QString why;
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        AlarmsPanel *p = rig.show<AlarmsPanel>(&why);
+        QVERIFY2(p, qPrintable(why));
+        auto *read = p->findChild<QPushButton *>(QStringLiteral("readAlarmButton"));
+        QVERIFY(read);
+        QVERIFY(waitUntil([&] { return read->isEnabled() && p->currentCode() == 0; }, 3000)); // first read done
+        const qsizetype entries = p->history().size();
+
+        QTest::mouseClick(read, Qt::LeftButton); // the drive will answer 0
+        QVERIFY(!read->isEnabled());
+        p->setAlarm(12); // as the hub forwards an alarm frame that came in meanwhile
+        QVERIFY(waitUntil([&] { return read->isEnabled(); }, 3000)); // the read's answer is in
+        QCOMPARE(p->currentCode(), 12);
+        QCOMPARE(p->history().size(), entries + 1);
+        QCOMPARE(p->history().last().code, 12);
+
+        // A read with no change reported meanwhile is taken as it is.
+        QTest::mouseClick(read, Qt::LeftButton);
+        QVERIFY(waitUntil([&] { return read->isEnabled() && p->currentCode() == 0; }, 3000));
+    }
+
     void servoModbusReadsButCannotClear()
     {
         PanelRig rig;

@@ -126,13 +126,16 @@ void AlarmsPanel::readAlarm()
     m_readOnce = true;
     m_read->setEnabled(false);
     QPointer<AlarmsPanel> self(this);
+    const quint64 eventsBefore = m_alarmEvents;
     context().hub->run(
         context().connectionId, context().address, [](Drive &d) { return d.readAlarm(); },
-        [self](const DriveResult &r) {
+        [self, eventsBefore](const DriveResult &r) {
             if (!self)
                 return;
             self->updateCapabilities();
-            if (self->reportResult(r))
+            // An alarm change the drive reported while the read was on its way is newer than
+            // the read's answer (which may have left the drive before the change): keep it.
+            if (self->reportResult(r) && self->m_alarmEvents == eventsBefore)
                 self->onCode(r.status.alarmCode);
         });
 }
@@ -212,6 +215,7 @@ void AlarmsPanel::driveInfoChanged(const DriveInfo &info)
 
 void AlarmsPanel::alarmChanged(int code)
 {
+    ++m_alarmEvents;
     onCode(code);
 }
 

@@ -59,6 +59,7 @@ private:
 
     AlarmDictionary m_dictionary;
     bool m_readOnce = false;
+    quint64 m_alarmEvents = 0; // alarm changes reported by the drive (alarmChanged())
 
     QGroupBox *m_currentBox = nullptr;
     QLabel *m_codeLabel = nullptr;

@@ -20,6 +20,20 @@
 
 using namespace dd;
 
+namespace {
+// A servo-can drive on a private virtual CAN bus, its Alarms panel shown; null (and `why`)
+// when that fails.
+AlarmsPanel *showOnServoCan(PanelRig &rig, QString *why)
+{
+    SimBenchOptions o;
+    o.family = Family::ServoCan;
+    o.can = QStringLiteral("virtualcan:auto");
+    if (!rig.start(o, why))
+        return nullptr;
+    return rig.show<AlarmsPanel>(why);
+}
+} // namespace
+
 class TestAlarmsPanel : public QObject
 {
     Q_OBJECT
@@ -72,12 +86,8 @@ private slots:
         DD_REQUIRE_TOOL(QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")),
                         "Qt's virtualcan plugin is not installed");
         PanelRig rig;
-        SimBenchOptions o;
-        o.family = Family::ServoCan;
-        o.can = QStringLiteral("virtualcan:auto");
         QString why;
-        QVERIFY2(rig.start(o, &why), qPrintable(why));
-        AlarmsPanel *p = rig.show<AlarmsPanel>(&why);
+        AlarmsPanel *p = showOnServoCan(rig, &why);
         QVERIFY2(p, qPrintable(why));
         // Shown → read once: no alarm, and nothing in the history.
         QVERIFY(waitUntil([&] { return p->currentCode() == 0; }, 3000));
@@ -141,12 +151,8 @@ private slots:
         DD_REQUIRE_TOOL(QCanBus::instance()->plugins().contains(QLatin1String("virtualcan")),
                         "Qt's virtualcan plugin is not installed");
         PanelRig rig;
-        SimBenchOptions o;
-        o.family = Family::ServoCan;
-        o.can = QStringLiteral("virtualcan:auto");
         QString why;
-        QVERIFY2(rig.start(o, &why), qPrintable(why));
-        AlarmsPanel *p = rig.show<AlarmsPanel>(&why);
+        AlarmsPanel *p = showOnServoCan(rig, &why);
         QVERIFY2(p, qPrintable(why));
         auto *read = p->findChild<QPushButton *>(QStringLiteral("readAlarmButton"));
         QVERIFY(read);

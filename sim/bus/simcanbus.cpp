@@ -229,6 +229,9 @@ void SimCanBus::onFramesReceived()
         }
         const CanFrameData frame{qf.frameId(), qf.payload(), qf.hasExtendedFrameFormat()};
         const qint64 now = nowUs();
+        // The bus went on while this thread slept: a frame that was ready when the bus freed
+        // up went out then, ahead of this one, however late the timer that says so fires.
+        advanceBus(now);
         ++m_stats.framesIn;
         emit frameReceived(frame, now);
         qCDebug(lcSimFrames).noquote() << "rx" << now << Qt::hex << frame.id << Qt::dec << frame.data.toHex(' ');
@@ -281,12 +284,19 @@ void SimCanBus::enqueue(const CanFrameData &frame, qint64 readyUs, int device)
     m_ready.push_back(Queued{ready, m_seq++, f, device});
 }
 
-// Runs the bus model up to the present: finishes the frame on the bus, starts the next one
-// (arbitration: lowest ID among those ready when the bus frees up), and arms the timer for
-// the next event.
+// Runs the bus model up to the present and arms the timer for its next event.
 void SimCanBus::pump()
 {
     const qint64 now = nowUs();
+    advanceBus(now);
+    armBusTimer(now);
+}
+
+// Runs the bus model up to `now`: finishes the frame on the bus, starts the next one
+// (arbitration: lowest ID among those ready when the bus frees up), and so on. Frames start
+// at the model's times, not when this thread gets to run.
+void SimCanBus::advanceBus(qint64 now)
+{
     for (;;) {
         if (m_onBus) {
             if (m_onBus->endUs > now)
@@ -317,7 +327,11 @@ void SimCanBus::pump()
         m_busFreeUs = end;
         m_ready.erase(winner);
     }
+}
 
+// Arms the timer for the bus model's next event.
+void SimCanBus::armBusTimer(qint64 now)
+{
     qint64 next = -1;
     if (m_onBus) {
         next = m_onBus->endUs;

@@ -119,6 +119,8 @@ private:
     void onTick();
     void enqueue(const CanFrameData &frame, qint64 readyUs, int device);
     void pump();
+    void advanceBus(qint64 now);
+    void armBusTimer(qint64 now);
     void transmit(const CanFrameData &frame, int device, qint64 atUs);
     qint64 frameUs(const CanFrameData &frame) const;
 

@@ -6,6 +6,7 @@
 
 #include "core/link/wiretime.h"
 #include "sim/bus/simcanbus.h"
+#include "sim/bus/virtualcanhub.h"
 #include "tests/support/requiretool.h"
 
 #include <memory>
@@ -282,6 +283,58 @@ private slots:
         send(QByteArray::fromHex("01"));
         QVERIFY(waitForFrames(ReplyId, ReplyId, 1));
         QVERIFY(arrivalsWithId(ReplyId).first().atUs >= 50000);
+    }
+
+    // The modelled bus does not wait for the simulator's thread: a reply that was ready when
+    // the bus freed up leaves then, even when the thread wakes late and finds a new host
+    // frame before its timer. (It used to let the host frame take the bus at the moment the
+    // thread saw it, with the bus idle in between: every late wake-up cost the servo-can
+    // monitor bus time, 91 % of the wire's rate instead of 99 %.)
+    void aLateThreadDoesNotLetTheBusIdle()
+    {
+        const int bitrate = 20000; // 6.75 ms a frame
+        VirtualCanHub hub;
+        QVERIFY(hub.start());
+        const Error err = m_bus->open(hub.createLocalDevice(0), QStringLiteral("hub"), QStringLiteral("can0"), bitrate);
+        QVERIFY2(!err, qPrintable(err.message));
+        QTRY_VERIFY_WITH_TIMEOUT(m_bus->isConnected(), 3000);
+        // The host on the same hub, in this thread: frames pass as function calls, so what
+        // the simulator does with a frame is done when writeFrame() returns.
+        std::unique_ptr<QCanBusDevice> host(hub.createLocalDevice(0));
+        connect(host.get(), &QCanBusDevice::framesReceived, this, [this, &host] {
+            const qint64 t = m_clock.nsecsElapsed() / 1000;
+            for (const QCanBusFrame &f : host->readAllFrames())
+                m_arrivals.append({f, t});
+        });
+        QVERIFY(host->connectDevice());
+        const qint64 frameUs = static_cast<qint64>(WireTime::canFrameUs(8, false, bitrate));
+
+        m_arrivals.clear();
+        m_clock.start();
+        QVERIFY(host->writeFrame(QCanBusFrame(RequestId, QByteArray::fromHex("0100000000000000"))));
+        // The thread is busy (no event loop) until the reply has long left the bus:
+        // request, latency, reply, and one frame more.
+        const qint64 replyGoneUs = 2 * frameUs + m_dev->latencyUs();
+        while (m_clock.nsecsElapsed() / 1000 < replyGoneUs + frameUs) {
+        }
+        QVERIFY(arrivalsWithId(ReplyId).isEmpty()); // nothing ran: the timer is still due
+        const qint64 secondAtUs = m_clock.nsecsElapsed() / 1000;
+        QVERIFY(host->writeFrame(QCanBusFrame(RequestId, QByteArray::fromHex("0200000000000000"))));
+        // The first reply was on the bus before the second request came: it is out now,
+        // not after the second request's frame.
+        const QList<Arrival> first = arrivalsWithId(ReplyId);
+        QCOMPARE(first.size(), 1);
+        QCOMPARE(first.first().frame.payload().at(0), char(~0x01));
+        QVERIFY2(first.first().atUs < secondAtUs + frameUs,
+                 qPrintable(QStringLiteral("first reply at %1 us, second request at %2 us")
+                                .arg(first.first().atUs)
+                                .arg(secondAtUs)));
+        // The second request took the bus when the thread saw it; its replies follow it.
+        QTRY_COMPARE_WITH_TIMEOUT(arrivalsWithId(ReplyId).size() + arrivalsWithId(ReplyId + 1).size(), 3, 3000);
+        for (const Arrival &a : arrivalsWithId(ReplyId + 1))
+            QVERIFY(a.atUs >= secondAtUs + 2 * frameUs + m_dev->latencyUs());
+        host->disconnectDevice();
+        m_bus->close();
     }
 
     void closeDisconnects()

@@ -247,7 +247,7 @@ QString CliHelp::command(const QString &name)
                   "reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.\n"
                   "The limits are required (exit 2, nothing sent, without them): --max-speed (the\n"
                   "speed unit; a position step: 1.5 x --speed unless given), --max-travel from the\n"
-                  "start position (counts), --max-duration until the axis is at rest (default: the\n"
+                  "start position (pulses), --max-duration until the axis is at rest (default: the\n"
                   "step's time + 2 s; position 10 s). The captured speed and position are watched\n"
                   "against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends\n"
                   "the test with exit code 1. The capture runs from --pre (0.05 s) before the motion\n"

@@ -2066,10 +2066,6 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>站号 %1，%2：%3</translation>
     </message>
     <message>
-        <source>A relative move of %1 counts does not fit the drive&apos;s 32-bit command.</source>
-        <translation>相对运动量 %1 超出驱动器 32 位指令的范围。</translation>
-    </message>
-    <message>
         <source>A move needs a positive positioning speed (r/min); %1 was given.</source>
         <translation>运动需要正的定位速度（r/min），给定值为 %1。</translation>
     </message>
@@ -2096,6 +2092,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>The stop command was sent, but station %1 has sent no heartbeat since (%2 ms): it may not have received it.</source>
         <translation>停止命令已发送，但站号 %1 此后（%2 ms）没有发送心跳：它可能没有收到该命令。</translation>
+    </message>
+    <message>
+        <source>A relative move of %1 pulses does not fit the drive&apos;s 32-bit command.</source>
+        <translation>相对运动量 %1 超出驱动器 32 位指令的范围。</translation>
     </message>
 </context>
 <context>
@@ -4922,43 +4922,6 @@ transient, where its ringing shows a resonance). Reads files only.
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] step velocity SPEED --duration S --max-speed V --max-travel N
-       drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]
-       drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N
-          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
-          [--notes TEXT] [-o RUN.ddrun]
-velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.
-reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.
-The limits are required (exit 2, nothing sent, without them): --max-speed (the
-speed unit; a position step: 1.5 x --speed unless given), --max-travel from the
-start position (counts), --max-duration until the axis is at rest (default: the
-step&apos;s time + 2 s; position 10 s). The captured speed and position are watched
-against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends
-the test with exit code 1. The capture runs from --pre (0.05 s) before the motion
-command for --record seconds (default: the step&apos;s time + 0.3 s; a position
-step: until the axis is at rest, + 0.3 s).
-A completed test returns to its start position (--no-return: it stays), prints
-the metrics with their resolution or why they cannot be resolved, and saves the
-run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).
-</source>
-        <translation>用法：drivedesk-cli [选项] step velocity SPEED --duration S --max-speed V --max-travel N
-      drivedesk-cli [选项] step position DISTANCE --speed V --max-travel N [--max-speed V]
-      drivedesk-cli [选项] step reversal SPEED --duration S --max-speed V --max-travel N
-          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
-          [--notes TEXT] [-o RUN.ddrun]
-velocity：以 SPEED 运行 S 秒后停止。position：以速度 V 相对移动 DISTANCE。
-reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止。
-限值为必填（缺少时退出码 2，不发送任何内容）：--max-speed（速度单位；定位阶跃
-未给出时为 --speed 的 1.5 倍）、--max-travel 距起始位置的最大行程（脉冲数）、
---max-duration 到轴静止的最长时间（默认：阶跃时间 + 2 秒；定位 10 秒）。
-采集到的速度和位置按这些限值监视；报警、超出限值、Ctrl-C 或链路断开都会停止
-轴并以退出码 1 结束测试。采集从运动指令前 --pre（0.05 秒）开始，持续 --record
-秒（默认：阶跃时间 + 0.3 秒；定位阶跃：直到轴静止后再加 0.3 秒）。测试完成后
-回到起始位置（--no-return：留在原处），打印各项指标及其分辨率或无法分辨的原因，
-并将运行记录连同从驱动器读取的调谐参数保存到 RUN.ddrun（docs/tuning.md）。
-</translation>
-    </message>
-    <message>
         <source>  report -o RECORD.pdf [--all] [--runs RUN.ddrun,...] [--header FILE.json]
          [--json-out RECORD.json]
                                  the commissioning record (PDF and JSON)
@@ -5022,6 +4985,43 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
 --runs RUN.ddrun,...：调试运行（采集或阶跃测试文件），显示在其所测的驱动器下：
 曲线、指标、参数快照。运行文件有误，或其驱动器不在记录中时，以退出码 2 结束并说明原因，
 不写任何文件。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] step velocity SPEED --duration S --max-speed V --max-travel N
+       drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]
+       drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N
+          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
+          [--notes TEXT] [-o RUN.ddrun]
+velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.
+reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.
+The limits are required (exit 2, nothing sent, without them): --max-speed (the
+speed unit; a position step: 1.5 x --speed unless given), --max-travel from the
+start position (pulses), --max-duration until the axis is at rest (default: the
+step&apos;s time + 2 s; position 10 s). The captured speed and position are watched
+against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends
+the test with exit code 1. The capture runs from --pre (0.05 s) before the motion
+command for --record seconds (default: the step&apos;s time + 0.3 s; a position
+step: until the axis is at rest, + 0.3 s).
+A completed test returns to its start position (--no-return: it stays), prints
+the metrics with their resolution or why they cannot be resolved, and saves the
+run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).
+</source>
+        <translation>用法：drivedesk-cli [选项] step velocity SPEED --duration S --max-speed V --max-travel N
+      drivedesk-cli [选项] step position DISTANCE --speed V --max-travel N [--max-speed V]
+      drivedesk-cli [选项] step reversal SPEED --duration S --max-speed V --max-travel N
+          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
+          [--notes TEXT] [-o RUN.ddrun]
+velocity：以 SPEED 运行 S 秒后停止。position：以速度 V 相对移动 DISTANCE。
+reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止。
+限值为必填（缺少时退出码 2，不发送任何内容）：--max-speed（速度单位；定位阶跃
+未给出时为 --speed 的 1.5 倍）、--max-travel 距起始位置的最大行程（脉冲数）、
+--max-duration 到轴静止的最长时间（默认：阶跃时间 + 2 秒；定位 10 秒）。
+采集到的速度和位置按这些限值监视；报警、超出限值、Ctrl-C 或链路断开都会停止
+轴并以退出码 1 结束测试。采集从运动指令前 --pre（0.05 秒）开始，持续 --record
+秒（默认：阶跃时间 + 0.3 秒；定位阶跃：直到轴静止后再加 0.3 秒）。测试完成后
+回到起始位置（--no-return：留在原处），打印各项指标及其分辨率或无法分辨的原因，
+并将运行记录连同从驱动器读取的调谐参数保存到 RUN.ddrun（docs/tuning.md）。
 </translation>
     </message>
 </context>

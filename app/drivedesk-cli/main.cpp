@@ -2,6 +2,7 @@
 #include "cli/cli.h"
 
 #include "core/common/coreresources.h"
+#include "core/common/eventdispatcherchoice.h"
 #include "core/common/localtimezone.h"
 
 #include <QCoreApplication>
@@ -10,7 +11,8 @@
 
 int main(int argc, char *argv[])
 {
-    dd::pinLocalTimeZone(); // before any thread: see localtimezone.h
+    dd::pinLocalTimeZone();           // before any thread: see localtimezone.h
+    dd::preferPlainEventDispatcher(); // before the application object: see eventdispatcherchoice.h
     QStringList arguments;
     for (int i = 1; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);

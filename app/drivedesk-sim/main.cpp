@@ -1,6 +1,7 @@
 // drivedesk-sim: simulated drives of one family on a pty or a CAN bus, for DriveDesk's
 // tests, for its demo, and for integrators who test PLC programs without a drive.
 #include "core/common/coreresources.h"
+#include "core/common/eventdispatcherchoice.h"
 #include "core/common/localtimezone.h"
 #include "core/common/signalwatcher.h"
 #include "core/protocol/familytraits.h"
@@ -330,7 +331,8 @@ int runBench(QCoreApplication &app, const SimBenchOptions &o)
 
 int main(int argc, char *argv[])
 {
-    dd::pinLocalTimeZone(); // before any thread: see localtimezone.h
+    dd::pinLocalTimeZone();           // before any thread: see localtimezone.h
+    dd::preferPlainEventDispatcher(); // before the application object: see eventdispatcherchoice.h
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("drivedesk-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));

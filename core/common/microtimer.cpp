@@ -2,12 +2,27 @@
 
 #include <QSocketNotifier>
 
+#include <algorithm>
+
 #ifdef Q_OS_LINUX
 #include <sys/timerfd.h>
+#include <time.h>
 #include <unistd.h>
 #endif
 
 namespace dd {
+
+namespace {
+#ifdef Q_OS_LINUX
+qint64 monotonicNs()
+{
+    timespec t{};
+    ::clock_gettime(CLOCK_MONOTONIC, &t);
+    return qint64(t.tv_sec) * 1000000000 + t.tv_nsec;
+}
+#endif
+constexpr qint64 MaxEarlyWakeUs = 1000;
+} // namespace
 
 MicroTimer::MicroTimer(QObject *parent)
     : QObject(parent)
@@ -35,13 +50,24 @@ MicroTimer::~MicroTimer()
 #endif
 }
 
+void MicroTimer::setEarlyWakeUs(qint64 us)
+{
+    m_earlyWakeUs = isPrecise() ? std::clamp<qint64>(us, 0, MaxEarlyWakeUs) : 0;
+}
+
 void MicroTimer::start(qint64 waitUs)
 {
     m_active = true;
 #ifdef Q_OS_LINUX
     if (m_fd >= 0) {
+        qint64 sleepUs = waitUs;
+        m_dueNs = 0;
+        if (m_earlyWakeUs > 0) {
+            m_dueNs = monotonicNs() + std::max<qint64>(waitUs, 0) * 1000;
+            sleepUs = waitUs - m_earlyWakeUs;
+        }
         // A zero it_value would disarm the timer: the shortest wait is 1 µs.
-        const qint64 us = waitUs < 1 ? 1 : waitUs;
+        const qint64 us = sleepUs < 1 ? 1 : sleepUs;
         itimerspec spec{};
         spec.it_value.tv_sec = time_t(us / 1000000);
         spec.it_value.tv_nsec = long(us % 1000000) * 1000;
@@ -77,6 +103,13 @@ void MicroTimer::onFired(bool fromFd)
 #endif
     if (!m_active)
         return;
+#ifdef Q_OS_LINUX
+    if (fromFd && m_dueNs > 0) {
+        // Woken early on purpose: wait out the rest awake (at most m_earlyWakeUs).
+        while (monotonicNs() < m_dueNs) {
+        }
+    }
+#endif
     m_active = false;
     emit timeout();
 }

@@ -45,6 +45,8 @@ SimSerialBus::SimSerialBus(ByteEndpoint *endpoint, QObject *parent)
 {
     m_clock.start();
     connect(&m_timer, &MicroTimer::timeout, this, &SimSerialBus::onTimer);
+    // A reply's end on the wire is when the host may have it: write it on time.
+    m_timer.setEarlyWakeUs(MicroTimer::WireTimeEarlyWakeUs);
     if (m_endpoint) {
         m_endpoint->setParent(this);
         connect(m_endpoint, &ByteEndpoint::received, this, &SimSerialBus::onReceived);

@@ -21,6 +21,7 @@
 // names): a restore must read the drive first to know what differs, so it also pays for
 // the identification and the 60 / 220 reads of each drive.
 
+#include "core/common/eventdispatcherchoice.h"
 #include "core/common/localtimezone.h"
 #include "core/drive/drive.h"
 #include "core/drive/driveconnection.h"
@@ -390,7 +391,8 @@ void benchModbusRestore()
 
 int main(int argc, char **argv)
 {
-    dd::pinLocalTimeZone(); // before any thread: see localtimezone.h
+    dd::pinLocalTimeZone();           // before any thread: see localtimezone.h
+    dd::preferPlainEventDispatcher(); // before the application object: see eventdispatcherchoice.h
     QCoreApplication app(argc, argv);
     QLoggingCategory::setFilterRules(QStringLiteral("drivedesk.*.debug=false\ndrivedesk.*.info=false\n"
                                                     "qt.canbus.*.warning=false\nqt.canbus.*.debug=false\n"));

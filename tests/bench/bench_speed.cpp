@@ -41,6 +41,7 @@
 //    (the simulated drive ignores a command sooner than 50 ms after the previous one)
 //    makes the floor max(50 ms, one transaction).
 
+#include "core/common/eventdispatcherchoice.h"
 #include "core/common/localtimezone.h"
 #include "core/drive/drive.h"
 #include "core/drive/driveconnection.h"
@@ -838,7 +839,8 @@ void benchShuokeMonitor()
 
 int main(int argc, char **argv)
 {
-    dd::pinLocalTimeZone(); // before any thread: see localtimezone.h
+    dd::pinLocalTimeZone();           // before any thread: see localtimezone.h
+    dd::preferPlainEventDispatcher(); // before the application object: see eventdispatcherchoice.h
     QCoreApplication app(argc, argv);
     QLoggingCategory::setFilterRules(QStringLiteral("drivedesk.*=false\nqt.*=false"));
     const QStringList args = app.arguments();

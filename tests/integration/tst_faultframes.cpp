@@ -33,7 +33,7 @@ enum class Misbehaviour {
     Garbage,        // noise of a reply's length
     BadCrc,         // one bit of the CRC flipped
     Exception,      // exception 0x02 (illegal data address) from the drive's own address
-    Duplicate,      // every reply is sent twice
+    Duplicate,      // every reply is sent twice, the copy right behind it
     WrongEcho,      // a 0x10 reply echoes another register count
 };
 
@@ -97,7 +97,12 @@ private:
         }
         case Misbehaviour::BadCrc: a[a.size() - 1] = char(a.at(a.size() - 1) ^ 0x10); return {a};
         case Misbehaviour::Exception: return {withCrc16(QByteArray::fromHex("0183") + QByteArray(1, char(0x02)))};
-        case Misbehaviour::Duplicate: return {a, a};
+        case Misbehaviour::Duplicate:
+            // One transmission, as on a wire: the copy follows the reply with no gap. (As two
+            // writes, a stall of this machine could hold the copy back until after the next
+            // request, where nothing could tell it from that request's answer: a timing the
+            // wire never has. docs/reliability.md, "What the rule cannot tell apart".)
+            return {a + a};
         case Misbehaviour::WrongEcho:
             a[5] = char(quint8(a.at(5)) + 1); // the count's low byte
             return {recrc(a)};

@@ -16,16 +16,24 @@ private slots:
     void firesOnceNotEarly_data()
     {
         QTest::addColumn<qint64>("waitUs");
-        QTest::newRow("300 us") << qint64(300);
-        QTest::newRow("2.7 ms") << qint64(2700);
-        QTest::newRow("zero") << qint64(0);
-        QTest::newRow("negative") << qint64(-50);
+        QTest::addColumn<qint64>("earlyWakeUs");
+        QTest::newRow("300 us") << qint64(300) << qint64(0);
+        QTest::newRow("2.7 ms") << qint64(2700) << qint64(0);
+        QTest::newRow("zero") << qint64(0) << qint64(0);
+        QTest::newRow("negative") << qint64(-50) << qint64(0);
+        // Waking early must not fire early: the rest is waited out awake.
+        QTest::newRow("300 us, early wake 150") << qint64(300) << qint64(150);
+        QTest::newRow("100 us, early wake 150") << qint64(100) << qint64(150);
+        QTest::newRow("2.7 ms, early wake 150") << qint64(2700) << qint64(150);
+        QTest::newRow("zero, early wake 150") << qint64(0) << qint64(150);
     }
 
     void firesOnceNotEarly()
     {
         QFETCH(qint64, waitUs);
         MicroTimer t;
+        QFETCH(qint64, earlyWakeUs);
+        t.setEarlyWakeUs(earlyWakeUs);
         QSignalSpy spy(&t, &MicroTimer::timeout);
         QElapsedTimer clock;
         clock.start();
@@ -37,6 +45,15 @@ private slots:
         QVERIFY(!t.isActive());
         QVERIFY(!spy.wait(20)); // single shot
         QCOMPARE(spy.count(), 1);
+    }
+
+    void earlyWakeIsBoundedAndOffWhereImprecise()
+    {
+        MicroTimer t;
+        t.setEarlyWakeUs(5000); // more than a millisecond of waiting awake is never wanted
+        QCOMPARE(t.earlyWakeUs(), t.isPrecise() ? qint64(1000) : qint64(0));
+        t.setEarlyWakeUs(-3);
+        QCOMPARE(t.earlyWakeUs(), qint64(0));
     }
 
     void stopPreventsTimeout()

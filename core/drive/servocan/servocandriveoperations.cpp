@@ -257,7 +257,7 @@ DriveReply *ServoCanDrive::moveRelative(qint64 distance, qint32 speed)
 {
     if (!fitsInt32(distance))
         return finishedReply({ErrorCode::OutOfRange,
-                              tr("A relative move of %1 counts does not fit the drive's 32-bit "
+                              tr("A relative move of %1 pulses does not fit the drive's 32-bit "
                                  "command.")
                                   .arg(distance)});
     if (speed <= 0)

@@ -238,6 +238,9 @@ void SerialLink::transmit()
         reportStray(m_rx);
         discardBuffer(QStringLiteral("stale bytes before request"));
     }
+    m_port->clear(QSerialPort::Input);
+    if (!m_port || !m_current)
+        return; // the port failed (adapter gone): onPortError() failed everything
     m_recoveryQuietUs = 0;
     m_bytesSinceSend = false;
     if (m_tap) {
@@ -253,11 +256,6 @@ void SerialLink::transmit()
     m_port->flush();
     if (!m_port || !m_current)
         return;
-    // Bytes that reach the driver between the check above and the request (a late answer, a
-    // duplicate: a virtual port hands them over when its kernel work runs) came before any
-    // answer could: they are no answer to it. They are read as usual and passed over, never
-    // dropped unseen (a scan learns of a slow drive from its late answer).
-    m_aheadOfRequest = bytesInDriver();
     m_sentAtUs = nowUs();
     m_lastCommandEndUs = m_sentAtUs + wireTimeUs(p.request.bytes.size());
     if (!p.request.matcher) {
@@ -295,15 +293,15 @@ void SerialLink::onReadyRead()
     onBytes(m_port->readAll());
 }
 
-int SerialLink::bytesInDriver() const
+bool SerialLink::bytesWaitInDriver() const
 {
     // QSerialPort reads only when its notifier fires; reading the descriptor behind its back
     // would make that read fail (EAGAIN), which it reports as a port error.
 #ifdef Q_OS_UNIX
     int n = 0;
-    return m_port && m_port->handle() >= 0 && ::ioctl(m_port->handle(), FIONREAD, &n) == 0 ? std::max(n, 0) : 0;
+    return m_port && m_port->handle() >= 0 && ::ioctl(m_port->handle(), FIONREAD, &n) == 0 && n > 0;
 #else
-    return 0;
+    return false;
 #endif
 }
 
@@ -327,25 +325,12 @@ void SerialLink::onBytes(const QByteArray &data)
         reportStray(data); // (the silence before the next request counts from this byte: m_lastRxUs)
         return;
     }
-    QByteArray fresh = data;
-    if (m_aheadOfRequest > 0) {
-        const QByteArray ahead = fresh.left(m_aheadOfRequest);
-        m_aheadOfRequest -= int(ahead.size());
-        fresh.remove(0, ahead.size());
-        if (m_tap)
-            m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, ahead,
-                                QStringLiteral("came before the request left"));
-        payDebtsOf(ahead);
-        reportStray(ahead);
-        if (fresh.isEmpty())
-            return;
-    }
     if (!m_bytesSinceSend) {
         m_bytesSinceSend = true;
         if (m_current && m_current->request.firstByteTimeoutUs > 0)
             armResponseTimer(); // the whole timeout applies now
     }
-    m_rx += fresh;
+    m_rx += data;
     if (m_rx.size() > kMaxRxBuffer)
         discardBuffer(QStringLiteral("receive buffer overflow"));
     processBuffer();

@@ -150,8 +150,7 @@ private:
     void transmit();
     void onReadyRead();
     void onBytes(const QByteArray &data);
-    bool bytesWaitInDriver() const { return bytesInDriver() > 0; }
-    int bytesInDriver() const; // received, not yet read by the port (Unix)
+    bool bytesWaitInDriver() const; // received, not yet read by the port (Unix)
     void processBuffer();
     void onResponseTimeout();
     void onGapElapsed();
@@ -191,7 +190,6 @@ private:
     qint64 m_recoveryQuietUs = 0;
     bool m_lateForCurrent = false;    // bytes came between attempts of the current request
     bool m_flushedForCurrent = false; // stale bytes were flushed just before this attempt
-    int m_aheadOfRequest = 0;         // bytes in the driver when the request left: none is its answer
     QSet<int> m_owed;                 // peers whose last request went unanswered
     quint64 m_staleReplies = 0;
     qint64 m_lastEarlyUs = 0;     // the last frame dropped as stale: after how long, and the

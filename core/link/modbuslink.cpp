@@ -2,6 +2,7 @@
 
 #include "core/link/modbusreplymatcher.h"
 #include "core/link/seriallink.h"
+#include "core/link/wiretime.h"
 
 #include <cmath>
 
@@ -49,6 +50,7 @@ bool ModbusLink::open(const SerialSettings &settings, Error *error)
     if (!m_serial->open(settings, error))
         return false;
     m_serial->setInterFrameGapUs(interFrameGapUs(settings.baud, settings.bitsPerChar));
+    m_serial->setSamePeerGapUs(sameDriveGapUs(settings.baud, settings.bitsPerChar));
     return true;
 }
 
@@ -79,6 +81,7 @@ bool ModbusLink::setBaudRate(qint32 baud)
     if (!m_serial->setBaudRate(baud))
         return false;
     m_serial->setInterFrameGapUs(interFrameGapUs(baud, settings().bitsPerChar));
+    m_serial->setSamePeerGapUs(sameDriveGapUs(baud, settings().bitsPerChar));
     return true;
 }
 
@@ -306,7 +309,21 @@ qint64 ModbusLink::interFrameGapUs(qint32 baud, int bitsPerChar)
     // Modbus over serial line 1.02, 2.5.1.1: 3.5 characters; above 19200 baud a fixed 1750 us.
     if (baud > 19200 || baud <= 0)
         return 1750;
-    return qint64(std::ceil(3.5 * bitsPerChar * 1e6 / baud));
+    return sameDriveGapUs(baud, bitsPerChar); // the same below 19200 baud
+}
+
+qint64 ModbusLink::sameDriveGapUs() const
+{
+    return m_serial->samePeerGapUs();
+}
+
+qint64 ModbusLink::sameDriveGapUs(qint32 baud, int bitsPerChar)
+{
+    // 3.5 characters at every baud rate: the frame separation itself, without the fixed
+    // 1750 us the spec recommends above 19200 baud (docs/reliability.md).
+    if (baud <= 0)
+        return 1750;
+    return qint64(std::ceil(WireTime::modbusSameDriveSilenceUs(baud, bitsPerChar)));
 }
 
 } // namespace dd

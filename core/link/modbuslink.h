@@ -33,7 +33,9 @@ struct ModbusRequest
 // with the RTU codec (modbusrtu::) and the reply matcher of modbusreplymatcher.h.
 //  - requests go one at a time (SerialLink's queue, urgent ones first), each after the
 //    Modbus inter-frame silence t3.5 (3.5 characters; 1750 us above 19200 baud) counted
-//    from the last byte seen on the line, to the microsecond;
+//    from the last byte seen on the line, to the microsecond; a request to the drive whose
+//    reply was the last thing on the line waits 3.5 characters at every baud, until one
+//    such request goes unanswered (sameDriveGapUs());
 //  - a reply is the first CRC-valid frame that answers the request: its address and
 //    function, or an exception for its function whatever the address byte (the
 //    servo-modbus drive sends exception replies with address 0x01). Frames from other
@@ -93,6 +95,11 @@ public:
     // The Modbus inter-frame silence t3.5 at the current baud, in microseconds.
     qint64 interFrameGapUs() const;
     static qint64 interFrameGapUs(qint32 baud, int bitsPerChar);
+    // The silence before a request to the drive that has just answered: 3.5 characters
+    // (0.3 ms at 115200), until a drive leaves such a request unanswered; then
+    // interFrameGapUs() (SerialLink::setSamePeerGapUs).
+    qint64 sameDriveGapUs() const;
+    static qint64 sameDriveGapUs(qint32 baud, int bitsPerChar);
 
 signals:
     void opened();

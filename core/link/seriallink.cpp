@@ -72,6 +72,9 @@ bool SerialLink::open(const SerialSettings &settings, Error *error)
     m_rx.clear();
     m_quietUntilUs = 0;
     m_lastCommandEndUs = -1;
+    m_minTurnaroundUs = -1;
+    m_lastReplyPeer = -1;
+    m_samePeerGapDropped = false;
     m_owed.clear();
     connect(m_port, &QSerialPort::readyRead, this, &SerialLink::onReadyRead);
     connect(m_port, &QSerialPort::errorOccurred, this, &SerialLink::onPortError);
@@ -107,6 +110,8 @@ bool SerialLink::setBaudRate(qint32 baud)
     m_port->clear();
     m_rx.clear();
     m_owed.clear(); // whatever was owed was sent at the other baud rate
+    m_minTurnaroundUs = -1;
+    m_lastReplyPeer = -1;
     return true;
 }
 
@@ -191,8 +196,9 @@ void SerialLink::scheduleNext()
 qint64 SerialLink::earliestSendUs(const SerialRequest &next) const
 {
     qint64 earliest = m_quietUntilUs;
-    if (m_interFrameGapUs > 0 && m_lastRxUs > 0)
-        earliest = std::max(earliest, m_lastRxUs + m_interFrameGapUs); // silence since the last byte
+    const qint64 gap = sendsAfterShortGap(next) ? samePeerGapUs() : m_interFrameGapUs;
+    if (gap > 0 && m_lastRxUs > 0)
+        earliest = std::max(earliest, m_lastRxUs + gap); // silence since the last byte
     if (m_settings.minCommandSpacingMs > 0 && m_lastCommandEndUs >= 0) {
         // The drive counts from each command it receives, i.e. from its last byte.
         const qint64 nextEnd = m_lastCommandEndUs + qint64(m_settings.minCommandSpacingMs) * 1000
@@ -200,6 +206,17 @@ qint64 SerialLink::earliestSendUs(const SerialRequest &next) const
         earliest = std::max(earliest, nextEnd - wireTimeUs(next.bytes.size()));
     }
     return earliest;
+}
+
+qint64 SerialLink::samePeerGapUs() const
+{
+    return m_samePeerGapUs >= 0 && !m_samePeerGapDropped ? std::min(m_samePeerGapUs, m_interFrameGapUs)
+                                                         : m_interFrameGapUs;
+}
+
+bool SerialLink::sendsAfterShortGap(const SerialRequest &next) const
+{
+    return next.peer >= 0 && next.peer == m_lastReplyPeer && samePeerGapUs() < m_interFrameGapUs;
 }
 
 void SerialLink::onGapElapsed()
@@ -243,12 +260,17 @@ void SerialLink::transmit()
         return; // the port failed (adapter gone): onPortError() failed everything
     m_recoveryQuietUs = 0;
     m_bytesSinceSend = false;
+    m_shortGapForCurrent = sendsAfterShortGap(p.request);
+    m_lastReplyPeer = -1; // until this request's reply is the last thing on the line
     if (m_tap) {
         QString note = p.request.note;
         if (p.attempts > 1)
             note = QStringLiteral("%1 (retry %2)").arg(note).arg(p.attempts - 1).trimmed();
+        if (!m_gapNote.isEmpty())
+            note = QStringLiteral("%1 (%2)").arg(note, m_gapNote).trimmed();
         m_tap->recordSerial(TrafficRecord::Direction::Tx, m_settings.portName, p.request.bytes, note);
     }
+    m_gapNote.clear();
     m_port->write(p.request.bytes);
     // To the driver now, not on the next event-loop pass. A failing port reports it from
     // inside flush() (or clear(), above): onPortError() has then failed every request and
@@ -312,6 +334,7 @@ void SerialLink::onBytes(const QByteArray &data)
     const qint64 now = nowUs();
     m_lastRxUs = now;
     if (m_state != State::AwaitingReply) {
+        m_lastReplyPeer = -1; // these bytes are now the last thing on the line
         if (m_tap)
             m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, data,
                                 QStringLiteral("unsolicited or late bytes"));
@@ -410,6 +433,7 @@ void SerialLink::processBuffer()
             if (m_tap)
                 m_tap->recordSerial(TrafficRecord::Direction::Rx, m_settings.portName, m.frame);
             m_rx.remove(0, consumed);
+            m_lastReplyPeer = m_rx.isEmpty() ? peer : -1; // the last thing on the line, or not
             if (!m_rx.isEmpty()) {
                 reportStray(m_rx);
                 discardBuffer(QStringLiteral("bytes after the reply"));
@@ -443,6 +467,15 @@ void SerialLink::onResponseTimeout()
         return;
     }
     ++m_timeouts;
+    if (m_shortGapForCurrent && !m_samePeerGapDropped) {
+        // A drive that takes the shorter silence for part of one frame (it hears its own
+        // reply, or times frames with the spec's fixed 1.75 ms) ignores such a request.
+        m_samePeerGapDropped = true;
+        m_gapNote = QStringLiteral("no answer after %1 us of silence: the full %2 us from now on")
+                        .arg(m_samePeerGapUs)
+                        .arg(m_interFrameGapUs);
+        qCInfo(lcSerialLink) << m_settings.portName << m_gapNote;
+    }
     const QByteArray unmatched = m_rx;
     if (!m_rx.isEmpty()) {
         reportStray(m_rx);
@@ -528,8 +561,16 @@ void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)
     // at the reply's first byte (as we saw it, never earlier than it was) keeps it safe from
     // send-side jitter (a USB adapter holding our bytes back) that the estimate from the
     // write cannot see.
-    if (!error.isError() && !frame.isEmpty())
-        m_lastCommandEndUs = std::max(m_lastCommandEndUs, now - wireTimeUs(frame.size()));
+    if (!error.isError() && !frame.isEmpty()) {
+        // Where the reply began, less the quickest turnaround seen on this line: a reply later
+        // than that (a drive slower this time, or our bytes held back) moves the anchor later;
+        // a constant delay of the adapter moves every command alike, so the spacing holds.
+        const qint64 replyStartUs = now - wireTimeUs(frame.size());
+        const qint64 turnaroundUs = std::max<qint64>(0, replyStartUs - m_lastCommandEndUs);
+        if (m_minTurnaroundUs < 0 || turnaroundUs < m_minTurnaroundUs)
+            m_minTurnaroundUs = turnaroundUs;
+        m_lastCommandEndUs = std::max(m_lastCommandEndUs, replyStartUs - m_minTurnaroundUs);
+    }
     m_quietUntilUs = std::max(m_quietUntilUs,
                               now + std::max(qint64(m_settings.minGapMs) * 1000, p.request.quietAfterUs));
     m_state = State::Idle;

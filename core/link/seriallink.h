@@ -53,9 +53,10 @@ struct SerialRequest
 // Requests queue and go out one at a time. Before each request the receive buffer is
 // cleared (anything there is stale); after each transaction the link keeps the line quiet
 // for settings.minGapMs, and commands reach the drive at least settings.minCommandSpacingMs
-// apart (last byte to last byte, plus CommandSpacingMarginUs; the count starts at the
-// reply's first byte where there is a reply, which already lies the drive's latency after
-// the command, so an adapter holding our bytes back cannot squeeze two commands). A reply is
+// apart (last byte to last byte, plus CommandSpacingMarginUs; where there is a reply the
+// count starts no sooner than its first byte less the quickest turnaround seen on the line,
+// so an adapter holding our bytes back cannot squeeze two commands, and a slow drive's
+// latency is not added to the spacing). A reply is
 // accepted only through the request's matcher. The stale-reply rule (docs/reliability.md):
 // a frame that completes sooner than the wire allows (half the wire time of request plus
 // reply) is taken for a stale answer, and dropped, only when one could be on its way: an
@@ -108,6 +109,15 @@ public:
     // (Modbus t3.5). 0: none (only settings.minGapMs).
     void setInterFrameGapUs(qint64 us) { m_interFrameGapUs = std::max<qint64>(0, us); }
     qint64 interFrameGapUs() const { return m_interFrameGapUs; }
+    // The silence before a request to the peer whose reply was the last thing on the line
+    // (Modbus: 3.5 characters where setInterFrameGapUs keeps the spec's fixed 1.75 ms);
+    // -1: none, every request waits interFrameGapUs(). When a request sent after this
+    // shorter silence goes unanswered, the link keeps the full gap until it is reopened
+    // (docs/reliability.md, "Silence between frames").
+    void setSamePeerGapUs(qint64 us) { m_samePeerGapUs = us; }
+    // The silence a request to the peer that has just answered waits now.
+    qint64 samePeerGapUs() const;
+    bool samePeerGapDropped() const { return m_samePeerGapDropped; }
     // The peers whose complete, check-valid frames are among `bytes` (see above).
     using StrayPeers = std::function<QList<int>(const QByteArray &bytes)>;
     void setStrayPeers(StrayPeers f) { m_strayPeers = std::move(f); }
@@ -166,6 +176,7 @@ private:
     qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
     int effectiveTimeoutMs(const SerialRequest &r) const;
     qint64 earliestSendUs(const SerialRequest &next) const;
+    bool sendsAfterShortGap(const SerialRequest &next) const;
     void failAll(const Error &why);
 
     SerialSettings m_settings;
@@ -182,6 +193,12 @@ private:
     qint64 m_deadlineUs = 0;       // the whole timeout of the request in flight
     bool m_bytesSinceSend = false; // a byte came since the request went out
     qint64 m_interFrameGapUs = 0;
+    qint64 m_samePeerGapUs = -1;
+    int m_lastReplyPeer = -1;          // whose reply was the last thing on the line; -1: none
+    bool m_shortGapForCurrent = false; // this attempt went out after the same-peer silence
+    bool m_samePeerGapDropped = false; // a request after it went unanswered: full gap only
+    QString m_gapNote;                 // for the trace of the next transmission
+    qint64 m_minTurnaroundUs = -1;     // quickest reply start after our write's end seen
     StrayPeers m_strayPeers;
     int m_deferrals = 0;            // a send or a timeout waited for the port to read what came
     qint64 m_quietUntilUs = 0;      // no transmission before this (gap / recovery)

@@ -33,6 +33,11 @@ double WireTime::modbusSilenceUs(int baud, int bitsPerChar)
     return baud > ModbusFixedTimingAboveBaud ? std::max(t, ModbusFixedSilenceUs) : t;
 }
 
+double WireTime::modbusSameDriveSilenceUs(int baud, int bitsPerChar)
+{
+    return 3.5 * serialCharUs(baud, bitsPerChar);
+}
+
 double WireTime::modbusInterCharUs(int baud, int bitsPerChar)
 {
     const double t = 1.5 * serialCharUs(baud, bitsPerChar);

@@ -52,6 +52,9 @@ public:
     // Modbus RTU end-of-frame silence t3.5 = 3.5 character times; above 19200 baud the
     // Modbus spec fixes it at 1750 µs, so there the result is max(3.5 chars, 1750 µs).
     static double modbusSilenceUs(int baud, int bitsPerChar = DefaultBitsPerChar);
+    // 3.5 character times at every baud: what DriveDesk keeps before a request to the drive
+    // that has just answered (ModbusLink::sameDriveGapUs, docs/reliability.md).
+    static double modbusSameDriveSilenceUs(int baud, int bitsPerChar = DefaultBitsPerChar);
     // Modbus RTU inter-character limit t1.5 = 1.5 character times; max(…, 750 µs) above 19200.
     static double modbusInterCharUs(int baud, int bitsPerChar = DefaultBitsPerChar);
 

@@ -17,8 +17,9 @@
 // Floors (see docs/performance.md, "Link speed"):
 //  - Serial (Modbus RTU): every request and reply byte at 10 bits per character, plus the
 //    drive's configured latency (end of request -> start of reply) per transaction, plus the
-//    Modbus t3.5 silence (3.5 characters, 1750 us above 19200 baud) the master must leave
-//    between the end of a reply and its next request. The request -> reply gap is the
+//    silence between the end of a reply and the next request: to the same drive 3.5
+//    characters (what ModbusLink keeps there, docs/reliability.md), to another drive the
+//    Modbus t3.5 (1750 us above 19200 baud). The request -> reply gap is the
 //    drive's latency, not t3.5: that is what the simulated drive does, and the client
 //    cannot shorten it.
 //  - CAN: every request and reply frame at its worst-case stuffed length (as SimCanBus
@@ -31,7 +32,7 @@
 //  - Monitor: the CLI's ChannelSampler at 1 ms (its --rate 1000) for 2 s: one sample = one
 //    read of the channels; behind the rate the sampler keeps two reads queued, so the
 //    next one waits on the link when the previous one is in; the floor is one such read
-//    (serial: + t3.5 before the next; CAN: half of two samples' reads pipelined, i.e. their
+//    (serial: + 3.5 characters before the next; CAN: half of two samples' reads pipelined, i.e. their
 //    bus time, since the next sample's requests overlap this one's latency). The median
 //    sample interval ("typical sample") is taken over two samples, as CAN replies of two
 //    pipelined reads may come in pairs. The rate is judged; the
@@ -353,7 +354,7 @@ double modbusBlockReadUs(int registers, int baud, qint64 latencyUs)
     int requests = 0;
     for (int left = registers; left > 0; left -= 20, ++requests)
         us += modbusReadUs(std::min(left, 20), baud, latencyUs);
-    return us + (requests - 1) * WireTime::modbusSilenceUs(baud);
+    return us + (requests - 1) * WireTime::modbusSameDriveSilenceUs(baud); // to the same drive
 }
 
 // n pipelined servo-can reads: 2n frames on the bus, and the last reply cannot leave
@@ -714,7 +715,8 @@ void benchModbusMonitor(int baud)
     o.family = Family::ServoModbus;
     o.baud = baud;
     // speed 0x00, torque 0x07, current 0x08: one request 0x00..0x08 is the shortest way.
-    const double floorUs = modbusReadUs(9, baud, SimSerialDevice::DefaultLatencyUs) + WireTime::modbusSilenceUs(baud);
+    const double floorUs = modbusReadUs(9, baud, SimSerialDevice::DefaultLatencyUs)
+        + WireTime::modbusSameDriveSilenceUs(baud);
     benchMonitor(QStringLiteral("monitor servo-modbus @ %1").arg(baud), o,
                  {QStringLiteral("speed"), QStringLiteral("torque"), QStringLiteral("current")}, floorUs,
                  QStringLiteral("speed, torque, current (no bus voltage register); 1 request of 9 registers"));

@@ -382,12 +382,15 @@ private slots:
         ModbusLink link;
         QVERIFY(link.open(settingsFor(server, 115200)));
         QCOMPARE(link.interFrameGapUs(), 1750);
+        QCOMPARE(link.sameDriveGapUs(), 304); // 3.5 characters of 10 bits, to the drive that answered
         QVERIFY(link.setBaudRate(9600));
         QCOMPARE(server.pty.hostBaud(), 9600);
         QCOMPARE(link.interFrameGapUs(), 3646); // 3.5 characters of 10 bits
+        QCOMPARE(link.sameDriveGapUs(), 3646);
         QVERIFY(link.setBaudRate(115200));
         QCOMPARE(server.pty.hostBaud(), 115200);
         QCOMPARE(link.interFrameGapUs(), 1750);
+        QCOMPARE(link.sameDriveGapUs(), 304);
         LinkReply *r = link.readHoldingRegisters(1, 0x64, 1);
         QVERIFY(waitFinished(r));
         QVERIFY(!r->error());

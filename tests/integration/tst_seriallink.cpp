@@ -162,6 +162,179 @@ private slots:
         qInfo("commands %lld us apart on average", static_cast<long long>(mean));
         QVERIFY2(mean < 60000, qPrintable(QString::number(mean)));
     }
+
+    // The count starts where the reply began less the quickest turnaround seen, not at the
+    // reply's first byte: a drive that answers 15 ms after each command does not add its
+    // 15 ms to the spacing. Before, every command waited 30 + 1 + 15 ms (>= 46 ms apart);
+    // now ~31 ms, which the drive still sees as >= 30 ms.
+    void commandSpacingDoesNotAddTheDrivesLatency()
+    {
+        PtyEndpoint pty;
+        QVERIFY(!pty.open());
+        SerialLink link;
+        SerialSettings s;
+        s.portName = pty.clientPath();
+        s.baud = 115200;
+        s.minGapMs = 1;
+        s.minCommandSpacingMs = 30;
+        s.responseTimeoutMs = 200;
+        QVERIFY(link.open(s));
+        QElapsedTimer clock;
+        clock.start();
+        QList<qint64> commandAt;
+        QByteArray seen;
+        connect(&pty, &PtyEndpoint::received, this, [&](const QByteArray &b) {
+            seen += b;
+            while (seen.size() >= 2) {
+                const char first = seen.at(0);
+                seen.remove(0, 2);
+                commandAt << clock.nsecsElapsed() / 1000;
+                QTimer::singleShot(15, &pty, [&pty, first] { pty.write(reply(first, 1)); });
+            }
+        });
+        QList<LinkReply *> replies;
+        for (int i = 0; i < 8; ++i) {
+            SerialRequest q;
+            q.bytes = QByteArray("D") + char('0' + i);
+            q.matcher = replyOf('D');
+            replies << link.send(q);
+        }
+        for (LinkReply *r : replies) {
+            QVERIFY(waitFinished(r));
+            QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
+        }
+        QCOMPARE(commandAt.size(), 8);
+        for (int i = 1; i < commandAt.size(); ++i)
+            QVERIFY2(commandAt[i] - commandAt[i - 1] >= 30000,
+                     qPrintable(QString::number(commandAt[i] - commandAt[i - 1])));
+        const qint64 mean = (commandAt.last() - commandAt.first()) / (commandAt.size() - 1);
+        qInfo("commands %lld us apart on average", static_cast<long long>(mean));
+        QVERIFY2(mean < 42000, qPrintable(QString::number(mean)));
+    }
+
+    // Modbus keeps 3.5 characters before a request to the drive that has just answered and
+    // the full t3.5 (here 1750 us) before any other. A drive that takes the short silence
+    // for part of one frame (it hears its own reply) ignores such a request: the request is
+    // asked again after the full silence, and from then on every request waits the full
+    // t3.5 (docs/reliability.md, "Silence between frames").
+    void aDriveThatNeedsTheFullSilenceGetsItAfterOneMiss()
+    {
+        PtyEndpoint pty;
+        QVERIFY(!pty.open());
+        SerialLink link;
+        TrafficTap tap;
+        link.setTap(&tap);
+        QStringList notes;
+        connect(&tap, &TrafficTap::frameRecorded, this, [&](const TrafficRecord &rec) { notes << rec.note; });
+        SerialSettings s;
+        s.portName = pty.clientPath();
+        s.baud = 115200;
+        s.retries = 1;
+        s.responseTimeoutMs = 20;
+        QVERIFY(link.open(s));
+        link.setInterFrameGapUs(1750);
+        link.setSamePeerGapUs(304); // 3.5 characters at 115200
+        QCOMPARE(link.samePeerGapUs(), 304);
+        QElapsedTimer clock;
+        clock.start();
+        qint64 lastReplyAt = -1;
+        QList<qint64> gaps; // from the drive's reply to the next request, as the drive saw it
+        int ignored = 0;
+        int ignoredAfterDrop = 0;
+        QByteArray seen;
+        connect(&pty, &PtyEndpoint::received, this, [&](const QByteArray &b) {
+            seen += b;
+            while (seen.size() >= 2) {
+                const char first = seen.at(0);
+                seen.remove(0, 2);
+                const qint64 now = clock.nsecsElapsed() / 1000;
+                const qint64 gap = lastReplyAt < 0 ? 1000000 : now - lastReplyAt;
+                gaps << gap;
+                if (gap < 1750) { // glued to its own reply: not a frame it can read
+                    ++ignored;
+                    if (link.samePeerGapDropped())
+                        ++ignoredAfterDrop;
+                    continue;
+                }
+                // Like a drive, 1 ms after the command (an instant answer to the retry
+                // would be dropped as the late answer of the ignored request: the
+                // stale-reply rule, which costs a fast peer one attempt).
+                QTimer::singleShot(1, &pty, [&, first] {
+                    pty.write(reply(first, 1));
+                    lastReplyAt = clock.nsecsElapsed() / 1000;
+                });
+            }
+        });
+        // Until the drive has missed one (a loaded machine can stretch a short silence past
+        // 1750 us now and then, so allow a few tries), then ten more.
+        int sent = 0;
+        for (int more = 10; sent < 40 && more > 0; ++sent) {
+            SerialRequest q;
+            q.bytes = QByteArray("M") + char('0' + sent % 10);
+            q.matcher = replyOf('M');
+            q.peer = 7;
+            LinkReply *r = link.send(q);
+            QVERIFY(waitFinished(r));
+            QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
+            if (link.samePeerGapDropped())
+                --more;
+        }
+        QVERIFY2(ignored >= 1, "no request was sent after the short silence");
+        QVERIFY(link.samePeerGapDropped());
+        QCOMPARE(link.samePeerGapUs(), 1750);
+        QCOMPARE(ignoredAfterDrop, 0);
+        QCOMPARE(link.timeoutCount(), quint64(1));
+        // The trace says why the retry waited longer.
+        QVERIFY2(notes.filter(QStringLiteral("the full 1750 us from now on")).size() == 1,
+                 qPrintable(notes.join(QLatin1Char('\n'))));
+    }
+
+    // A request to another drive than the one that has just answered waits the full t3.5.
+    void anotherDriveAlwaysGetsTheFullSilence()
+    {
+        PtyEndpoint pty;
+        QVERIFY(!pty.open());
+        SerialLink link;
+        SerialSettings s;
+        s.portName = pty.clientPath();
+        s.baud = 115200;
+        s.retries = 0;
+        QVERIFY(link.open(s));
+        link.setInterFrameGapUs(1750);
+        link.setSamePeerGapUs(304);
+        QElapsedTimer clock;
+        clock.start();
+        qint64 lastReplyAt = -1;
+        QList<qint64> gaps;
+        QByteArray seen;
+        connect(&pty, &PtyEndpoint::received, this, [&](const QByteArray &b) {
+            seen += b;
+            while (seen.size() >= 2) {
+                const char first = seen.at(0);
+                seen.remove(0, 2);
+                if (lastReplyAt >= 0)
+                    gaps << clock.nsecsElapsed() / 1000 - lastReplyAt;
+                pty.write(reply(first, 1));
+                lastReplyAt = clock.nsecsElapsed() / 1000;
+            }
+        });
+        QList<LinkReply *> replies;
+        for (int i = 0; i < 10; ++i) {
+            SerialRequest q;
+            q.bytes = QByteArray("A") + char('0' + i);
+            q.matcher = replyOf('A');
+            q.peer = 1 + i % 2; // 1, 2, 1, 2, ...
+            replies << link.send(q);
+        }
+        for (LinkReply *r : replies) {
+            QVERIFY(waitFinished(r));
+            QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
+        }
+        QCOMPARE(gaps.size(), 9);
+        for (qint64 g : gaps)
+            QVERIFY2(g >= 1750, qPrintable(QString::number(g)));
+        QVERIFY(!link.samePeerGapDropped());
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSerialLink)

@@ -38,6 +38,9 @@ private slots:
         QCOMPARE(WireTime::modbusSilenceUs(38400), 1750.0);
         QCOMPARE(WireTime::modbusSilenceUs(115200), 1750.0);
         QCOMPARE(WireTime::modbusSilenceUs(115200, 11), 1750.0);
+        // before a request to the drive that has just answered: 3.5 characters at every baud
+        QVERIFY(qFuzzyCompare(WireTime::modbusSameDriveSilenceUs(115200), 3.5 * 1e6 * 10 / 115200)); // 303.8
+        QVERIFY(qFuzzyCompare(WireTime::modbusSameDriveSilenceUs(9600), WireTime::modbusSilenceUs(9600)));
         QVERIFY(qFuzzyCompare(WireTime::modbusInterCharUs(9600), 1.5 * 1e6 * 10 / 9600));
         QCOMPARE(WireTime::modbusInterCharUs(57600), 750.0);
     }

@@ -339,9 +339,10 @@ double ServoModbusDrive::channelReadUs(const QStringList &channelIds) const
     const int bits = m_link->settings().bitsPerChar;
     double us = 0.0;
     // Per 0x03 request: 8 request bytes, 5 + 2n reply bytes, the drive's latency and the
-    // t3.5 silence before the next request.
+    // silence before the next request to the same drive.
+    const double silenceUs = double(m_link->sameDriveGapUs());
     for (const servomodbus::RegisterRange &r : servomodbus::planRegisterReads(regs))
-        us += WireTime::serialBytesUs(8 + 5 + 2 * r.count, baud, bits) + 1000.0 + WireTime::modbusSilenceUs(baud, bits);
+        us += WireTime::serialBytesUs(8 + 5 + 2 * r.count, baud, bits) + 1000.0 + silenceUs;
     return us;
 }
 

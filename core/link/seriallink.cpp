@@ -557,14 +557,12 @@ void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)
         else
             p.reply->finishEmpty();
     }
-    // The reply began after the drive had the whole command: anchoring the command spacing
-    // at the reply's first byte (as we saw it, never earlier than it was) keeps it safe from
-    // send-side jitter (a USB adapter holding our bytes back) that the estimate from the
-    // write cannot see.
+    // The command spacing's anchor: where the reply began (as we saw it, never earlier than
+    // it was) less the quickest turnaround seen on this line. A reply later than that (our
+    // bytes held back by a USB adapter, which the estimate from the write cannot see, or a
+    // drive slower this time) moves the anchor later; a constant delay of the adapter moves
+    // every command alike, so the spacing holds; the drive's latency is not added to it.
     if (!error.isError() && !frame.isEmpty()) {
-        // Where the reply began, less the quickest turnaround seen on this line: a reply later
-        // than that (a drive slower this time, or our bytes held back) moves the anchor later;
-        // a constant delay of the adapter moves every command alike, so the spacing holds.
         const qint64 replyStartUs = now - wireTimeUs(frame.size());
         const qint64 turnaroundUs = std::max<qint64>(0, replyStartUs - m_lastCommandEndUs);
         if (m_minTurnaroundUs < 0 || turnaroundUs < m_minTurnaroundUs)

@@ -72,7 +72,6 @@ bool SerialLink::open(const SerialSettings &settings, Error *error)
     m_rx.clear();
     m_quietUntilUs = 0;
     m_lastCommandEndUs = -1;
-    m_minTurnaroundUs = -1;
     m_lastReplyPeer = -1;
     m_samePeerGapDropped = false;
     m_owed.clear();
@@ -110,7 +109,6 @@ bool SerialLink::setBaudRate(qint32 baud)
     m_port->clear();
     m_rx.clear();
     m_owed.clear(); // whatever was owed was sent at the other baud rate
-    m_minTurnaroundUs = -1;
     m_lastReplyPeer = -1;
     return true;
 }
@@ -557,18 +555,15 @@ void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)
         else
             p.reply->finishEmpty();
     }
-    // The command spacing's anchor: where the reply began (as we saw it, never earlier than
-    // it was) less the quickest turnaround seen on this line. A reply later than that (our
-    // bytes held back by a USB adapter, which the estimate from the write cannot see, or a
-    // drive slower this time) moves the anchor later; a constant delay of the adapter moves
-    // every command alike, so the spacing holds; the drive's latency is not added to it.
-    if (!error.isError() && !frame.isEmpty()) {
-        const qint64 replyStartUs = now - wireTimeUs(frame.size());
-        const qint64 turnaroundUs = std::max<qint64>(0, replyStartUs - m_lastCommandEndUs);
-        if (m_minTurnaroundUs < 0 || turnaroundUs < m_minTurnaroundUs)
-            m_minTurnaroundUs = turnaroundUs;
-        m_lastCommandEndUs = std::max(m_lastCommandEndUs, replyStartUs - m_minTurnaroundUs);
-    }
+    // The reply began after the drive had the whole command: anchoring the command spacing
+    // at the reply's first byte (as we saw it, never earlier than it was) keeps it safe from
+    // send-side jitter (a USB adapter holding our bytes back) that the estimate from the
+    // write cannot see. Nothing may be taken off it: subtracting the quickest turnaround seen
+    // (tried in session 9) put commands too close whenever the drive answered faster than
+    // it had so far and the adapter held a command back
+    // (tst_seriallink heldBackCommandAfterSlowAnswersStillGetsItsSpacing).
+    if (!error.isError() && !frame.isEmpty())
+        m_lastCommandEndUs = std::max(m_lastCommandEndUs, now - wireTimeUs(frame.size()));
     m_quietUntilUs = std::max(m_quietUntilUs,
                               now + std::max(qint64(m_settings.minGapMs) * 1000, p.request.quietAfterUs));
     m_state = State::Idle;

@@ -53,10 +53,9 @@ struct SerialRequest
 // Requests queue and go out one at a time. Before each request the receive buffer is
 // cleared (anything there is stale); after each transaction the link keeps the line quiet
 // for settings.minGapMs, and commands reach the drive at least settings.minCommandSpacingMs
-// apart (last byte to last byte, plus CommandSpacingMarginUs; where there is a reply the
-// count starts no sooner than its first byte less the quickest turnaround seen on the line,
-// so an adapter holding our bytes back cannot squeeze two commands, and a slow drive's
-// latency is not added to the spacing). A reply is
+// apart (last byte to last byte, plus CommandSpacingMarginUs; the count starts at the
+// reply's first byte where there is a reply, which already lies the drive's latency after
+// the command, so an adapter holding our bytes back cannot squeeze two commands). A reply is
 // accepted only through the request's matcher. The stale-reply rule (docs/reliability.md):
 // a frame that completes sooner than the wire allows (half the wire time of request plus
 // reply) is taken for a stale answer, and dropped, only when one could be on its way: an
@@ -198,7 +197,6 @@ private:
     bool m_shortGapForCurrent = false; // this attempt went out after the same-peer silence
     bool m_samePeerGapDropped = false; // a request after it went unanswered: full gap only
     QString m_gapNote;                 // for the trace of the next transmission
-    qint64 m_minTurnaroundUs = -1;     // quickest reply start after our write's end seen
     StrayPeers m_strayPeers;
     int m_deferrals = 0;            // a send or a timeout waited for the port to read what came
     qint64 m_quietUntilUs = 0;      // no transmission before this (gap / recovery)

@@ -73,21 +73,51 @@ build_preset() {
   return 0
 }
 
+# LeakSanitizer's own stop-the-world tracer now and then crashes as a process exits ("Tracer
+# caught signal 11 ... LeakSanitizer has encountered a fatal error"): a fault of the sanitizer
+# runtime, not a leak (a leak reads "ERROR: LeakSanitizer: detected memory leaks"), known
+# upstream (https://github.com/google/sanitizers/issues/1353; seen once here, in a CLI child
+# process of tst_clireport, in one full asan run). Prints the failed tests whose output holds
+# that crash; run_ctest runs them once more and the summary names them.
+tracer_crashes() {
+  awk '
+    / Test +#[0-9]+: / {
+      name = ""
+      if ($0 ~ /\*\*\*(Failed|Exception)/)
+        for (i = 1; i < NF; i++) if ($i ~ /^#[0-9]+:$/) name = $(i + 1)
+      next
+    }
+    /LeakSanitizer has encountered a fatal error/ && name != "" { print name; name = "" }
+  ' "$1" | sort -u
+}
+
 # ctest with a preset; adds its counts
 run_ctest() {
-  local preset="$1" log rc line total bad skipped
+  local preset="$1" log rc line total bad skipped crashed again
   log="$(mktemp)"
   banner "$preset: ctest"
   ctest --preset "$preset" --no-tests=error 2>&1 | tee "$log"
   rc=${PIPESTATUS[0]}
   line="$(grep -E '[0-9]+ tests? failed out of [0-9]+' "$log" | tail -n 1)"
   skipped="$(grep -cE '^[[:space:]]*[0-9]+ - .* \(Skipped\)$' "$log")"
+  mapfile -t crashed < <(tracer_crashes "$log")
   rm -f "$log"
   if [ -z "$line" ]; then
     failed=$((failed + 1)); note "$preset: ctest reported no results (exit $rc)"; return
   fi
   bad="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<< "$line")"
   total="$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<< "$line")"
+  if [ "${#crashed[@]}" -gt 0 ]; then
+    banner "$preset: once more, after LeakSanitizer's tracer crashed in: ${crashed[*]}"
+    again="^($(IFS='|'; echo "${crashed[*]}"))\$"
+    if ctest --preset "$preset" -R "$again"; then
+      bad=$((bad - ${#crashed[@]}))
+      [ "$bad" -eq 0 ] && rc=0
+      note "$preset: LeakSanitizer's tracer crashed at exit in ${crashed[*]} (a runtime fault, not a leak); passed when run again"
+    else
+      note "$preset: ${crashed[*]} failed again when run once more"
+    fi
+  fi
   passed=$((passed + total - bad - skipped))
   failed=$((failed + bad + skipped))
   if [ "$skipped" -gt 0 ]; then

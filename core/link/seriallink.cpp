@@ -71,6 +71,7 @@ bool SerialLink::open(const SerialSettings &settings, Error *error)
     tightenTimerSlack(); // the minimum gap is on every transaction's path
     m_rx.clear();
     m_quietUntilUs = 0;
+    m_waitingSinceUs = -1;
     m_lastCommandEndUs = -1;
     m_lastReplyPeer = -1;
     m_samePeerGapDropped = false;
@@ -178,6 +179,8 @@ void SerialLink::scheduleNext()
         }
     }
     const qint64 now = nowUs();
+    if (m_waitingSinceUs < 0)
+        m_waitingSinceUs = now;
     const qint64 earliest = earliestSendUs(m_current ? m_current->request : m_queue.head().request);
     if (now < earliest) {
         m_state = State::Gap;
@@ -191,12 +194,21 @@ void SerialLink::scheduleNext()
     transmit();
 }
 
-qint64 SerialLink::earliestSendUs(const SerialRequest &next) const
+qint64 SerialLink::earliestSendUs(const SerialRequest &next)
 {
     qint64 earliest = m_quietUntilUs;
     const qint64 gap = sendsAfterShortGap(next) ? samePeerGapUs() : m_interFrameGapUs;
     if (gap > 0 && m_lastRxUs > 0)
         earliest = std::max(earliest, m_lastRxUs + gap); // silence since the last byte
+    // Bytes that keep coming push the silence on; a line that is never quiet (another master,
+    // a babbling drive) must not hold the request for ever: after lineBusyLimitUs() of
+    // waiting it goes out anyway, and the trace says why.
+    const qint64 limit = m_waitingSinceUs + lineBusyLimitUs(next);
+    if (m_waitingSinceUs >= 0 && earliest > limit) {
+        earliest = limit;
+        m_gapNote = QStringLiteral("the line was not quiet for %1 ms: sent anyway")
+                        .arg((limit - m_waitingSinceUs) / 1000);
+    }
     if (m_settings.minCommandSpacingMs > 0 && m_lastCommandEndUs >= 0) {
         // The drive counts from each command it receives, i.e. from its last byte.
         const qint64 nextEnd = m_lastCommandEndUs + qint64(m_settings.minCommandSpacingMs) * 1000
@@ -204,6 +216,14 @@ qint64 SerialLink::earliestSendUs(const SerialRequest &next) const
         earliest = std::max(earliest, nextEnd - wireTimeUs(next.bytes.size()));
     }
     return earliest;
+}
+
+qint64 SerialLink::lineBusyLimitUs(const SerialRequest &next) const
+{
+    // Five times the quiet kept after a timeout of this request (twice its timeout, at
+    // least 20 ms): 500 ms at the default 50 ms timeout.
+    const qint64 quiet = std::max(2 * qint64(effectiveTimeoutMs(next)), qint64(20)) * 1000;
+    return LineBusyFactor * std::max(quiet, m_recoveryQuietUs);
 }
 
 qint64 SerialLink::samePeerGapUs() const
@@ -237,12 +257,17 @@ void SerialLink::transmit()
         return;
     }
     m_deferrals = 0;
+    // Whatever waits unread answers no request of ours (a duplicate, a late answer): read
+    // after the request went out it could pass for its answer. It is read now, shown in the
+    // trace and reported (strayBytes), never dropped unseen: a late answer of another peer
+    // is how a scan finds a slow drive. (Flushing the driver's input here lost the frames
+    // that landed after the check above: tst_seriallink framesOfOtherPeersAreNeverDroppedUnseen.)
+    readWaitingBytes();
+    if (!m_port || !m_current)
+        return; // the port failed while reading: onPortError() failed every request
     Pending &p = *m_current;
     ++p.attempts;
-    // Whatever waits unread answers no request of ours (a duplicate, a late answer): read
-    // after the request went out it could pass for its answer. Qt's buffer is shown in the
-    // trace; what the OS still holds is dropped.
-    m_rx += m_port->readAll();
+    m_rx += m_port->readAll(); // the port's buffer, with what readWaitingBytes() put there
     m_flushedForCurrent = false;
     if (!m_rx.isEmpty()) {
         // Stale bytes just before this request: when they end in the start of a frame, its
@@ -253,10 +278,8 @@ void SerialLink::transmit()
         reportStray(m_rx);
         discardBuffer(QStringLiteral("stale bytes before request"));
     }
-    m_port->clear(QSerialPort::Input);
-    if (!m_port || !m_current)
-        return; // the port failed (adapter gone): onPortError() failed everything
     m_recoveryQuietUs = 0;
+    m_waitingSinceUs = -1;
     m_bytesSinceSend = false;
     m_shortGapForCurrent = sendsAfterShortGap(p.request);
     m_lastReplyPeer = -1; // until this request's reply is the last thing on the line
@@ -271,7 +294,7 @@ void SerialLink::transmit()
     m_gapNote.clear();
     m_port->write(p.request.bytes);
     // To the driver now, not on the next event-loop pass. A failing port reports it from
-    // inside flush() (or clear(), above): onPortError() has then failed every request and
+    // inside flush() (or the read above): onPortError() has then failed every request and
     // dropped the port.
     m_port->flush();
     if (!m_port || !m_current)
@@ -308,9 +331,21 @@ int SerialLink::effectiveTimeoutMs(const SerialRequest &r) const
 
 void SerialLink::onReadyRead()
 {
-    if (!m_port)
+    if (!m_port || m_readingAside)
         return;
     onBytes(m_port->readAll());
+}
+
+void SerialLink::readWaitingBytes()
+{
+    // Through the port, at once, into its buffer (onReadyRead() leaves them there for the
+    // caller). Only when bytes wait: with none, waitForReadyRead(0) would report a timeout.
+    // A port that fails here reports it as anywhere else (onPortError()).
+    if (!bytesWaitInDriver())
+        return;
+    m_readingAside = true;
+    m_port->waitForReadyRead(0);
+    m_readingAside = false;
 }
 
 bool SerialLink::bytesWaitInDriver() const

@@ -50,8 +50,8 @@ struct SerialRequest
 
 // Half-duplex request/reply transport on QSerialPort (RS485 / RS232).
 //
-// Requests queue and go out one at a time. Before each request the receive buffer is
-// cleared (anything there is stale); after each transaction the link keeps the line quiet
+// Requests queue and go out one at a time. Before each request whatever waits unread is
+// read and reported as stray bytes (it is stale, and may be another drive's late answer); after each transaction the link keeps the line quiet
 // for settings.minGapMs, and commands reach the drive at least settings.minCommandSpacingMs
 // apart (last byte to last byte, plus CommandSpacingMarginUs; the count starts at the
 // reply's first byte where there is a reply, which already lies the drive's latency after
@@ -60,7 +60,7 @@ struct SerialRequest
 // a frame that completes sooner than the wire allows (half the wire time of request plus
 // reply) is taken for a stale answer, and dropped, only when one could be on its way: an
 // earlier request to the same peer went unanswered (and nothing has paid that debt since),
-// or the stale bytes flushed just before this request ended in the start of a frame. Dropping it pays the debt, so a
+// or the stale bytes set aside just before this request ended in the start of a frame. Dropping it pays the debt, so a
 // fast peer (a pty, a socat pair, a USB adapter with a deep FIFO) loses at most one
 // attempt; with nothing owed a fast reply is the answer. After a timeout the link also
 // waits until the line has been quiet for the reply's wire time (plus margin) before it
@@ -85,6 +85,9 @@ public:
     // Added to settings.minCommandSpacingMs: the drive's clock and our timer's wake-up (the
     // timer is to the microsecond and never early).
     static constexpr qint64 CommandSpacingMarginUs = 1000;
+    // How long bytes that keep coming may hold a request back (the silence before it, the
+    // quiet after a timeout), in multiples of the quiet after its timeout: see lineBusyLimitUs().
+    static constexpr qint64 LineBusyFactor = 5;
 
     explicit SerialLink(QObject *parent = nullptr);
     ~SerialLink() override;
@@ -140,7 +143,7 @@ signals:
     void opened();
     void closed(const dd::Error &reason); // by close() (no error) or because the port failed
     void idle();                          // queue drained
-    // Bytes no request took: unsolicited or late bytes, bytes flushed before a request,
+    // Bytes no request took: unsolicited or late bytes, bytes set aside before a request,
     // frames the awaited reply's matcher passed over, bytes that formed no reply before a
     // timeout. Typically a late reply to an earlier request. Emitted from the event loop.
     void strayBytes(const QByteArray &bytes);
@@ -160,6 +163,7 @@ private:
     void onReadyRead();
     void onBytes(const QByteArray &data);
     bool bytesWaitInDriver() const; // received, not yet read by the port (Unix)
+    void readWaitingBytes();        // into the port's buffer now, for transmit() to set aside
     void processBuffer();
     void onResponseTimeout();
     void onGapElapsed();
@@ -174,7 +178,8 @@ private:
     void armResponseTimer();
     qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
     int effectiveTimeoutMs(const SerialRequest &r) const;
-    qint64 earliestSendUs(const SerialRequest &next) const;
+    qint64 earliestSendUs(const SerialRequest &next); // notes in m_gapNote when the line kept it busy
+    qint64 lineBusyLimitUs(const SerialRequest &next) const;
     bool sendsAfterShortGap(const SerialRequest &next) const;
     void failAll(const Error &why);
 
@@ -203,8 +208,10 @@ private:
     qint64 m_lastCommandEndUs = -1; // when the last command's last byte left (estimated)
     qint64 m_lastRxUs = 0;
     qint64 m_recoveryQuietUs = 0;
+    qint64 m_waitingSinceUs = -1;     // since when the request at the head has been waiting to go out
     bool m_lateForCurrent = false;    // bytes came between attempts of the current request
-    bool m_flushedForCurrent = false; // stale bytes were flushed just before this attempt
+    bool m_flushedForCurrent = false; // stale bytes were set aside just before this attempt
+    bool m_readingAside = false;      // readWaitingBytes() is reading: onReadyRead() leaves them
     QSet<int> m_owed;                 // peers whose last request went unanswered
     quint64 m_staleReplies = 0;
     qint64 m_lastEarlyUs = 0;     // the last frame dropped as stale: after how long, and the

@@ -204,10 +204,11 @@ qint64 SerialLink::earliestSendUs(const SerialRequest &next)
     // a babbling drive) must not hold the request for ever: after lineBusyLimitUs() of
     // waiting it goes out anyway, and the trace says why.
     const qint64 limit = m_waitingSinceUs + lineBusyLimitUs(next);
+    m_busyNote.clear();
     if (m_waitingSinceUs >= 0 && earliest > limit) {
         earliest = limit;
-        m_gapNote = QStringLiteral("the line was not quiet for %1 ms: sent anyway")
-                        .arg((limit - m_waitingSinceUs) / 1000);
+        m_busyNote = QStringLiteral("the line was not quiet for %1 ms: sent anyway")
+                         .arg((limit - m_waitingSinceUs) / 1000);
     }
     if (m_settings.minCommandSpacingMs > 0 && m_lastCommandEndUs >= 0) {
         // The drive counts from each command it receives, i.e. from its last byte.
@@ -287,11 +288,13 @@ void SerialLink::transmit()
         QString note = p.request.note;
         if (p.attempts > 1)
             note = QStringLiteral("%1 (retry %2)").arg(note).arg(p.attempts - 1).trimmed();
-        if (!m_gapNote.isEmpty())
-            note = QStringLiteral("%1 (%2)").arg(note, m_gapNote).trimmed();
+        for (const QString &why : {m_gapNote, m_busyNote})
+            if (!why.isEmpty())
+                note = QStringLiteral("%1 (%2)").arg(note, why).trimmed();
         m_tap->recordSerial(TrafficRecord::Direction::Tx, m_settings.portName, p.request.bytes, note);
     }
     m_gapNote.clear();
+    m_busyNote.clear();
     m_port->write(p.request.bytes);
     // To the driver now, not on the next event-loop pass. A failing port reports it from
     // inside flush() (or the read above): onPortError() has then failed every request and

@@ -178,7 +178,7 @@ private:
     void armResponseTimer();
     qint64 nowUs() const { return m_clock.nsecsElapsed() / 1000; }
     int effectiveTimeoutMs(const SerialRequest &r) const;
-    qint64 earliestSendUs(const SerialRequest &next); // notes in m_gapNote when the line kept it busy
+    qint64 earliestSendUs(const SerialRequest &next); // notes in m_busyNote when the line kept it busy
     qint64 lineBusyLimitUs(const SerialRequest &next) const;
     bool sendsAfterShortGap(const SerialRequest &next) const;
     void failAll(const Error &why);
@@ -202,6 +202,7 @@ private:
     bool m_shortGapForCurrent = false; // this attempt went out after the same-peer silence
     bool m_samePeerGapDropped = false; // a request after it went unanswered: full gap only
     QString m_gapNote;                 // for the trace of the next transmission
+    QString m_busyNote;                // the same: bytes kept the line busy (earliestSendUs())
     StrayPeers m_strayPeers;
     int m_deferrals = 0;            // a send or a timeout waited for the port to read what came
     qint64 m_quietUntilUs = 0;      // no transmission before this (gap / recovery)

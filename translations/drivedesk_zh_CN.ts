@@ -1945,6 +1945,10 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>No reply on %1 within %2 ms but a frame of the awaited shape that came %3 us after the request, sooner than the wire can carry request and reply (%4 us), while an earlier request was still unanswered: it was dropped as that request&apos;s late answer. The next attempt accepts a fast reply; if this one was the last, raise the retries (--retries).</source>
         <translation>%1 上在 %2 毫秒内没有应答，只收到一个符合预期格式的帧：它在请求发出后 %3 微秒即到达，早于线路传送请求和应答所需的时间（%4 微秒），而先前的一个请求尚未得到应答，因此它被视为该请求的迟到应答而丢弃。下一次尝试会接受快速应答；如果这已是最后一次尝试，请增加重试次数（--retries）。</translation>
     </message>
+    <message>
+        <source>The line was never quiet: bytes that answered nothing kept coming, and the request was sent into them. Is another master on the bus, or a drive sending on its own? Stop the other sender; a longer timeout will not help.</source>
+        <translation>总线始终不空闲：不断有不属于任何应答的字节到来，请求只能在其间发出。总线上是否还有另一个主站，或有驱动器在自行发送？请停止另一个发送方；加长超时没有用。</translation>
+    </message>
 </context>
 <context>
     <name>dd::SerialPortWatcher</name>

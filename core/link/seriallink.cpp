@@ -293,6 +293,8 @@ void SerialLink::transmit()
                 note = QStringLiteral("%1 (%2)").arg(note, why).trimmed();
         m_tap->recordSerial(TrafficRecord::Direction::Tx, m_settings.portName, p.request.bytes, note);
     }
+    if (!m_busyNote.isEmpty())
+        p.sentOnBusyLine = true;
     m_gapNote.clear();
     m_busyNote.clear();
     m_port->write(p.request.bytes);
@@ -553,6 +555,15 @@ void SerialLink::retryOrFail(const Error &error, qint64 quietUs)
         ++m_retryCount;
         m_state = State::Gap;
         scheduleNext();
+        return;
+    }
+    if (error.code == ErrorCode::Timeout && m_current->sentOnBusyLine) {
+        Error e = error;
+        e.message += QLatin1Char(' ')
+            + tr("The line was never quiet: bytes that answered nothing kept coming, and the request "
+                 "was sent into them. Is another master on the bus, or a drive sending on its own? "
+                 "Stop the other sender; a longer timeout will not help.");
+        finishCurrent(e);
         return;
     }
     if (error.code == ErrorCode::Timeout && m_lateForCurrent) {

@@ -154,7 +154,8 @@ private:
         SerialRequest request;
         QPointer<LinkReply> reply;
         int attempts = 0;
-        bool droppedEarly = false; // a frame of this request's shape was dropped as stale
+        bool droppedEarly = false;   // a frame of this request's shape was dropped as stale
+        bool sentOnBusyLine = false; // an attempt went out before the line was quiet (lineBusyLimitUs())
     };
     enum class State { Idle, Gap, AwaitingReply, AwaitingWrite, Recovering };
 

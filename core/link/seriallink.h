@@ -51,20 +51,22 @@ struct SerialRequest
 // Half-duplex request/reply transport on QSerialPort (RS485 / RS232).
 //
 // Requests queue and go out one at a time. Before each request whatever waits unread is
-// read and reported as stray bytes (it is stale, and may be another drive's late answer); after each transaction the link keeps the line quiet
-// for settings.minGapMs, and commands reach the drive at least settings.minCommandSpacingMs
-// apart (last byte to last byte, plus CommandSpacingMarginUs; the count starts at the
-// reply's first byte where there is a reply, which already lies the drive's latency after
-// the command, so an adapter holding our bytes back cannot squeeze two commands). A reply is
-// accepted only through the request's matcher. The stale-reply rule (docs/reliability.md):
-// a frame that completes sooner than the wire allows (half the wire time of request plus
-// reply) is taken for a stale answer, and dropped, only when one could be on its way: an
-// earlier request to the same peer went unanswered (and nothing has paid that debt since),
-// or the stale bytes set aside just before this request ended in the start of a frame. Dropping it pays the debt, so a
-// fast peer (a pty, a socat pair, a USB adapter with a deep FIFO) loses at most one
+// read and reported as stray bytes (it is stale, and may be another drive's late answer);
+// after each transaction the link keeps the line quiet for settings.minGapMs, and commands
+// reach the drive at least settings.minCommandSpacingMs apart (last byte to last byte, plus
+// CommandSpacingMarginUs; the count starts at the reply's first byte where there is a
+// reply, which already lies the drive's latency after the command, so an adapter holding
+// our bytes back cannot squeeze two commands). A reply is accepted only through the
+// request's matcher. The stale-reply rule (docs/reliability.md): a frame that completes
+// sooner than the wire allows (half the wire time of request plus reply) is taken for a
+// stale answer, and dropped, only when one could be on its way: an earlier request to the
+// same peer went unanswered (and nothing has paid that debt since), or the stale bytes set
+// aside just before this request ended in the start of a frame. Dropping it pays the debt,
+// so a fast peer (a pty, a socat pair, a USB adapter with a deep FIFO) loses at most one
 // attempt; with nothing owed a fast reply is the answer. After a timeout the link also
 // waits until the line has been quiet for the reply's wire time (plus margin) before it
-// sends again.
+// sends again; bytes that keep coming hold a request back at most LineBusyFactor times that
+// quiet.
 //
 // Modbus RTU (ModbusLink) also sets an inter-frame silence (setInterFrameGapUs: t3.5), kept
 // after the last byte seen on the line before each request, to the microsecond, and a

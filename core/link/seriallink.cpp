@@ -415,6 +415,7 @@ void SerialLink::processBuffer()
             continue;
         }
         case FrameMatch::Status::Unfit: {
+            anchorSpacingAtReply(consumed); // the drive had the command: it answered
             if (m_tap)
                 m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, m_rx.left(consumed),
                                     QStringLiteral("reply does not fit the request"));
@@ -426,6 +427,7 @@ void SerialLink::processBuffer()
         }
         case FrameMatch::Status::Corrupt: {
             ++m_checksumErrors;
+            anchorSpacingAtReply(consumed); // the drive had the command: it answered, damaged
             if (m_tap)
                 m_tap->recordSerial(TrafficRecord::Direction::Discarded, m_settings.portName, m_rx.left(consumed),
                                     QStringLiteral("bad checksum"));
@@ -612,11 +614,17 @@ void SerialLink::finishCurrent(const Error &error, const QByteArray &frame)
     // it had so far and the adapter held a command back
     // (tst_seriallink heldBackCommandAfterSlowAnswersStillGetsItsSpacing).
     if (!error.isError() && !frame.isEmpty())
-        m_lastCommandEndUs = std::max(m_lastCommandEndUs, now - wireTimeUs(frame.size()));
+        anchorSpacingAtReply(frame.size());
     m_quietUntilUs = std::max(m_quietUntilUs,
                               now + std::max(qint64(m_settings.minGapMs) * 1000, p.request.quietAfterUs));
     m_state = State::Idle;
     scheduleNext();
+}
+
+void SerialLink::anchorSpacingAtReply(qsizetype replyBytes)
+{
+    // The reply began after the drive had the whole command, good or damaged (see finishCurrent()).
+    m_lastCommandEndUs = std::max(m_lastCommandEndUs, nowUs() - wireTimeUs(replyBytes));
 }
 
 void SerialLink::reportStray(const QByteArray &bytes)

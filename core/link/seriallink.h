@@ -165,8 +165,9 @@ private:
     void transmit();
     void onReadyRead();
     void onBytes(const QByteArray &data);
-    bool bytesWaitInDriver() const; // received, not yet read by the port (Unix)
-    void readWaitingBytes();        // into the port's buffer now, for transmit() to set aside
+    bool bytesWaitInDriver() const;                  // received, not yet read by the port (Unix)
+    void anchorSpacingAtReply(qsizetype replyBytes); // command spacing counts from the reply's start
+    void readWaitingBytes();                         // into the port's buffer now, for transmit() to set aside
     void processBuffer();
     void onResponseTimeout();
     void onGapElapsed();

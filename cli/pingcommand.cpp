@@ -52,6 +52,7 @@ void PingCommand::next()
 
 void PingCommand::report()
 {
+    m_health.closeOutstanding(); // every ping has finished: a request still out timed out
     const LinkHealth::Summary h = m_health.summary();
     const int answered = m_count - m_failed;
     QJsonObject json{
@@ -68,6 +69,7 @@ void PingCommand::report()
         {QStringLiteral("checksumErrors"), h.checksumErrors},
         {QStringLiteral("lateReplies"), h.lateReplies},
         {QStringLiteral("retries"), h.retries},
+        {QStringLiteral("busyLineSends"), h.busyLineSends},
         {QStringLiteral("recommendedTimeoutMs"), h.recommendedTimeoutMs},
         {QStringLiteral("recommendedGapMs"), h.recommendedGapMs},
     };
@@ -87,6 +89,11 @@ void PingCommand::report()
         {tr("Checksum errors"), QString::number(h.checksumErrors)},
         {tr("Late or duplicated replies"), QString::number(h.lateReplies)},
         {tr("Retries"), QString::number(h.retries)},
+        {tr("Sent on a busy line"),
+         h.busyLineSends ? tr("%1 (the line was never quiet: is another master on the bus, or a drive sending on "
+                              "its own?)")
+                               .arg(h.busyLineSends)
+                         : QStringLiteral("0")},
         {tr("Recommended timeout"),
          tr("--timeout %1 (reply allowance beyond the wire time, ms)").arg(h.recommendedTimeoutMs)},
         {tr("Recommended gap"), tr("%1 ms between requests").arg(h.recommendedGapMs)},

@@ -229,6 +229,7 @@ void ReportCommand::writeRecord()
     record.locale = QLocale();
     record.header = m_header;
     record.header.stamp();
+    m_health->closeOutstanding(); // every read has finished: a request still out timed out
     for (DriveRecord &d : m_drives) {
         d.linkHealth = m_health->health(d.address, tr("while this record was made"));
         record.drives.append(d);

@@ -6277,6 +6277,12 @@ then log out and log in again (or restart the computer).</source>
         <source>not measured: %1</source>
         <translation>未测得：%1</translation>
     </message>
+    <message numerus="yes">
+        <source>%n request(s) went out on a line that was never quiet: another master on the bus, or a drive sending on its own.</source>
+        <translation>
+            <numerusform>%n 个请求是在一直不静默的线路上发出的：总线上有另一个主站，或有驱动器在自行发送。</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>dd::VerificationJournal</name>
@@ -6586,6 +6592,14 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>%1 ms between requests</source>
         <translation>请求之间 %1 毫秒</translation>
+    </message>
+    <message>
+        <source>Sent on a busy line</source>
+        <translation>在繁忙线路上发送</translation>
+    </message>
+    <message>
+        <source>%1 (the line was never quiet: is another master on the bus, or a drive sending on its own?)</source>
+        <translation>%1（线路一直不静默：总线上是否有另一个主站，或有驱动器在自行发送？）</translation>
     </message>
 </context>
 <context>
@@ -7098,8 +7112,12 @@ firmware %2</source>
         <translation>建议间隔</translation>
     </message>
     <message>
-        <source>From the traffic seen so far. The recommended timeout is the reply allowance beyond the wire time (drivedesk-cli --timeout); the gap is the quiet time between requests that lets late replies land first.</source>
-        <translation>根据目前已观察到的通信统计。建议超时是线路传输时间之外的应答余量（drivedesk-cli --timeout）；间隔是请求之间的静默时间，让迟到的应答先到达。</translation>
+        <source>Sent on a busy line</source>
+        <translation>在繁忙线路上发送</translation>
+    </message>
+    <message>
+        <source>From the traffic seen so far. The recommended timeout is the reply allowance beyond the wire time (drivedesk-cli --timeout); the gap is the quiet time between requests that lets late replies land first. Requests sent on a busy line went out although the line was never quiet (another master on the bus, or a drive sending on its own): no timeout or gap helps there.</source>
+        <translation>根据目前已观察到的通信统计。建议超时是线路传输时间之外的应答余量（drivedesk-cli --timeout）；间隔是请求之间的静默时间，让迟到的应答先到达。“在繁忙线路上发送”的请求是在线路一直不静默时发出的（总线上有另一个主站，或有驱动器在自行发送）：任何超时或间隔都无济于事。</translation>
     </message>
 </context>
 <context>

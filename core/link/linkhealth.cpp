@@ -58,6 +58,8 @@ void LinkHealth::add(const TrafficRecord &r)
         ++m_counts.requests;
         if (mentions(r.note, {"retry"}))
             ++m_counts.retries;
+        if (mentions(r.note, {"not quiet"}))
+            ++m_counts.busyLineSends;
         if (r.isCan) {
             for (qsizetype i = 0; i < m_canOut.size(); ++i) {
                 if (m_canOut.at(i).bytes == r.bytes) { // asked again: the earlier one timed out
@@ -98,6 +100,13 @@ void LinkHealth::add(const TrafficRecord &r)
             ++m_counts.lateReplies;
         return;
     }
+}
+
+void LinkHealth::closeOutstanding()
+{
+    closeRequest();
+    m_counts.timeouts += int(m_canOut.size());
+    m_canOut.clear();
 }
 
 void LinkHealth::clear()

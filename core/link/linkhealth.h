@@ -21,7 +21,7 @@ namespace dd {
 // command), and a request sent again with the same bytes while out means the earlier one
 // timed out. The first data byte is the drive's address in every family. Drops the links
 // mark as stale, late or duplicated count as late replies; a TX whose note says "retry"
-// counts as a retry.
+// counts as a retry, one whose note says the line was "not quiet" as a busy-line send.
 class LinkHealth
 {
 public:
@@ -33,6 +33,9 @@ public:
         int checksumErrors = 0;
         int lateReplies = 0; // stale, late or duplicated replies dropped
         int retries = 0;
+        // Requests sent on a line that was never quiet (SerialLink's cap on waiting for
+        // silence: another master, a babbling drive); a longer timeout or gap cannot help.
+        int busyLineSends = 0;
         double minMs = 0, medianMs = 0, maxMs = 0; // turnaround, request sent to reply taken
         // The reply allowance beyond the wire time (--timeout) this drive needs with margin,
         // and the quiet time between requests (0: none needed; late replies seen: enough
@@ -50,6 +53,9 @@ public:
     // Keeps only records of `address` (the first data byte); -1 keeps all.
     void setAddress(int address) { m_address = address; }
     void add(const TrafficRecord &record);
+    // Every request sent has been answered or given up on (the caller waited for all of
+    // them: `ping`, a record the CLI made): one still out timed out, or was a checksum error.
+    void closeOutstanding();
     void clear();
     Summary summary() const;
 

@@ -55,6 +55,15 @@ FrameMatch ModbusReplyMatcher::match(const modbusrtu::Request &request, const QS
                                      .arg(request.address)
                                      .arg(port, decoded.error));
     }
+    // A CRC-valid request at the front (another master asking a drive, an adapter's echo):
+    // traffic of others, not a damaged reply. Before, another master's requests were taken
+    // for our reply failing its CRC, and the user was sent to the cable shielding.
+    const Parser::FrameCheck other = Parser::checkFrame(buffer, Parser::Mode::Requests);
+    if (other.state == Parser::FrameState::Complete && other.offset == 0) {
+        if (seen.foreign.size() < 8)
+            seen.foreign.append(buffer.left(other.length));
+        return FrameMatch::garbage(other.length);
+    }
     // No valid frame yet. As many bytes as the reply, and the first of them cannot start a
     // frame that is still arriving (a longer one): a damaged reply.
     const int expected = std::max(modbusrtu::expectedReplySize(request), modbusrtu::ExceptionReplySize);

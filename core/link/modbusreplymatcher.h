@@ -18,6 +18,8 @@ namespace dd {
 //    exception for the request's function whatever its address byte included;
 //  - a CRC-valid frame from another address or of another function is passed over
 //    (Garbage; remembered for the timeout's words), as are bytes before a valid frame;
+//  - a CRC-valid *request* frame at the front (another master asking a drive, an adapter's
+//    echo) is passed over the same way: traffic of others, not a damaged reply;
 //  - a CRC-valid frame from the request's address that does not fit it (byte count, echo,
 //    register count) is Unfit: the request is asked again, or fails Malformed;
 //  - at least the reply's length of bytes with no valid frame among them is Corrupt (a

@@ -28,6 +28,12 @@ void LinkHealthCounter::count(const TrafficRecord &record)
         h.add(record);
 }
 
+void LinkHealthCounter::closeOutstanding()
+{
+    for (LinkHealth &h : m_health)
+        h.closeOutstanding();
+}
+
 RecordLinkHealth LinkHealthCounter::health(int address, const QString &scope) const
 {
     const LinkHealth::Summary s = m_health.value(address, LinkHealth(m_baud)).summary();
@@ -40,6 +46,7 @@ RecordLinkHealth LinkHealthCounter::health(int address, const QString &scope) co
     h.checksumErrors = s.checksumErrors;
     h.lateReplies = s.lateReplies;
     h.retries = s.retries;
+    h.busyLineSends = s.busyLineSends;
     h.turnaroundMinMs = s.minMs;
     h.turnaroundMedianMs = s.medianMs;
     h.turnaroundMaxMs = s.maxMs;

@@ -24,6 +24,8 @@ public:
 
     void count(const TrafficRecord &record);
     void countError(int address) { ++m_errors[address]; }
+    // Every operation has finished: see LinkHealth::closeOutstanding().
+    void closeOutstanding();
     // The figures of the drive at `address`, described by `scope`.
     RecordLinkHealth health(int address, const QString &scope) const;
 

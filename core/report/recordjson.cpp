@@ -119,6 +119,7 @@ QJsonObject driveJson(const DriveRecord &d)
                              {QStringLiteral("checksumErrors"), h.checksumErrors},
                              {QStringLiteral("lateReplies"), h.lateReplies},
                              {QStringLiteral("retries"), h.retries},
+                             {QStringLiteral("busyLineSends"), h.busyLineSends},
                              {QStringLiteral("errors"), h.errors}};
     QJsonArray runs;
     for (const RunRecord &r : d.runs)

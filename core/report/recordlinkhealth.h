@@ -7,7 +7,7 @@ namespace dd {
 
 // The health of one drive's link as a commissioning record shows it: core/link's LinkHealth
 // figures for the drive's address over some span (`scope` says which) — requests and
-// replies, turnaround, timeouts, checksum errors, late or duplicated replies, retries — and
+// replies, turnaround, timeouts, checksum errors, late or duplicated replies, retries, requests sent on a line that was never quiet — and
 // the operations on the drive that failed.
 struct RecordLinkHealth
 {
@@ -20,7 +20,8 @@ struct RecordLinkHealth
     int lateReplies = 0; // stale, late or duplicated replies dropped
     int retries = 0;
     double turnaroundMinMs = 0, turnaroundMedianMs = 0, turnaroundMaxMs = 0; // when answered > 0
-    int errors = 0; // operations that failed (timeouts, exceptions)
+    int errors = 0;        // operations that failed (timeouts, exceptions)
+    int busyLineSends = 0; // requests sent on a line that was never quiet
 };
 
 } // namespace dd

@@ -325,6 +325,11 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
                                  .arg(h.lateReplies)
                                  .arg(h.retries)
                                  .arg(h.errors)));
+        if (h.busyLineSends > 0)
+            html += QStringLiteral("<p>%1</p>")
+                        .arg(esc(tr("%n request(s) went out on a line that was never quiet: another master on the bus, "
+                                    "or a drive sending on its own.",
+                                    nullptr, h.busyLineSends)));
     }
 
     // Tuning runs.

@@ -37,7 +37,9 @@ private slots:
         dock.addTraffic(1, rec(10000, Tx, "0703006600016473"));
         dock.addTraffic(1, rec(14000, Rx, "0703021b95fadb"));
         dock.addTraffic(1, rec(20000, Tx, "0303006600016473"));
-        dock.addTraffic(1, rec(80000, Tx, "0303006600016473", QStringLiteral("(retry 1)")));
+        dock.addTraffic(1,
+                        rec(80000, Tx, "0303006600016473",
+                            QStringLiteral("(retry 1) (the line was not quiet for 500 ms: sent anyway)")));
         dock.addTraffic(1, rec(81000, Rx, "0303021b95fadb"));
         dock.refresh();
         QTableWidget *t = dock.table();
@@ -51,6 +53,10 @@ private slots:
         QCOMPARE(three.timeouts, 1);
         QCOMPARE(three.retries, 1);
         QCOMPARE(t->item(0, 4)->text(), QStringLiteral("1"));
+        QCOMPARE(three.busyLineSends, 1);
+        QCOMPARE(t->horizontalHeaderItem(8)->text(), QStringLiteral("Sent on a busy line"));
+        QCOMPARE(t->item(0, 8)->text(), QStringLiteral("1"));
+        QCOMPARE(t->item(1, 8)->text(), QStringLiteral("0"));
         dock.clear();
         QCOMPARE(t->rowCount(), 0);
     }

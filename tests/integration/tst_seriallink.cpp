@@ -6,6 +6,7 @@
 #include <QSignalSpy>
 #include <QThread>
 
+#include "core/link/linkhealth.h"
 #include "core/link/linkreply.h"
 #include "core/link/seriallink.h"
 #include "core/link/traffictap.h"
@@ -288,8 +289,10 @@ private slots:
         TrafficTap tap;
         link.setTap(&tap);
         int notes = 0;
-        connect(&tap, &TrafficTap::frameRecorded, this, [&notes](const TrafficRecord &t) {
+        LinkHealth health(115200); // as `ping`, the Link health view and the record count it
+        connect(&tap, &TrafficTap::frameRecorded, this, [&notes, &health](const TrafficRecord &t) {
             notes += t.direction == TrafficRecord::Direction::Tx && t.note.contains(QStringLiteral("not quiet"));
+            health.add(t);
         });
         SerialSettings s;
         s.portName = busy.path();
@@ -312,6 +315,8 @@ private slots:
         // 2 attempts of 20 ms, the retry held back 5 x 40 ms: 240 ms, and a busy machine's slack.
         QVERIFY2(tookMs >= 220 && tookMs < 1500, qPrintable(QString::number(tookMs)));
         QCOMPARE(notes, 1); // on the retry
+        QCOMPARE(health.summary().busyLineSends, 1);
+        QCOMPARE(health.summary().requests, 2);
     }
 
     // The adapter is gone when a request goes out: the port reports it from inside the

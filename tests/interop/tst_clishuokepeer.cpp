@@ -6,6 +6,7 @@
 // info (identity and model), get, set with read-back, jog and stop. A missing tool fails the
 // test: CI installs it (packaging/install-deps.sh).
 
+#include "tests/support/childprocess.h"
 #include "tests/support/clirun.h"
 
 #include <QFile>
@@ -15,20 +16,12 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include <csignal>
-#include <sys/prctl.h>
-
 using namespace dd;
 using namespace dd::test;
 
 namespace {
 const QString Python = QStringLiteral("/usr/bin/python3");
 constexpr int Address = 3;
-
-void dieWithParent(QProcess &p)
-{
-    p.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGKILL); });
-}
 } // namespace
 
 class TestCliShuokePeer : public QObject

@@ -6,6 +6,7 @@
 // tests/interop/pymodbus_servo.py. A missing tool fails the test: CI installs it
 // (packaging/install-deps.sh).
 
+#include "tests/support/childprocess.h"
 #include "tests/support/clirun.h"
 
 #include <QDir>
@@ -17,20 +18,11 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include <csignal>
-#include <sys/prctl.h>
-
 using namespace dd;
 using namespace dd::test;
 
 namespace {
 const QString Python = QStringLiteral("/usr/bin/python3"); // Debian's, where python3-pymodbus lives
-
-// Children die with the test, also when a sanitizer aborts it.
-void dieWithParent(QProcess &p)
-{
-    p.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGKILL); });
-}
 } // namespace
 
 class TestPymodbus : public QObject

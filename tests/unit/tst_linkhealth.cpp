@@ -39,7 +39,7 @@ private slots:
         h.add(rec(30000, Tx, req)); // unanswered: timeout
         h.add(rec(60000, Tx, req, QStringLiteral("(retry 1)")));
         h.add(rec(60500, Drop, rep, QStringLiteral("bad checksum"))); // checksum error
-        h.add(rec(90000, Tx, req, QStringLiteral("(retry 2)")));
+        h.add(rec(90000, Tx, req, QStringLiteral("(retry 2) (the line was not quiet for 500 ms: sent anyway)")));
         h.add(rec(90100, Drop, rep, QStringLiteral("stale: came 100 us after the request")));
         h.add(rec(92000, Rx, rep));                // 2 ms
         h.add(rec(93000, Tx, "0103006600016473")); // another drive
@@ -51,6 +51,7 @@ private slots:
         QCOMPARE(s.checksumErrors, 1);
         QCOMPARE(s.lateReplies, 1);
         QCOMPARE(s.retries, 2);
+        QCOMPARE(s.busyLineSends, 1);
         QCOMPARE(s.minMs, 1.0);
         QCOMPARE(s.medianMs, 2.0);
         QCOMPARE(s.maxMs, 6.0);
@@ -114,6 +115,35 @@ private slots:
         h.add(rec(7000, Rx, "0103021b95fadb"));
         QCOMPARE(h.summary().requests, 1);
         QCOMPARE(h.summary().timeouts, 0);
+    }
+
+    // A request still out is not counted while its answer may be on its way; once the
+    // sender has waited for every request (ping, the CLI's record) it timed out. Before,
+    // `ping` against a silent drive said 3 timeouts for 4 requests that all timed out.
+    void requestsStillOutAtTheEndTimedOut()
+    {
+        LinkHealth serial(115200);
+        serial.add(rec(0, Tx, "0103006600016473"));
+        serial.add(rec(20000, Tx, "0103006600016473", QStringLiteral("(retry 1)")));
+        serial.add(rec(30000, Drop, "0103021b95fadc", QStringLiteral("bad checksum")));
+        QCOMPARE(serial.summary().timeouts, 1);
+        QCOMPARE(serial.summary().checksumErrors, 0);
+        serial.closeOutstanding();
+        QCOMPARE(serial.summary().timeouts, 1);
+        QCOMPARE(serial.summary().checksumErrors, 1);
+        serial.closeOutstanding(); // nothing is out now
+        QCOMPARE(serial.summary().timeouts + serial.summary().checksumErrors, 2);
+
+        LinkHealth can;
+        for (const char *hex : {"0112fd00000000ff", "0112fc00000000ff"}) {
+            TrafficRecord r = rec(0, Tx, hex);
+            r.isCan = true;
+            can.add(r);
+        }
+        QCOMPARE(can.summary().timeouts, 0);
+        can.closeOutstanding();
+        QCOMPARE(can.summary().timeouts, 2);
+        QCOMPARE(can.summary().requests, 2);
     }
 };
 

@@ -424,7 +424,8 @@ private slots:
     {
         // Serial traffic of two drives at 115200: drive 1 answers in 5 ms; drive 2's first
         // reply is dropped for a bad checksum, the retry is answered in 8 ms; a broadcast and
-        // a request to drive 3 that nobody answers (still out at the end: not counted).
+        // a request to drive 3 that nobody answers (still out at the end: not counted). The
+        // retry went out on a line that was never quiet (SerialLink's note on it).
         LinkHealthCounter counter(nullptr, 115200);
         auto record = [&counter](qint64 ms, TrafficRecord::Direction d, QByteArray bytes, const char *note = "") {
             TrafficRecord r;
@@ -439,7 +440,8 @@ private slots:
         record(5, D::Rx, QByteArray::fromHex("01030200001984"));
         record(10, D::Tx, QByteArray::fromHex("020300640001c5e6"));
         record(14, D::Discarded, QByteArray::fromHex("0203020000ffff"), "bad checksum");
-        record(60, D::Tx, QByteArray::fromHex("020300640001c5e6"), "(retry 1)");
+        record(60, D::Tx, QByteArray::fromHex("020300640001c5e6"),
+               "(retry 1) (the line was not quiet for 500 ms: sent anyway)");
         record(68, D::Rx, QByteArray::fromHex("02030200001984"));
         record(70, D::Tx, QByteArray::fromHex("000600640001"));
         record(80, D::Tx, QByteArray::fromHex("030300640001"));
@@ -456,6 +458,8 @@ private slots:
         QCOMPARE(two.answered, 1);
         QCOMPARE(two.checksumErrors, 1);
         QCOMPARE(two.retries, 1);
+        QCOMPARE(two.busyLineSends, 1);
+        QCOMPARE(one.busyLineSends, 0);
         QCOMPARE(two.timeouts, 0);
         QCOMPARE(two.turnaroundMaxMs, 8.0);
         QCOMPARE(two.errors, 1);
@@ -474,6 +478,9 @@ private slots:
                      .match(text(pdf).simplified())
                      .hasMatch(),
                  qPrintable(text(pdf)));
+        QVERIFY2(text(pdf).simplified().contains(
+                     QStringLiteral("1 request(s) went out on a line that was never quiet: another master on the bus")),
+                 qPrintable(text(pdf)));
         const QJsonObject h = QJsonDocument::fromJson(json)
                                   .object()
                                   .value(QStringLiteral("drives"))
@@ -483,6 +490,7 @@ private slots:
                                   .value(QStringLiteral("linkHealth"))
                                   .toObject();
         QCOMPARE(h.value(QStringLiteral("checksumErrors")).toInt(), 1);
+        QCOMPARE(h.value(QStringLiteral("busyLineSends")).toInt(), 1);
         QCOMPARE(h.value(QStringLiteral("turnaroundMs")).toObject().value(QStringLiteral("max")).toDouble(), 8.0);
     }
 

@@ -20,6 +20,7 @@ enum Column {
     ColChecksum,
     ColLate,
     ColRetries,
+    ColBusyLine,
     ColTimeout,
     ColGap,
     ColumnCount
@@ -108,6 +109,7 @@ void LinkHealthDock::refresh()
             QString::number(s.checksumErrors),
             QString::number(s.lateReplies),
             QString::number(s.retries),
+            QString::number(s.busyLineSends),
             s.answered ? tr("%1 ms").arg(s.recommendedTimeoutMs) : QStringLiteral("—"),
             tr("%1 ms").arg(s.recommendedGapMs),
         };
@@ -132,11 +134,12 @@ void LinkHealthDock::retranslate()
     setWindowTitle(tr("Link health"));
     m_table->setHorizontalHeaderLabels({tr("Drive"), tr("Requests"), tr("Answered"),
                                         tr("Turnaround min / median / max"), tr("Timeouts"), tr("Checksum errors"),
-                                        tr("Late or duplicated"), tr("Retries"), tr("Recommended timeout"),
-                                        tr("Recommended gap")});
+                                        tr("Late or duplicated"), tr("Retries"), tr("Sent on a busy line"),
+                                        tr("Recommended timeout"), tr("Recommended gap")});
     m_hint->setText(tr("From the traffic seen so far. The recommended timeout is the reply allowance beyond the wire "
                        "time (drivedesk-cli --timeout); the gap is the quiet time between requests that lets late "
-                       "replies land first."));
+                       "replies land first. Requests sent on a busy line went out although the line was never quiet "
+                       "(another master on the bus, or a drive sending on its own): no timeout or gap helps there."));
     refresh();
 }
 

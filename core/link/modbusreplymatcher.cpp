@@ -60,8 +60,9 @@ FrameMatch ModbusReplyMatcher::match(const modbusrtu::Request &request, const QS
     // for our reply failing its CRC, and the user was sent to the cable shielding.
     const Parser::FrameCheck other = Parser::checkFrame(buffer, Parser::Mode::Requests);
     if (other.state == Parser::FrameState::Complete && other.offset == 0) {
-        if (seen.foreign.size() < 8)
-            seen.foreign.append(buffer.left(other.length));
+        const QByteArray frame = buffer.left(other.length);
+        if (seen.foreign.size() < 8 && frame != modbusrtu::encodeRequest(request)) // an echo is no news
+            seen.foreign.append(frame);
         return FrameMatch::garbage(other.length);
     }
     // No valid frame yet. As many bytes as the reply, and the first of them cannot start a

@@ -272,6 +272,29 @@ private slots:
         QCOMPARE(link.lateReplyCount(), quint64(0));
     }
 
+    // An RS485 adapter that hears its own transmission: the request comes back at once, the
+    // reply 5 ms later. Before, the echo alone was taken for a damaged reply (8 bytes, no
+    // valid reply among them): a checksum error and a retry for every request, and with no
+    // retries left none was ever read.
+    void modbusLinkTakesTheReplyBehindAnAdapterEcho()
+    {
+        InstantModbusPeer peer;
+        QVERIFY(peer.open());
+        peer.answer = [&](const modbusrtu::Request &r, int) {
+            peer.pty.write(modbusrtu::encodeRequest(r));
+            QTimer::singleShot(5, &peer.pty, [&peer, r] { peer.pty.write(InstantModbusPeer::readReply(r, 0)); });
+        };
+        ModbusLink link;
+        QVERIFY(link.open(settings(peer.pty.clientPath(), 19200, 0)));
+        for (int i = 0; i < 5; ++i) {
+            LinkReply *r = link.readHoldingRegisters(7, 0x64 + i, 1);
+            QVERIFY(wait(r));
+            QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
+            QCOMPARE(r->registers(), QList<quint16>{quint16(0x64 + i)});
+        }
+        QCOMPARE(peer.requests, 5);
+    }
+
     // Modbus: the answer owed to a timed-out request arrives at once after the next
     // request to that address, the genuine one right behind it.
     void modbusLinkNeverTakesTheOwedAnswer()

@@ -35,13 +35,14 @@ private slots:
         const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
         if (socat.isEmpty())
             QFAIL("socat is not installed (apt install socat; packaging/install-deps.sh)");
-        const QString script =
-            qEnvironmentVariable("DRIVEDESK_SOURCE_DIR") + QStringLiteral("/tests/interop/other_master.py");
+        const QString script = qEnvironmentVariable("DRIVEDESK_SOURCE_DIR")
+            + QStringLiteral("/tests/interop/other_master.py");
         QVERIFY2(QFile::exists(script), qPrintable(script));
         const QString masterEnd = m_dir.filePath(QStringLiteral("master"));
         dieWithParent(m_socat);
-        m_socat.start(socat, {QStringLiteral("pty,raw,echo=0,link=") + port(),
-                              QStringLiteral("pty,raw,echo=0,link=") + masterEnd});
+        m_socat.start(
+            socat,
+            {QStringLiteral("pty,raw,echo=0,link=") + port(), QStringLiteral("pty,raw,echo=0,link=") + masterEnd});
         QVERIFY2(m_socat.waitForStarted(5000), "socat did not start");
         QTRY_VERIFY2_WITH_TIMEOUT(QFile::exists(port()) && QFile::exists(masterEnd), "socat made no pty pair", 5000);
         dieWithParent(m_master);
@@ -49,7 +50,8 @@ private slots:
         m_master.start(QStringLiteral("/usr/bin/python3"), {script, masterEnd, QStringLiteral("0.5")});
         QVERIFY2(m_master.waitForStarted(5000), "python3 did not start");
         QByteArray said;
-        QTRY_VERIFY2_WITH_TIMEOUT((said += m_master.readAll()).contains("ready") || m_master.state() != QProcess::Running,
+        QTRY_VERIFY2_WITH_TIMEOUT((said += m_master.readAll()).contains("ready")
+                                      || m_master.state() != QProcess::Running,
                                   "the other master did not start", 10000);
         QVERIFY2(m_master.state() == QProcess::Running, said.constData());
     }

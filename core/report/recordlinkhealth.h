@@ -7,8 +7,8 @@ namespace dd {
 
 // The health of one drive's link as a commissioning record shows it: core/link's LinkHealth
 // figures for the drive's address over some span (`scope` says which) — requests and
-// replies, turnaround, timeouts, checksum errors, late or duplicated replies, retries, requests sent on a line that was never quiet — and
-// the operations on the drive that failed.
+// replies, turnaround, timeouts, checksum errors, late or duplicated replies, retries,
+// requests sent on a line that was never quiet — and the operations on the drive that failed.
 struct RecordLinkHealth
 {
     bool measured = false; // false: nothing was counted (shown as "not measured")

@@ -28,5 +28,21 @@ function(drivedesk_layer target)
   else()
     target_include_directories(${target} PUBLIC "${view}")
     set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    # Its precompiled header is chosen once its links are known (drivedesk_precompile_layers).
+    set_property(GLOBAL APPEND PROPERTY DRIVEDESK_LAYER_LIBRARIES ${target})
   endif()
+endfunction()
+
+# Every layer library gets its precompiled Qt headers (cmake/DriveDeskBuildSpeed.cmake); one
+# that links Qt Widgets gets the widget headers too. Called once, after all layers exist.
+function(drivedesk_precompile_layers)
+  get_property(layers GLOBAL PROPERTY DRIVEDESK_LAYER_LIBRARIES)
+  foreach(layer ${layers})
+    get_target_property(links ${layer} LINK_LIBRARIES)
+    if("Qt6::Widgets" IN_LIST links)
+      drivedesk_precompile(${layer} WIDGETS)
+    else()
+      drivedesk_precompile(${layer})
+    endif()
+  endforeach()
 endfunction()

@@ -1,9 +1,13 @@
-// main() for the fuzz targets when libFuzzer is not linked (gcc, or a build without
-// DRIVEDESK_FUZZ): runs LLVMFuzzerTestOneInput once on every file named on the command line
-// or found (recursively) in a directory named there, so that the committed corpus - and every
-// crash reproducer added to it - is a regression test in the ordinary test suite.
-// Exit status: 0 when every input ran; 1 when an argument names nothing or no input was found.
-// A failed invariant or a sanitizer report aborts the process.
+// The replay of the fuzz targets when libFuzzer is not linked (gcc, or a build without
+// DRIVEDESK_FUZZ): runs a target's LLVMFuzzerTestOneInput once on every file named on the
+// command line or found (recursively) in a directory named there, so that the committed
+// corpus - and every crash reproducer added to it - is a regression test in the ordinary test
+// suite. All targets share one program, drivedesk_fuzz_replay (tests/fuzz/CMakeLists.txt
+// renames each target's entry point and generates the table): `drivedesk_fuzz_replay
+// fuzz_backupfile corpus/fuzz_backupfile ...`.
+// Exit status: 0 when every input ran; 1 when an argument names nothing or no input was found;
+// 2 when the first argument names no target. A failed invariant or a sanitizer report aborts
+// the process.
 
 #include <QByteArray>
 #include <QDirIterator>
@@ -16,9 +20,9 @@
 #include <cstdint>
 #include <cstdio>
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+#include "replaymain.h"
 
-int main(int argc, char **argv)
+int replayFuzzInputs(int argc, char **argv, FuzzEntry entry)
 {
     QStringList files;
     for (int i = 1; i < argc; ++i) {
@@ -50,7 +54,7 @@ int main(int argc, char **argv)
         }
         const QByteArray bytes = f.readAll();
         std::fprintf(stderr, "replay: %s (%lld bytes)\n", qPrintable(path), static_cast<long long>(bytes.size()));
-        LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t *>(bytes.constData()), static_cast<size_t>(bytes.size()));
+        entry(reinterpret_cast<const uint8_t *>(bytes.constData()), static_cast<size_t>(bytes.size()));
     }
     std::printf("replay: %lld inputs ran\n", static_cast<long long>(files.size()));
     return 0;

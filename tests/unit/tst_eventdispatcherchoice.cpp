@@ -8,7 +8,7 @@
 #include <QThread>
 
 namespace {
-bool g_setAtStart = false; // what main() saw, before the application object existed
+bool g_setAtStart = false; // what the test's main saw, before the application object existed
 }
 
 class TestEventDispatcherChoice : public QObject
@@ -62,7 +62,9 @@ void TestEventDispatcherChoice::leavesAUserChoiceAlone()
     qputenv("QT_NO_GLIB", saved);
 }
 
-int main(int argc, char **argv)
+// Its own main() (tests/support/testmain.h): the variable is unset before the application object
+// exists.
+DRIVEDESK_TEST_MAIN(TestEventDispatcherChoice)
 {
     // As the programs do, from an environment without the variable (ctest sets it for the
     // other tests).

@@ -14,6 +14,7 @@
 #include "sim/bus/simcanbus.h"
 #include "sim/bus/virtualcanhub.h"
 #include "sim/servocan/simservocandrive.h"
+#include "tests/support/timingscale.h"
 
 #include <memory>
 
@@ -98,9 +99,12 @@ void TestCanStations::windowIsSharedBetweenStations()
 // stations with lower numbers always have an answer ready while their reads keep coming:
 // station 8 gets the bus only when they are done, about a second later — far beyond its
 // 100 ms x 3 attempts. That is not silence: every read of every station must succeed.
+// A slower build (the sanitizers) runs the same ratio slower: the bus at a quarter of the
+// bit rate, the timeout four times as long (tests/support/timingscale.h); a thread not
+// scheduled for 100 ms there is silence on the bus, and was once timed out rightly.
 void TestCanStations::stationHeldOffTheBusIsNotTimedOut()
 {
-    constexpr int kBitrate = 100000;
+    constexpr int kBitrate = 100000 / dd::test::kTimingScale;
     constexpr int kStations = 8;
     constexpr int kReads = 30;
     VirtualCanHub hub;
@@ -123,7 +127,7 @@ void TestCanStations::stationHeldOffTheBusIsNotTimedOut()
     cs.plugin = QStringLiteral("virtualcan");
     cs.interface = hub.interfaceName(1);
     cs.bitrate = kBitrate;
-    cs.responseTimeoutMs = 100;
+    cs.responseTimeoutMs = 100 * dd::test::kTimingScale;
     cs.retries = 2;
     CanLink link;
     QVERIFY(openLink(&link, cs));
@@ -141,7 +145,7 @@ void TestCanStations::stationHeldOffTheBusIsNotTimedOut()
     for (ServoCanDrive *d : std::as_const(drives))
         replies << d->readParameters(indices);
     for (DriveReply *r : std::as_const(replies))
-        QTRY_VERIFY_WITH_TIMEOUT(r->isFinished(), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(r->isFinished(), 20000 * dd::test::kTimingScale);
     for (int s = 1; s <= kStations; ++s) {
         DriveReply *r = replies.at(s - 1);
         QVERIFY2(r->ok(), qPrintable(QStringLiteral("station %1: %2").arg(s).arg(r->error().message)));

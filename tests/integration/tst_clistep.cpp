@@ -247,8 +247,10 @@ private slots:
 
     void aStopFromAnotherProcessEndsTheStepAndNothingMovesAfter()
     {
-        // The bench: drivedesk-sim as a process of its own, a 2 s velocity step from
-        // one drivedesk-cli, `stop` from a second one. The step must abort with that cause,
+        // The bench: drivedesk-sim as a process of its own, a velocity step from one
+        // drivedesk-cli (5 s rather than the 2 s: a second process starting under
+        // ASan on a busy machine must still land its STOP inside the step), `stop` from a
+        // second one. The step must abort with that cause,
         // and the axis must stay where the STOP left it (no return to the start).
         QProcess sim;
         const QString where = startSimProcess(sim,
@@ -261,11 +263,11 @@ private slots:
                                                     << "velocity"
                                                     << "300"
                                                     << "--duration"
-                                                    << "2"
+                                                    << "5"
                                                     << "--max-speed"
                                                     << "500"
                                                     << "--max-travel"
-                                                    << "200000"
+                                                    << "400000"
                                                     << "-o" << file);
         QByteArray seen;
         QVERIFY2(waitForOutput(step, "Running at 300", 20000, &seen), seen.constData());

@@ -1,5 +1,7 @@
 #include "cli/capturecommand.h"
 
+#include "cli/clivalues.h"
+
 #include "core/drive/drive.h"
 #include "core/params/parameterdictionary.h"
 #include "core/tuning/capturesession.h"
@@ -58,10 +60,16 @@ bool CaptureCommand::prepare(const CliInvocation &inv, QString *error)
             return false;
         }
     }
-    if (!positive(inv, "pre", 0.0, 100.0, &m_settings.prePercent, error)
-        || !positive(inv, "duration", 0.01, 600.0, &m_settings.durationS, error)
+    if (!positive(inv, "duration", 0.01, 600.0, &m_settings.durationS, error)
         || !positive(inv, "timeout", 0.0, 3600.0, &m_settings.timeoutS, error))
         return false;
+    if (inv.has(QStringLiteral("pre"))) {
+        // The same --pre as step's: a share of the record or seconds before the trigger.
+        const auto pre = CliValues::preTrigger(inv.value(QStringLiteral("pre")), m_settings.durationS, error);
+        if (!pre)
+            return false;
+        m_settings.prePercent = pre->percent ? pre->value : 100.0 * pre->value / m_settings.durationS;
+    }
     if (inv.has(QStringLiteral("mode"))) {
         const auto mode = CaptureSettings::modeFromId(inv.value(QStringLiteral("mode")));
         if (!mode || *mode == CaptureSettings::Mode::Normal) {

@@ -67,7 +67,7 @@ QList<CliCommandSpec> CliCommands::specs()
         {QStringLiteral("step"),
          {valued("duration"), valued("speed"), valued("max-speed"), valued("max-travel"), valued("max-duration"),
           valued("record"), valued("pre"), valued("channels"), flag("no-return"), valued("notes"),
-          valued("output", QLatin1Char('o'))}},
+          valued("counts-per-rev"), valued("output", QLatin1Char('o'))}},
         {QStringLiteral("runs"), {}},
         {QStringLiteral("apply-run"), {flag("dry-run"), flag("force")}},
         {QStringLiteral("spectrum"), {valued("peaks"), valued("from"), valued("between")}},

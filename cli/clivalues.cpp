@@ -78,4 +78,33 @@ std::optional<bool> CliValues::onOff(const QString &text, const QString &what, Q
     return std::nullopt;
 }
 
+std::optional<CliValues::PreTrigger> CliValues::preTrigger(const QString &text, double maxSeconds, QString *error)
+{
+    const QString t = text.trimmed();
+    PreTrigger p;
+    QString number;
+    if (t.endsWith(QLatin1Char('%'))) {
+        p.percent = true;
+        number = t.chopped(1).trimmed();
+    } else if (t.endsWith(QLatin1Char('s'))) {
+        number = t.chopped(1).trimmed();
+    } else {
+        *error = tr("--pre needs its unit: a percentage of the record (e.g. --pre 25%) or seconds before the "
+                    "trigger (e.g. --pre 0.1s), not \"%1\".")
+                     .arg(text);
+        return std::nullopt;
+    }
+    bool ok = false;
+    const double v = number.toDouble(&ok);
+    const double max = p.percent ? 99.9 : maxSeconds;
+    if (!ok || !std::isfinite(v) || v < 0.0 || v > max) {
+        *error = p.percent ? tr("--pre: \"%1\" must be a percentage from 0%% to %2%%.").arg(text).arg(max)
+                           : tr("--pre: \"%1\" must be seconds from 0s to %2s.").arg(text).arg(max);
+        error->replace(QStringLiteral("%%"), QStringLiteral("%"));
+        return std::nullopt;
+    }
+    p.value = v;
+    return p;
+}
+
 } // namespace dd

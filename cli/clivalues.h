@@ -22,6 +22,15 @@ public:
                                                     QString *error);
     // "on" / "off" (also 1/0, true/false, yes/no).
     static std::optional<bool> onOff(const QString &text, const QString &what, QString *error);
+    // The part of a capture before its trigger, the same for capture and step (--pre): a
+    // percentage of the whole record ("25%", 0 to 99.9) or seconds ("0.1s", 0 to maxSeconds).
+    // A bare number is refused: the unit must be spelled.
+    struct PreTrigger
+    {
+        bool percent = false;
+        double value = 0.0;
+    };
+    static std::optional<PreTrigger> preTrigger(const QString &text, double maxSeconds, QString *error);
 };
 
 } // namespace dd

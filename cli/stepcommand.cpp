@@ -3,6 +3,7 @@
 #include "cli/clivalues.h"
 
 #include "core/drive/drive.h"
+#include "core/protocol/familytraits.h"
 #include "core/tuning/steptest.h"
 
 #include <QFileInfo>
@@ -128,10 +129,30 @@ bool StepCommand::prepare(const CliInvocation &inv, QString *error)
         m_spec.recordS = *r;
     }
     if (inv.has(QStringLiteral("pre"))) {
-        const auto r = CliValues::real(inv.value(QStringLiteral("pre")), 0, 10, QStringLiteral("--pre"), error);
-        if (!r)
+        // As capture's --pre: seconds before the motion command, or a share of the whole
+        // record (pre + record).
+        const auto pre = CliValues::preTrigger(inv.value(QStringLiteral("pre")), 10.0, error);
+        if (!pre)
             return false;
-        m_spec.preS = *r;
+        if (pre->percent) {
+            const double record = m_spec.recordSeconds() > 0.0 ? m_spec.recordSeconds() : m_limits.maxDurationS;
+            m_spec.preS = pre->value / (100.0 - pre->value) * record;
+            if (m_spec.preS > 10.0) {
+                *error = tr("--pre %1 is %2 s before the motion: at most 10 s.")
+                             .arg(inv.value(QStringLiteral("pre")))
+                             .arg(m_spec.preS, 0, 'f', 2);
+                return false;
+            }
+        } else {
+            m_spec.preS = pre->value;
+        }
+    }
+    if (inv.has(QStringLiteral("counts-per-rev"))) {
+        const auto c = CliValues::integer(inv.value(QStringLiteral("counts-per-rev")), 1, 1000000000,
+                                          QStringLiteral("--counts-per-rev"), error);
+        if (!c)
+            return false;
+        m_spec.countsPerRev = double(*c);
     }
     if (inv.has(QStringLiteral("channels"))) {
         for (const QString &c : inv.value(QStringLiteral("channels")).split(QLatin1Char(','), Qt::SkipEmptyParts))
@@ -149,6 +170,16 @@ bool StepCommand::prepare(const CliInvocation &inv, QString *error)
         *error = e.message + QLatin1Char(' ') + tr("Nothing was sent.");
         return false;
     }
+    // The travel and time at full speed (the stop comes on top once the drive's
+    // deceleration is read): a test that cannot fit is refused before the link is opened.
+    const double k = StepPlan::countsPerSpeedUnit(
+        QString::fromLatin1(familyTraits(context()->globals.connection.family).speedUnit), m_spec.countsPerRev);
+    if (k > 0.0) {
+        if (Error e = StepPlan::predict(m_spec, k).check(m_limits)) {
+            *error = e.message + QLatin1Char(' ') + tr("Nothing was sent.");
+            return false;
+        }
+    }
     return true;
 }
 
@@ -160,8 +191,12 @@ void StepCommand::start()
             out()->note(message);
     });
     connect(m_test, &StepTest::finished, this, &StepCommand::onFinished);
-    if (Error e = m_test->start(m_spec, m_limits))
-        fail(e, {}, CliExit::Usage); // refused before anything was sent
+    if (Error e = m_test->start(m_spec, m_limits)) {
+        // Refused before any command: only the connection's identification of the drive
+        // was sent (say so: "nothing was sent" would not be true).
+        e.message += QLatin1Char(' ') + tr("No command was sent after identifying the drive.");
+        fail(e, {}, CliExit::Usage);
+    }
 }
 
 void StepCommand::interrupt(int signalNumber)
@@ -195,6 +230,11 @@ void StepCommand::onFinished(const StepResult &r)
                       QJsonObject{{QStringLiteral("maxSpeed"), m_limits.maxSpeed},
                                   {QStringLiteral("maxTravel"), double(m_limits.maxTravel)},
                                   {QStringLiteral("maxDuration"), m_limits.maxDurationS}}},
+                     {QStringLiteral("travel"),
+                      QJsonObject{{QStringLiteral("farthest"), double(r.farthest)},
+                                  {QStringLiteral("limit"), double(m_limits.maxTravel)},
+                                  {QStringLiteral("predicted"), double(std::llround(r.predictedTravel))}}},
+                     {QStringLiteral("predictedSeconds"), r.predictedSeconds},
                      {QStringLiteral("moved"), r.moved},
                      {QStringLiteral("stopConfirmed"), r.stopConfirmed},
                      {QStringLiteral("returnedToStart"), r.returnedToStart}};
@@ -212,6 +252,8 @@ void StepCommand::onFinished(const StepResult &r)
         json.insert(QStringLiteral("abortCause"), r.abortCause);
     if (!r.stopNote.isEmpty())
         json.insert(QStringLiteral("stopNote"), r.stopNote);
+    if (!r.decelSource.isEmpty())
+        json.insert(QStringLiteral("deceleration"), r.decelSource);
 
     QStringList lines;
     if (r.hasRun) {
@@ -278,9 +320,25 @@ void StepCommand::onFinished(const StepResult &r)
     if (e.code == ErrorCode::None)
         e.code = ErrorCode::Cancelled;
     e.message = r.stopNote.isEmpty() ? r.reason : r.reason + QLatin1Char(' ') + r.stopNote;
+    if (r.abortCause.endsWith(QLatin1String("-limit"))) {
+        // A limit tripped: its own error code ("limit", not a STOP's "cancelled").
+        const CliExit code = r.moved && !r.stopConfirmed ? CliExit::DriveFailed : exitForFailure(e);
+        out()->note(e.message);
+        if (context()->globals.json) {
+            QJsonObject doc = json;
+            doc.insert(QStringLiteral("command"), name());
+            doc.insert(QStringLiteral("ok"), false);
+            doc.insert(QStringLiteral("exitCode"), int(code));
+            doc.insert(
+                QStringLiteral("error"),
+                QJsonObject{{QStringLiteral("code"), QStringLiteral("limit")}, {QStringLiteral("message"), e.message}});
+            out()->jsonLine(doc);
+        }
+        return finish(code);
+    }
     if (r.moved && !r.stopConfirmed)
         return fail(e, json, CliExit::DriveFailed);
-    fail(e, json);
+    fail(e, json); // refused by its prediction: OutOfRange, exit 2 (no motion sent)
 }
 
 } // namespace dd

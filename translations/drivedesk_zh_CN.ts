@@ -4790,26 +4790,6 @@ and gap between requests it recommends. Exit code 1 when the drive answered none
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre PERCENT]
-          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
-EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
-      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now (default)
-Samples as fast as the link allows; --pre is the share of the record before the
-trigger (default 0), --duration the record (default 1 s); auto captures anyway
-after --timeout seconds (default 1). Saves the samples and the drive&apos;s tuning
-parameters (read from it) to RUN.ddrun (docs/tuning.md).
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre PERCENT]
-          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
-EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
-      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now（默认）
-以连接允许的最快速度采样；--pre 为记录中触发之前部分所占的比例（默认 0），
---duration 为记录时长（默认 1 s）；auto 模式在 --timeout 秒（默认 1）后即使
-未触发也会采集。将采样数据和驱动器的整定参数（从驱动器读取）保存到
-RUN.ddrun（docs/tuning.md）。
-</translation>
-    </message>
-    <message>
         <source>Usage: drivedesk-cli runs RUN.ddrun [RUN2.ddrun ...]
 The runs&apos; metrics side by side, and the tuning parameters that differ between
 consecutive runs with what the metrics did. Reads files only.
@@ -4817,84 +4797,6 @@ consecutive runs with what the metrics did. Reads files only.
         <translation>用法：drivedesk-cli runs RUN.ddrun [RUN2.ddrun ...]
 并列显示各次运行的指标，以及相邻两次运行之间不同的整定参数和指标随之
 发生的变化。只读取文件。
-</translation>
-    </message>
-    <message>
-        <source>Commands:
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 find drives: family, address, baud, firmware, state
-  info                           identity, firmware, state, alarm, capabilities
-  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
-  set PARAM=VALUE ...            validate, write, read back, report verified or not
-  backup -o FILE [--changed-only] every readable parameter to a backup file
-  backup (--all | --address 1,2,5) -o DIR
-                                 one file per drive, FAMILY-ADDRESS.json, and index.json
-  diff FILE | diff A B           compare; A, B = FILE, drive, drive:ADDRESS or defaults
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 write the differences, verify each
-  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
-                                 the same to several drives, each at its address
-  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 sample live values (Ctrl-C ends)
-  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 move, and wait until the axis is at rest
-  stop [--emergency]             stop (emergency stop where the family has one)
-  enable on|off                  servo enable on or off
-  clear-alarm                    clear the alarm and check that it is gone
-  home [--positive] [--no-wait]  homing, negative direction first
-  channels                       the monitor channels this drive offers
-  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
-          [--mode single|auto] [--timeout S] -o RUN.ddrun
-                                 triggered capture to a run file
-  step velocity SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
-  step position DISTANCE --speed V --max-travel N [-o RUN.ddrun]
-  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
-                                 step-response test within limits, with metrics
-  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences
-  apply-run RUN.ddrun [--dry-run] [--force]
-                                 write the run&apos;s tuning parameters where they differ
-  spectrum RUN.ddrun CHANNEL [--peaks N]
-                                 a channel&apos;s spectrum and its peaks
-</source>
-        <translation>命令：
-  scan [--from A] [--to B] [--bauds 9600,19200,...]
-                                 查找驱动器：系列、地址、波特率、固件、状态
-  info                           标识、固件、状态、报警、支持的功能
-  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
-  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
-  backup -o FILE [--changed-only] 将全部可读参数备份到文件
-  backup (--all | --address 1,2,5) -o DIR
-                                 每台驱动器一个文件 FAMILY-ADDRESS.json，另有 index.json
-  diff FILE | diff A B           比较；A、B 为 FILE、drive、drive:ADDRESS 或 defaults
-  restore FILE [--dry-run] [--only PARAM,...] [--force]
-                                 写入有差异的参数，并逐个校验
-  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
-                                 同上，写入多台驱动器，各用其自己的地址
-  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
-  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
-                                 采样实时值（Ctrl-C 结束）
-  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
-  move (--by N | --to N) [--speed V] [--no-wait]
-                                 定位运动，并等待轴静止
-  stop [--emergency]             停止（该系列支持时可急停）
-  enable on|off                  伺服使能开或关
-  clear-alarm                    清除报警并确认报警已消除
-  home [--positive] [--no-wait]  回零，先向负方向
-  channels                       该驱动器提供的监控通道
-  capture CHANNEL,... [--trigger EXPR] [--pre PERCENT] [--duration S]
-          [--mode single|auto] [--timeout S] -o RUN.ddrun
-                                 触发采集，保存为运行记录文件
-  step velocity SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
-  step position DISTANCE --speed V --max-travel N [-o RUN.ddrun]
-  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
-                                 在限值内进行阶跃响应测试，给出指标
-  runs RUN.ddrun [RUN2.ddrun ...] 并列比较指标，列出参数差异
-  apply-run RUN.ddrun [--dry-run] [--force]
-                                 将运行记录的调谐参数写入有差异之处
-  spectrum RUN.ddrun CHANNEL [--peaks N]
-                                 通道的频谱及其峰值
 </translation>
     </message>
     <message>
@@ -4992,41 +4894,164 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
 </translation>
     </message>
     <message>
+        <source>Commands:
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 find drives: family, address, baud, firmware, state
+  info                           identity, firmware, state, alarm, capabilities
+  get PARAM ...                  read parameters; PARAM = 12, PA12, P12 or a name
+  set PARAM=VALUE ...            validate, write, read back, report verified or not
+  backup -o FILE [--changed-only] every readable parameter to a backup file
+  backup (--all | --address 1,2,5) -o DIR
+                                 one file per drive, FAMILY-ADDRESS.json, and index.json
+  diff FILE | diff A B           compare; A, B = FILE, drive, drive:ADDRESS or defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 write the differences, verify each
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 the same to several drives, each at its address
+  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 sample live values (Ctrl-C ends)
+  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 move, and wait until the axis is at rest
+  stop [--emergency]             stop (emergency stop where the family has one)
+  enable on|off                  servo enable on or off
+  clear-alarm                    clear the alarm and check that it is gone
+  home [--positive] [--no-wait]  homing, negative direction first
+  channels                       the monitor channels this drive offers
+  capture CHANNEL,... [--trigger EXPR] [--pre 25%|0.1s] [--duration S]
+          [--mode single|auto] [--timeout S] -o RUN.ddrun
+                                 triggered capture to a run file
+  step velocity SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+  step position DISTANCE --speed V --max-travel N [-o RUN.ddrun]
+  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+                                 step-response test within limits, with metrics
+  runs RUN.ddrun [RUN2.ddrun ...] metrics side by side, parameter differences
+  apply-run RUN.ddrun [--dry-run] [--force]
+                                 write the run&apos;s tuning parameters where they differ
+  spectrum RUN.ddrun CHANNEL [--peaks N]
+                                 a channel&apos;s spectrum and its peaks
+</source>
+        <translation>命令：
+  scan [--from A] [--to B] [--bauds 9600,19200,...]
+                                 查找驱动器：系列、地址、波特率、固件、状态
+  info                           标识、固件、状态、报警、支持的功能
+  get PARAM ...                  读取参数；PARAM 为 12、PA12、P12 或名称
+  set PARAM=VALUE ...            检查取值、写入、回读，报告是否校验通过
+  backup -o FILE [--changed-only] 将全部可读参数备份到文件
+  backup (--all | --address 1,2,5) -o DIR
+                                 每台驱动器一个文件 FAMILY-ADDRESS.json，另有 index.json
+  diff FILE | diff A B           比较；A、B 为 FILE、drive、drive:ADDRESS 或 defaults
+  restore FILE [--dry-run] [--only PARAM,...] [--force]
+                                 写入有差异的参数，并逐个校验
+  restore FILE (--all | --address 1,2,5) [--stop-on-failure]
+                                 同上，写入多台驱动器，各用其自己的地址
+  ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
+  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
+                                 采样实时值（Ctrl-C 结束）
+  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
+  move (--by N | --to N) [--speed V] [--no-wait]
+                                 定位运动，并等待轴静止
+  stop [--emergency]             停止（该系列支持时可急停）
+  enable on|off                  伺服使能开或关
+  clear-alarm                    清除报警并确认报警已消除
+  home [--positive] [--no-wait]  回零，先向负方向
+  channels                       该驱动器提供的监控通道
+  capture CHANNEL,... [--trigger EXPR] [--pre 25%|0.1s] [--duration S]
+          [--mode single|auto] [--timeout S] -o RUN.ddrun
+                                 触发采集，保存为运行记录文件
+  step velocity SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+  step position DISTANCE --speed V --max-travel N [-o RUN.ddrun]
+  step reversal SPEED --duration S --max-speed V --max-travel N [-o RUN.ddrun]
+                                 在限值内进行阶跃响应测试，给出指标
+  runs RUN.ddrun [RUN2.ddrun ...] 并列比较指标，列出参数差异
+  apply-run RUN.ddrun [--dry-run] [--force]
+                                 将运行记录的调谐参数写入有差异之处
+  spectrum RUN.ddrun CHANNEL [--peaks N]
+                                 通道的频谱及其峰值
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre 25%|0.1s]
+          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
+EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
+      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now (default)
+Samples as fast as the link allows; --pre is the part of the record before the
+trigger, with its unit: a percentage (25%) or seconds (0.1s) (default 0), as in
+step; --duration the record (default 1 s); auto captures anyway
+after --timeout seconds (default 1). Saves the samples and the drive&apos;s tuning
+parameters (read from it) to RUN.ddrun (docs/tuning.md).
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre 25%|0.1s]
+          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
+EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
+      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now（默认）
+以连接允许的最快速度采样；--pre 为记录中触发之前的部分，须带单位：百分比（25%）
+或秒（0.1s）（默认 0），与 step 相同；--duration 为记录时长（默认 1 s）；auto
+模式在 --timeout 秒（默认 1）后即使未触发也会采集。将采样数据和驱动器的整定参数
+（从驱动器读取）保存到 RUN.ddrun（docs/tuning.md）。
+</translation>
+    </message>
+    <message>
         <source>Usage: drivedesk-cli [OPTIONS] step velocity SPEED --duration S --max-speed V --max-travel N
        drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]
        drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N
-          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
-          [--notes TEXT] [-o RUN.ddrun]
+          [--max-duration S] [--record S] [--pre 0.1s|25%] [--channels CH,...]
+          [--no-return] [--counts-per-rev N] [--notes TEXT] [-o RUN.ddrun]
 velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.
 reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.
 The limits are required (exit 2, nothing sent, without them): --max-speed (the
 speed unit; a position step: 1.5 x --speed unless given), --max-travel from the
 start position (pulses), --max-duration until the axis is at rest (default: the
-step&apos;s time + 2 s; position 10 s). The captured speed and position are watched
-against them; an alarm, a limit, Ctrl-C or a lost link stops the axis and ends
-the test with exit code 1. The capture runs from --pre (0.05 s) before the motion
-command for --record seconds (default: the step&apos;s time + 0.3 s; a position
-step: until the axis is at rest, + 0.3 s).
-A completed test returns to its start position (--no-return: it stays), prints
+step&apos;s time + 2 s; position 10 s). A test whose predicted travel or time (with
+its stop; --counts-per-rev for r/min drives, default 10000) does not fit them is
+refused, no motion sent. The captured speed and position are watched against
+them (the travel early enough to stop inside it); an alarm, a limit, Ctrl-C, a
+lost link, or a STOP or command from elsewhere (another master, the drive&apos;s
+panel) stops the axis and ends the test with exit code 1; nothing moves after
+it, and -o saves the record so far, marked aborted. The capture runs from --pre
+(0.05s, or a percentage of the capture) before the motion command for --record
+seconds (default: the step&apos;s time + 0.3 s; a position step: until the axis is
+at rest, + 0.3 s).
+A completed test returns to its start position, announced, under the same
+limits and STOP (--no-return: it stays), prints
 the metrics with their resolution or why they cannot be resolved, and saves the
 run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).
 </source>
         <translation>用法：drivedesk-cli [选项] step velocity SPEED --duration S --max-speed V --max-travel N
       drivedesk-cli [选项] step position DISTANCE --speed V --max-travel N [--max-speed V]
       drivedesk-cli [选项] step reversal SPEED --duration S --max-speed V --max-travel N
-          [--max-duration S] [--record S] [--pre S] [--channels CH,...] [--no-return]
-          [--notes TEXT] [-o RUN.ddrun]
+          [--max-duration S] [--record S] [--pre 0.1s|25%] [--channels CH,...]
+          [--no-return] [--counts-per-rev N] [--notes TEXT] [-o RUN.ddrun]
 velocity：以 SPEED 运行 S 秒后停止。position：以速度 V 相对移动 DISTANCE。
 reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止。
 限值为必填（缺少时退出码 2，不发送任何内容）：--max-speed（速度单位；定位阶跃
 未给出时为 --speed 的 1.5 倍）、--max-travel 距起始位置的最大行程（脉冲数）、
---max-duration 到轴静止的最长时间（默认：阶跃时间 + 2 秒；定位 10 秒）。
-采集到的速度和位置按这些限值监视；报警、超出限值、Ctrl-C 或链路断开都会停止
-轴并以退出码 1 结束测试。采集从运动指令前 --pre（0.05 秒）开始，持续 --record
-秒（默认：阶跃时间 + 0.3 秒；定位阶跃：直到轴静止后再加 0.3 秒）。测试完成后
-回到起始位置（--no-return：留在原处），打印各项指标及其分辨率或无法分辨的原因，
-并将运行记录连同从驱动器读取的调谐参数保存到 RUN.ddrun（docs/tuning.md）。
+--max-duration 到轴静止的最长时间（默认：阶跃时间 + 2 秒；定位 10 秒）。预测的
+行程或时间（含停止过程；r/min 驱动器用 --counts-per-rev，默认 10000）超出限值
+的测试会被拒绝，不发送任何运动指令。采集到的速度和位置按这些限值监视（行程提前
+触发，使轴停在限值以内）；报警、超出限值、Ctrl-C、链路断开，或来自别处的停止
+或指令（其他主站、驱动器面板）都会停止轴并以退出码 1 结束测试；此后不再有任何
+运动，-o 会保存到此为止的记录并标记为中止。采集从运动指令前 --pre（0.05s，或
+占整个采集的百分比）开始，持续 --record 秒（默认：阶跃时间 + 0.3 秒；定位阶跃：
+直到轴静止后再加 0.3 秒）。
+测试完成后回到起始位置，事先告知，并受同样的限值和 STOP 约束（--no-return：
+留在原处），打印
+各项指标及其分辨率或无法分辨的原因，并将运行记录连同从驱动器读取的调谐参数
+保存到 RUN.ddrun（docs/tuning.md）。
 </translation>
+    </message>
+    <message>
+        <source>--pre needs its unit: a percentage of the record (e.g. --pre 25%) or seconds before the trigger (e.g. --pre 0.1s), not &quot;%1&quot;.</source>
+        <translation>--pre 需要带单位：记录的百分比（例如 --pre 25%）或触发前的秒数（例如 --pre 0.1s），而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>--pre: &quot;%1&quot; must be a percentage from 0%% to %2%%.</source>
+        <translation>--pre：“%1”必须是 0%% 到 %2%% 之间的百分比。</translation>
+    </message>
+    <message>
+        <source>--pre: &quot;%1&quot; must be seconds from 0s to %2s.</source>
+        <translation>--pre：“%1”必须是 0s 到 %2s 之间的秒数。</translation>
     </message>
 </context>
 <context>
@@ -5850,6 +5875,22 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>%1 is larger than %2 MiB: not a run file</source>
         <translation>%1 大于 %2 MiB：不是运行记录文件</translation>
+    </message>
+    <message>
+        <source>%1: formatVersion must be a number (%2), not %3</source>
+        <translation>%1：formatVersion 必须是数字（%2），而不是 %3</translation>
+    </message>
+    <message>
+        <source>%1: samples.time holds %2 samples, more than the %3 a run file may hold</source>
+        <translation>%1：samples.time 含 %2 个采样，超过运行记录文件允许的 %3 个</translation>
+    </message>
+    <message>
+        <source>%1: result must be an object</source>
+        <translation>%1：result 必须是对象</translation>
+    </message>
+    <message>
+        <source>%1: result.outcome &quot;%2&quot; is not completed or aborted</source>
+        <translation>%1：result.outcome“%2”既不是 completed 也不是 aborted</translation>
     </message>
 </context>
 <context>
@@ -7399,6 +7440,10 @@ firmware %2</source>
         <source>The settling time recorded after the motion must be 0 to 60 s.</source>
         <translation>运动后记录的稳定时间必须为 0 到 60 秒。</translation>
     </message>
+    <message>
+        <source>The counts per revolution must be 1 to 1000000000.</source>
+        <translation>每转计数必须在 1 到 1000000000 之间。</translation>
+    </message>
 </context>
 <context>
     <name>dd::StepTest</name>
@@ -7455,10 +7500,6 @@ firmware %2</source>
         <translation>无法读取驱动器状态：%1</translation>
     </message>
     <message>
-        <source>The drive is in alarm %1: clear it before a step test.</source>
-        <translation>驱动器处于报警 %1：请在阶跃测试前清除报警。</translation>
-    </message>
-    <message>
         <source>Could not read the tuning parameters: %1</source>
         <translation>无法读取调谐参数：%1</translation>
     </message>
@@ -7495,10 +7536,6 @@ firmware %2</source>
         <translation>正在等待轴静止。</translation>
     </message>
     <message>
-        <source>Returning to the start position %1.</source>
-        <translation>正在返回起始位置 %1。</translation>
-    </message>
-    <message>
         <source>Could not return to the start position: %1</source>
         <translation>无法返回起始位置：%1</translation>
     </message>
@@ -7531,10 +7568,6 @@ firmware %2</source>
         <translation>停止指令已发送，但无法确认轴已静止：%1</translation>
     </message>
     <message>
-        <source>The axis stopped at %1 (%2 from the start).</source>
-        <translation>轴停在 %1（距起始位置 %2）。</translation>
-    </message>
-    <message>
         <source>The axis was not seen at rest %1 s after the stop: check it; use the machine&apos;s emergency stop if it still moves.</source>
         <translation>停止后 %1 秒仍未见轴静止：请检查；若仍在运动，请使用机器的急停。</translation>
     </message>
@@ -7549,6 +7582,62 @@ firmware %2</source>
     <message>
         <source>Step test not run: %1</source>
         <translation>阶跃测试未进行：%1</translation>
+    </message>
+    <message>
+        <source>Alarm %1 is active: clear it first. No motion was sent.</source>
+        <translation>报警 %1 处于激活状态：请先清除。未发送任何运动指令。</translation>
+    </message>
+    <message>
+        <source>This drive&apos;s speed unit &quot;%1&quot; is not one DriveDesk can relate to positions: the test&apos;s travel cannot be predicted.</source>
+        <translation>该驱动器的速度单位“%1”无法与位置换算：无法预测测试的行程。</translation>
+    </message>
+    <message>
+        <source>%1 %2 %3, the drive&apos;s</source>
+        <translation>%1 %2 %3，驱动器的设定</translation>
+    </message>
+    <message>
+        <source>assumed: a stop from the test&apos;s speed within %1 s; the dictionary names no deceleration</source>
+        <translation>假定：从测试速度在 %1 s 内停止；参数字典中没有减速度</translation>
+    </message>
+    <message>
+        <source>No motion was sent.</source>
+        <translation>未发送任何运动指令。</translation>
+    </message>
+    <message>
+        <source>At %1 from the start the axis needs about %2 more to stop: it would pass the maximum travel %3; stopped.</source>
+        <translation>距起始位置 %1 处，轴还需约 %2 才能停下：将超过最大行程 %3；已停止。</translation>
+    </message>
+    <message>
+        <source>Stopped by another master or at the drive: %1. DriveDesk sends no further motion (no return to the start).</source>
+        <translation>被其他主站或在驱动器处停止：%1。DriveDesk 不再发送任何运动指令（不返回起始位置）。</translation>
+    </message>
+    <message>
+        <source>the move came to rest at %1, %2 short of its target %3</source>
+        <translation>运动停在 %1，距目标 %3 还差 %2</translation>
+    </message>
+    <message>
+        <source>not measured: the test was aborted (%1)</source>
+        <translation>未测量：测试已中止（%1）</translation>
+    </message>
+    <message>
+        <source> (aborted)</source>
+        <translation>（已中止）</translation>
+    </message>
+    <message>
+        <source>Not returning to the start position %1: it is %2 away, beyond the maximum travel %3.</source>
+        <translation>不返回起始位置 %1：相距 %2，超出最大行程 %3。</translation>
+    </message>
+    <message>
+        <source>Returning to the start position %1: moving %2 at %3 (STOP stops it).</source>
+        <translation>正在返回起始位置 %1：以 %3 移动 %2（STOP 可停止）。</translation>
+    </message>
+    <message>
+        <source>the return to the start came to rest at %1, %2 from the start %3</source>
+        <translation>返回起始位置的运动停在 %1，距起始位置 %3 为 %2</translation>
+    </message>
+    <message>
+        <source>The axis stopped at %1 (%2 from the start; farthest %3 of the maximum travel %4).</source>
+        <translation>轴停在 %1（距起始位置 %2；最远 %3，最大行程 %4）。</translation>
     </message>
 </context>
 <context>
@@ -7655,6 +7744,14 @@ firmware %2</source>
     <message>
         <source>Left at %1 (--no-return; started at %2).</source>
         <translation>停留在 %1（--no-return；起始于 %2）。</translation>
+    </message>
+    <message>
+        <source>--pre %1 is %2 s before the motion: at most 10 s.</source>
+        <translation>--pre %1 相当于运动前 %2 s：最多 10 s。</translation>
+    </message>
+    <message>
+        <source>No command was sent after identifying the drive.</source>
+        <translation>识别驱动器之后未发送任何指令。</translation>
     </message>
 </context>
 <context>
@@ -8488,10 +8585,6 @@ firmware %2</source>
         <translation>阶跃测试：正在停止…</translation>
     </message>
     <message>
-        <source>Step test: going back to the start…</source>
-        <translation>阶跃测试：正在返回起始位置…</translation>
-    </message>
-    <message>
         <source>Step test: running…</source>
         <translation>阶跃测试：正在运行…</translation>
     </message>
@@ -8623,6 +8716,18 @@ firmware %2</source>
         <source>The drive&apos;s live values are needed for a step test.</source>
         <translation>阶跃测试需要驱动器的实时值。</translation>
     </message>
+    <message>
+        <source>Step test: the axis moves back to its start position (STOP stops it)…</source>
+        <translation>阶跃测试：轴正在返回起始位置（STOP 可停止）…</translation>
+    </message>
+    <message>
+        <source>Step test not started: %1</source>
+        <translation>阶跃测试未开始：%1</translation>
+    </message>
+    <message>
+        <source>(aborted: %1)</source>
+        <translation>（已中止：%1）</translation>
+    </message>
 </context>
 <context>
     <name>dd::DemoMenu</name>
@@ -8749,6 +8854,48 @@ firmware %2</source>
     <message>
         <source>A frame from address %1 arrived instead: do two drives share an address, or does another master talk on the bus?</source>
         <translation>收到的是地址 %1 的帧：是否有两台驱动器使用同一地址，或总线上有另一个主站？</translation>
+    </message>
+</context>
+<context>
+    <name>dd::CommandWatch</name>
+    <message>
+        <source>the drive&apos;s speed command changed from %1 to %2</source>
+        <translation>驱动器的速度指令从 %1 变为 %2</translation>
+    </message>
+    <message>
+        <source>the drive reports that it stopped running</source>
+        <translation>驱动器报告已停止运行</translation>
+    </message>
+    <message>
+        <source>the drive was disabled</source>
+        <translation>驱动器已被禁用</translation>
+    </message>
+    <message>
+        <source>the drive reports the axis at rest</source>
+        <translation>驱动器报告轴已静止</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StepPlan</name>
+    <message>
+        <source>The test would take the axis about %1 from the start, including its stop%2: beyond the maximum travel %3.</source>
+        <translation>测试将使轴离开起始位置约 %1（含停止过程%2）：超出最大行程 %3。</translation>
+    </message>
+    <message>
+        <source>The test would take the axis about %1 from the start before it even stops%2: beyond the maximum travel %3.</source>
+        <translation>测试在开始停止之前就将使轴离开起始位置约 %1%2：超出最大行程 %3。</translation>
+    </message>
+    <message>
+        <source>Shorten the test or lower its speed.</source>
+        <translation>请缩短测试或降低速度。</translation>
+    </message>
+    <message>
+        <source>The test needs about %1 s until the axis is at rest, including its stop%2: not within the maximum duration of %3 s.</source>
+        <translation>测试需约 %1 s 才能使轴静止（含停止过程%2）：超出最长时间 %3 s。</translation>
+    </message>
+    <message>
+        <source>The test needs about %1 s of motion before it even stops%2: not within the maximum duration of %3 s.</source>
+        <translation>测试在开始停止之前就需运动约 %1 s%2：超出最长时间 %3 s。</translation>
     </message>
 </context>
 </TS>

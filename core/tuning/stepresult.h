@@ -19,8 +19,9 @@ struct StepResult
     Outcome outcome = Outcome::Failed;
     QString reason; // translated: why it was aborted / failed ("" when completed)
     Error error;    // behind it: Cancelled (STOP, a limit), DriveException (alarm), LinkClosed, ...
-    // "alarm", "stop", "speed-limit", "travel-limit", "duration-limit", "link-lost",
-    // "capture-failed", "lease-expired", "stop-failed", "refused"; "" when not aborted.
+    // "alarm", "stop", "external-stop", "speed-limit", "travel-limit", "duration-limit",
+    // "link-lost", "capture-failed", "lease-expired", "stop-failed", "refused"; "" when not
+    // aborted.
     QString abortCause;
 
     bool moved = false;         // a motion command was sent
@@ -32,6 +33,13 @@ struct StepResult
     qint64 startPosition = 0;
     qint64 endPosition = 0;
     bool returnedToStart = false; // back at the start position (within one count), read there
+    qint64 farthest = 0;          // the largest distance from the start seen (counts), stop included
+
+    // The prediction the test was let run on (StepPlan): travel (counts) and seconds; 0
+    // when it never got that far.
+    double predictedTravel = 0.0;
+    double predictedSeconds = 0.0;
+    QString decelSource; // translated: where the deceleration of the prediction came from
 
     bool hasRun = false; // `run` holds the capture, metrics and snapshot (a measured test)
     TuningRun run;

@@ -41,6 +41,8 @@ Error StepSpec::check() const
         return bad(tr("The capture before the motion must be 0 to 10 s."));
     if (!(recordS >= 0.0) || recordS > 600.0)
         return bad(tr("The capture after the motion command must be 0 to 600 s."));
+    if (!(countsPerRev >= 0.0) || countsPerRev > 1e9)
+        return bad(tr("The counts per revolution must be 1 to 1000000000."));
     if (!(settleS >= 0.0) || settleS > 60.0)
         return bad(tr("The settling time recorded after the motion must be 0 to 60 s."));
     return {};

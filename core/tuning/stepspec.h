@@ -34,6 +34,9 @@ public:
     double recordS = 0.0;   // capture after it (0: automatic)
     double settleS = 0.3;   // automatic record: this long after the commanded time
     bool returnToStart = true;
+    // Counts per motor revolution, for drives whose speed unit is r/min (0: the assumption
+    // StepPlan::DefaultCountsPerRev): how the test's travel is predicted before it moves.
+    double countsPerRev = 0.0;
     QStringList channels; // empty: chosen for the drive (StepTest::channelsFor)
 
     // The capture after the motion command, seconds (0: a position step's, until at rest).

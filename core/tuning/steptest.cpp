@@ -12,6 +12,14 @@ namespace dd {
 namespace {
 constexpr int PollMs = 50;
 constexpr int StopConfirmMs = 3000; // the axis must be seen at rest this soon after a stop
+// The time between a position read and the stop taking effect that the travel watch allows
+// for beyond two sample intervals: the stop command's way to the drive.
+constexpr double StopReactionS = 0.010;
+// The speed in counts/s is measured over at least this long (the position's quantisation).
+constexpr double SpeedWindowS = 0.004;
+// A position step or the return has arrived within this many counts of its target (or 0.5 %
+// of the distance); short of that the axis was stopped by something else.
+constexpr double ArrivalCounts = 10.0;
 
 bool offers(const Drive *drive, const QString &channel)
 {
@@ -19,6 +27,14 @@ bool offers(const Drive *drive, const QString &channel)
         if (i.id == channel)
             return true;
     return false;
+}
+
+QString unitOf(const Drive *drive, const QString &channel)
+{
+    for (const ChannelInfo &i : drive->channels())
+        if (i.id == channel)
+            return i.unit;
+    return {};
 }
 
 // The part of a reversal's capture around its reversal: from the middle of the first
@@ -70,9 +86,16 @@ StepTest::StepTest(Drive *drive, QObject *parent)
         return;
     connect(&m_renew, &QTimer::timeout, drive, &Drive::renewJogLease);
     connect(drive, &Drive::alarmChanged, this, [this](int code) {
-        if (code != 0 && isRunning())
-            abortOnAlarm(code);
+        if (code == 0 || !isRunning())
+            return;
+        if (m_aborting && m_result.abortCause == QLatin1String("external-stop"))
+            return alarmWasTheCause(code); // the drive stopped because of its alarm
+        if (!m_result.moved)               // before the motion: a refusal, not an abort
+            return refuse({ErrorCode::DriveException,
+                           tr("Alarm %1 is active: clear it first. No motion was sent.").arg(code), code});
+        abortOnAlarm(code);
     });
+    connect(drive, &Drive::statusChanged, this, &StepTest::onStatus);
     connect(drive, &Drive::stopRequested, this, [this] {
         if (isRunning() && !m_ownStop && m_result.moved)
             abortWith(QStringLiteral("stop"), {ErrorCode::Cancelled, tr("STOP: the step test was stopped.")});
@@ -134,6 +157,11 @@ QStringList StepTest::channelsFor(const Drive *drive, StepSpec::Kind kind)
     for (const QString &c : std::as_const(wanted))
         if (offers(drive, c))
             out << c;
+    // A jog is watched on the drive's speed command (CommandWatch); a drive without one
+    // that reports its running state as a channel (shuoke) is watched on that.
+    if (kind != StepSpec::Kind::Position && !out.contains(QStringLiteral("speed-command"))
+        && offers(drive, QStringLiteral("status")))
+        out << QStringLiteral("status");
     return out;
 }
 
@@ -163,7 +191,16 @@ Error StepTest::check(const Drive *drive, const StepSpec &spec, const StepLimits
     for (const QString &c : spec.channels)
         if (!offers(drive, c))
             return {ErrorCode::InvalidArgument, tr("This drive has no channel %1.").arg(c)};
-    return {};
+    // The travel and time at full speed, before the stop (the stop needs the drive's
+    // deceleration, read with the tuning parameters: planWithDeceleration()).
+    const QString unit = unitOf(drive, QStringLiteral("speed"));
+    const double k = StepPlan::countsPerSpeedUnit(unit, spec.countsPerRev);
+    if (!(k > 0.0))
+        return {ErrorCode::NotSupported,
+                tr("This drive's speed unit \"%1\" is not one DriveDesk can relate to positions: the test's travel "
+                   "cannot be predicted.")
+                    .arg(unit)};
+    return StepPlan::predict(spec, k).check(limits);
 }
 
 Error StepTest::start(const StepSpec &spec, const StepLimits &limits)
@@ -193,6 +230,13 @@ Error StepTest::start(const StepSpec &spec, const StepLimits &limits)
     m_linkLost = false;
     m_ownStop = false;
     m_jogEnd.clear();
+    m_watch.idle();
+    m_recent.clear();
+    m_lastSampleT = -1.0;
+    m_sampleGap = 0.0;
+    m_countsPerS = 0.0;
+    m_plan = StepPlan::predict(
+        spec, StepPlan::countsPerSpeedUnit(unitOf(m_drive, QStringLiteral("speed")), spec.countsPerRev));
     setPhase(Phase::Preparing, tr("Reading the drive's state and tuning parameters."));
     readState();
     return {};
@@ -233,13 +277,10 @@ void StepTest::readState()
             return finish(StepResult::Outcome::Failed);
         }
         const DriveStatus s = r->status();
-        if (s.alarmCode != 0) {
-            m_result.error = {ErrorCode::DriveException,
-                              tr("The drive is in alarm %1: clear it before a step test.").arg(s.alarmCode),
-                              s.alarmCode};
-            m_result.reason = m_result.error.message;
-            return finish(StepResult::Outcome::Failed);
-        }
+        if (s.alarmCode != 0)
+            return refuse({ErrorCode::DriveException,
+                           tr("Alarm %1 is active: clear it first. No motion was sent.").arg(s.alarmCode),
+                           s.alarmCode});
         if (s.positionValid) {
             m_start = s.position;
             m_startKnown = true;
@@ -255,7 +296,7 @@ void StepTest::readSnapshot()
     for (const TuningEntry &e : dict.tuning())
         indices << e.index;
     if (indices.isEmpty())
-        return arm();
+        return planWithDeceleration();
     watch(m_drive->readParameters(indices), [this](DriveReply *r) {
         if (m_phase != Phase::Preparing)
             return;
@@ -268,8 +309,53 @@ void StepTest::readSnapshot()
         for (const TuningEntry &e : d.tuning())
             if (r->parameters().contains(e.index))
                 m_snapshot.append({e.index, d.byIndex(e.index)->key, e.role, r->parameters().value(e.index)});
-        arm();
+        planWithDeceleration();
     });
+}
+
+void StepTest::planWithDeceleration()
+{
+    // The drive's deceleration where its dictionary names it and the snapshot read it.
+    const ParameterDictionary &d = m_drive->parameterDictionary();
+    double decel = 0.0;
+    QString source;
+    for (const QString &role : {QStringLiteral("deceleration"), QStringLiteral("acceleration")}) {
+        for (const TuningSnapshotEntry &e : std::as_const(m_snapshot)) {
+            if (e.role != role || decel > 0.0)
+                continue;
+            const ParameterInfo *info = d.byIndex(e.index);
+            decel = StepPlan::decelFromParameter(info ? info->unit : QString(), double(e.value));
+            if (decel > 0.0)
+                source = tr("%1 %2 %3, the drive's").arg(e.key).arg(e.value).arg(info->unit);
+        }
+    }
+    if (!(decel > 0.0)) {
+        decel = std::abs(double(m_spec.speed)) / StepPlan::AssumedStopS;
+        source = tr("assumed: a stop from the test's speed within %1 s; the dictionary names no deceleration")
+                     .arg(StepPlan::AssumedStopS);
+    }
+    m_plan = StepPlan::predict(m_spec, m_plan.countsPerSpeedUnitS, decel);
+    m_plan.decelSource = source;
+    m_result.predictedTravel = m_plan.travel;
+    m_result.predictedSeconds = m_plan.seconds;
+    m_result.decelSource = source;
+    if (Error e = m_plan.check(m_limits)) {
+        e.message += QLatin1Char(' ') + tr("No motion was sent.");
+        return refuse(e);
+    }
+    arm();
+}
+
+void StepTest::refuse(const Error &error)
+{
+    if (!isRunning())
+        return;
+    m_aborting = true;
+    m_result.abortCause = QStringLiteral("refused");
+    m_result.error = error;
+    m_result.reason = error.message;
+    m_result.stopConfirmed = true;
+    finish(StepResult::Outcome::Failed);
 }
 
 void StepTest::arm()
@@ -320,6 +406,7 @@ void StepTest::sendMotion()
     if (m_spec.kind == StepSpec::Kind::Position) {
         r = m_drive->moveRelative(m_spec.distance, m_spec.speed);
     } else {
+        m_watch.expectSpeed(m_spec.speed, true);
         r = m_drive->jog(m_spec.speed);
         m_renew.start(qMax(10, m_drive->jogLeaseMs() / 3));
         m_step.start(int(std::lround(m_spec.durationS * 1000.0)));
@@ -358,6 +445,7 @@ void StepTest::onStepTimer()
     if (m_spec.kind == StepSpec::Kind::Reversal && m_segment == 0) {
         m_segment = 1;
         m_reversalAt = m_session->now() - m_triggerAt;
+        m_watch.expectSpeed(-m_spec.speed, false); // it passes through rest on purpose
         watch(m_drive->jog(-m_spec.speed), [this](DriveReply *r) {
             if (!r->ok() && !m_aborting && isRunning())
                 abortWith(QStringLiteral("refused"), r->error());
@@ -367,6 +455,7 @@ void StepTest::onStepTimer()
     }
     m_renew.stop();
     m_stopSent = true;
+    m_watch.idle(); // our own stop: at rest is what was asked
     sendOwnStop([this](DriveReply *r) {
         if (m_aborting || !isRunning())
             return;
@@ -383,17 +472,26 @@ void StepTest::onStepTimer()
 
 void StepTest::onSample(double timeS, const QMap<QString, double> &values)
 {
-    Q_UNUSED(timeS);
     emit sampled(timeS, values);
-    if (m_aborting || !isRunning())
+    if (!isRunning())
         return;
     const double position = values.value(QStringLiteral("position"), std::nan(""));
+    if (m_aborting) { // the axis stops: how far it goes is reported
+        if (m_result.moved && std::isfinite(position))
+            noteDistance(qint64(std::llround(position)));
+        return;
+    }
     if (!m_startKnown && m_phase == Phase::Arming && std::isfinite(position)) {
         m_start = qint64(std::llround(position));
         m_startKnown = true;
     }
     if (m_phase != Phase::Moving && m_phase != Phase::Stopping)
         return;
+    if (m_phase == Phase::Moving) {
+        const QString what = m_watch.feedSample(values);
+        if (!what.isEmpty())
+            return abortExternal(what);
+    }
     const double speed = values.value(QStringLiteral("speed"), std::nan(""));
     if (std::isfinite(speed) && std::abs(speed) > m_limits.maxSpeed) {
         abortWith(QStringLiteral("speed-limit"),
@@ -401,13 +499,56 @@ void StepTest::onSample(double timeS, const QMap<QString, double> &values)
                    tr("The speed reached %1, above the maximum speed %2; stopped.").arg(speed).arg(m_limits.maxSpeed)});
         return;
     }
-    if (std::isfinite(position))
-        checkTravel(qint64(std::llround(position)));
+    if (!std::isfinite(position))
+        return;
+    const qint64 pos = qint64(std::llround(position));
+    // The typical time between two samples (a running mean): how long until the next check.
+    if (m_lastSampleT >= 0.0)
+        m_sampleGap = m_sampleGap > 0.0 ? 0.9 * m_sampleGap + 0.1 * (timeS - m_lastSampleT) : timeS - m_lastSampleT;
+    m_lastSampleT = timeS;
+    // The axis' speed in counts/s, over the last few ms of captured positions.
+    m_recent.append({timeS, pos});
+    while (m_recent.size() > 2 && timeS - m_recent.at(1).first >= SpeedWindowS)
+        m_recent.removeFirst();
+    if (m_recent.size() >= 2 && timeS - m_recent.first().first > 0.0)
+        m_countsPerS = double(pos - m_recent.first().second) / (timeS - m_recent.first().first);
+    if (!checkTravel(pos) || !m_startKnown || m_stopSent)
+        return;
+    // A position step heading for its target (inside the travel: checked before) is
+    // braked there by the drive's own profile; past it, it is watched as a jog is.
+    if (m_spec.kind == StepSpec::Kind::Position
+        && double(pos - m_start) * double(m_spec.distance) <= double(m_spec.distance) * double(m_spec.distance)
+        && m_countsPerS * double(m_spec.distance) >= 0.0)
+        return;
+    // Trip where the axis still stops inside the limit: the stopping point — this position,
+    // plus the way covered until the stop takes effect (and until the next sample) and the
+    // braking at the drive's deceleration from the speed measured now — must lie within
+    // the travel.
+    const double reaction = StopReactionS + 2.0 * m_sampleGap;
+    const double v = std::isfinite(speed) ? speed : 0.0;
+    const bool accelerating = std::abs(v) < 0.98 * std::abs(double(m_spec.speed));
+    const double brake = m_plan.stoppingDistance(m_countsPerS, v, reaction, accelerating, double(m_spec.speed));
+    const double stopAt = double(pos - m_start) + (m_countsPerS >= 0.0 ? brake : -brake);
+    if (std::abs(stopAt) > double(m_limits.maxTravel))
+        abortWith(QStringLiteral("travel-limit"),
+                  {ErrorCode::Cancelled,
+                   tr("At %1 from the start the axis needs about %2 more to stop: it would pass the maximum travel %3; "
+                      "stopped.")
+                       .arg(pos - m_start)
+                       .arg(std::llround(brake))
+                       .arg(m_limits.maxTravel)});
+}
+
+void StepTest::noteDistance(qint64 position)
+{
+    m_result.endPosition = position;
+    if (m_startKnown)
+        m_result.farthest = std::max(m_result.farthest, qint64(std::llabs(position - m_start)));
 }
 
 bool StepTest::checkTravel(qint64 position)
 {
-    m_result.endPosition = position;
+    noteDistance(position);
     if (!m_startKnown || std::abs(double(position - m_start)) <= double(m_limits.maxTravel))
         return true;
     abortWith(QStringLiteral("travel-limit"),
@@ -418,12 +559,33 @@ bool StepTest::checkTravel(qint64 position)
     return false;
 }
 
+void StepTest::onStatus(const DriveStatus &status)
+{
+    if (m_aborting || m_phase != Phase::Moving)
+        return;
+    const QString what = m_watch.feedStatus(status);
+    if (!what.isEmpty())
+        abortExternal(what);
+}
+
+void StepTest::abortExternal(const QString &what)
+{
+    m_watch.idle();
+    abortWith(QStringLiteral("external-stop"),
+              {ErrorCode::Cancelled,
+               tr("Stopped by another master or at the drive: %1. DriveDesk sends no further "
+                  "motion (no return to the start).")
+                   .arg(what)});
+}
+
 void StepTest::onCaptured(const CaptureData &capture)
 {
-    if (m_aborting || !isRunning())
+    if (!isRunning())
         return;
     m_capture = capture;
     m_haveCapture = true;
+    if (m_aborting)
+        return; // the aborted test's run (finish())
     if (m_restConfirmed)
         afterRest();
     else if (m_motionDone && m_phase != Phase::Stopping)
@@ -436,6 +598,13 @@ void StepTest::waitAtRest()
     m_atRestPolls = 0;
     m_havePolledPosition = false;
     pollAtRest();
+}
+
+void StepTest::alarmWasTheCause(int code)
+{
+    m_result.abortCause = QStringLiteral("alarm");
+    m_result.error = {ErrorCode::DriveException, tr("The drive raised alarm %1 during the step test.").arg(code), code};
+    m_result.reason = m_result.error.message;
 }
 
 void StepTest::abortOnAlarm(int code)
@@ -473,6 +642,15 @@ void StepTest::pollAtRest()
         // At rest twice: the first status at rest can carry reads taken while the axis
         // still settled.
         if (m_atRestPolls >= 2) {
+            if (m_spec.kind == StepSpec::Kind::Position && m_startKnown && s.positionValid) {
+                const qint64 target = m_start + m_spec.distance;
+                const double window = std::max(ArrivalCounts, 0.005 * std::abs(double(m_spec.distance)));
+                if (std::abs(double(s.position - target)) > window)
+                    return abortExternal(tr("the move came to rest at %1, %2 short of its target %3")
+                                             .arg(s.position)
+                                             .arg(std::llabs(target - s.position))
+                                             .arg(target));
+            }
             m_limit.stop();
             m_result.stopConfirmed = true;
             m_restConfirmed = true;
@@ -553,6 +731,7 @@ void StepTest::buildRun()
         run.units << unit;
     }
     run.tuning = m_snapshot;
+    run.outcome = QStringLiteral("completed");
     run.label = QStringLiteral("%1 %2").arg(run.test, run.created.toLocalTime().toString(QStringLiteral("HH:mm:ss")));
 
     StepMetrics::Input in;
@@ -582,14 +761,42 @@ void StepTest::buildRun()
     m_result.hasRun = true;
 }
 
+void StepTest::buildAbortedRun()
+{
+    buildRun();
+    // Not a step response: no response metric is measured on it; the peaks and the
+    // sample interval stay (they are what the record holds).
+    const QString why = tr("not measured: the test was aborted (%1)").arg(m_result.abortCause);
+    for (const QString &key :
+         {QStringLiteral("riseTime"), QStringLiteral("overshoot"), QStringLiteral("settlingTime2"),
+          QStringLiteral("settlingTime5"), QStringLiteral("steadyStateError"), QStringLiteral("steadyStateRipple")})
+        m_result.run.metrics.byKey(key) = Metric{std::nullopt, 0.0, why};
+    m_result.run.outcome = QStringLiteral("aborted");
+    m_result.run.abortCause = m_result.abortCause;
+    m_result.run.abortReason = m_result.reason;
+    m_result.run.label += tr(" (aborted)");
+}
+
 void StepTest::goBack()
 {
     if (m_result.endPosition == m_start) {
         m_result.returnedToStart = true;
         return finish(StepResult::Outcome::Completed);
     }
-    setPhase(Phase::Returning, tr("Returning to the start position %1.").arg(m_start));
+    const qint64 way = m_start - m_result.endPosition;
+    if (std::abs(double(way)) > double(m_limits.maxTravel)) {
+        // Further than the test may go: the way back is not taken (the same limits).
+        m_result.stopNote = tr("Not returning to the start position %1: it is %2 away, beyond the maximum travel %3.")
+                                .arg(m_start)
+                                .arg(way)
+                                .arg(m_limits.maxTravel);
+        return finish(StepResult::Outcome::Completed);
+    }
     const qint32 speed = qint32(std::abs(m_spec.speed));
+    // Announced before it starts: it is a motion like the test's own (STOP stops it).
+    setPhase(
+        Phase::Returning,
+        tr("Returning to the start position %1: moving %2 at %3 (STOP stops it).").arg(m_start).arg(way).arg(speed));
     DriveReply *r = m_drive->hasCapability(Capability::MoveAbsolute)
         ? m_drive->moveAbsolute(m_start, speed)
         : m_drive->moveRelative(m_start - m_result.endPosition, speed);
@@ -617,8 +824,8 @@ void StepTest::pollBack()
         if (!status)
             return;
         const DriveStatus &s = *status;
-        if (s.positionValid)
-            m_result.endPosition = s.position;
+        if (s.positionValid && !checkTravel(s.position))
+            return;
         if (s.running)
             m_sawRunning = true;
         countRest(s);
@@ -626,6 +833,11 @@ void StepTest::pollBack()
         if ((m_sawRunning && m_atRestPolls >= 2) || (m_atRestPolls >= 3 && (there || m_motionClock.elapsed() >= 300))) {
             m_limit.stop();
             m_result.returnedToStart = there;
+            if (!there && m_sawRunning && s.positionValid && std::abs(double(s.position - m_start)) > ArrivalCounts)
+                return abortExternal(tr("the return to the start came to rest at %1, %2 from the start %3")
+                                         .arg(s.position)
+                                         .arg(s.position - m_start)
+                                         .arg(m_start));
             if (!there)
                 m_result.stopNote = tr("The axis came to rest at %1, not at the start position %2.")
                                         .arg(m_result.endPosition)
@@ -644,10 +856,13 @@ void StepTest::abortWith(const QString &cause, const Error &error)
     if (m_aborting || !isRunning())
         return;
     m_aborting = true;
+    m_watch.idle();
     m_renew.stop();
     m_step.stop();
     m_limit.stop();
-    if (m_session)
+    // The capture goes on while the axis stops (finish() ends it): the aborted run shows
+    // the motion up to its end.
+    if (m_session && !m_result.moved)
         m_session->stop();
     m_result.abortCause = cause;
     m_result.error = error;
@@ -698,13 +913,17 @@ void StepTest::confirmStopped()
         }
         const DriveStatus s = r->status();
         if (s.positionValid)
-            m_result.endPosition = s.position;
+            noteDistance(s.position);
+        if (s.alarmCode != 0 && m_result.abortCause == QLatin1String("external-stop"))
+            alarmWasTheCause(s.alarmCode);
         countRest(s);
         if (m_atRestPolls >= 2) {
             m_result.stopConfirmed = true;
-            m_result.stopNote = tr("The axis stopped at %1 (%2 from the start).")
+            m_result.stopNote = tr("The axis stopped at %1 (%2 from the start; farthest %3 of the maximum travel %4).")
                                     .arg(m_result.endPosition)
-                                    .arg(m_result.endPosition - m_start);
+                                    .arg(m_result.endPosition - m_start)
+                                    .arg(m_result.farthest)
+                                    .arg(m_limits.maxTravel);
             return finish(StepResult::Outcome::Aborted);
         }
         if (m_motionClock.elapsed() > StopConfirmMs) {
@@ -734,9 +953,15 @@ void StepTest::finish(StepResult::Outcome outcome)
     m_renew.stop();
     m_step.stop();
     m_limit.stop();
+    m_watch.idle();
+    // An aborted test's capture up to now (onCaptured() keeps it): the run, marked aborted.
+    if (m_session && m_result.moved && !m_haveCapture && m_session->state() == CaptureRecorder::State::Recording)
+        m_session->finishNow();
     if (m_session)
         m_session->stop();
     m_result.outcome = outcome;
+    if (outcome == StepResult::Outcome::Aborted && m_haveCapture && !m_result.hasRun)
+        buildAbortedRun();
     ++m_generation; // late replies of this test are ignored
     QString line;
     switch (outcome) {

@@ -3,7 +3,9 @@
 #include "core/common/error.h"
 #include "core/drive/drivetypes.h"
 #include "core/tuning/capturesettings.h"
+#include "core/tuning/commandwatch.h"
 #include "core/tuning/steplimits.h"
+#include "core/tuning/stepplan.h"
 #include "core/tuning/stepresult.h"
 #include "core/tuning/stepspec.h"
 
@@ -23,19 +25,26 @@ struct ChannelInfo;
 
 // A step-response test on a live drive (docs/tuning.md), for the CLI's `step` and the GUI's
 // Tuning tab:
-//  1. start() checks the spec and the limits and what the drive can do; a refusal is
-//     returned at once and NOTHING is sent.
+//  1. start() checks the spec and the limits, what the drive can do, and the test's travel
+//     and time at full speed (StepPlan without the stop); a refusal is returned at once
+//     and NOTHING is sent.
 //  2. It reads the drive's state (an active alarm refuses the test; the start position) and
-//     the tuning parameters (the run's snapshot), arms a capture with the "motion" trigger
-//     and, once its pre-trigger window is full, sends the motion and fires the trigger.
-//     Velocity and reversal run under the jog lease (renewed here); a position step is a
-//     relative move.
-//  3. While it runs, an alarm, abort() (STOP), the captured speed above maxSpeed, the
-//     captured position further than maxTravel from the start, the motion not at rest
-//     within maxDurationS, a lost link, an expired lease or a failed capture abort it: the
-//     axis is stopped and seen at rest (stopConfirmed), or the result says why not.
-//  4. A completed test goes back to the start position (unless the spec says otherwise),
-//     computes the metrics (StepMetrics) and hands the run (TuningRun) in the result.
+//     the tuning parameters (the run's snapshot), predicts the whole test with the stop at
+//     the drive's deceleration (StepPlan; refused when it does not fit the limits, no
+//     motion sent), arms a capture with the "motion" trigger and, once its pre-trigger
+//     window is full, sends the motion and fires the trigger. Velocity and reversal run
+//     under the jog lease (renewed here); a position step is a relative move.
+//  3. While it runs, an alarm, abort() (STOP), the captured speed above maxSpeed, a
+//     stopping point (position + stopping distance at the measured speed) beyond
+//     maxTravel, the motion not at rest within maxDurationS, a lost link, an expired lease,
+//     a failed capture, or the drive no longer doing what the test asked (CommandWatch:
+//     stopped, disabled or commanded by someone else) abort it: the axis is stopped and
+//     seen at rest (stopConfirmed), or the result says why not. An aborted test sends no
+//     further motion; its capture up to the end is handed in the result (run marked
+//     aborted).
+//  4. A completed test goes back to the start position (unless the spec says otherwise) —
+//     a motion announced by progress(), under the same limits and STOP — computes the
+//     metrics (StepMetrics) and hands the run (TuningRun) in the result.
 // finished() comes exactly once per started test (not when the object is destroyed
 // mid-test: the destructor then sends a stop). Lives in the drive's thread.
 class StepTest : public QObject
@@ -100,6 +109,16 @@ private:
     void pollBack();
     void abortWith(const QString &cause, const Error &error);
     void abortOnAlarm(int code);
+    // An "external-stop" that came with an alarm: the alarm was the cause.
+    void alarmWasTheCause(int code);
+    // The drive no longer does what the test asked (`what`, from CommandWatch).
+    void abortExternal(const QString &what);
+    // Refused before any motion: outcome Failed, abortCause "refused".
+    void refuse(const Error &error);
+    void planWithDeceleration();
+    void onStatus(const DriveStatus &status);
+    void noteDistance(qint64 position);
+    void buildAbortedRun();
     // The status a poll read while the test is still in `phase`; aborts (link lost, alarm)
     // and returns nothing otherwise.
     std::optional<DriveStatus> statusWhile(DriveReply *reply, Phase phase);
@@ -121,6 +140,13 @@ private:
     bool m_startKnown = false;
     qint64 m_start = 0;
     QList<TuningSnapshotEntry> m_snapshot;
+    StepPlan m_plan;
+    CommandWatch m_watch;
+    // The axis' speed in counts/s, from the captured positions (the stopping distance).
+    QList<QPair<double, qint64>> m_recent; // (time, position) of the last few ms
+    double m_countsPerS = 0.0;
+    double m_lastSampleT = -1.0;
+    double m_sampleGap = 0.0; // running mean of the time between samples
     QTimer m_renew;
     QTimer m_step;  // the commanded time (velocity, reversal)
     QTimer m_limit; // maxDurationS from the motion command

@@ -149,6 +149,11 @@ QJsonObject TuningRun::toJson() const
                                     {QStringLiteral("value"), double(e.value)}});
     root.insert(QStringLiteral("tuning"), snapshot);
     root.insert(QStringLiteral("notes"), notes);
+    if (!outcome.isEmpty())
+        root.insert(QStringLiteral("result"),
+                    QJsonObject{{QStringLiteral("outcome"), outcome},
+                                {QStringLiteral("abortCause"), abortCause},
+                                {QStringLiteral("reason"), abortReason}});
     return root;
 }
 
@@ -180,13 +185,21 @@ Error TuningRun::fromJson(const QJsonObject &root, const QString &source, Tuning
         QStringLiteral("trigger"),  QStringLiteral("sampleInterval"), QStringLiteral("gaps"),
         QStringLiteral("channels"), QStringLiteral("samples"),        QStringLiteral("metricsChannel"),
         QStringLiteral("metrics"),  QStringLiteral("resolution"),     QStringLiteral("metricNotes"),
-        QStringLiteral("tuning"),   QStringLiteral("notes")};
+        QStringLiteral("tuning"),   QStringLiteral("notes"),          QStringLiteral("result")};
     for (auto it = root.begin(); it != root.end(); ++it)
         if (!known.contains(it.key()) && !it.key().startsWith(QLatin1Char('_')))
             return {ErrorCode::Malformed, tr("%1: unknown field \"%2\"").arg(source, it.key())};
     if (root.value(QStringLiteral("format")).toString() != formatName())
         return {ErrorCode::Malformed,
                 tr("%1 is not a DriveDesk run file (format must be \"%2\")").arg(source, formatName())};
+    if (!root.value(QStringLiteral("formatVersion")).isDouble())
+        return {ErrorCode::Malformed,
+                tr("%1: formatVersion must be a number (%2), not %3")
+                    .arg(source, QString::number(FormatVersion),
+                         QString::fromUtf8(QJsonDocument(QJsonArray{root.value(QStringLiteral("formatVersion"))})
+                                               .toJson(QJsonDocument::Compact)
+                                               .mid(1)
+                                               .chopped(1)))};
     if (root.value(QStringLiteral("formatVersion")).toInt(-1) != FormatVersion)
         return {ErrorCode::NotSupported,
                 tr("%1: run format version %2 is not supported (this DriveDesk reads %3)")
@@ -274,6 +287,10 @@ Error TuningRun::fromJson(const QJsonObject &root, const QString &source, Tuning
     if (!timeValue.isArray())
         return {ErrorCode::Malformed, tr("%1: samples.time must be an array").arg(source)};
     const QJsonArray time = timeValue.toArray();
+    if (time.size() > MaxSamples)
+        return {ErrorCode::Malformed,
+                tr("%1: samples.time holds %2 samples, more than the %3 a run file may hold")
+                    .arg(source, QString::number(time.size()), QString::number(MaxSamples))};
     double previous = -INFINITY;
     int negatives = 0;
     for (int i = 0; i < time.size(); ++i) {
@@ -365,6 +382,17 @@ Error TuningRun::fromJson(const QJsonObject &root, const QString &source, Tuning
     }
     if (!r.string(root, QStringLiteral("notes"), &run.notes, QString(), true))
         return bad();
+    const QJsonValue result = root.value(QStringLiteral("result"));
+    if (!result.isUndefined()) {
+        const QJsonObject o = result.toObject();
+        if (!result.isObject() || !r.string(o, QStringLiteral("outcome"), &run.outcome, QStringLiteral("result."))
+            || !r.string(o, QStringLiteral("abortCause"), &run.abortCause, QStringLiteral("result."), true)
+            || !r.string(o, QStringLiteral("reason"), &run.abortReason, QStringLiteral("result."), true))
+            return why.isEmpty() ? Error{ErrorCode::Malformed, tr("%1: result must be an object").arg(source)} : bad();
+        if (run.outcome != QLatin1String("completed") && run.outcome != QLatin1String("aborted"))
+            return {ErrorCode::Malformed,
+                    tr("%1: result.outcome \"%2\" is not completed or aborted").arg(source, run.outcome)};
+    }
     QJsonValue gaps = root.value(QStringLiteral("gaps"));
     if (!gaps.isUndefined() && !gaps.isArray())
         return {ErrorCode::Malformed, tr("%1: gaps must be an array").arg(source)};

@@ -30,6 +30,9 @@ struct TuningRun
 public:
     static constexpr int FormatVersion = 1;
     static constexpr qint64 MaxFileSize = 64 * 1024 * 1024;
+    // The most samples (rows) a run may hold: 10 minutes at 1.6 kHz — more than a capture
+    // records (its longest record, 600 s, at the fastest link's rate).
+    static constexpr int MaxSamples = 1000000;
     static QString formatName(); // "drivedesk-run"
 
     QDateTime created;
@@ -52,6 +55,12 @@ public:
     QString metricsChannel; // the response the metrics measure ("" when none were computed)
     QList<TuningSnapshotEntry> tuning;
     QString notes;
+    // How the test ended: "" (a capture, or a file from before this field), "completed" or
+    // "aborted" — an aborted step test's run holds its record up to the end, with the
+    // cause (StepResult::abortCause) and the reason (translated).
+    QString outcome;
+    QString abortCause;
+    QString abortReason;
 
     QJsonObject toJson() const;
     QByteArray toBytes() const;

@@ -281,6 +281,51 @@ private slots:
               int(tuning->runList()->run(1).capture.time.size()), s.mean * 1000.0, s.mean > 0 ? 1.0 / s.mean : 0.0);
     }
 
+    void aStopAtTheDriveEndsTheStepAndNothingMovesAfter()
+    {
+        // Issue 26: the Tuning tab runs the same engine as the CLI; a stop from outside
+        // DriveDesk (the drive's panel, another master) ends the test with that cause, the
+        // axis is not driven back, and the record so far joins the runs, marked aborted.
+        PanelRig rig;
+        QString why;
+        SimBenchOptions o;
+        o.family = Family::ServoCan;
+        o.can = QStringLiteral("virtualcan:auto");
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        TuningPanel *tuning = rig.show<TuningPanel>(&why);
+        QVERIFY2(tuning, qPrintable(why));
+        QVERIFY(dictionaryLoaded(tuning));
+        bool enabled = false;
+        rig.hub->run(
+            rig.id, 1, [](Drive &d) { return d.setEnabled(true); }, [&](const DriveResult &r) { enabled = r.ok(); });
+        QVERIFY(waitUntil([&] { return enabled; }, 5000));
+        StepTestControls::Request r;
+        r.test = StepTestControls::Test::Velocity;
+        r.speed = 200;
+        r.duration = 2.0;
+        r.maxSpeed = 400;
+        r.maxTravel = 1000000;
+        r.maxDuration = 5;
+        tuning->stepControls()->setRequest(r);
+        tuning->stepControls()->runButton()->click();
+        QVERIFY(tuning->isStepRunning());
+        auto speed = [&] { return rig.sim.call([&] { return rig.sim.canDrive()->motor().speedRpm(); }); };
+        QVERIFY2(waitUntil([&] { return speed() > 150; }, 10000), qPrintable(tuning->message()));
+        QTest::qWait(200);
+        rig.sim.call([&] { rig.sim.canDrive()->motor().stop(); });
+        QVERIFY2(waitUntil([&] { return !tuning->isStepRunning(); }, 15000), qPrintable(tuning->message()));
+        QVERIFY2(tuning->message().contains(QStringLiteral("another master or at the drive")),
+                 qPrintable(tuning->message()));
+        auto position = [&] { return rig.sim.call([&] { return rig.sim.canDrive()->motor().position(); }); };
+        const qint64 at = position();
+        QVERIFY2(waitUntil([&] { return tuning->runList()->count() == 1; }, 5000), qPrintable(tuning->message()));
+        QCOMPARE(tuning->runList()->run(0).outcome, QStringLiteral("aborted"));
+        QVERIFY2(tuning->runList()->run(0).label.contains(QStringLiteral("aborted")),
+                 qPrintable(tuning->runList()->run(0).label));
+        QTest::qWait(700);
+        QCOMPARE(position(), at); // not driven back
+    }
+
     void unresolvableMetricsSayWhy()
     {
         // Too few samples for any metric: "not resolvable" with the reason, a few note lines.

@@ -21,7 +21,7 @@ private slots:
     {
         const QString file = m_dir.filePath(QStringLiteral("free.ddrun"));
         const CliRun r = runCli({"--sim", "--family", "servo-can", "--json", "capture", "speed,current,torque,position",
-                                 "--pre", "20", "--duration", "0.5", "-o", file});
+                                 "--pre", "20%", "--duration", "0.5", "-o", file});
         QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
         TuningRun run;
         const Error e = TuningRun::load(file, &run);
@@ -87,7 +87,7 @@ private slots:
         r = runCli({"--sim", "--family", "servo-can", "capture", "speed", "--trigger", "rise:current:1", "-o",
                     m_dir.filePath(QStringLiteral("x.ddrun"))});
         QCOMPARE(r.exitCode, 2);
-        r = runCli({"--sim", "--family", "servo-can", "capture", "speed", "--pre", "120", "-o",
+        r = runCli({"--sim", "--family", "servo-can", "capture", "speed", "--pre", "120%", "-o",
                     m_dir.filePath(QStringLiteral("x.ddrun"))});
         QCOMPARE(r.exitCode, 2);
         QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("x.ddrun"))));

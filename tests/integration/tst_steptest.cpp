@@ -69,6 +69,14 @@ private slots:
     void destroyedMidTestStopsTheAxis();
     void abortsWhenTheSpeedLimitIsPassed();
     void aLostLinkSaysWhatStopsTheAxis();
+    // Issue 26: a STOP from anywhere ends a test and nothing moves after it.
+    void aStopAtTheDriveAbortsAVelocityStepAndNothingMovesAfter();
+    void aStopAtTheDriveAbortsAPositionStep();
+    void aStopAtTheDriveDuringTheReturnEndsIt();
+    // Issue 26: limits are bounds, checked before motion.
+    void aTestBeyondItsLimitsIsRefusedBeforeMotion();
+    void aTravelTripStopsTheAxisInsideTheLimit();
+    void anAlarmAtTheStartIsARefusal();
     void higherSpeedGainRisesFasterAndOvershootsMore();
 
 private:
@@ -222,8 +230,11 @@ void TestStepTest::abortsOnStopWithTheAxisStopped()
 void TestStepTest::abortsWhenTheTravelLimitIsPassed()
 {
     StepTest test(m_drive);
-    // 500 r/min = 83 counts/ms at 10000 counts/rev: 2000 counts are passed within 30 ms.
-    const StepResult r = run(test, velocity(500, 1.0), limits(1000, 2000, 3));
+    // 500 r/min = 83 counts/ms at 10000 counts/rev: 2000 counts are passed within 30 ms. Told
+    // 100 counts/rev, the test predicts 850 counts and starts; the travel watch trips.
+    StepSpec spec = velocity(500, 1.0);
+    spec.countsPerRev = 100;
+    const StepResult r = run(test, spec, limits(1000, 2000, 3));
     QCOMPARE(r.outcome, StepResult::Outcome::Aborted);
     QCOMPARE(r.abortCause, QStringLiteral("travel-limit"));
     QVERIFY2(r.stopConfirmed, qPrintable(r.stopNote));
@@ -279,6 +290,168 @@ void TestStepTest::aLostLinkSaysWhatStopsTheAxis()
     QVERIFY2(r.stopNote.contains(QStringLiteral("watchdog")), qPrintable(r.stopNote));
     // Here the link is in fact still up: the jog lease, no longer renewed, stops the axis.
     QVERIFY(waitUntil([this] { return !m_sim->motor().isMoving(); }, 3000));
+}
+
+namespace {
+// The drive's motion commands stay as they are for `ms`: nothing was sent after the test.
+bool noMotionSentFor(SimServoCanDrive *sim, int ms)
+{
+    const quint64 before = sim->stats().motionCommands;
+    QTest::qWait(ms);
+    return sim->stats().motionCommands == before;
+}
+} // namespace
+
+void TestStepTest::aStopAtTheDriveAbortsAVelocityStepAndNothingMovesAfter()
+{
+    // The drive is stopped by something else than this program (its panel, a PLC, another
+    // master): its speed command falls to 0. The test must see it, abort with that cause,
+    // and never drive the axis back to its start.
+    StepTest test(m_drive);
+    QSignalSpy finished(&test, &StepTest::finished);
+    QVERIFY(!test.start(velocity(300, 1.0), limits()));
+    QVERIFY(
+        waitUntil([&] { return test.phase() == StepTest::Phase::Moving && m_sim->motor().speedRpm() > 250; }, 3000));
+    QTest::qWait(100);
+    m_sim->motor().stop();
+    QVERIFY(finished.wait(5000));
+    const StepResult r = finished.first().first().value<StepResult>();
+    QCOMPARE(r.outcome, StepResult::Outcome::Aborted);
+    QCOMPARE(r.abortCause, QStringLiteral("external-stop"));
+    QVERIFY2(r.reason.contains(QStringLiteral("another master or at the drive")), qPrintable(r.reason));
+    QVERIFY(!r.returnedToStart);
+    QVERIFY2(r.stopConfirmed, qPrintable(r.stopNote));
+    const qint64 at = m_sim->motor().position();
+    QVERIFY(std::abs(double(at - r.startPosition)) > 1000); // it had gone some way
+    QVERIFY(noMotionSentFor(m_sim, 600));
+    QCOMPARE(m_sim->motor().position(), at); // and stays there
+    // The data up to the abort is kept, marked aborted.
+    QVERIFY(r.hasRun);
+    QCOMPARE(r.run.outcome, QStringLiteral("aborted"));
+    QCOMPARE(r.run.abortCause, QStringLiteral("external-stop"));
+    QVERIFY(!r.run.metrics.steadyStateError.value); // not a measured step
+    QVERIFY(r.run.capture.time.size() > 50);
+}
+
+void TestStepTest::aStopAtTheDriveAbortsAPositionStep()
+{
+    StepTest test(m_drive);
+    QSignalSpy finished(&test, &StepTest::finished);
+    StepSpec spec;
+    spec.kind = StepSpec::Kind::Position;
+    spec.speed = 300;
+    spec.distance = 60000;
+    QVERIFY(!test.start(spec, limits(1000, 100000, 5)));
+    QVERIFY(
+        waitUntil([&] { return test.phase() == StepTest::Phase::Stopping && m_sim->motor().speedRpm() > 250; }, 3000));
+    m_sim->motor().stop();
+    QVERIFY(finished.wait(5000));
+    const StepResult r = finished.first().first().value<StepResult>();
+    QCOMPARE(r.abortCause, QStringLiteral("external-stop"));
+    QVERIFY2(r.reason.contains(QStringLiteral("short of its target")), qPrintable(r.reason));
+    QVERIFY(!r.returnedToStart);
+    const qint64 at = m_sim->motor().position();
+    QVERIFY(noMotionSentFor(m_sim, 600));
+    QCOMPARE(m_sim->motor().position(), at);
+}
+
+void TestStepTest::aStopAtTheDriveDuringTheReturnEndsIt()
+{
+    StepTest test(m_drive);
+    QSignalSpy finished(&test, &StepTest::finished);
+    QStringList phases;
+    connect(&test, &StepTest::progress, this, [&](StepTest::Phase p, const QString &m) {
+        if (p == StepTest::Phase::Returning)
+            phases << m;
+    });
+    QVERIFY(!test.start(velocity(300, 0.6), limits()));
+    QVERIFY(waitUntil(
+        [&] { return test.phase() == StepTest::Phase::Returning && std::abs(m_sim->motor().speedRpm()) > 250; }, 5000));
+    // The way back was announced before it started, as a motion.
+    QCOMPARE(phases.size(), 1);
+    QVERIFY2(phases.first().contains(QStringLiteral("STOP stops it")), qPrintable(phases.first()));
+    m_sim->motor().stop();
+    QVERIFY(finished.wait(5000));
+    const StepResult r = finished.first().first().value<StepResult>();
+    QCOMPARE(r.abortCause, QStringLiteral("external-stop"));
+    QVERIFY(!r.returnedToStart);
+    const qint64 at = m_sim->motor().position();
+    QVERIFY(std::abs(double(at - r.startPosition)) > 1000);
+    QVERIFY(noMotionSentFor(m_sim, 600));
+    QCOMPARE(m_sim->motor().position(), at);
+}
+
+void TestStepTest::aTestBeyondItsLimitsIsRefusedBeforeMotion()
+{
+    const quint64 moves = m_sim->stats().motionCommands;
+    StepTest test(m_drive);
+    // The issue's test: 300 r/min for 2 s (~100,000 counts) with 1000 counts of travel.
+    Error e = test.start(velocity(300, 2.0), limits(500, 1000, 4));
+    QCOMPARE(e.code, ErrorCode::OutOfRange);
+    QVERIFY2(e.message.contains(QStringLiteral("beyond the maximum travel 1000")), qPrintable(e.message));
+    // Fits at full speed (25,000 counts) but not with its stop at P64's 6 r/min/ms (+1250):
+    // refused once the deceleration is read, before any motion.
+    QSignalSpy finished(&test, &StepTest::finished);
+    QVERIFY(!test.start(velocity(300, 0.5), limits(500, 25500, 4)));
+    QVERIFY(finished.wait(5000));
+    const StepResult r = finished.first().first().value<StepResult>();
+    QCOMPARE(r.outcome, StepResult::Outcome::Failed);
+    QCOMPARE(r.abortCause, QStringLiteral("refused"));
+    QCOMPARE(r.error.code, ErrorCode::OutOfRange);
+    QVERIFY2(r.reason.contains(QStringLiteral("P64 6")), qPrintable(r.reason));
+    QVERIFY(!r.moved);
+    // A position step that needs more than its maximum duration.
+    StepSpec pos;
+    pos.kind = StepSpec::Kind::Position;
+    pos.speed = 300;
+    pos.distance = 60000;
+    e = test.start(pos, limits(1000, 100000, 0.5));
+    QCOMPARE(e.code, ErrorCode::OutOfRange);
+    QVERIFY2(e.message.contains(QStringLiteral("maximum duration of 0.5 s")), qPrintable(e.message));
+    QCOMPARE(m_sim->stats().motionCommands, moves);
+}
+
+void TestStepTest::aTravelTripStopsTheAxisInsideTheLimit()
+{
+    // Told 100 counts per revolution (the drive has 10000), the prediction is far too short
+    // and the test starts; the travel watch trips at limit - stopping distance (measured
+    // speed, P64's deceleration), and the axis comes to rest inside the limit.
+    StepTest test(m_drive);
+    StepSpec spec = velocity(500, 1.0);
+    spec.countsPerRev = 100;
+    const StepResult r = run(test, spec, limits(1000, 3000, 3));
+    QCOMPARE(r.outcome, StepResult::Outcome::Aborted);
+    QCOMPARE(r.abortCause, QStringLiteral("travel-limit"));
+    QVERIFY2(r.stopConfirmed, qPrintable(r.stopNote));
+    qInfo("travel trip: farthest %lld of 3000, at rest %lld from the start", r.farthest,
+          r.endPosition - r.startPosition);
+    QVERIFY2(r.farthest <= 3000, qPrintable(r.stopNote));
+    QVERIFY(std::abs(double(m_sim->motor().position() - r.startPosition)) <= 3000);
+    QVERIFY2(r.stopNote.contains(QStringLiteral("of the maximum travel 3000")), qPrintable(r.stopNote));
+    QVERIFY(r.hasRun);
+    QCOMPARE(r.run.outcome, QStringLiteral("aborted"));
+}
+
+void TestStepTest::anAlarmAtTheStartIsARefusal()
+{
+    const quint64 moves = m_sim->stats().motionCommands;
+    m_sim->injectAlarm(3);
+    StepTest test(m_drive);
+    const StepResult r = run(test, velocity(300, 0.5), limits());
+    QCOMPARE(r.outcome, StepResult::Outcome::Failed);
+    QCOMPARE(r.abortCause, QStringLiteral("refused"));
+    QVERIFY2(r.reason.contains(QStringLiteral("Alarm 3 is active: clear it first")), qPrintable(r.reason));
+    QVERIFY(!r.moved);
+    QCOMPARE(m_sim->stats().motionCommands, moves);
+    m_sim->injectAlarm(0);
+    // The status read learnt alarm 3; read the alarm again to learn that it is gone.
+    QVERIFY(waitUntil(
+        [this] {
+            DriveReply *r = m_drive->readAlarm();
+            test::waitFinished(r, 1000);
+            return m_drive->status().alarmCode == 0;
+        },
+        3000));
 }
 
 bool TestStepTest::write(const QList<ParameterWrite> &writes)

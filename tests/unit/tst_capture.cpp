@@ -1,6 +1,10 @@
 #include "core/tuning/capturerecorder.h"
+#include "core/tuning/commandwatch.h"
 #include "core/tuning/spectrum.h"
+#include "core/tuning/steplimits.h"
 #include "core/tuning/stepmetrics.h"
+#include "core/tuning/stepplan.h"
+#include "core/tuning/stepspec.h"
 #include "core/tuning/tuningrun.h"
 
 #include <QJsonArray>
@@ -286,6 +290,9 @@ private slots:
         QTest::addColumn<QString>("word");
         QTest::newRow("format") << "format" << QJsonValue("drivedesk-backup") << "not a DriveDesk run file";
         QTest::newRow("version") << "formatVersion" << QJsonValue(2) << "version 2";
+        // A version as a string is not "another version" (issue 26 item 9).
+        QTest::newRow("version as a string") << "formatVersion" << QJsonValue("1") << "formatVersion must be a number";
+        QTest::newRow("result outcome") << "result" << QJsonValue(QJsonObject{{"outcome", "maybe"}}) << "maybe";
         QTest::newRow("family") << "drive.family" << QJsonValue("servo-x") << "servo-x";
         QTest::newRow("test type") << "test.type" << QJsonValue("bump") << "bump";
         QTest::newRow("trigger") << "trigger.expression" << QJsonValue("rise:speed") << "trigger.expression";
@@ -354,6 +361,151 @@ private slots:
         QCOMPARE(out.notes, QStringLiteral("unchanged")); // nothing changed
         QVERIFY(
             TuningRun::fromBytes("{ not json", QStringLiteral("x.ddrun"), &out).message.contains(QLatin1String("JSON")));
+    }
+
+    void anAbortedRunKeepsItsOutcome()
+    {
+        TuningRun run = sampleRun();
+        run.outcome = QStringLiteral("aborted");
+        run.abortCause = QStringLiteral("external-stop");
+        run.abortReason = QStringLiteral("Stopped by another master or at the drive");
+        TuningRun back;
+        const Error e = TuningRun::fromBytes(run.toBytes(), QStringLiteral("a.ddrun"), &back);
+        QVERIFY2(!e, qPrintable(e.message));
+        QCOMPARE(back.outcome, QStringLiteral("aborted"));
+        QCOMPARE(back.abortCause, QStringLiteral("external-stop"));
+        QCOMPARE(back.abortReason, run.abortReason);
+        QCOMPARE(back.toJson(), run.toJson());
+    }
+
+    void tooManySamplesAreRefusedWithTheCap()
+    {
+        // A run holds at most TuningRun::MaxSamples rows (docs/tuning.md): one more is
+        // refused with the count and the cap, before its columns are read.
+        QJsonObject root = sampleRun().toJson();
+        const int n = TuningRun::MaxSamples + 1;
+        QJsonArray time, speed, current;
+        for (int i = 0; i < n; ++i) {
+            time.append(i * 1e-3);
+            speed.append(0);
+            current.append(0);
+        }
+        QJsonObject samples{{"time", time}, {"speed", speed}, {"current", current}};
+        root.insert(QStringLiteral("samples"), samples);
+        QJsonObject trigger = root.value(QStringLiteral("trigger")).toObject();
+        trigger.insert(QStringLiteral("preTriggerSamples"), 0);
+        root.insert(QStringLiteral("trigger"), trigger);
+        TuningRun out;
+        const Error e = TuningRun::fromJson(root, QStringLiteral("big.ddrun"), &out);
+        QCOMPARE(e.code, ErrorCode::Malformed);
+        QVERIFY2(e.message.contains(QStringLiteral("1000001 samples")) && e.message.contains(QStringLiteral("1000000")),
+                 qPrintable(e.message));
+    }
+
+    void thePlanPredictsTravelAndTimeWithTheStop()
+    {
+        // servo-can's r/min at 10000 counts/rev: 300 r/min = 50000 counts/s.
+        const double k = StepPlan::countsPerSpeedUnit(QStringLiteral("r/min"), 0);
+        QCOMPARE(k, 10000.0 / 60.0);
+        QCOMPARE(StepPlan::countsPerSpeedUnit(QStringLiteral("r/min"), 131072), 131072.0 / 60.0);
+        QCOMPARE(StepPlan::countsPerSpeedUnit(QStringLiteral("pulse/s"), 0), 1.0);
+        QCOMPARE(StepPlan::countsPerSpeedUnit(QStringLiteral("furlong"), 0), 0.0);
+        QCOMPARE(StepPlan::decelFromParameter(QStringLiteral("r/min/ms"), 6), 6000.0);
+        QCOMPARE(StepPlan::decelFromParameter(QStringLiteral("ms"), 6), 0.0);
+        StepSpec v;
+        v.kind = StepSpec::Kind::Velocity;
+        v.speed = 300;
+        v.durationS = 2.0;
+        StepLimits l;
+        l.maxSpeed = 500;
+        l.maxTravel = 1000;
+        l.maxDurationS = 4;
+        // The issue's test: ~100,000 counts against a travel of 1000 — refused, even without
+        // the stop.
+        StepPlan p = StepPlan::predict(v, k);
+        QCOMPARE(qRound(p.travel), 100000);
+        Error e = p.check(l);
+        QCOMPARE(e.code, ErrorCode::OutOfRange); // refused: nothing moved
+        QVERIFY2(e.message.contains(QStringLiteral("beyond the maximum travel 1000")), qPrintable(e.message));
+        // With the stop at 6000 r/min/s: 50 ms more, 1250 counts more.
+        p = StepPlan::predict(v, k, 6000.0);
+        QCOMPARE(qRound(p.travel), 101250);
+        QCOMPARE(p.seconds, 2.05);
+        l.maxTravel = 101000;
+        QVERIFY(p.check(l).message.contains(QStringLiteral("including its stop")));
+        l.maxTravel = 102000;
+        QVERIFY(!p.check(l));
+        l.maxDurationS = 2.04;
+        QVERIFY(p.check(l).message.contains(QStringLiteral("maximum duration")));
+        // A position step of 60000 counts at 300 r/min needs 1.2 s (+ the ramps): not in 0.5 s.
+        StepSpec pos;
+        pos.kind = StepSpec::Kind::Position;
+        pos.speed = 300;
+        pos.distance = -60000;
+        p = StepPlan::predict(pos, k);
+        QCOMPARE(p.seconds, 1.2);
+        QCOMPARE(qRound(p.travel), 60000);
+        l.maxTravel = 100000;
+        l.maxDurationS = 0.5;
+        QVERIFY(p.check(l).message.contains(QStringLiteral("maximum duration of 0.5 s")));
+        p = StepPlan::predict(pos, k, 6000.0); // + 50 ms of ramp
+        QVERIFY(std::abs(p.seconds - 1.25) < 1e-9);
+        // Stopping distance: at 50000 counts/s and 300 r/min, 10 ms reaction + 25 ms braking.
+        QVERIFY(std::abs(p.stoppingDistance(50000, 300, 0.01) - 1750.0) < 1e-6);
+        // Still ramping up at 150 r/min (25000 counts/s): 10 ms more at up to 6000 r/min/s
+        // (210 r/min, 35000 counts/s), then 35 ms of braking: 300 + 612.5 counts.
+        QVERIFY(std::abs(p.stoppingDistance(25000, 150, 0.01, true, 300) - 912.5) < 1e-6);
+    }
+
+    void theWatchSeesTheDriveStopOrChangeCommand()
+    {
+        CommandWatch w;
+        QMap<QString, double> sample{{"speed-command", 0}, {"speed", 0}};
+        DriveStatus st;
+        st.enabled = true;
+        // Idle: nothing is watched.
+        QVERIFY(w.feedSample(sample).isEmpty());
+        w.expectSpeed(300, true);
+        // The command not taken yet: still 0, no verdict.
+        QVERIFY(w.feedSample(sample).isEmpty());
+        QVERIFY(w.feedStatus(st).isEmpty());
+        sample[QStringLiteral("speed-command")] = 300;
+        QVERIFY(w.feedSample(sample).isEmpty());
+        st.running = true;
+        QVERIFY(w.feedStatus(st).isEmpty());
+        // Someone else's STOP: the command falls to 0.
+        sample[QStringLiteral("speed-command")] = 0;
+        QVERIFY(w.feedSample(sample).contains(QStringLiteral("speed command changed from 300 to 0")));
+        // Another master's speed.
+        w.expectSpeed(300, true);
+        sample[QStringLiteral("speed-command")] = 300;
+        QVERIFY(w.feedSample(sample).isEmpty());
+        sample[QStringLiteral("speed-command")] = 120;
+        QVERIFY(!w.feedSample(sample).isEmpty());
+        // At rest by the status once running; disabled.
+        w.idle();
+        w.expectSpeed(300, true);
+        QVERIFY(w.feedStatus(st).isEmpty());
+        st.running = false;
+        QVERIFY(w.feedStatus(st).contains(QStringLiteral("at rest")));
+        w.idle();
+        st.running = true;
+        w.expectSpeed(300, false); // a reversal's second segment: rest is on the way
+        QVERIFY(w.feedStatus(st).isEmpty());
+        st.running = false;
+        QVERIFY(w.feedStatus(st).isEmpty());
+        st.enabled = false;
+        QVERIFY(w.feedStatus(st).contains(QStringLiteral("disabled")));
+        // shuoke's status bits: running, then not.
+        w.idle();
+        w.expectSpeed(1000, true);
+        QMap<QString, double> bits{{"status", double(StatusChannelBits::Running | StatusChannelBits::EnableInput)}};
+        QVERIFY(w.feedSample(bits).isEmpty());
+        bits[QStringLiteral("status")] = StatusChannelBits::EnableInput;
+        QVERIFY(w.feedSample(bits).contains(QStringLiteral("stopped running")));
+        // Idle after the test's own stop: nothing more is said.
+        w.idle();
+        QVERIFY(w.feedSample(bits).isEmpty());
     }
 };
 

@@ -58,7 +58,8 @@ TuningPanel::TuningPanel(const DriveContext &context, QWidget *parent)
                 case StepTest::Phase::Arming: return tr("Step test: filling the capture before the motion…");
                 case StepTest::Phase::Moving: return tr("Step test: moving…");
                 case StepTest::Phase::Stopping: return tr("Step test: stopping…");
-                case StepTest::Phase::Returning: return tr("Step test: going back to the start…");
+                case StepTest::Phase::Returning:
+                    return tr("Step test: the axis moves back to its start position (STOP stops it)…");
                 default: return tr("Step test: running…");
                 }
             },
@@ -391,9 +392,12 @@ void TuningPanel::onStepFinished(const StepResult &result)
             MessageKind::Success);
     } else {
         const bool stopped = result.stopConfirmed;
+        const bool refused = !result.moved && result.abortCause == QLatin1String("refused");
         showMessage(
             m_message,
-            [reason, stopNote, stopped] {
+            [reason, stopNote, stopped, refused] {
+                if (refused)
+                    return tr("Step test not started: %1").arg(reason);
                 QString text = tr("Step test ended early: %1").arg(reason);
                 if (!stopNote.isEmpty())
                     text += QLatin1Char(' ') + stopNote;
@@ -418,6 +422,8 @@ void TuningPanel::onStepFinished(const StepResult &result)
                     .arg(run.test)
                     .arg(m_stepCount)
                     .arg(QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")));
+    if (run.outcome == QLatin1String("aborted"))
+        run.label += QLatin1Char(' ') + tr("(aborted: %1)").arg(run.abortCause);
     addRunWithSnapshot(run);
 }
 

@@ -7949,10 +7949,6 @@ firmware %2</source>
         <translation>作用</translation>
     </message>
     <message>
-        <source>STOP: stop every drive on every connection (anywhere in DriveDesk)</source>
-        <translation>STOP：停止所有连接上的所有驱动器（在 DriveDesk 任何位置均有效）</translation>
-    </message>
-    <message>
         <source>Open the user guide</source>
         <translation>打开用户指南</translation>
     </message>
@@ -8003,6 +7999,10 @@ firmware %2</source>
     <message>
         <source>Trend and Tuning plots: remove the cursors</source>
         <translation>趋势与整定图：移除光标</translation>
+    </message>
+    <message>
+        <source>STOP: stop every drive on every connection, from any window, dialog, menu or editor (Esc then also closes the dialog; F12 only stops)</source>
+        <translation>STOP：停止所有连接上的所有驱动器，在任何窗口、对话框、菜单或编辑器中均有效（Esc 随后还会关闭对话框；F12 只停止）</translation>
     </message>
 </context>
 <context>

@@ -122,14 +122,14 @@ class TestStopEverywhere : public QObject
                 return started == 2 && dir->info(m_can, DemoBench::Address).status.running
                     && dir->info(m_shuoke, DemoBench::Address).status.running;
             },
-            10000);
+            20000);
     }
 
     // After a STOP: the report has every drive, the two that have a stop command report
     // their axis at rest (StopReporter reads each drive's own state).
     QString stopReachedEveryDrive(QSignalSpy &finished)
     {
-        if (finished.isEmpty() && !finished.wait(10000))
+        if (finished.isEmpty() && !finished.wait(20000))
             return QStringLiteral("the STOP report never finished (no STOP?)");
         const QList<StopReporter::Line> lines = w().stopReporter()->lines();
         if (lines.size() != 3)
@@ -378,6 +378,7 @@ private slots:
                  d->setAttribute(Qt::WA_DeleteOnClose);
                  d->show();
              }},
+            {QStringLiteral("StopReportView"), [this] { w().showStopReport(); }},
             {QStringLiteral("warning message box"),
              [win] { QMessageBox::warning(win, QStringLiteral("Demo bench"), QStringLiteral("It could not start.")); }},
             {QStringLiteral("question message box"),

@@ -199,10 +199,11 @@ bool PositioningCommand::prepareWait(const CliInvocation &inv)
     return true;
 }
 
-void PositioningCommand::follow(DriveReply *reply, const QJsonObject &json, const QString &text)
+void PositioningCommand::follow(DriveReply *reply, const QJsonObject &json, const QString &text, const MotionGoal &goal)
 {
     m_json = json;
     m_text = text;
+    m_goal = goal;
     onFinished(reply, [this](DriveReply *r) {
         if (m_stopping)
             return;
@@ -238,15 +239,56 @@ void PositioningCommand::poll()
         // At rest twice after having moved (the first status at rest can carry reads taken
         // while the axis still settled: its position would be a count off the end), or at
         // rest for a while (a short motion may be over before the first poll).
-        if ((m_sawRunning && m_idlePolls >= 2) || (m_idlePolls >= 3 && m_clock.elapsed() >= 300)) {
-            QJsonObject json = m_json;
-            json.insert(QStringLiteral("finished"), true);
-            if (s.positionValid)
-                json.insert(QStringLiteral("position"), double(s.position));
-            return succeed(json, s.positionValid ? tr("Done; position %1.").arg(s.position) : tr("Done."));
-        }
+        if ((m_sawRunning && m_idlePolls >= 2) || (m_idlePolls >= 3 && m_clock.elapsed() >= 300))
+            return finishAtRest(s);
         m_poll.start();
     });
+}
+
+void PositioningCommand::finishAtRest(const DriveStatus &s)
+{
+    QJsonObject json = m_json;
+    json.insert(QStringLiteral("finished"), true);
+    if (!s.positionValid) {
+        json.insert(QStringLiteral("reached"), false);
+        return fail({ErrorCode::Cancelled,
+                     tr("The axis is at rest, but the drive does not report where: whether the %1 reached its "
+                        "end is not known.")
+                         .arg(m_goal.kind() == MotionGoal::Kind::Home ? tr("homing") : tr("move"))},
+                    json);
+    }
+    json.insert(QStringLiteral("position"), double(s.position));
+    const MotionGoal::Verdict v = m_goal.judge(s.position);
+    const bool reached = v == MotionGoal::Verdict::Reached || v == MotionGoal::Verdict::HomeFound;
+    json.insert(QStringLiteral("reached"), reached);
+    if (m_goal.kind() == MotionGoal::Kind::Move)
+        json.insert(QStringLiteral("target"), double(m_goal.target()));
+    if (reached)
+        return succeed(json,
+                       m_goal.kind() == MotionGoal::Kind::Home
+                           ? tr("Done; the origin was found, position %1.").arg(s.position)
+                           : tr("Done; position %1.").arg(s.position));
+    // Something stopped it: a STOP (DriveDesk's, another program's), the drive's inputs, a limit.
+    const QString cause = tr("Something stopped it: a STOP from DriveDesk or another program, the drive's own "
+                             "inputs or panel, or a limit.");
+    QString what;
+    switch (v) {
+    case MotionGoal::Verdict::Short:
+        what = tr("The move ended at %1, %2 short of the target %3.")
+                   .arg(s.position)
+                   .arg(m_goal.distanceToTarget(s.position))
+                   .arg(m_goal.target());
+        break;
+    case MotionGoal::Verdict::Past:
+        what = tr("The move ended at %1, %2 beyond the target %3.")
+                   .arg(s.position)
+                   .arg(m_goal.distanceToTarget(s.position))
+                   .arg(m_goal.target());
+        break;
+    default: what = tr("The homing ended at %1 without finding the origin.").arg(s.position); break;
+    }
+    json.insert(QStringLiteral("distanceToTarget"), double(m_goal.distanceToTarget(s.position)));
+    fail({ErrorCode::Cancelled, what + QLatin1Char(' ') + cause}, json);
 }
 
 void PositioningCommand::interrupt(int)
@@ -294,12 +336,27 @@ bool MoveCommand::prepare(const CliInvocation &inv, QString *error)
 
 void MoveCommand::start()
 {
-    Drive *d = drive();
-    DriveReply *r = m_relative ? d->moveRelative(m_target, m_speed) : d->moveAbsolute(m_target, m_speed);
-    follow(r,
-           {{m_relative ? QStringLiteral("by") : QStringLiteral("to"), double(m_target)},
-            {QStringLiteral("speed"), m_speed}},
-           m_relative ? tr("Moving by %1.").arg(m_target) : tr("Moving to %1.").arg(m_target));
+    if (Drive *d = drive(); !d->hasCapability(m_relative ? Capability::MoveRelative : Capability::MoveAbsolute)) {
+        // Refused before anything is sent.
+        DriveReply *r = m_relative ? d->moveRelative(m_target, m_speed) : d->moveAbsolute(m_target, m_speed);
+        return follow(r, {}, QString(), MotionGoal::move(d->family(), 0, m_target));
+    }
+    // Where the axis is first: a relative move's target, and which side of it is "short".
+    onFinished(drive()->readStatus(), [this](DriveReply *status) {
+        const QJsonObject json{{m_relative ? QStringLiteral("by") : QStringLiteral("to"), double(m_target)},
+                               {QStringLiteral("speed"), m_speed}};
+        if (!status->ok())
+            return fail(status->error(), json);
+        if (!status->status().positionValid)
+            return fail({ErrorCode::DriveException, tr("The drive does not report its position: nothing was moved.")},
+                        json);
+        const qint64 start = status->status().position;
+        const qint64 goal = m_relative ? start + m_target : m_target;
+        Drive *d = drive();
+        DriveReply *r = m_relative ? d->moveRelative(m_target, m_speed) : d->moveAbsolute(m_target, m_speed);
+        follow(r, json, m_relative ? tr("Moving by %1.").arg(m_target) : tr("Moving to %1.").arg(m_target),
+               MotionGoal::move(d->family(), start, goal));
+    });
 }
 
 // --- home -------------------------------------------------------------------------------
@@ -313,7 +370,8 @@ bool HomeCommand::prepare(const CliInvocation &inv, QString *error)
 void HomeCommand::start()
 {
     follow(drive()->home(m_positive), {{QStringLiteral("positiveFirst"), m_positive}},
-           tr("Homing (%1 direction first).").arg(m_positive ? tr("positive") : tr("negative")));
+           tr("Homing (%1 direction first).").arg(m_positive ? tr("positive") : tr("negative")),
+           MotionGoal::home(drive()->family()));
 }
 
 } // namespace dd

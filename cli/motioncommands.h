@@ -2,6 +2,7 @@
 
 #include "cli/clicommand.h"
 #include "core/drive/drivetypes.h"
+#include "core/drive/motiongoal.h"
 
 #include <QElapsedTimer>
 #include <QTimer>
@@ -53,11 +54,15 @@ public:
 
 protected:
     bool prepareWait(const CliInvocation &inv);
-    // Starts the motion's reply handling; `json` / `text` describe it.
-    void follow(DriveReply *reply, const QJsonObject &json, const QString &text);
+    // Starts the motion's reply handling; `json` / `text` describe it. With --wait, the
+    // motion succeeds only if the axis comes to rest where `goal` says (MotionGoal: a move at
+    // its target within the in-position window, a homing with the origin found); at rest
+    // elsewhere it fails (Cancelled, exit 1) and says where it stopped.
+    void follow(DriveReply *reply, const QJsonObject &json, const QString &text, const MotionGoal &goal);
 
 private:
     void poll();
+    void finishAtRest(const DriveStatus &s);
 
     bool m_wait = true;
     bool m_stopping = false;
@@ -67,6 +72,7 @@ private:
     QElapsedTimer m_clock;
     QJsonObject m_json;
     QString m_text;
+    MotionGoal m_goal;
 };
 
 // move (--by N | --to N) [--speed V] [--no-wait]

@@ -1340,6 +1340,38 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <source>Commissioning workbench</source>
         <translation>调试工作台</translation>
     </message>
+    <message>
+        <source>%1 is moving</source>
+        <translation>%1 正在运动</translation>
+    </message>
+    <message>
+        <source>%1 has its power stage on</source>
+        <translation>%1 的功率级已开启</translation>
+    </message>
+    <message>
+        <source>Quit DriveDesk?</source>
+        <translation>退出 DriveDesk？</translation>
+    </message>
+    <message>
+        <source>%1.
+
+Quitting ends DriveDesk&apos;s control of these drives. STOP them all (as the STOP button does) and quit?</source>
+        <translation>%1。
+
+退出后 DriveDesk 将不再控制这些驱动器。要全部停止（与“停止”按钮相同）并退出吗？</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>；</translation>
+    </message>
+    <message>
+        <source>STOP and quit</source>
+        <translation>停止并退出</translation>
+    </message>
+    <message>
+        <source>STOP report…</source>
+        <translation>停止报告…</translation>
+    </message>
 </context>
 <context>
     <name>dd::ModbusLink</name>
@@ -1603,8 +1635,80 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
         <translation>%1：运动中… 位置 %2 %3</translation>
     </message>
     <message>
-        <source>%1: done, the axis is at rest at %2 %3.</source>
-        <translation>%1：完成，轴已静止于 %2 %3。</translation>
+        <source>%1 refused: %2</source>
+        <translation>%1 被拒绝：%2</translation>
+    </message>
+    <message>
+        <source>ended</source>
+        <translation>已结束</translation>
+    </message>
+    <message>
+        <source>stopped by STOP</source>
+        <translation>被“停止”停下</translation>
+    </message>
+    <message>
+        <source>stopped by “Stop this drive”</source>
+        <translation>被“停止此驱动器”停下</translation>
+    </message>
+    <message>
+        <source> Something outside this command stopped it: another master, the drive&apos;s own inputs or panel, or a limit.</source>
+        <translation>是本命令之外的原因使其停止：另一个主站、驱动器自身的输入或面板，或限位。</translation>
+    </message>
+    <message>
+        <source>%1: %2; the drive does not report where the axis is.</source>
+        <translation>%1：%2；驱动器未报告轴的位置。</translation>
+    </message>
+    <message>
+        <source>%1: done, the axis is at rest at its target, %2 %3.</source>
+        <translation>%1：完成，轴已静止在目标位置 %2 %3。</translation>
+    </message>
+    <message>
+        <source>%1: done, the origin was found; the axis is at rest at %2 %3.</source>
+        <translation>%1：完成，已找到原点；轴静止在 %2 %3。</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3 %4, %5 %4 short of the target (%6 %4).%7</source>
+        <translation>%1：%2，位于 %3 %4，距目标（%6 %4）还差 %5 %4。%7</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3 %4, %5 %4 beyond the target (%6 %4).%7</source>
+        <translation>%1：%2，位于 %3 %4，超过目标（%6 %4）%5 %4。%7</translation>
+    </message>
+    <message>
+        <source>%1: %2 at %3 %4; the origin was not found.</source>
+        <translation>%1：%2，位于 %3 %4；未找到原点。</translation>
+    </message>
+    <message>
+        <source>the power stage is off. DriveDesk does not switch it on by itself: press Enable first.</source>
+        <translation>功率级已关闭。DriveDesk 不会自行开启：请先按“使能”。</translation>
+    </message>
+    <message>
+        <source>The power stage is off: jog, move and homing are refused until you switch it on (DriveDesk does not do it by itself).</source>
+        <translation>功率级已关闭：在您开启之前，点动、定位和回原点均被拒绝（DriveDesk 不会自行开启）。</translation>
+    </message>
+    <message>
+        <source>Refused: %1</source>
+        <translation>已拒绝：%1</translation>
+    </message>
+    <message>
+        <source>Enable: done earlier; the power stage is off now (STOP, a disable or the drive).</source>
+        <translation>使能：此前已完成；功率级现已关闭（停止、禁用或驱动器自身）。</translation>
+    </message>
+    <message>
+        <source>Disable: done earlier; the power stage is on again.</source>
+        <translation>禁用：此前已完成；功率级现已重新开启。</translation>
+    </message>
+    <message>
+        <source>%1: reading where the axis is…</source>
+        <translation>%1：正在读取轴的位置…</translation>
+    </message>
+    <message>
+        <source>The drive does not report its position.</source>
+        <translation>驱动器未报告其位置。</translation>
+    </message>
+    <message>
+        <source>%1 failed: where the axis is could not be read, nothing was sent: %2</source>
+        <translation>%1 失败：无法读取轴的位置，未发送任何命令：%2</translation>
     </message>
 </context>
 <context>
@@ -2458,6 +2562,14 @@ No drive yet? Use File → Connect… to open a serial port or a CAN interface a
     <message>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s stored max-speed could not be read (%1), so a move at its own speed would overwrite it: nothing was moved. Move at speed 0 (the stored max-speed) or try again.</source>
+        <translation>无法读取驱动器保存的最大速度（%1），以自身速度运行的定位会覆盖它：未进行任何运动。请以速度 0（即保存的最大速度）运动，或重试。</translation>
+    </message>
+    <message>
+        <source>a reply of %1 bytes</source>
+        <translation>%1 字节的应答</translation>
     </message>
 </context>
 <context>
@@ -3628,6 +3740,26 @@ Restore anyway?</source>
     <message>
         <source>Leaves out the settings equal to the dictionary&apos;s default and the read-only values; settings the dictionary gives no default for are kept. The file says it holds changes only, and restoring it touches only what it lists.</source>
         <translation>不保存等于字典默认值的设置和只读值；字典未给出默认值的设置予以保留。文件会注明只含改动，恢复它时只改动其中列出的参数。</translation>
+    </message>
+    <message>
+        <source>Write to an energised drive?</source>
+        <translation>写入已通电的驱动器？</translation>
+    </message>
+    <message>
+        <source>Drive %1 is %2: a parameter changed while the axis is energised takes effect at once and can make it jerk or move.
+
+Restore the ticked parameters anyway?</source>
+        <translation>驱动器 %1 %2：在轴通电时更改的参数会立即生效，可能使轴抖动或运动。
+
+仍要恢复勾选的参数吗？</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>正在运动</translation>
+    </message>
+    <message>
+        <source>enabled</source>
+        <translation>已使能</translation>
     </message>
 </context>
 <context>
@@ -5316,12 +5448,40 @@ reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止�
         <translation>完成；位置 %1。</translation>
     </message>
     <message>
-        <source>Done.</source>
-        <translation>完成。</translation>
-    </message>
-    <message>
         <source>Interrupted; the axis was stopped.</source>
         <translation>已中断；轴已停止。</translation>
+    </message>
+    <message>
+        <source>The axis is at rest, but the drive does not report where: whether the %1 reached its end is not known.</source>
+        <translation>轴已静止，但驱动器未报告位置：无法得知%1是否到达终点。</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>回原点</translation>
+    </message>
+    <message>
+        <source>move</source>
+        <translation>定位</translation>
+    </message>
+    <message>
+        <source>Done; the origin was found, position %1.</source>
+        <translation>完成；已找到原点，位置 %1。</translation>
+    </message>
+    <message>
+        <source>Something stopped it: a STOP from DriveDesk or another program, the drive&apos;s own inputs or panel, or a limit.</source>
+        <translation>有其他原因使其停止：来自 DriveDesk 或其他程序的停止、驱动器自身的输入或面板，或限位。</translation>
+    </message>
+    <message>
+        <source>The move ended at %1, %2 short of the target %3.</source>
+        <translation>定位结束于 %1，距目标 %3 还差 %2。</translation>
+    </message>
+    <message>
+        <source>The move ended at %1, %2 beyond the target %3.</source>
+        <translation>定位结束于 %1，超过目标 %3 共 %2。</translation>
+    </message>
+    <message>
+        <source>The homing ended at %1 without finding the origin.</source>
+        <translation>回原点结束于 %1，未找到原点。</translation>
     </message>
 </context>
 <context>
@@ -5337,6 +5497,10 @@ reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止�
     <message>
         <source>Moving to %1.</source>
         <translation>运动到 %1。</translation>
+    </message>
+    <message>
+        <source>The drive does not report its position: nothing was moved.</source>
+        <translation>驱动器未报告其位置：未进行任何运动。</translation>
     </message>
 </context>
 <context>
@@ -7351,6 +7515,14 @@ firmware %2</source>
         <source>STOP: %1</source>
         <translation>停止：%1</translation>
     </message>
+    <message>
+        <source>%1: stopped (the drive reports the axis at rest); STOP switched its power stage off.</source>
+        <translation>%1：已停止（驱动器报告轴已静止）；停止已关闭其功率级。</translation>
+    </message>
+    <message>
+        <source>What STOP did, drive by drive:</source>
+        <translation>停止对各驱动器的结果：</translation>
+    </message>
 </context>
 <context>
     <name>dd::RunParameterApply</name>
@@ -7874,10 +8046,6 @@ firmware %2</source>
         <translation>作用</translation>
     </message>
     <message>
-        <source>STOP: stop every drive on every connection (anywhere in DriveDesk)</source>
-        <translation>STOP：停止所有连接上的所有驱动器（在 DriveDesk 任何位置均有效）</translation>
-    </message>
-    <message>
         <source>Open the user guide</source>
         <translation>打开用户指南</translation>
     </message>
@@ -7928,6 +8096,10 @@ firmware %2</source>
     <message>
         <source>Trend and Tuning plots: remove the cursors</source>
         <translation>趋势与整定图：移除光标</translation>
+    </message>
+    <message>
+        <source>STOP: stop every drive on every connection, from any window, dialog, menu or editor (Esc then also closes the dialog; F12 only stops)</source>
+        <translation>STOP：停止所有连接上的所有驱动器，在任何窗口、对话框、菜单或编辑器中均有效（Esc 随后还会关闭对话框；F12 只停止）</translation>
     </message>
 </context>
 <context>
@@ -8728,6 +8900,10 @@ firmware %2</source>
         <source>(aborted: %1)</source>
         <translation>（已中止：%1）</translation>
     </message>
+    <message>
+        <source>Not started: the power stage is off. DriveDesk does not switch it on by itself: enable it in the Motion tab first.</source>
+        <translation>未启动：功率级已关闭。DriveDesk 不会自行开启：请先在“运动”选项卡中使能。</translation>
+    </message>
 </context>
 <context>
     <name>dd::DemoMenu</name>
@@ -8896,6 +9072,13 @@ firmware %2</source>
     <message>
         <source>The test needs about %1 s of motion before it even stops%2: not within the maximum duration of %3 s.</source>
         <translation>测试在开始停止之前就需运动约 %1 s%2：超出最长时间 %3 s。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::StopReportView</name>
+    <message>
+        <source>STOP report</source>
+        <translation>停止报告</translation>
     </message>
 </context>
 </TS>

@@ -239,6 +239,7 @@ void DriveHub::stopAll()
         for (DriveConnection *c : std::as_const(m_connections))
             c->stopAll();
     });
+    emit stopAllSent();
 }
 
 void DriveHub::renewJogLease(int id, int address)

@@ -53,6 +53,7 @@ public:
     void cancelScan(int id);
 
     // STOP: every drive on every connection, emergency stop where the family has it.
+    // Emits stopAllSent() at once (on this thread): whatever was moving was stopped.
     void stopAll();
     // Keep a jog alive (call at least every 100 ms while the jog button is held).
     void renewJogLease(int id, int address);
@@ -67,6 +68,7 @@ signals:
     void jogLeaseExpired(int id, int address);
     void jogEnded(int id, int address, const dd::JogEnd &end);
     void linkLost(int id, const dd::Error &why);
+    void stopAllSent(); // stopAll() was called: a motion watched since was interrupted
 
 private:
     DriveConnection *connectionOnIo(int id) const;      // only on the I/O thread

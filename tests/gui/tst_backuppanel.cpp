@@ -16,11 +16,13 @@
 #include <QFile>
 #include <QLabel>
 #include <QLoggingCategory>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 using namespace dd;
 
@@ -147,6 +149,61 @@ private slots:
         QCOMPARE(statusOf(table, 10), QStringLiteral("same"));
         QCOMPARE(statusOf(table, 20), QStringLiteral("different"));
         report->close();
+    }
+
+    // Issue #26: Apply selected to an enabled or moving drive asks first, as Apply to several
+    // drives does; Cancel sends nothing, Yes restores.
+    void applyToAnEnergisedDriveAsksFirst()
+    {
+        QTemporaryDir dir;
+        SimDriveFixture fx;
+        QVERIFY(fx.start([](SimServoModbusDrive *d) { d->setParameter(10, 100); }));
+        BackupPanel panel(fx.context());
+        DriveInfo info = fx.info;
+        info.status.enabled = true;
+        info.status.running = true;
+        panel.setDriveInfo(info);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        const QString path = dir.filePath(QStringLiteral("drive1.json"));
+        QSignalSpy saved(&panel, &BackupPanel::backupSaved);
+        panel.saveBackup(path);
+        QVERIFY(saved.wait(10000));
+        fx.drive()->setParameter(10, 200);
+        QSignalSpy compared(&panel, &BackupPanel::compared);
+        QVERIFY(panel.openFile(path));
+        QVERIFY(compared.wait(10000));
+        QCOMPARE(panel.diffTable()->checkedIndices(), QList<int>({10}));
+        fx.traffic.clear();
+        QString asked;
+        QString question;
+        const auto answer = [&](QMessageBox::StandardButton button) {
+            QTimer::singleShot(0, &panel, [&, button] {
+                QTRY_VERIFY_WITH_TIMEOUT(QApplication::activeModalWidget(), 10000);
+                auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+                QVERIFY(box);
+                asked = box->objectName();
+                question = box->text();
+                box->button(button)->click();
+            });
+        };
+        answer(QMessageBox::Cancel);
+        panel.applySelected();
+        QCOMPARE(asked, QStringLiteral("energisedRestoreConfirmation"));
+        QVERIFY2(question.contains(QLatin1String("moving")), qPrintable(question));
+        QVERIFY2(panel.message().contains(QLatin1String("nothing was sent")), qPrintable(panel.message()));
+        QCOMPARE(fx.sentWithFunction(0x10), 0);
+        QCOMPARE(fx.drive()->parameter(10), quint16(200));
+
+        asked.clear();
+        answer(QMessageBox::Yes);
+        QSignalSpy restored(&panel, &BackupPanel::restored);
+        panel.applySelected();
+        QCOMPARE(asked, QStringLiteral("energisedRestoreConfirmation"));
+        QVERIFY(restored.wait(10000));
+        QCOMPARE(fx.drive()->parameter(10), quint16(100));
+        if (panel.reportDialog())
+            panel.reportDialog()->close();
     }
 
     // Issue #10: the message line follows a live language switch (it is made again, not

@@ -4,6 +4,7 @@
 #include "core/drive/drivehub.h"
 #include "core/link/trafficrecord.h"
 #include "sim/bench/demobench.h"
+#include "tests/gui/overflowcheck.h"
 #include "ui/bus/bustreewidget.h"
 #include "ui/bus/connectioncontroller.h"
 #include "ui/bus/drivedirectory.h"
@@ -18,6 +19,7 @@
 #include "ui/shell/statusbarwidget.h"
 #include "ui/shell/stopaction.h"
 #include "ui/shell/stopreporter.h"
+#include "ui/shell/stopreportview.h"
 #include "ui/workspace/drivepanel.h"
 #include "ui/workspace/driveworkspace.h"
 
@@ -224,6 +226,73 @@ private slots:
         // The demo servo runs only with its power stage on: the state says so.
         if (modbusRunning)
             QVERIFY(modbusState.enabled);
+        w.connections()->disconnectAll();
+    }
+
+    // Issue #26: the STOP report in full at 1280 px: the status bar cuts it, so a "STOP
+    // report…" button carries it whole as its tooltip and opens a window with one line per
+    // drive; the servo-can line says that STOP switched its power stage off.
+    void stopReportIsShownWholeAt1280()
+    {
+        MainWindow w;
+        w.resize(1280, 720);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        DriveDirectory *dir = w.directory();
+        QVERIFY(w.startDemo());
+        QVERIFY(waitFor(
+            [&] {
+                int n = 0;
+                for (int id : dir->connections())
+                    for (int a : dir->drives(id))
+                        n += dir->info(id, a).valid ? 1 : 0;
+                return n == 3 && !w.connections()->isBusy();
+            },
+            20000));
+        const int can = connectionOf(dir, Family::ServoCan);
+        const int shuoke = connectionOf(dir, Family::Shuoke);
+        int started = 0;
+        for (int id : {can, shuoke}) {
+            w.hub()->run(id, DemoBench::Address, [](Drive &d) { return d.setEnabled(true); });
+            w.hub()->run(
+                id, DemoBench::Address, [](Drive &d) { return d.moveRelative(100000000, 300); },
+                [&started](const DriveResult &r) { started += r.ok() ? 1 : 0; });
+        }
+        QVERIFY(waitFor(
+            [&] { return started == 2 && dir->info(can, 1).status.running && dir->info(can, 1).status.enabled; },
+            10000));
+        QToolButton *button = w.stopReportButton();
+        QVERIFY(button);
+        QVERIFY(!button->isVisible()); // nothing to report yet
+        QSignalSpy finished(w.stopReporter(), &StopReporter::finished);
+        w.stopAction()->trigger();
+        QVERIFY(finished.wait(10000));
+        QVERIFY(button->isVisible());
+        QVERIFY(w.statusBar()->geometry().right() <= w.width());
+        QVERIFY(w.statusBar()->rect().contains(button->geometry()));
+        const QList<StopReporter::Line> lines = w.stopReporter()->lines();
+        QCOMPARE(lines.size(), 3);
+        QString canLine;
+        for (const StopReporter::Line &l : lines) {
+            const QString text = StopReporter::lineText(l);
+            QVERIFY2(button->toolTip().contains(text), qPrintable(button->toolTip()));
+            if (l.connectionId == can)
+                canLine = text;
+        }
+        QVERIFY2(canLine.contains(QLatin1String("STOP switched its power stage off")), qPrintable(canLine));
+        // The window: every line, nothing cut.
+        QTest::mouseClick(button, Qt::LeftButton);
+        StopReportView *view = w.stopReportView();
+        QVERIFY(view);
+        QVERIFY(QTest::qWaitForWindowExposed(view));
+        for (const StopReporter::Line &l : lines)
+            QVERIFY2(view->text().contains(StopReporter::lineText(l)), qPrintable(view->text()));
+        QVERIFY(view->width() <= 1280 && view->height() <= 720);
+        const QStringList cut = overflowcheck::problems(view);
+        QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QLatin1Char('\n'))));
+        view->close();
+        for (int id : {can, shuoke})
+            w.hub()->run(id, DemoBench::Address, [](Drive &d) { return d.setEnabled(false); });
         w.connections()->disconnectAll();
     }
 

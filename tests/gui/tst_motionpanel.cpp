@@ -2,8 +2,10 @@
 // turns only while the button is held; release, focus loss, window deactivation, a frozen
 // window whose lease is not renewed, a disconnect → stop), capability-based enabling, and
 // the Chinese texts of the new panels.
+#include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
 #include "core/protocol/servocan/servocan.h"
+#include "core/protocol/shuoke/shuokecommands.h"
 #include "sim/bus/simserialbus.h"
 #include "sim/shuoke/simshuokeserialdevice.h"
 #include "tests/gui/panelrig.h"
@@ -49,7 +51,9 @@ struct Rig : PanelRig
     std::shared_ptr<SimFrames> frames = std::make_shared<SimFrames>();
     MotionPanel *panel = nullptr;
 
-    bool start(const SimBenchOptions &options, QString *why)
+    // `enable`: a servo-can drive powers up disabled and the Motion tab refuses motion until
+    // it is enabled (issue #26): the rig enables it, unless a test looks at the refusal.
+    bool start(const SimBenchOptions &options, QString *why, bool enable = true)
     {
         frames->clock.start();
         std::shared_ptr<SimFrames> f = frames;
@@ -68,7 +72,16 @@ struct Rig : PanelRig
         if (!PanelRig::start(options, why, hook))
             return false;
         panel = show<MotionPanel>(why);
-        return panel != nullptr;
+        if (!panel)
+            return false;
+        if (enable && options.family == Family::ServoCan) {
+            hub->run(id, 1, [](Drive &d) { return d.setEnabled(true); });
+            if (!waitUntil([this] { return panel->driveInfo().status.enabled; }, 5000)) {
+                *why = QStringLiteral("the drive was not enabled");
+                return false;
+            }
+        }
+        return true;
     }
     qint64 now() const { return frames->clock.elapsed(); }
     qint64 stopAt() const { return frames->stopAtMs.load(); }
@@ -504,6 +517,155 @@ private slots:
         QVERIFY2(moveResult->text().startsWith(QLatin1String("Earlier, at ")), qPrintable(moveResult->text()));
         QVERIFY(moveResult->text().endsWith(failure));
         QVERIFY(!moveResult->styleSheet().contains(QLatin1String("#c62828")));
+    }
+
+    // Issue #26: STOP during a move is not "done": the line says where the axis stopped and
+    // how far short of the target, in the warning colour; "Enable: done." is greyed once STOP
+    // has switched the power stage off (servo-can's STOP is stop-and-disable).
+    void aMoveStoppedByStopIsNotDone()
+    {
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why, false), qPrintable(why));
+        MotionPanel *p = rig.panel;
+        auto *power = p->findChild<QLabel *>(QStringLiteral("powerResult"));
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("enableButton")), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(power->text(), QStringLiteral("Enable: done."), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(p->driveInfo().status.enabled, 5000);
+        p->findChild<QSpinBox *>(QStringLiteral("moveValue"))->setValue(500000);
+        p->findChild<QSpinBox *>(QStringLiteral("moveSpeed"))->setValue(300); // 50,000 counts/s: 10 s
+        auto *result = p->findChild<QLabel *>(QStringLiteral("moveResult"));
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("moveButton")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QLatin1String("moving")), 10000);
+        rig.hub->stopAll(); // the tool bar's STOP
+        QTRY_VERIFY_WITH_TIMEOUT(!result->text().contains(QLatin1String("moving"))
+                                     && !result->text().contains(QLatin1String("started")),
+                                 10000);
+        const QString text = result->text();
+        QVERIFY2(!text.contains(QLatin1String("done")), qPrintable(text));
+        QVERIFY2(text.startsWith(QLatin1String("Move by 500000: stopped by STOP at ")), qPrintable(text));
+        QVERIFY2(text.contains(QLatin1String("short of the target")), qPrintable(text));
+        QVERIFY2(result->styleSheet().contains(QLatin1String("#e65100")), qPrintable(result->styleSheet()));
+        // Enable: no longer true, and greyed.
+        QTRY_VERIFY_WITH_TIMEOUT(power->text().contains(QLatin1String("power stage is off now")), 5000);
+        QVERIFY(power->styleSheet().contains(QLatin1String("#757575")));
+    }
+
+    // A move that ends where it was sent is done, "at its target".
+    void aMoveThatReachesItsTargetIsDone()
+    {
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why), qPrintable(why));
+        MotionPanel *p = rig.panel;
+        p->findChild<QSpinBox *>(QStringLiteral("moveValue"))->setValue(20000);
+        p->findChild<QSpinBox *>(QStringLiteral("moveSpeed"))->setValue(600);
+        auto *result = p->findChild<QLabel *>(QStringLiteral("moveResult"));
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("moveButton")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QLatin1String("done")), 15000);
+        QVERIFY2(result->text().contains(QLatin1String("at its target")), qPrintable(result->text()));
+        QVERIFY(result->styleSheet().contains(QLatin1String("#2e7d32")));
+    }
+
+    // A homing stopped by STOP did not find the origin: not "done".
+    void aHomingStoppedByStopIsNotDone()
+    {
+        Rig rig;
+        SimBenchOptions o;
+        o.family = Family::Shuoke;
+        QString why;
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        rig.sim.call([&rig] {
+            auto *dev = static_cast<SimShuokeSerialDevice *>(rig.sim.bench()->serialBus()->device(0));
+            SimShuokeAxis::Switches sw = dev->drive().axis().switches();
+            sw.origin = 900000; // far away: the search runs for a while
+            sw.rightLimit = 2000000;
+            dev->drive().axis().setSwitches(sw);
+            dev->drive().axis().placeAt(1000);
+            return true;
+        });
+        MotionPanel *p = rig.panel;
+        p->findChild<QComboBox *>(QStringLiteral("homeDirection"))->setCurrentIndex(0); // positive first
+        auto *result = p->findChild<QLabel *>(QStringLiteral("homeResult"));
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("homeButton")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QLatin1String("moving")), 10000);
+        rig.hub->stopAll();
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QLatin1String("origin")), 10000);
+        QVERIFY2(!result->text().contains(QLatin1String("done")), qPrintable(result->text()));
+        QVERIFY2(result->text().contains(QLatin1String("stopped by STOP")), qPrintable(result->text()));
+        QVERIFY2(result->text().contains(QLatin1String("the origin was not found")), qPrintable(result->text()));
+        QVERIFY(result->styleSheet().contains(QLatin1String("#e65100")));
+    }
+
+    // Issue #26: jogging a disabled servo-can drive used to switch its power stage on. Now jog,
+    // move and homing are refused with the reason and an Enable button next to it; nothing is
+    // sent until the engineer enables.
+    void motionIsRefusedWhileThePowerStageIsOff()
+    {
+        Rig rig;
+        QString why;
+        QVERIFY2(rig.start(servoCanBench(), &why, false), qPrintable(why));
+        MotionPanel *p = rig.panel;
+        QVERIFY(!p->driveInfo().status.enabled);
+        auto *notice = p->findChild<QWidget *>(QStringLiteral("powerOffNotice"));
+        QVERIFY(notice);
+        QTRY_VERIFY(notice->isVisible());
+        QVERIFY(!rig.panel->jogPositive()->isEnabled());
+        QVERIFY(!rig.panel->jogNegative()->isEnabled());
+        QVERIFY2(rig.panel->jogPositive()->toolTip().contains(QLatin1String("power stage is off")),
+                 qPrintable(rig.panel->jogPositive()->toolTip()));
+        QTest::mousePress(rig.panel->jogPositive(), Qt::LeftButton);
+        QTest::mouseRelease(rig.panel->jogPositive(), Qt::LeftButton);
+        p->findChild<QSpinBox *>(QStringLiteral("moveValue"))->setValue(10000);
+        auto *result = p->findChild<QLabel *>(QStringLiteral("moveResult"));
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("moveButton")), Qt::LeftButton);
+        QVERIFY2(result->text().contains(QLatin1String("refused: the power stage is off")), qPrintable(result->text()));
+        QTest::qWait(300);
+        QCOMPARE(rig.jogs(), 0);
+        QVERIFY(!p->driveInfo().status.enabled);
+        QVERIFY(rig.atRest());
+        // The Enable next to the reason: the power stage on, jog available again.
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("powerOffEnable")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(p->driveInfo().status.enabled, 5000);
+        QTRY_VERIFY(!notice->isVisible());
+        QVERIFY(rig.panel->jogPositive()->isEnabled());
+        QVERIFY(rig.atRest()); // enabling moves nothing
+    }
+
+    // Issue #26: a shuoke move at its own speed writes the stored max-speed (the seed's moves
+    // run at it); the drive layer puts the stored value back once the axis is at rest.
+    void aShuokeMoveLeavesMaxSpeedAsItWas()
+    {
+        Rig rig;
+        SimBenchOptions o;
+        o.family = Family::Shuoke;
+        QString why;
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        bool written = false;
+        rig.hub->run(
+            rig.id, 1,
+            [](Drive &d) {
+                return d.writeParameters({{shuoke::CmdSetMaxSpeed, 12000}});
+            },
+            [&](const DriveResult &r) { written = r.ok(); });
+        QTRY_VERIFY_WITH_TIMEOUT(written, 5000);
+        const auto stored = [&rig] {
+            return rig.sim.call([&rig] {
+                auto *dev = static_cast<SimShuokeSerialDevice *>(rig.sim.bench()->serialBus()->device(0));
+                return dev->drive().setting(shuoke::CmdSetMaxSpeed);
+            });
+        };
+        QCOMPARE(stored(), qint64(12000));
+        MotionPanel *p = rig.panel;
+        p->findChild<QSpinBox *>(QStringLiteral("moveValue"))->setValue(4000);
+        p->findChild<QSpinBox *>(QStringLiteral("moveSpeed"))->setValue(2000);
+        auto *result = p->findChild<QLabel *>(QStringLiteral("moveResult"));
+        QTest::mouseClick(p->findChild<QPushButton *>(QStringLiteral("moveButton")), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QLatin1String("moving")), 10000);
+        QCOMPARE(stored(), qint64(2000)); // the move runs at its own speed
+        QTRY_VERIFY_WITH_TIMEOUT(result->text().contains(QLatin1String("done")), 15000);
+        QVERIFY2(result->text().contains(QLatin1String("at its target")), qPrintable(result->text()));
+        QTRY_COMPARE_WITH_TIMEOUT(stored(), qint64(12000), 5000);
     }
 
     void servoModbusShowsEveryMotionDisabledWithTheReason()

@@ -232,6 +232,36 @@ private slots:
         QCOMPARE(controls.blockedReason(), QStringLiteral("not here"));
     }
 
+    // Issue #26: a step on a disabled servo-can drive would switch its power stage on (its
+    // motion commands enable it): refused, with the reason, nothing started.
+    void aStepOnADisabledDriveIsRefused()
+    {
+        PanelRig rig;
+        QString why;
+        SimBenchOptions o;
+        o.family = Family::ServoCan;
+        o.can = QStringLiteral("virtualcan:auto");
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        TuningPanel *tuning = rig.show<TuningPanel>(&why);
+        QVERIFY2(tuning, qPrintable(why));
+        QVERIFY(!tuning->driveInfo().status.enabled);
+        StepTestControls *controls = tuning->stepControls();
+        StepTestControls::Request r;
+        r.test = StepTestControls::Test::Velocity;
+        r.speed = 200;
+        r.duration = 0.3;
+        r.maxSpeed = 400;
+        r.maxTravel = 1000000;
+        r.maxDuration = 3;
+        controls->setRequest(r);
+        QVERIFY2(controls->runButton()->isEnabled(), qPrintable(controls->blockedReason()));
+        controls->runButton()->click();
+        QVERIFY(!tuning->isStepRunning());
+        QVERIFY2(tuning->message().contains(QLatin1String("power stage is off")), qPrintable(tuning->message()));
+        QTest::qWait(300);
+        QVERIFY(!tuning->driveInfo().status.enabled);
+    }
+
     void velocityStepMakesARun()
     {
         PanelRig rig;

@@ -36,6 +36,7 @@ private slots:
     void jogStopsOnSignal_data();
     void jogStopsOnSignal();
     void moveWaitsForTheEnd();
+    void moveStoppedByAnotherProgramIsNotDone();
     void enableStopClearAlarm();
     void unsupportedOperationsExit2();
     void scanFindsStations();
@@ -393,6 +394,36 @@ void TestCliServoCan::moveWaitsForTheEnd()
     r = runCli(args({"move", "--to", "-5000", "--speed", "600"}));
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QCOMPARE(m_sim1->motor().position(), qint64(-5000));
+}
+
+// Issue #26: a move that another program stops ("drivedesk-cli stop" from a second shell,
+// the GUI's STOP) comes to rest short of its target: not "Done", but where it stopped and how
+// far short, exit 1.
+void TestCliServoCan::moveStoppedByAnotherProgramIsNotDone()
+{
+    const qint64 start = m_sim1->motor().position();
+    std::unique_ptr<QProcess> move(startCli(args({"--json", "move", "--by", "3000000", "--speed", "300"})));
+    QVERIFY(move->waitForStarted(10000));
+    QVERIFY(QTest::qWaitFor([&] { return m_sim1->motor().isMoving(); }, 15000));
+    // Both processes talk to the simulated drive of this process: its event loop must run.
+    std::unique_ptr<QProcess> stop(startCli(args({"stop"})));
+    QVERIFY(QTest::qWaitFor([&] { return stop->state() == QProcess::NotRunning; }, 20000));
+    QCOMPARE(stop->exitCode(), 0);
+    QVERIFY(QTest::qWaitFor([&] { return move->state() == QProcess::NotRunning; }, 20000));
+    const QByteArray out = move->readAllStandardOutput();
+    const QByteArray err = move->readAllStandardError();
+    QCOMPARE(move->exitCode(), 1);
+    QVERIFY2(!out.contains("Done") && !err.contains("Done"), out.constData());
+    const QJsonObject doc = QJsonDocument::fromJson(out).object();
+    QCOMPARE(doc.value("ok").toBool(), false);
+    QVERIFY2(!doc.value("reached").toBool(true), out.constData());
+    QCOMPARE(qint64(doc.value("target").toDouble()), start + 3000000);
+    const qint64 at = qint64(doc.value("position").toDouble());
+    QVERIFY(at > start && at < start + 3000000);
+    QCOMPARE(qint64(doc.value("distanceToTarget").toDouble()), start + 3000000 - at);
+    const QString message = doc.value("error").toObject().value("message").toString();
+    QVERIFY2(message.contains(QLatin1String("short of the target")), qPrintable(message));
+    QCOMPARE(doc.value("error").toObject().value("code").toString(), QStringLiteral("cancelled"));
 }
 
 void TestCliServoCan::enableStopClearAlarm()

@@ -42,6 +42,7 @@ private slots:
     void jogStopsOnSignal_data();
     void jogStopsOnSignal();
     void moveAndHome();
+    void aHomingStoppedElsewhereIsNotDone();
     void stopAndEmergencyStop();
     void monitor();
     void unsupportedOperationsExit2();
@@ -304,10 +305,16 @@ void TestCliShuoke::jogStopsOnSignal()
 void TestCliShuoke::moveAndHome()
 {
     const qint64 start = sim(Rtu).axis().absolutePosition();
+    const qint64 maxSpeed = sim(Rtu).setting(shuoke::CmdSetMaxSpeed);
+    QVERIFY(maxSpeed != 8000);
     CliRun r = runCli(args(Rtu, {"--json", "move", "--by", "4000", "--speed", "8000"}));
     QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
     QVERIFY(!sim(Rtu).axis().isRunning());
     QCOMPARE(sim(Rtu).axis().absolutePosition(), start + 4000);
+    QCOMPARE(r.json().value("reached").toBool(), true);
+    // The move ran at 8000 (the seed's moves run at the stored max-speed), and the stored
+    // value is back (issue #26).
+    QCOMPARE(sim(Rtu).setting(shuoke::CmdSetMaxSpeed), maxSpeed);
 
     r = runCli(args(Rtu, {"move", "--to", "1000", "--speed", "8000"}));
     QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
@@ -318,6 +325,30 @@ void TestCliShuoke::moveAndHome()
     QCOMPARE(r.json().value("finished").toBool(), true);
     QVERIFY(!sim(Rtu).axis().isHoming());
     QVERIFY(!sim(Rtu).axis().homingFailed());
+}
+
+// Issue #26: a homing that comes to rest without the origin (stopped at the drive, by
+// another master, a STOP) is not "Done": it says so and exits 1.
+void TestCliShuoke::aHomingStoppedElsewhereIsNotDone()
+{
+    const SimShuokeAxis::Switches before = sim(Rtu).axis().switches();
+    SimShuokeAxis::Switches far = before;
+    far.origin = before.rightLimit - 1000; // a long search
+    sim(Rtu).axis().setSwitches(far);
+    sim(Rtu).axis().placeAt(before.origin + 5000);
+    QProcess *p = startCli(args(Rtu, {"--json", "home", "--positive"}));
+    QVERIFY(QTest::qWaitFor([&] { return sim(Rtu).axis().isHoming() && sim(Rtu).axis().isRunning(); }, 10000));
+    QTest::qWait(300);
+    sim(Rtu).axis().stop(); // stopped outside this program
+    const CliRun r = waitCli(p, 15000);
+    delete p;
+    sim(Rtu).axis().setSwitches(before);
+    QVERIFY2(r.finished && r.exitCode == 1, qPrintable(r.text()));
+    QVERIFY2(!r.text().contains(QLatin1String("Done")), qPrintable(r.text()));
+    QCOMPARE(r.json().value("reached").toBool(true), false);
+    QVERIFY2(r.json().value("error").toObject().value("message").toString().contains(
+                 QLatin1String("without finding the origin")),
+             qPrintable(r.text()));
 }
 
 void TestCliShuoke::stopAndEmergencyStop()

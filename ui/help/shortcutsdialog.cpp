@@ -50,7 +50,8 @@ void ShortcutsDialog::retranslate()
     };
     const QList<QPair<QString, QString>> rows = {
         {keys({QKeySequence(Qt::Key_Escape), QKeySequence(Qt::Key_F12)}),
-         tr("STOP: stop every drive on every connection (anywhere in DriveDesk)")},
+         tr("STOP: stop every drive on every connection, from any window, dialog, menu or editor "
+            "(Esc then also closes the dialog; F12 only stops)")},
         {keys({QKeySequence(Qt::Key_F1)}), tr("Open the user guide")},
         {keys({QKeySequence(Qt::CTRL | Qt::Key_K)}), tr("Connect… (open a port or CAN interface and scan it)")},
         {keys({QKeySequence::Quit}), tr("Quit")},

@@ -8,6 +8,7 @@
 #include "ui/bus/scanprogresswidget.h"
 #include "ui/bus/serialaccessdialog.h"
 #include "ui/bus/statuspoller.h"
+#include "ui/common/displaytext.h"
 #include "ui/fleet/fleetactions.h"
 #include "ui/framemonitor/framemonitordock.h"
 #include "ui/help/helpactions.h"
@@ -21,18 +22,24 @@
 #include "ui/shell/recentfiles.h"
 #include "ui/shell/statusbarwidget.h"
 #include "ui/shell/stopaction.h"
+#include "ui/shell/stopguard.h"
 #include "ui/shell/stopreporter.h"
+#include "ui/shell/stopreportview.h"
 #include "ui/workspace/driveworkspace.h"
 
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QEventLoop>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStyle>
+#include <QTimer>
 #include <QToolBar>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace dd {
@@ -113,7 +120,9 @@ void MainWindow::createParts()
 void MainWindow::createActions()
 {
     m_stop = new StopAction(this);
-    addAction(m_stop); // the shortcuts work even if the tool bar is hidden
+    // Esc and F12 in every window of the application, with any dialog, menu or editor open,
+    // and a STOP button in every dialog (StopGuard).
+    new StopGuard(m_stop, this);
     connect(m_stop, &QAction::triggered, m_hub, &DriveHub::stopAll);
     // Then, drive by drive, what the STOP did (StopReporter), in the status bar.
     m_stopReporter = new StopReporter(m_directory, this);
@@ -122,6 +131,20 @@ void MainWindow::createActions()
             [this] { m_statusBar->showLiveMessage([r = m_stopReporter] { return r->summary(); }); });
     connect(m_stopReporter, &StopReporter::updated, this,
             [this] { m_statusBar->showLiveMessage([r = m_stopReporter] { return r->summary(); }, 30000); });
+    // The status bar cuts a long report: the whole of it in the button's tooltip and, on a
+    // click, in a window of its own (StopReportView).
+    m_stopReportButton = new QToolButton(m_statusBar);
+    m_stopReportButton->setObjectName(QStringLiteral("stopReportButton"));
+    m_stopReportButton->setAutoRaise(true);
+    m_stopReportButton->hide();
+    m_statusBar->addPermanentWidget(m_stopReportButton);
+    connect(m_stopReportButton, &QToolButton::clicked, this, &MainWindow::showStopReport);
+    const auto showReport = [this] {
+        m_stopReportButton->setToolTip(m_stopReporter->details());
+        m_stopReportButton->show();
+    };
+    connect(m_stop, &QAction::triggered, this, showReport);
+    connect(m_stopReporter, &StopReporter::updated, this, showReport);
 
     m_connectAction = new QAction(style()->standardIcon(QStyle::SP_DriveNetIcon), QString(), this);
     m_connectAction->setObjectName(QStringLiteral("connectAction"));
@@ -343,6 +366,15 @@ void MainWindow::openRecentFile(const QString &path)
         m_statusBar->showMessage(tr("Select a drive first: %1 is opened in one of its tabs.").arg(path), 8000);
 }
 
+void MainWindow::showStopReport()
+{
+    if (!m_stopReportView)
+        m_stopReportView = new StopReportView(m_stopReporter, this);
+    m_stopReportView->show();
+    m_stopReportView->raise();
+    m_stopReportView->activateWindow();
+}
+
 void MainWindow::showAbout()
 {
     AboutDialog(this).exec();
@@ -363,8 +395,64 @@ void MainWindow::saveLayout() const
     s.setValue(QStringLiteral("mainWindow/state"), saveState());
 }
 
+QStringList MainWindow::drivesInMotionOrEnabled() const
+{
+    QStringList out;
+    for (int id : m_directory->connections())
+        for (int address : m_directory->drives(id)) {
+            const DriveStatus s = m_directory->info(id, address).status;
+            const QString name = DisplayText::driveName(m_directory->discovered(id, address).family, address);
+            if (s.running)
+                out << tr("%1 is moving").arg(name);
+            else if (s.enabled)
+                out << tr("%1 has its power stage on").arg(name);
+        }
+    return out;
+}
+
+bool MainWindow::confirmQuit()
+{
+    const QStringList live = drivesInMotionOrEnabled();
+    if (live.isEmpty())
+        return true;
+    QMessageBox box(QMessageBox::Warning, tr("Quit DriveDesk?"),
+                    tr("%1.\n\nQuitting ends DriveDesk's control of these drives. STOP them all (as the "
+                       "STOP button does) and quit?")
+                        .arg(live.join(tr("; "))),
+                    QMessageBox::NoButton, this);
+    box.setObjectName(QStringLiteral("quitConfirmation"));
+    QPushButton *stopAndQuit = box.addButton(tr("STOP and quit"), QMessageBox::AcceptRole);
+    stopAndQuit->setObjectName(QStringLiteral("stopAndQuit"));
+    QPushButton *cancel = box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(cancel);
+    box.setEscapeButton(cancel);
+    box.exec();
+    if (box.clickedButton() != stopAndQuit)
+        return false;
+    // STOP, then wait until every drive's outcome is known (StopReporter: at most its
+    // confirmation time), so that the stop is on the wire before the links close.
+    QEventLoop wait;
+    connect(m_stopReporter, &StopReporter::finished, &wait, &QEventLoop::quit);
+    QTimer::singleShot(StopReporter::ConfirmTimeoutMs + 1000, &wait, &QEventLoop::quit);
+    m_stop->trigger();
+    if (m_stopReporter->isRunning())
+        wait.exec(QEventLoop::ExcludeUserInputEvents);
+    return true;
+}
+
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    if (m_closing) { // a second close while the first one asks or waits
+        event->ignore();
+        return;
+    }
+    m_closing = true;
+    const bool quit = confirmQuit();
+    m_closing = false;
+    if (!quit) {
+        event->ignore();
+        return;
+    }
     saveLayout();
     m_recent->save();
     QMainWindow::closeEvent(event);
@@ -402,6 +490,9 @@ void MainWindow::retranslate()
     m_busDock->toggleViewAction()->setText(tr("&Bus tree"));
     m_toolBar->setWindowTitle(tr("Main tool bar"));
     m_stop->retranslate();
+    m_stopReportButton->setText(tr("STOP report…"));
+    if (m_stopReportButton->isVisibleTo(m_statusBar))
+        m_stopReportButton->setToolTip(m_stopReporter->details());
     m_recent->rebuildMenu();
 }
 

@@ -12,6 +12,7 @@ class QActionGroup;
 class QDockWidget;
 class QMenu;
 class QToolBar;
+class QToolButton;
 
 namespace dd {
 
@@ -28,6 +29,7 @@ class StatusBarWidget;
 class StatusPoller;
 class StopAction;
 class StopReporter;
+class StopReportView;
 
 // The workbench window. It only assembles and wires the parts:
 //   DriveHub (I/O thread) → DriveDirectory (the GUI's picture of the bus) → BusTreeWidget
@@ -58,6 +60,11 @@ public:
     DemoLauncher *demo() const { return m_demo; }
     StopAction *stopAction() const { return m_stop; }
     StopReporter *stopReporter() const { return m_stopReporter; }
+    // The status bar's "STOP report" button (shown from the first STOP on; its tooltip is the
+    // whole report) and the window it opens (nullptr until opened).
+    QToolButton *stopReportButton() const { return m_stopReportButton; }
+    StopReportView *stopReportView() const { return m_stopReportView; }
+    void showStopReport();
     QMenu *fileMenu() const { return m_fileMenu; }
     QMenu *viewMenu() const { return m_viewMenu; }
 
@@ -91,6 +98,10 @@ private:
     void updateActions();
     void openRecentFile(const QString &path);
     void showAbout();
+    // "servo-can 1 is moving", "… has its power stage on": what quitting would leave alone.
+    QStringList drivesInMotionOrEnabled() const;
+    // With a drive enabled or moving: asks, and STOPs every drive on "STOP and quit".
+    bool confirmQuit();
 
     DriveHub *m_hub = nullptr;
     DriveDirectory *m_directory = nullptr;
@@ -106,6 +117,7 @@ private:
     QDockWidget *m_busDock = nullptr;
     QToolBar *m_toolBar = nullptr;
     std::optional<Family> m_preferredFamily; // see setPreferredFamily()
+    bool m_closing = false;                  // closeEvent() is asking or waiting
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_recentMenu = nullptr;
@@ -114,6 +126,8 @@ private:
     QMenu *m_helpMenu = nullptr;
     StopAction *m_stop = nullptr;
     StopReporter *m_stopReporter = nullptr;
+    QToolButton *m_stopReportButton = nullptr;
+    StopReportView *m_stopReportView = nullptr;
     QAction *m_connectAction = nullptr;
     QAction *m_disconnectAction = nullptr;
     QAction *m_disconnectAllAction = nullptr;

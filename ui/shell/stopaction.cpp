@@ -9,8 +9,6 @@ StopAction::StopAction(QObject *parent)
     : QAction(parent)
 {
     setObjectName(QStringLiteral("stopAll"));
-    setShortcuts(stopShortcuts());
-    setShortcutContext(Qt::ApplicationShortcut);
     setAutoRepeat(false);
     retranslate();
 }

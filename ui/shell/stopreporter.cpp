@@ -31,6 +31,7 @@ void StopReporter::start()
             l.connectionId = id;
             l.address = address;
             l.family = m_directory->discovered(id, address).family;
+            l.wasEnabled = info.status.enabled;
             // Before the description arrives, assume a stop command (and confirm it).
             l.hasStop = !info.valid || info.capabilities.testFlag(Capability::Stop)
                 || info.capabilities.testFlag(Capability::EmergencyStop);
@@ -102,7 +103,11 @@ QString StopReporter::lineText(const Line &l)
     const QString name = DisplayText::driveName(l.family, l.address);
     switch (l.outcome) {
     case Outcome::Pending: return tr("%1: stop sent, waiting for its state…").arg(name);
-    case Outcome::Stopped: return tr("%1: stopped (the drive reports the axis at rest).").arg(name);
+    case Outcome::Stopped:
+        // servo-can's STOP is "stop and disable": say so, the next motion needs an Enable.
+        if (l.wasEnabled && !l.status.enabled)
+            return tr("%1: stopped (the drive reports the axis at rest); STOP switched its power stage off.").arg(name);
+        return tr("%1: stopped (the drive reports the axis at rest).").arg(name);
     case Outcome::AtRest: return tr("%1: has no stop command; it is at rest.").arg(name);
     case Outcome::NotSupported:
         return tr("%1: has no stop command and is still moving; DriveDesk cannot stop it. Use the "
@@ -125,6 +130,18 @@ QString StopReporter::summary() const
     for (const Line &l : m_lines)
         parts << lineText(l);
     return tr("STOP: %1").arg(parts.join(QLatin1Char(' ')));
+}
+
+QString StopReporter::details() const
+{
+    if (!m_started)
+        return QString();
+    if (m_lines.isEmpty())
+        return tr("STOP sent; no drive is connected.");
+    QStringList parts{tr("What STOP did, drive by drive:")};
+    for (const Line &l : m_lines)
+        parts << lineText(l);
+    return parts.join(QLatin1Char('\n'));
 }
 
 } // namespace dd

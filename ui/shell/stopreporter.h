@@ -32,6 +32,7 @@ public:
         int address = 0;
         Family family = Family::ServoModbus;
         bool hasStop = true;
+        bool wasEnabled = false; // the power stage was on when STOP was sent
         Outcome outcome = Outcome::Pending;
         QString error; // translated, from the drive layer (Failed)
         int reads = 0;
@@ -49,6 +50,8 @@ public:
     QList<Line> lines() const { return m_lines; }
     // "STOP: …" — one sentence per drive (or "sent, no drive connected").
     QString summary() const;
+    // The same, one drive a line, with a heading: for the report's tooltip and window.
+    QString details() const;
     static QString lineText(const Line &line);
 
 signals:

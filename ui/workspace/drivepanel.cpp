@@ -134,7 +134,9 @@ void DrivePanel::showMessage(QLabel *label, const QString &text, MessageKind kin
     case MessageKind::Info: label->setStyleSheet(QString()); break;
     case MessageKind::Success: label->setStyleSheet(QStringLiteral("color: #2e7d32;")); break;
     case MessageKind::Problem: label->setStyleSheet(QStringLiteral("color: #c62828;")); break;
-    case MessageKind::EarlierProblem: label->setStyleSheet(QStringLiteral("color: #757575;")); break;
+    case MessageKind::EarlierProblem:
+    case MessageKind::Outdated: label->setStyleSheet(QStringLiteral("color: #757575;")); break;
+    case MessageKind::Warning: label->setStyleSheet(QStringLiteral("color: #e65100;")); break;
     }
 }
 

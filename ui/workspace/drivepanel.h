@@ -87,7 +87,9 @@ protected:
     void reportError(const Error &error);
 
     // Parts several panels build alike.
-    enum class MessageKind { Info, Success, Problem, EarlierProblem };
+    // Warning: it worked, but not as asked (a move that ended short of its target);
+    // Outdated: true when shown, made untrue by a later event ("Enable: done." after STOP).
+    enum class MessageKind { Info, Success, Problem, EarlierProblem, Warning, Outdated };
     // A panel's message line: word-wrapped, selectable text.
     static QLabel *createMessageLabel(QWidget *parent, const QString &objectName);
     // Sets a message line's text in the colour of its kind (Info: the palette's).

@@ -342,7 +342,7 @@ DriveReply *ShuokeDrive::readStatus()
                 if (const auto v = decodeInt(pos.data))
                     position = *v;
             applyStatusBits(reply, st.data, position);
-            reply->finish(e2);
+            restoreMaxSpeedAtRest(reply, [reply, e2] { reply->finish(e2); });
         });
     });
     return reply;
@@ -389,7 +389,77 @@ DriveReply *ShuokeDrive::moveRelative(qint64 distance, qint32 speed)
         steps.append(Step{CmdSetMaxSpeed, encodeUInt32(static_cast<quint32>(speed), byteOrder())});
     steps.append(Step{CmdMoveRelative, int32(distance)});
     m_commandedDirection = distance < 0 ? -1 : (distance > 0 ? 1 : m_commandedDirection);
-    return simpleCommands(steps);
+    if (speed <= 0)
+        return simpleCommands(steps);
+    if (const Error e = checkSteps(steps))
+        return finishedReply(e);
+    DriveReply *reply = newReply();
+    const quint64 stopsBefore = m_stops;
+    keepMaxSpeed(reply, speed, [this, reply, steps, stopsBefore] { runSteps(reply, steps, stopsBefore); });
+    return reply;
+}
+
+void ShuokeDrive::keepMaxSpeed(DriveReply *reply, qint32 speed, std::function<void()> next)
+{
+    // A later move before the axis came to rest: the stored value is already kept; the
+    // restore waits for this move's end.
+    m_restoreSeenRunning = false;
+    m_restoreRestReads = 0;
+    if (m_maxSpeedToRestore) {
+        next();
+        return;
+    }
+    const quint64 stopsBefore = m_stops;
+    exchange(reply, CmdGetMaxSpeed, {}, [this, reply, speed, next, stopsBefore](const Error &e, const Frame &f) {
+        if (m_stops != stopsBefore) { // nothing more of this move after a stop, not even its speed
+            reply->finish({ErrorCode::Cancelled,
+                           tr("A stop came before the motion command was sent: the axis was not started.")});
+            return;
+        }
+        const auto stored = e ? std::nullopt : decodeInt(f.data);
+        if (!stored) {
+            // Not known, so it could not be put back: the move would change it for good.
+            reply->finish({e ? e.code : ErrorCode::Malformed,
+                           tr("The drive's stored max-speed could not be read (%1), so a move at its own speed "
+                              "would overwrite it: nothing was moved. Move at speed 0 (the stored max-speed) or "
+                              "try again.")
+                               .arg(e ? e.message : tr("a reply of %1 bytes").arg(f.data.size()))});
+            return;
+        }
+        if (*stored != speed)
+            m_maxSpeedToRestore = quint32(*stored);
+        next();
+    });
+}
+
+void ShuokeDrive::restoreMaxSpeedAtRest(DriveReply *reply, std::function<void()> done)
+{
+    if (!m_maxSpeedToRestore) {
+        done();
+        return;
+    }
+    if (status().running) {
+        m_restoreSeenRunning = true;
+        m_restoreRestReads = 0;
+        done();
+        return;
+    }
+    ++m_restoreRestReads;
+    // At rest after the move ran, or for three reads (a short move may be over before the
+    // first), and no motion command is still on its way: the move's speed is no longer used.
+    if ((!m_restoreSeenRunning && m_restoreRestReads < 3) || m_motionQueued > 0) {
+        done();
+        return;
+    }
+    const quint32 value = *m_maxSpeedToRestore;
+    exchange(reply, CmdSetMaxSpeed, encodeUInt32(value, byteOrder()),
+             [this, reply, value, done](const Error &e, const Frame &) {
+                 if (!e && m_maxSpeedToRestore == value) {
+                     m_maxSpeedToRestore.reset();
+                     reply->setInfo(QStringLiteral("maxSpeedRestored"), double(value));
+                 }
+                 done(); // a failed restore is tried again at the next read
+             });
 }
 
 DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
@@ -403,9 +473,17 @@ DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
         speedStep.append(Step{CmdSetMaxSpeed, encodeUInt32(static_cast<quint32>(speed), byteOrder())});
     const quint64 stopsBefore = m_stops;
     if (modelIs(Model::M6505)) {
-        DriveReply *r = simpleCommands(speedStep + QList<Step>{{CmdClosedLoopMoveAbsolute, int32(target)}});
-        r->setInfo(QStringLiteral("method"), QStringLiteral("closed-loop-absolute"));
-        return r;
+        const QList<Step> steps = speedStep + QList<Step>{{CmdClosedLoopMoveAbsolute, int32(target)}};
+        if (const Error e = checkSteps(steps))
+            return finishedReply(e);
+        DriveReply *reply = newReply();
+        reply->setInfo(QStringLiteral("method"), QStringLiteral("closed-loop-absolute"));
+        const auto go = [this, reply, steps, stopsBefore] { runSteps(reply, steps, stopsBefore); };
+        if (speed > 0)
+            keepMaxSpeed(reply, speed, go);
+        else
+            go();
+        return reply;
     }
     // Open loop: the target relative to the pulse counter 0x37.
     if (const Error e = checkSteps(speedStep
@@ -413,25 +491,34 @@ DriveReply *ShuokeDrive::moveAbsolute(qint64 target, qint32 speed)
         return finishedReply(e);
     DriveReply *reply = newReply();
     reply->setInfo(QStringLiteral("method"), QStringLiteral("relative-from-position"));
-    exchange(reply, CmdQueryAbsolutePosition, {}, [this, reply, target, speedStep, stopsBefore](const Error &e, const Frame &f) {
-        if (e) {
-            reply->finish(e);
-            return;
-        }
-        const auto pos = decodeInt(f.data);
-        if (!pos) {
-            reply->finish({ErrorCode::Malformed, tr("The drive's position reply has %1 bytes.").arg(f.data.size())});
-            return;
-        }
-        const qint64 delta = target - *pos;
-        if (!isPulseCountInRange(delta)) {
-            reply->finish({ErrorCode::OutOfRange,
-                           tr("The move from %1 to %2 is beyond the drive's range.").arg(*pos).arg(target)});
-            return;
-        }
-        reply->setInfo(QStringLiteral("distance"), delta);
-        runSteps(reply, speedStep + QList<Step>{{CmdMoveRelative, int32(delta)}}, stopsBefore);
-    });
+    const auto go = [this, reply, target, speedStep, stopsBefore] {
+        exchange(reply, CmdQueryAbsolutePosition, {},
+                 [this, reply, target, speedStep, stopsBefore](const Error &e, const Frame &f) {
+                     if (e) {
+                         reply->finish(e);
+                         return;
+                     }
+                     const auto pos = decodeInt(f.data);
+                     if (!pos) {
+                         reply->finish(
+                             {ErrorCode::Malformed, tr("The drive's position reply has %1 bytes.").arg(f.data.size())});
+                         return;
+                     }
+                     const qint64 delta = target - *pos;
+                     if (!isPulseCountInRange(delta)) {
+                         reply->finish(
+                             {ErrorCode::OutOfRange,
+                              tr("The move from %1 to %2 is beyond the drive's range.").arg(*pos).arg(target)});
+                         return;
+                     }
+                     reply->setInfo(QStringLiteral("distance"), delta);
+                     runSteps(reply, speedStep + QList<Step>{{CmdMoveRelative, int32(delta)}}, stopsBefore);
+                 });
+    };
+    if (speed > 0)
+        keepMaxSpeed(reply, speed, go);
+    else
+        go();
     return reply;
 }
 

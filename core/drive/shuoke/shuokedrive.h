@@ -42,8 +42,13 @@ class WriteVerification;
 //
 // Motion: jog = 0x33 (signed speed), stop = 0x3D, emergency stop = 0x3C, relative move =
 // 0x31, absolute move = 0x57 on the M6505 (closed-loop target), otherwise 0x37 is read and
-// the difference moved with 0x31. A move with speed > 0 first sets the maximum speed (0x27,
-// which stays set); speed <= 0 moves at the configured maximum speed. Home = 0x3E. The
+// the difference moved with 0x31. The seed's moves have no speed of their own: they run at
+// the stored maximum speed (0x27 / 0x28, parameter max-speed). A move with speed > 0 reads
+// the stored value (0x28; unreadable: the move is refused), sets the move's speed (0x27) and,
+// once readStatus() finds the axis at rest after the move, writes the stored value back
+// (info "maxSpeedRestored"): a move leaves the drive's settings as they were, as long as its
+// state is read until the end (the GUI's poll, the CLI's move without --no-wait). speed <= 0
+// moves at the stored maximum speed and changes nothing. Home = 0x3E. The
 // drive has no enable command and no alarm register: enable is NotSupported, readAlarm()
 // reports the limit-switch bits and the last failure code this drive answered.
 // Stops (0x3C / 0x3D) are urgent requests: they go ahead of everything waiting on the link
@@ -135,6 +140,10 @@ private:
     void fillSamples(DriveReply *reply, const QStringList &ids, const QHash<quint8, QByteArray> &data) const;
     bool channelAvailable(const QString &id) const;
     void applyStatusBits(DriveReply *reply, const QByteArray &statusData, std::optional<qint64> position);
+    // The stored max-speed a move at `speed` replaces: read and kept, then `next`.
+    void keepMaxSpeed(DriveReply *reply, qint32 speed, std::function<void()> next);
+    // From readStatus(): the kept max-speed written back once the move is over, then `done`.
+    void restoreMaxSpeedAtRest(DriveReply *reply, std::function<void()> done);
 
     QPointer<ShuokeTransport> m_transport;
     std::optional<shuoke::Model> m_model;
@@ -146,6 +155,10 @@ private:
     // the speed's magnitude (the seed marks only the position signed): the speed channel
     // takes its direction from this.
     int m_commandedDirection = 0;
+    // The stored max-speed a move's speed replaced, until written back (keepMaxSpeed()).
+    std::optional<quint32> m_maxSpeedToRestore;
+    bool m_restoreSeenRunning = false; // the axis was seen moving since the last move began
+    int m_restoreRestReads = 0;        // status reads at rest since then
 };
 
 } // namespace dd

@@ -327,6 +327,20 @@ bool BackupPanel::confirmRestore(const QList<int> &indices, bool *force)
             return false;
         *force = true;
     }
+    // An energised axis: the same question as Apply to several drives (FleetApplyDialog).
+    const DriveStatus state = driveInfo().status;
+    if (state.enabled || state.running) {
+        QMessageBox box(QMessageBox::Warning, tr("Write to an energised drive?"),
+                        tr("Drive %1 is %2: a parameter changed while the axis is energised takes effect at once "
+                           "and can make it jerk or move.\n\nRestore the ticked parameters anyway?")
+                            .arg(context().address)
+                            .arg(state.running ? tr("moving") : tr("enabled")),
+                        QMessageBox::Yes | QMessageBox::Cancel, this);
+        box.setObjectName(QStringLiteral("energisedRestoreConfirmation"));
+        box.setDefaultButton(QMessageBox::Cancel);
+        if (box.exec() != QMessageBox::Yes)
+            return false;
+    }
     QStringList communication;
     for (int p : indices)
         if (const DiffEntry *e = m_diffTable->diff().entry(p); e && e->communication)

@@ -12,6 +12,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QPointer>
 #include <QPushButton>
 #include <QRadioButton>
@@ -85,6 +86,24 @@ MotionPanel::MotionPanel(const DriveContext &context, QWidget *parent)
     m_position->setObjectName(QStringLiteral("motionPosition"));
     m_position->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_readout = new MotionReadout(context, this);
+    m_powerOffNotice = new QWidget(this);
+    m_powerOffNotice->setObjectName(QStringLiteral("powerOffNotice"));
+    m_powerOffText = new QLabel(m_powerOffNotice);
+    m_powerOffText->setObjectName(QStringLiteral("powerOffText"));
+    m_powerOffText->setWordWrap(true);
+    m_powerOffText->setStyleSheet(QStringLiteral("color: #e65100;"));
+    m_powerOffEnable = new QPushButton(m_powerOffNotice);
+    m_powerOffEnable->setObjectName(QStringLiteral("powerOffEnable"));
+    auto *noticeRow = new QHBoxLayout(m_powerOffNotice);
+    noticeRow->setContentsMargins(0, 0, 0, 0);
+    noticeRow->addWidget(m_powerOffText, 1);
+    noticeRow->addWidget(m_powerOffEnable);
+    m_powerOffNotice->hide();
+    if (context.hub)
+        connect(context.hub, &DriveHub::stopAllSent, this, [this] {
+            ++m_stopsSent;
+            m_lastStopWasStop = true;
+        });
 
     // Made in this order, which is the Tab order.
     buildPowerBox();
@@ -107,10 +126,16 @@ void MotionPanel::buildPowerBox()
     m_disable->setObjectName(QStringLiteral("disableButton"));
     insertRow(m_powerBox, {m_enable, m_disable});
     m_powerResult = makeResultLabel(m_powerBox, QStringLiteral("powerResult"));
-    connect(m_enable, &QPushButton::clicked, this, [this] {
+    const auto enable = [this] {
+        m_powerDone = 0;
+        m_powerAsked = 1;
         runCommand([] { return tr("Enable"); }, [](Drive &d) { return d.setEnabled(true); }, m_powerResult);
-    });
+    };
+    connect(m_enable, &QPushButton::clicked, this, enable);
+    connect(m_powerOffEnable, &QPushButton::clicked, this, enable);
     connect(m_disable, &QPushButton::clicked, this, [this] {
+        m_powerDone = 0;
+        m_powerAsked = -1;
         runCommand([] { return tr("Disable"); }, [](Drive &d) { return d.setEnabled(false); }, m_powerResult);
     });
 }
@@ -215,8 +240,16 @@ void MotionPanel::buildHomeBox()
     m_homeResult = makeResultLabel(m_homeBox, QStringLiteral("homeResult"));
     connect(m_homeButton, &QPushButton::clicked, this, [this] {
         const bool positiveFirst = m_homeDirection->currentIndex() == 0;
-        runCommand([] { return tr("Home"); }, [positiveFirst](Drive &d) { return d.home(positiveFirst); }, m_homeResult,
-                   true);
+        const Text what = [] { return tr("Home"); };
+        if (const QString refused = powerOffReason(); !refused.isEmpty()) {
+            showMessage(
+                m_homeResult, [what, refused] { return tr("%1 refused: %2").arg(what(), refused); },
+                MessageKind::Warning);
+            return;
+        }
+        runCommand(
+            what, [positiveFirst](Drive &d) { return d.home(positiveFirst); }, m_homeResult,
+            MotionGoal::home(context().family));
     });
 }
 
@@ -278,6 +311,7 @@ void MotionPanel::layOut()
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_banner);
     layout->addWidget(m_readout);
+    layout->addWidget(m_powerOffNotice);
     layout->addLayout(columns, 1);
     layout->addLayout(stopRow);
 }
@@ -312,8 +346,10 @@ void MotionPanel::stopDrive()
 {
     m_jogMinus->stopHold();
     m_jogPlus->stopHold();
-    ++m_motionGeneration; // whatever was moving: its watch ends here
-    runCommand([] { return tr("Stop"); }, [](Drive &d) { return d.stop(false); }, m_stopResult, true);
+    // A move or homing being watched goes on being watched: its line says where it stopped.
+    ++m_stopsSent;
+    m_lastStopWasStop = false;
+    runCommand([] { return tr("Stop"); }, [](Drive &d) { return d.stop(false); }, m_stopResult);
 }
 
 QLabel *MotionPanel::makeResultLabel(QGroupBox *box, const QString &objectName)
@@ -323,18 +359,19 @@ QLabel *MotionPanel::makeResultLabel(QGroupBox *box, const QString &objectName)
     return label;
 }
 
-void MotionPanel::runCommand(const Text &what, DriveHub::Operation op, QLabel *result, bool motion)
+void MotionPanel::runCommand(const Text &what, DriveHub::Operation op, QLabel *result, std::optional<MotionGoal> goal)
 {
     if (!context().isValid())
         return;
-    const int generation = motion ? ++m_motionGeneration : m_motionGeneration;
+    const int generation = goal ? ++m_motionGeneration : m_motionGeneration;
+    const int stopsAtStart = m_stopsSent;
     showMessage(
         result, [what] { return tr("%1: sending…").arg(what()); }, MessageKind::Info);
     QPointer<MotionPanel> self(this);
     QPointer<QLabel> label(result);
     context().hub->run(
         context().connectionId, context().address, std::move(op),
-        [self, what, label, motion, generation](const DriveResult &r) {
+        [self, what, label, goal, generation, stopsAtStart](const DriveResult &r) {
             if (!self || !label)
                 return;
             if (r.ok())
@@ -345,18 +382,21 @@ void MotionPanel::runCommand(const Text &what, DriveHub::Operation op, QLabel *r
                     label, [what, error] { return tr("%1 failed: %2").arg(what(), DisplayText::sentence(error)); },
                     MessageKind::Problem);
                 self->reportError(r.error);
-            } else if (motion) {
+            } else if (goal) {
                 showMessage(
                     label, [what] { return tr("%1: started.").arg(what()); }, MessageKind::Info);
-                self->watchMotion(generation, what, label, 0, false);
+                self->watchMotion(generation, what, label, 0, false, *goal, stopsAtStart);
             } else {
                 showMessage(
                     label, [what] { return tr("%1: done.").arg(what()); }, MessageKind::Success);
+                if (label == self->m_powerResult)
+                    self->m_powerDone = self->m_powerAsked;
             }
         });
 }
 
-void MotionPanel::watchMotion(int generation, const Text &what, QLabel *result, int polls, bool seenRunning)
+void MotionPanel::watchMotion(int generation, const Text &what, QLabel *result, int polls, bool seenRunning,
+                              const MotionGoal &goal, int stopsAtStart)
 {
     // Until the drive reports the axis at rest: read its state, show where it is. A drive
     // may report the start a moment late: "at rest" counts once motion was seen, or after a
@@ -405,34 +445,171 @@ void MotionPanel::watchMotion(int generation, const Text &what, QLabel *result, 
                             return tr("%1: moving… position %2 %3").arg(what(), DisplayText::position(s), unit());
                         },
                         MessageKind::Info);
-                    self->watchMotion(generation, what, label, polls + 1, true);
+                    self->watchMotion(generation, what, label, polls + 1, true, goal, stopsAtStart);
                     return;
                 }
-                if (!seenRunning && polls < ReadsBeforeRestCounts) {
-                    self->watchMotion(generation, what, label, polls + 1, false);
+                if (!seenRunning && polls < ReadsBeforeRestCounts && self->m_stopsSent == stopsAtStart) {
+                    self->watchMotion(generation, what, label, polls + 1, false, goal, stopsAtStart);
                     return;
                 }
-                showMessage(
-                    label,
-                    [what, s, unit] {
-                        return tr("%1: done, the axis is at rest at %2 %3.")
-                            .arg(what(), DisplayText::position(s), unit());
-                    },
-                    MessageKind::Success);
+                self->showMotionEnd(what, label, s, goal, self->m_stopsSent != stopsAtStart, self->m_lastStopWasStop);
             });
     });
+}
+
+void MotionPanel::showMotionEnd(const Text &what, QLabel *label, const DriveStatus &s, const MotionGoal &goal,
+                                bool stopped, bool stoppedByStop)
+{
+    QPointer<MotionPanel> self(this);
+    const Text unit = [self] { return self ? self->distanceUnit() : QString(); };
+    const QString at = DisplayText::position(s);
+    const QString off = QLocale().toString(goal.distanceToTarget(s.position));
+    const QString target = QLocale().toString(goal.target());
+    // What ended it: the tool bar's STOP, this drive's stop, or nothing DriveDesk sent.
+    const Text how = [stopped, stoppedByStop] {
+        if (!stopped)
+            return tr("ended");
+        return stoppedByStop ? tr("stopped by STOP") : tr("stopped by “Stop this drive”");
+    };
+    const Text outside = [stopped] {
+        return stopped ? QString()
+                       : tr(" Something outside this command stopped it: another master, the drive's own "
+                            "inputs or panel, or a limit.");
+    };
+    if (!s.positionValid) {
+        showMessage(
+            label,
+            [what, how] { return tr("%1: %2; the drive does not report where the axis is.").arg(what(), how()); },
+            MessageKind::Warning);
+        return;
+    }
+    switch (goal.judge(s.position, stopped)) {
+    case MotionGoal::Verdict::Reached:
+        showMessage(
+            label,
+            [what, at, unit] {
+                return tr("%1: done, the axis is at rest at its target, %2 %3.").arg(what(), at, unit());
+            },
+            MessageKind::Success);
+        return;
+    case MotionGoal::Verdict::HomeFound:
+        showMessage(
+            label,
+            [what, at, unit] {
+                return tr("%1: done, the origin was found; the axis is at rest at %2 %3.").arg(what(), at, unit());
+            },
+            MessageKind::Success);
+        return;
+    case MotionGoal::Verdict::Short:
+        showMessage(
+            label,
+            [=] {
+                return tr("%1: %2 at %3 %4, %5 %4 short of the target (%6 %4).%7")
+                    .arg(what(), how(), at, unit(), off, target, outside());
+            },
+            MessageKind::Warning);
+        return;
+    case MotionGoal::Verdict::Past:
+        showMessage(
+            label,
+            [=] {
+                return tr("%1: %2 at %3 %4, %5 %4 beyond the target (%6 %4).%7")
+                    .arg(what(), how(), at, unit(), off, target, outside());
+            },
+            MessageKind::Warning);
+        return;
+    case MotionGoal::Verdict::HomeNotFound:
+        showMessage(
+            label, [=] { return tr("%1: %2 at %3 %4; the origin was not found.").arg(what(), how(), at, unit()); },
+            MessageKind::Warning);
+        return;
+    }
+}
+
+QString MotionPanel::powerOffReason() const
+{
+    if (!context().can(Capability::Enable) || driveInfo().status.enabled)
+        return QString();
+    return tr("the power stage is off. DriveDesk does not switch it on by itself: press Enable first.");
+}
+
+void MotionPanel::updatePowerOffNotice()
+{
+    const QString reason = powerOffReason();
+    m_powerOffNotice->setVisible(!reason.isEmpty() && driveInfo().valid);
+    m_powerOffText->setText(
+        tr("The power stage is off: jog, move and homing are refused until you switch it on (DriveDesk does "
+           "not do it by itself)."));
+    m_powerOffEnable->setText(tr("Enable"));
+    // Jog cannot wait for a click to be refused: its buttons are off while the stage is.
+    if (reasonFor(Capability::Jog).isEmpty()) {
+        const QString why = reason.isEmpty() ? QString() : tr("Refused: %1").arg(reason);
+        setAvailable({m_jogMinus, m_jogPlus}, why);
+    }
+}
+
+void MotionPanel::agePowerResult(const DriveStatus &s)
+{
+    if (m_powerDone > 0 && !s.enabled) {
+        m_powerDone = 0;
+        showMessage(
+            m_powerResult,
+            [] { return tr("Enable: done earlier; the power stage is off now (STOP, a disable or the drive)."); },
+            MessageKind::Outdated);
+    } else if (m_powerDone < 0 && s.enabled) {
+        m_powerDone = 0;
+        showMessage(
+            m_powerResult, [] { return tr("Disable: done earlier; the power stage is on again."); },
+            MessageKind::Outdated);
+    }
 }
 
 void MotionPanel::move()
 {
     const qint64 value = m_moveValue->value();
     const qint32 speed = m_moveSpeed->value();
-    if (m_absolute->isChecked())
-        runCommand([value] { return tr("Move to %1").arg(value); },
-                   [value, speed](Drive &d) { return d.moveAbsolute(value, speed); }, m_moveResult, true);
-    else
-        runCommand([value] { return tr("Move by %1").arg(value); },
-                   [value, speed](Drive &d) { return d.moveRelative(value, speed); }, m_moveResult, true);
+    const bool absolute = m_absolute->isChecked();
+    const Text what = absolute ? Text([value] { return tr("Move to %1").arg(value); })
+                               : Text([value] { return tr("Move by %1").arg(value); });
+    if (const QString refused = powerOffReason(); !refused.isEmpty()) {
+        showMessage(
+            m_moveResult, [what, refused] { return tr("%1 refused: %2").arg(what(), refused); }, MessageKind::Warning);
+        return;
+    }
+    // Where the axis is first: the target of a relative move, and which way is "short".
+    showMessage(
+        m_moveResult, [what] { return tr("%1: reading where the axis is…").arg(what()); }, MessageKind::Info);
+    QPointer<MotionPanel> self(this);
+    const Family family = context().family;
+    context().hub->run(
+        context().connectionId, context().address, [](Drive &d) { return d.readStatus(); },
+        [self, what, value, speed, absolute, family](const DriveResult &r) {
+            if (!self)
+                return;
+            if (!r.ok() || !r.status.positionValid) {
+                const QString error = r.ok() ? tr("The drive does not report its position.") : r.error.message;
+                showMessage(
+                    self->m_moveResult,
+                    [what, error] {
+                        return tr("%1 failed: where the axis is could not be read, nothing was sent: %2")
+                            .arg(what(), DisplayText::sentence(error));
+                    },
+                    MessageKind::Problem);
+                if (!r.ok())
+                    self->reportError(r.error);
+                return;
+            }
+            const qint64 start = r.status.position;
+            const qint64 target = absolute ? value : start + value;
+            if (absolute)
+                self->runCommand(
+                    what, [value, speed](Drive &d) { return d.moveAbsolute(value, speed); }, self->m_moveResult,
+                    MotionGoal::move(family, start, target));
+            else
+                self->runCommand(
+                    what, [value, speed](Drive &d) { return d.moveRelative(value, speed); }, self->m_moveResult,
+                    MotionGoal::move(family, start, target));
+        });
 }
 
 void MotionPanel::onJogStarted(qint32 speed)
@@ -485,9 +662,11 @@ void MotionPanel::driveInfoChanged(const DriveInfo &info)
     showStatus();
 }
 
-void MotionPanel::statusChanged(const DriveStatus &)
+void MotionPanel::statusChanged(const DriveStatus &status)
 {
     showStatus();
+    agePowerResult(status);
+    updatePowerOffNotice();
 }
 
 QString MotionPanel::reasonFor(Capability c) const
@@ -535,6 +714,7 @@ void MotionPanel::updateCapabilities()
 
     const QString stop = reasonFor(Capability::Stop);
     setAvailable({m_stop}, stop);
+    updatePowerOffNotice();
 }
 
 void MotionPanel::updateMoveCapabilities(bool showReasons)

@@ -1,9 +1,12 @@
 #pragma once
 
 #include "core/drive/drivehub.h"
+#include "core/drive/motiongoal.h"
 #include "ui/panels/motion/jogbutton.h"
 #include "ui/panels/motion/motionreadout.h"
 #include "ui/workspace/drivepanel.h"
+
+#include <optional>
 
 class QComboBox;
 class QGroupBox;
@@ -72,11 +75,22 @@ private:
     void updateMoveCapabilities(bool showReasons);
     void showStatus();
     // Runs `op`; its outcome goes to `result` (the label of the action's own box). A motion
-    // (`motion`: a move, homing) is "started" when the drive takes it and "done" only when
-    // the drive reports the axis at rest (watchMotion()).
+    // (`goal`: a move, homing) is "started" when the drive takes it and "done" only when the
+    // drive reports the axis at rest where the goal says (MotionGoal, watchMotion()); at rest
+    // elsewhere, the line says where and why (a STOP), in the warning colour.
     using Text = std::function<QString()>; // made again after a language switch
-    void runCommand(const Text &what, DriveHub::Operation op, QLabel *result, bool motion = false);
-    void watchMotion(int generation, const Text &what, QLabel *result, int polls, bool seenRunning);
+    void runCommand(const Text &what, DriveHub::Operation op, QLabel *result,
+                    std::optional<MotionGoal> goal = std::nullopt);
+    void watchMotion(int generation, const Text &what, QLabel *result, int polls, bool seenRunning,
+                     const MotionGoal &goal, int stopsAtStart);
+    void showMotionEnd(const Text &what, QLabel *result, const DriveStatus &s, const MotionGoal &goal, bool stopped,
+                       bool stoppedByStop);
+    // Jog, move and homing need the power stage on (enabling is the engineer's act: the
+    // servo-can motion commands would switch it on by themselves). Empty when motion may go.
+    QString powerOffReason() const;
+    void updatePowerOffNotice();
+    // The power box's "Enable: done." / "Disable: done." greyed once the drive says otherwise.
+    void agePowerResult(const DriveStatus &s);
     QLabel *makeResultLabel(QGroupBox *box, const QString &objectName);
     void move();
     void onJogStarted(qint32 speed);
@@ -129,10 +143,18 @@ private:
 
     // The result of the last action in each box.
     QLabel *m_powerResult = nullptr;
+    int m_powerAsked = 0; // +1 Enable, -1 Disable: the power box's last command
+    int m_powerDone = 0;  // +1 "Enable: done." shown, -1 "Disable: done.", 0 neither
+    // Above the boxes while the power stage is off: why motion is refused, and Enable.
+    QWidget *m_powerOffNotice = nullptr;
+    QLabel *m_powerOffText = nullptr;
+    QPushButton *m_powerOffEnable = nullptr;
     QLabel *m_moveResult = nullptr;
     QLabel *m_homeResult = nullptr;
     QLabel *m_positionResult = nullptr;
-    int m_motionGeneration = 0; // a new motion command ends the watch of the previous one
+    int m_motionGeneration = 0;     // a new motion command ends the watch of the previous one
+    int m_stopsSent = 0;            // STOP (DriveHub::stopAllSent) and this drive's stop, counted
+    bool m_lastStopWasStop = false; // the last of them was the tool bar's STOP
 };
 
 } // namespace dd

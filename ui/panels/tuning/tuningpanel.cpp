@@ -346,6 +346,17 @@ void TuningPanel::runStep()
             m_message, [] { return tr("Not started: stop the free capture first."); }, MessageKind::Problem);
         return;
     }
+    // Enabling is the engineer's act: a step would switch a disabled servo-can drive on.
+    if (context().can(Capability::Enable) && !driveInfo().status.enabled) {
+        showMessage(
+            m_message,
+            [] {
+                return tr("Not started: the power stage is off. DriveDesk does not switch it on by itself: "
+                          "enable it in the Motion tab first.");
+            },
+            MessageKind::Problem);
+        return;
+    }
     const StepTestControls::Request r = m_stepControls->request();
     StepSpec spec;
     spec.kind = r.test == StepTestControls::Test::Position ? StepSpec::Kind::Position

@@ -7,6 +7,7 @@
 #include "core/params/parameterdictionary.h"
 #include "core/protocol/familytraits.h"
 #include "core/report/verificationjournal.h"
+#include "core/tuning/runcompatibility.h"
 #include "core/tuning/runparameterapply.h"
 #include "core/tuning/spectrum.h"
 
@@ -97,14 +98,26 @@ void RunsCommand::start()
                 }
             }
         }
+        // Not like for like (another drive, dictionary, test or step size; a snapshot that
+        // lists a parameter twice): say so rather than "no tuning parameter differs".
+        const QStringList why = RunCompatibility::snapshotProblems(a) + RunCompatibility::snapshotProblems(b)
+            + RunCompatibility::differences(a, b);
+        QJsonObject difference{{QStringLiteral("from"), a.label},
+                               {QStringLiteral("to"), b.label},
+                               {QStringLiteral("comparable"), why.isEmpty()}};
+        if (!why.isEmpty()) {
+            lines << tr("%1 → %2: not comparable: %3").arg(a.label, b.label, why.join(QLatin1Char(' ')));
+            difference.insert(QStringLiteral("reasons"), QJsonArray::fromStringList(why));
+            differences.append(difference);
+            continue;
+        }
         QStringList effects;
         for (const QString &k : comparedKeys())
             effects << QStringLiteral("%1 %2 → %3").arg(k, shown(a.metrics.byKey(k), k), shown(b.metrics.byKey(k), k));
         const QString what = changes.isEmpty() ? tr("no tuning parameter differs") : changes.join(QStringLiteral(", "));
         lines << QStringLiteral("%1 → %2: %3: %4").arg(a.label, b.label, what, effects.join(QStringLiteral(", ")));
-        differences.append(QJsonObject{{QStringLiteral("from"), a.label},
-                                       {QStringLiteral("to"), b.label},
-                                       {QStringLiteral("parameters"), params}});
+        difference.insert(QStringLiteral("parameters"), params);
+        differences.append(difference);
     }
     succeed({{QStringLiteral("runs"), runs}, {QStringLiteral("differences"), differences}},
             lines.join(QLatin1Char('\n')));
@@ -225,10 +238,15 @@ bool ApplyRunCommand::prepare(const CliInvocation &inv, QString *error)
 
 void ApplyRunCommand::start()
 {
+    // A run of another drive model is refused like a bad file: exit 2, nothing written.
+    if (Error e = RunParameterApply::checkDrive(m_run, drive()->identity())) {
+        e.message = QStringLiteral("%1: %2").arg(m_path, e.message);
+        return fail(e, {}, CliExit::Usage);
+    }
     m_apply = new RunParameterApply(drive(), this);
     connect(m_apply, &RunParameterApply::finished, this, &ApplyRunCommand::report);
     if (Error e = m_apply->apply(m_run, m_dryRun, m_force))
-        fail(e);
+        fail(e, {}, e.code == ErrorCode::InvalidArgument ? std::optional<CliExit>(CliExit::Usage) : std::nullopt);
 }
 
 void ApplyRunCommand::interrupt(int)

@@ -1,4 +1,7 @@
+#include "core/params/parameterdictionary.h"
 #include "core/tuning/capturerecorder.h"
+#include "core/tuning/runcompatibility.h"
+#include "core/tuning/runparameterapply.h"
 #include "core/tuning/spectrum.h"
 #include "core/tuning/stepmetrics.h"
 #include "core/tuning/tuningrun.h"
@@ -298,6 +301,9 @@ private slots:
         QTest::newRow("metric") << "metrics.riseTime" << QJsonValue("quick") << "riseTime";
         QTest::newRow("tuning role") << "tuning[0].role" << QJsonValue("speed-gain") << "speed-gain";
         QTest::newRow("tuning value") << "tuning[1].value" << QJsonValue(1.5) << "whole number";
+        // A parameter listed twice (issue 26: the index check compared with -1 and passed).
+        QTest::newRow("tuning index twice") << "tuning[1].index" << QJsonValue(60) << "twice";
+        QTest::newRow("tuning key twice") << "tuning[1].key" << QJsonValue("p60") << "twice";
         QTest::newRow("unknown field") << "extra" << QJsonValue(1) << "extra";
         QTest::newRow("created") << "created" << QJsonValue("yesterday") << "yesterday";
     }
@@ -354,6 +360,106 @@ private slots:
         QCOMPARE(out.notes, QStringLiteral("unchanged")); // nothing changed
         QVERIFY(
             TuningRun::fromBytes("{ not json", QStringLiteral("x.ddrun"), &out).message.contains(QLatin1String("JSON")));
+    }
+
+    // Issue 26, item 5: apply-run writes tuning parameters only, judged by the role the
+    // dictionary in force gives each parameter, never by what the file claims.
+    void applyRunWritesTuningParametersOnly()
+    {
+        const ParameterDictionary &sim = ParameterDictionary::bundledSimulator(Family::ServoCan);
+        QVERIFY(!sim.tuning().isEmpty());
+        QVERIFY(!RunParameterApply::check(sampleRun(), Family::ServoCan, sim));
+
+        // Control mode and station number slipped into the tuning list: the whole run is
+        // refused, naming both.
+        TuningRun run = sampleRun();
+        run.tuning.append({4, QStringLiteral("P4"), QString(), 0});
+        run.tuning.append({75, QStringLiteral("P75"), QString(), 7});
+        Error e = RunParameterApply::check(run, Family::ServoCan, sim);
+        QCOMPARE(e.code, ErrorCode::InvalidArgument);
+        QVERIFY2(e.message.contains(QLatin1String("P4 ")) && e.message.contains(QLatin1String("P75 "))
+                     && e.message.contains(QLatin1String("not tuning parameters"))
+                     && e.message.contains(QLatin1String("nothing was written")),
+                 qPrintable(e.message));
+        // A role written into the file does not make a setting a gain.
+        run = sampleRun();
+        run.tuning.append({4, QStringLiteral("P4"), QStringLiteral("speed-kd"), 0});
+        e = RunParameterApply::check(run, Family::ServoCan, sim);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("P4 ")), qPrintable(e.message));
+
+        // A run recorded on the simulator (its dictionary names P60, P61) applied with a
+        // dictionary that names no tuning parameters: refused with the reason.
+        e = RunParameterApply::check(sampleRun(), Family::ServoCan, ParameterDictionary::bundled(Family::ServoCan));
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("names no tuning parameters"))
+                     && e.message.contains(QLatin1String("P60 = speed-kp"))
+                     && e.message.contains(QLatin1String("simulator")),
+                 qPrintable(e.message));
+        // The GUI's roles in force (the tab's entries) are honoured the same way.
+        const QVector<TuningEntry> onlyKp{{60, QStringLiteral("speed-kp")}};
+        e = RunParameterApply::check(sampleRun(), Family::ServoCan, sim, &onlyKp);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("P61")), qPrintable(e.message));
+
+        // Listed twice (a run made in memory; files are refused by the loader).
+        run = sampleRun();
+        run.tuning.append({60, QStringLiteral("P60"), QStringLiteral("speed-kp"), 31});
+        e = RunParameterApply::check(run, Family::ServoCan, sim);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("twice")), qPrintable(e.message));
+        // Another role than the dictionary's: recorded with another dictionary.
+        run = sampleRun();
+        run.tuning[0].role = QStringLiteral("position-kp");
+        e = RunParameterApply::check(run, Family::ServoCan, sim);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("another dictionary")), qPrintable(e.message));
+        // Another drive model.
+        run = sampleRun();
+        run.model = QStringLiteral("M6505");
+        DriveIdentity id;
+        id.family = Family::ServoCan;
+        QVERIFY(!RunParameterApply::checkDrive(run, id)); // the drive's model unknown: nothing to compare
+        id.model = QStringLiteral("M4505");
+        e = RunParameterApply::checkDrive(run, id);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("M6505"))
+                     && e.message.contains(QLatin1String("M4505")),
+                 qPrintable(e.message));
+        id.model = QStringLiteral("m6505");
+        QVERIFY(!RunParameterApply::checkDrive(run, id));
+    }
+
+    // Comparing runs that are not like for like says why, instead of "no tuning parameter
+    // differs".
+    void runsThatDoNotCompareSaySo()
+    {
+        TuningRun a = sampleRun(), b = sampleRun();
+        a.label = QStringLiteral("a");
+        b.label = QStringLiteral("b");
+        QVERIFY(RunCompatibility::differences(a, b).isEmpty());
+        QCOMPARE(RunCompatibility::stepSize(a), QStringLiteral("300 r/min"));
+        b.testParameters.insert(QStringLiteral("speed"), 500);
+        QStringList why = RunCompatibility::differences(a, b);
+        QVERIFY2(why.join(' ').contains(QLatin1String("different sizes (300 r/min, 500 r/min)")),
+                 qPrintable(why.join(' ')));
+        b = sampleRun();
+        b.label = QStringLiteral("b");
+        b.test = QStringLiteral("position-step");
+        why = RunCompatibility::differences(a, b);
+        QVERIFY2(why.join(' ').contains(QLatin1String("different tests")), qPrintable(why.join(' ')));
+        b = sampleRun();
+        b.label = QStringLiteral("b");
+        b.family = QStringLiteral("shuoke");
+        QVERIFY(RunCompatibility::differences(a, b).join(' ').contains(QLatin1String("shuoke drive")));
+        b = sampleRun();
+        b.label = QStringLiteral("b");
+        a.model = QStringLiteral("M6505");
+        b.model = QStringLiteral("M4505");
+        QVERIFY(RunCompatibility::differences(a, b).join(' ').contains(QLatin1String("M4505")));
+        a = sampleRun();
+        a.label = QStringLiteral("a");
+        b.model.clear();
+        b.tuning[1].role = QStringLiteral("position-ki");
+        why = RunCompatibility::differences(a, b);
+        QVERIFY2(why.join(' ').contains(QLatin1String("different dictionaries")), qPrintable(why.join(' ')));
+        b = sampleRun();
+        b.tuning.append(b.tuning.first());
+        QVERIFY(RunCompatibility::snapshotProblems(b).join(' ').contains(QLatin1String("twice")));
     }
 };
 

@@ -341,7 +341,15 @@ private slots:
         QVERIFY2(view.peaksText().contains(QStringLiteral("80.0 Hz")), qPrintable(view.peaksText()));
         QVERIFY(view.plot()->timeTitle().contains(QStringLiteral("Hann")));
         QVERIFY(view.plot()->timeTitle().contains(QStringLiteral("resolution 0.5 Hz")));
+        // What it cannot see (issue 26): the Nyquist frequency on the axis, the band above
+        // the usable one (90 % of Nyquist) greyed.
+        QVERIFY2(view.plot()->timeTitle().contains(QStringLiteral("Nyquist 500.0 Hz")),
+                 qPrintable(view.plot()->timeTitle()));
+        QVERIFY(view.plot()->greyedFrom().has_value());
+        QVERIFY(qAbs(*view.plot()->greyedFrom() - 450.0) < 1e-6);
+        QVERIFY2(view.peaksText().contains(QStringLiteral("Nyquist frequency 500.0 Hz")), qPrintable(view.peaksText()));
         view.setRun(nullptr);
+        QVERIFY(!view.plot()->greyedFrom().has_value());
         QVERIFY(view.spectrum().isEmpty());
     }
 

@@ -213,6 +213,36 @@ private slots:
         QVERIFY2(r.text().contains(QStringLiteral("no tuning parameter differs")), qPrintable(r.text()));
     }
 
+    // Issue 26, item 8: the spectrum states its Nyquist frequency and usable band, and the
+    // note about gaps bridged by interpolation stays with --between (it was dropped).
+    void spectrumStatesNyquistAndKeepsTheGapNoteWithBetween()
+    {
+        const QString file = m_dir.filePath(QStringLiteral("gap.ddrun"));
+        CliRun r = runCli({"--sim", "--family", "servo-can", "capture", "speed", "--duration", "0.4", "-o", file});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+        QJsonObject root = readJson(file);
+        QJsonObject samples = root.value(QStringLiteral("samples")).toObject();
+        QJsonArray time = samples.value(QStringLiteral("time")).toArray();
+        QVERIFY(time.size() > 100);
+        const int half = int(time.size()) / 2;
+        for (int i = half; i < time.size(); ++i) // 50 ms of samples missing from the middle on
+            time.replace(i, time.at(i).toDouble() + 0.05);
+        samples.insert(QStringLiteral("time"), time);
+        root.insert(QStringLiteral("samples"), samples);
+        writeJson(file, root);
+        const double mid = time.at(half).toDouble();
+        const QString between = QStringLiteral("%1:%2").arg(mid - 0.08, 0, 'f', 4).arg(mid + 0.1, 0, 'f', 4);
+        r = runCli({"--json", "spectrum", file, "speed", "--between", between});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+        const QJsonObject j = r.json();
+        QVERIFY(j.value(QStringLiteral("nyquistHz")).toDouble() > 0.0);
+        QCOMPARE(j.value(QStringLiteral("nyquistHz")).toDouble(), j.value(QStringLiteral("sampleRate")).toDouble() / 2);
+        QCOMPARE(j.value(QStringLiteral("usableBandHz")).toArray().size(), 2);
+        const QString notes = QString::fromUtf8(QJsonDocument(j.value(QStringLiteral("notes")).toArray()).toJson());
+        QVERIFY2(notes.contains(QStringLiteral("bridged by interpolation")), qPrintable(notes));
+        QVERIFY2(notes.contains(QStringLiteral("Nyquist frequency")), qPrintable(notes));
+    }
+
 private:
     static QJsonObject readJson(const QString &path)
     {

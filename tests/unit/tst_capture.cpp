@@ -264,6 +264,77 @@ private slots:
         QVERIFY(Spectrum::compute(t.mid(0, 10), v.mid(0, 10), 3, &error).isEmpty());
     }
 
+    // Issue 26, item 8: a 150 Hz resonance read at ~245 Hz (arrival-timed reads, their
+    // intervals uneven) gives its top peak below the 122.5 Hz Nyquist frequency; the spectrum
+    // says it may be an alias of ~150 Hz, and states the Nyquist frequency and usable band.
+    // (It used to give such a peak with no note at all.)
+    void spectrumSaysWhatItCannotSee()
+    {
+        quint32 seed = 12345;
+        auto rnd = [&seed] {
+            seed = seed * 1664525u + 1013904223u;
+            return double(seed >> 8) / double(1u << 24);
+        };
+        auto sampled = [&rnd](double rateHz, double jitter, double sineHz, int n, QVector<double> *t,
+                              QVector<double> *v) {
+            double at = 0.0;
+            for (int i = 0; i < n; ++i) {
+                at += (1.0 + jitter * (2.0 * rnd() - 1.0)) / rateHz;
+                t->append(at);
+                v->append(50.0 * std::sin(2 * Pi * sineHz * at));
+            }
+        };
+        QVector<double> t, v;
+        sampled(245.0, 0.2, 150.0, 1500, &t, &v);
+        QString error;
+        Spectrum s = Spectrum::compute(t, v, 3, &error);
+        QVERIFY2(!s.isEmpty(), qPrintable(error));
+        QVERIFY(std::abs(s.nyquistHz - 122.5) < 2.0);
+        QVERIFY(std::abs(s.usableToHz - 0.9 * s.nyquistHz) < 1e-9);
+        QVERIFY(std::abs(s.usableFromHz - 2 * s.resolutionHz) < 1e-9);
+        const Spectrum::Peak top = s.peaks.first();
+        qInfo("150 Hz read at ~245 Hz: top peak %.1f Hz, marked as an alias of %.1f Hz", top.hz, top.aliasOfHz);
+        QVERIFY(top.hz < s.nyquistHz);
+        QVERIFY2(std::abs(top.aliasOfHz - 150.0) < 3.0, qPrintable(QString::number(top.aliasOfHz)));
+        const QString notes = s.notes.join(QLatin1Char('\n'));
+        QVERIFY2(notes.contains(QLatin1String("Nyquist frequency 122.")) && notes.contains(QLatin1String("usable band"))
+                     && notes.contains(QLatin1String("may be an alias")),
+                 qPrintable(notes));
+
+        // Read fast enough, with the same unevenness, a 20 Hz sine is not suspect.
+        t.clear();
+        v.clear();
+        sampled(1000.0, 0.2, 20.0, 2000, &t, &v);
+        s = Spectrum::compute(t, v, 3, &error);
+        QVERIFY(std::abs(s.peaks.first().hz - 20.0) < s.resolutionHz);
+        QVERIFY(!s.peaks.first().isSuspect());
+        QVERIFY2(!s.notes.join(' ').contains(QLatin1String("the peak at 20.")), qPrintable(s.notes.join('\n')));
+
+        // A peak within 10 % of Nyquist is marked so.
+        t.clear();
+        v.clear();
+        sampled(245.0, 0.02, 115.0, 1500, &t, &v);
+        s = Spectrum::compute(t, v, 3, &error);
+        QVERIFY(s.peaks.first().hz > 0.9 * s.nyquistHz);
+        QVERIFY(s.peaks.first().nearNyquist);
+
+        // The gaps note stays with a stretch (--between): the overload for a time window.
+        CaptureData c;
+        c.channels = {QStringLiteral("speed")};
+        c.columns.resize(1);
+        for (int i = 0; i < 400; ++i) {
+            const double at = i * 1e-3 + (i >= 200 ? 0.05 : 0.0); // 50 ms missing after 0.2 s
+            c.time << at;
+            c.columns[0] << std::sin(2 * Pi * 30.0 * at);
+        }
+        c.gaps = CaptureGap::of(c.time);
+        QCOMPARE(c.gaps.size(), 1);
+        s = Spectrum::compute(c, QStringLiteral("speed"), 3, &error, 0.0, 0.1, 0.4);
+        QVERIFY2(s.notes.join(' ').contains(QLatin1String("bridged by interpolation")), qPrintable(s.notes.join(' ')));
+        s = Spectrum::compute(c, QStringLiteral("speed"), 3, &error, 0.0, 0.0, 0.19);
+        QVERIFY(!s.notes.join(' ').contains(QLatin1String("bridged")));
+    }
+
     void runFilesRoundTrip()
     {
         QTemporaryDir dir;

@@ -180,9 +180,9 @@ Spectrum Spectrum::compute(const QVector<double> &time, const QVector<double> &v
                    .arg(s.sampleRate, 0, 'f', 1)
                    .arg(s.usableFromHz, 0, 'f', 1)
                    .arg(s.usableToHz, 0, 'f', 1);
-    // The alias check, on the raw samples at their own times: a stretch of at most 1024 from
+    // The alias check, on the raw samples at their own times: a stretch of at most 512 from
     // the middle (the search costs samples × frequencies), its own Hann window.
-    const int m = std::min<int>(int(t.size()), 1024);
+    const int m = std::min<int>(int(t.size()), 512);
     const int first = (int(t.size()) - m) / 2;
     std::vector<double> rt(static_cast<size_t>(m)), rv(static_cast<size_t>(m)), rw(static_cast<size_t>(m));
     double rMean = 0.0, rwSum = 0.0;
@@ -197,8 +197,8 @@ Spectrum Spectrum::compute(const QVector<double> &time, const QVector<double> &v
         rwSum += rw[size_t(i)];
     }
     const double rRes = span > 0.0 ? 1.0 / span : s.resolutionHz; // the stretch's resolution
-    const double step = rRes / 4.0;
-    const int checked = std::min<int>(int(s.peaks.size()), 3); // the highest: where a notch would go
+    const double step = rRes / 2.0;                               // the Hann main lobe is 4 bins wide; refined below
+    const int checked = std::min<int>(int(s.peaks.size()), 3);    // the highest: where a notch would go
     for (int p = 0; p < s.peaks.size(); ++p) {
         Peak &peak = s.peaks[p];
         peak.nearNyquist = peak.hz >= s.usableToHz;

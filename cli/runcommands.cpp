@@ -7,6 +7,7 @@
 #include "core/params/parameterdictionary.h"
 #include "core/protocol/familytraits.h"
 #include "core/report/verificationjournal.h"
+#include "core/tuning/runcompatibility.h"
 #include "core/tuning/runparameterapply.h"
 #include "core/tuning/spectrum.h"
 
@@ -97,14 +98,26 @@ void RunsCommand::start()
                 }
             }
         }
+        // Not like for like (another drive, dictionary, test or step size; a snapshot that
+        // lists a parameter twice): say so rather than "no tuning parameter differs".
+        const QStringList why = RunCompatibility::snapshotProblems(a) + RunCompatibility::snapshotProblems(b)
+            + RunCompatibility::differences(a, b);
+        QJsonObject difference{{QStringLiteral("from"), a.label},
+                               {QStringLiteral("to"), b.label},
+                               {QStringLiteral("comparable"), why.isEmpty()}};
+        if (!why.isEmpty()) {
+            lines << tr("%1 → %2: not comparable: %3").arg(a.label, b.label, why.join(QLatin1Char(' ')));
+            difference.insert(QStringLiteral("reasons"), QJsonArray::fromStringList(why));
+            differences.append(difference);
+            continue;
+        }
         QStringList effects;
         for (const QString &k : comparedKeys())
             effects << QStringLiteral("%1 %2 → %3").arg(k, shown(a.metrics.byKey(k), k), shown(b.metrics.byKey(k), k));
         const QString what = changes.isEmpty() ? tr("no tuning parameter differs") : changes.join(QStringLiteral(", "));
         lines << QStringLiteral("%1 → %2: %3: %4").arg(a.label, b.label, what, effects.join(QStringLiteral(", ")));
-        differences.append(QJsonObject{{QStringLiteral("from"), a.label},
-                                       {QStringLiteral("to"), b.label},
-                                       {QStringLiteral("parameters"), params}});
+        difference.insert(QStringLiteral("parameters"), params);
+        differences.append(difference);
     }
     succeed({{QStringLiteral("runs"), runs}, {QStringLiteral("differences"), differences}},
             lines.join(QLatin1Char('\n')));
@@ -163,16 +176,9 @@ void SpectrumCommand::start()
     QString why;
     Spectrum s;
     if (m_between) {
-        // Only the stretch asked for, e.g. after a step's own transient.
-        const CaptureData &c = m_run.capture;
-        const QVector<double> &column = c.columns.at(c.columnOf(m_channel));
-        QVector<double> time, values;
-        for (int i = 0; i < c.time.size(); ++i)
-            if (c.time.at(i) >= m_t1 && c.time.at(i) <= m_t2) {
-                time << c.time.at(i);
-                values << column.at(i);
-            }
-        s = Spectrum::compute(time, values, m_peaks, &why, m_fromHz);
+        // Only the stretch asked for, e.g. after a step's own transient; the gaps bridged
+        // inside it are noted as for the whole capture.
+        s = Spectrum::compute(m_run.capture, m_channel, m_peaks, &why, m_fromHz, m_t1, m_t2);
     } else {
         s = Spectrum::compute(m_run.capture, m_channel, m_peaks, &why, m_fromHz);
     }
@@ -182,21 +188,34 @@ void SpectrumCommand::start()
     }
     QJsonArray peaks;
     QStringList lines;
-    lines << tr("Spectrum of %1: %2 points at %3 Hz, %4 window, resolution %5 Hz")
+    lines << tr("Spectrum of %1: %2 points at %3 Hz, %4 window, resolution %5 Hz, Nyquist %6 Hz")
                  .arg(m_channel)
                  .arg(s.points)
                  .arg(s.sampleRate, 0, 'f', 1)
                  .arg(s.window)
-                 .arg(s.resolutionHz, 0, 'f', 3);
+                 .arg(s.resolutionHz, 0, 'f', 3)
+                 .arg(s.nyquistHz, 0, 'f', 1);
     for (const Spectrum::Peak &p : s.peaks) {
-        peaks.append(QJsonObject{{QStringLiteral("hz"), p.hz}, {QStringLiteral("magnitude"), p.magnitude}});
-        lines << QStringLiteral("  %1 Hz  %2").arg(p.hz, 8, 'f', 2).arg(p.magnitude, 0, 'g', 4);
+        QJsonObject peak{{QStringLiteral("hz"), p.hz},
+                         {QStringLiteral("magnitude"), p.magnitude},
+                         {QStringLiteral("nearNyquist"), p.nearNyquist}};
+        if (p.aliasOfHz > 0.0)
+            peak.insert(QStringLiteral("aliasOfHz"), p.aliasOfHz);
+        peaks.append(peak);
+        QString line = QStringLiteral("  %1 Hz  %2").arg(p.hz, 8, 'f', 2).arg(p.magnitude, 0, 'g', 4);
+        if (p.aliasOfHz > 0.0)
+            line += QStringLiteral("  ") + tr("(may be an alias of %1 Hz)").arg(p.aliasOfHz, 0, 'f', 1);
+        else if (p.nearNyquist)
+            line += QStringLiteral("  ") + tr("(near the Nyquist frequency)");
+        lines << line;
     }
     lines << s.notes;
     succeed({{QStringLiteral("channel"), m_channel},
              {QStringLiteral("window"), s.window},
              {QStringLiteral("resolutionHz"), s.resolutionHz},
              {QStringLiteral("sampleRate"), s.sampleRate},
+             {QStringLiteral("nyquistHz"), s.nyquistHz},
+             {QStringLiteral("usableBandHz"), QJsonArray{s.usableFromHz, s.usableToHz}},
              {QStringLiteral("points"), s.points},
              {QStringLiteral("peaks"), peaks},
              {QStringLiteral("notes"), QJsonArray::fromStringList(s.notes)}},
@@ -225,10 +244,15 @@ bool ApplyRunCommand::prepare(const CliInvocation &inv, QString *error)
 
 void ApplyRunCommand::start()
 {
+    // A run of another drive model is refused like a bad file: exit 2, nothing written.
+    if (Error e = RunParameterApply::checkDrive(m_run, drive()->identity())) {
+        e.message = QStringLiteral("%1: %2").arg(m_path, e.message);
+        return fail(e, {}, CliExit::Usage);
+    }
     m_apply = new RunParameterApply(drive(), this);
     connect(m_apply, &RunParameterApply::finished, this, &ApplyRunCommand::report);
     if (Error e = m_apply->apply(m_run, m_dryRun, m_force))
-        fail(e);
+        fail(e, {}, e.code == ErrorCode::InvalidArgument ? std::optional<CliExit>(CliExit::Usage) : std::nullopt);
 }
 
 void ApplyRunCommand::interrupt(int)

@@ -5811,6 +5811,18 @@ then log out and log in again (or restart the computer).</source>
         <source>the FFT could not be set up for %1 points</source>
         <translation>无法为 %1 个点建立 FFT</translation>
     </message>
+    <message>
+        <source>Nyquist frequency %1 Hz (half the %2 Hz sample rate): usable band %3–%4 Hz; nothing above %1 Hz can be seen, and what is there folds back below it</source>
+        <translation>奈奎斯特频率 %1 Hz（%2 Hz 采样率的一半）：可用频带 %3–%4 Hz；高于 %1 Hz 的成分看不到，而且会折叠回它以下</translation>
+    </message>
+    <message>
+        <source>the peak at %1 Hz may be an alias: the samples, at their own times, fit %2 Hz (above the Nyquist frequency) as well or better; capture at a higher rate before placing a notch</source>
+        <translation>%1 Hz 处的峰可能是混叠：按各自的采样时刻，这些样本与 %2 Hz（高于奈奎斯特频率）拟合得一样好或更好；设置陷波器之前请用更高的采样率采集</translation>
+    </message>
+    <message>
+        <source>the peak at %1 Hz is within 10 % of the Nyquist frequency: its frequency is not reliable, it may be an alias</source>
+        <translation>%1 Hz 处的峰距奈奎斯特频率不到 10 %：其频率不可靠，可能是混叠</translation>
+    </message>
 </context>
 <context>
     <name>dd::StepMetrics</name>
@@ -6950,6 +6962,10 @@ then log out and log in again (or restart the computer).</source>
         <source>no tuning parameter differs</source>
         <translation>整定参数均无差异</translation>
     </message>
+    <message>
+        <source>%1 → %2: not comparable: %3</source>
+        <translation>%1 → %2：不可比较：%3</translation>
+    </message>
 </context>
 <context>
     <name>dd::SpectrumCommand</name>
@@ -6970,12 +6986,20 @@ then log out and log in again (or restart the computer).</source>
         <translation>%1 中没有通道“%2”（有：%3）。</translation>
     </message>
     <message>
-        <source>Spectrum of %1: %2 points at %3 Hz, %4 window, resolution %5 Hz</source>
-        <translation>%1 的频谱：%2 个点，采样率 %3 Hz，%4 窗，分辨率 %5 Hz</translation>
-    </message>
-    <message>
         <source>--between must be T1:T2, seconds from the trigger with T1 &lt; T2 (e.g. 0.05:0.3), not &quot;%1&quot;.</source>
         <translation>--between 必须为 T1:T2，即触发后的秒数且 T1 &lt; T2（例如 0.05:0.3），而不是 &quot;%1&quot;。</translation>
+    </message>
+    <message>
+        <source>Spectrum of %1: %2 points at %3 Hz, %4 window, resolution %5 Hz, Nyquist %6 Hz</source>
+        <translation>%1 的频谱：%2 个点，采样率 %3 Hz，%4 窗，分辨率 %5 Hz，奈奎斯特频率 %6 Hz</translation>
+    </message>
+    <message>
+        <source>(may be an alias of %1 Hz)</source>
+        <translation>（可能是 %1 Hz 的混叠）</translation>
+    </message>
+    <message>
+        <source>(near the Nyquist frequency)</source>
+        <translation>（接近奈奎斯特频率）</translation>
     </message>
 </context>
 <context>
@@ -7549,6 +7573,34 @@ firmware %2</source>
     <message>
         <source>A backup or restore is already running on this drive.</source>
         <translation>该驱动器上已有备份或恢复正在进行。</translation>
+    </message>
+    <message>
+        <source>The whole run is refused; nothing was written.</source>
+        <translation>整个运行记录被拒绝；未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s dictionary (%1) names no tuning parameters, so nothing tells a loop gain from a setting: apply-run writes only parameters whose role in the drive&apos;s dictionary is a tuning role.</source>
+        <translation>驱动器的参数字典（%1）未指定任何调试参数，因此无法区分环路增益和设置：apply-run 只写入在驱动器字典中具有调试角色的参数。</translation>
+    </message>
+    <message>
+        <source>The run was recorded with a dictionary that gives them roles (%1): DriveDesk&apos;s simulator names its own loop gains so, which mean something else, or nothing, on a real drive.</source>
+        <translation>该运行记录所用的字典为它们指定了角色（%1）：DriveDesk 模拟器这样命名它自己的环路增益，在真实驱动器上它们含义不同，或毫无意义。</translation>
+    </message>
+    <message>
+        <source>Nothing was written.</source>
+        <translation>未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>The run&apos;s %1 has the role %2; in the drive&apos;s dictionary (%3) it is %4: the run was recorded with another dictionary. Nothing was written.</source>
+        <translation>运行记录中 %1 的角色是 %2；在驱动器的字典（%3）中它是 %4：该运行记录是用另一个字典记录的。未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>The run lists parameters that are not tuning parameters in the drive&apos;s dictionary (%1): %2. apply-run writes only tuning parameters; the whole run is refused and nothing was written.</source>
+        <translation>运行记录列出了在驱动器字典（%1）中不是调试参数的参数：%2。apply-run 只写入调试参数；整个运行记录被拒绝，未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>The run was taken on a %1; this drive is a %2. Tuning values do not carry over between models; nothing was written.</source>
+        <translation>该运行记录取自 %1；此驱动器是 %2。调试值不能在不同型号之间通用；未写入任何数据。</translation>
     </message>
 </context>
 <context>
@@ -8419,6 +8471,10 @@ firmware %2</source>
             <numerusform>…另有 %n 条（每个单元格的提示中给出全部原因）。</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1 → %2: not comparable: %3</source>
+        <translation>%1 → %2：不可比较：%3</translation>
+    </message>
 </context>
 <context>
     <name>dd::RunList</name>
@@ -8498,10 +8554,6 @@ firmware %2</source>
         <translation>无频谱：%1</translation>
     </message>
     <message>
-        <source>Frequency (Hz) · %1 window, resolution %2 Hz, %3 points at %4 Hz</source>
-        <translation>频率（Hz）· %1 窗，分辨率 %2 Hz，%3 点，采样率 %4 Hz</translation>
-    </message>
-    <message>
         <source>Amplitude of %1</source>
         <translation>%1 的幅值</translation>
     </message>
@@ -8516,6 +8568,18 @@ firmware %2</source>
     <message>
         <source>%1 Hz (%2)</source>
         <translation>%1 Hz（%2）</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz) · %1 window, resolution %2 Hz, %3 points at %4 Hz, Nyquist %5 Hz</source>
+        <translation>频率（Hz）· %1 窗，分辨率 %2 Hz，%3 点，采样率 %4 Hz，奈奎斯特频率 %5 Hz</translation>
+    </message>
+    <message>
+        <source>%1 Hz (%2) — may be an alias of %3 Hz</source>
+        <translation>%1 Hz（%2）— 可能是 %3 Hz 的混叠</translation>
+    </message>
+    <message>
+        <source>%1 Hz (%2) — near the Nyquist frequency</source>
+        <translation>%1 Hz（%2）— 接近奈奎斯特频率</translation>
     </message>
 </context>
 <context>
@@ -8736,6 +8800,10 @@ firmware %2</source>
     <message>
         <source>The drive&apos;s dictionary names no tuning parameters: shown are the DriveDesk simulator&apos;s loop gains (its own model). On a real drive these parameters may mean something else.</source>
         <translation>该驱动器的参数字典未列出调谐参数：此处显示的是 DriveDesk 模拟器的环路增益（模拟器自身的模型）。在真实驱动器上，这些参数可能另有含义。</translation>
+    </message>
+    <message>
+        <source>Not applied: %1</source>
+        <translation>未应用：%1</translation>
     </message>
 </context>
 <context>
@@ -9079,6 +9147,45 @@ firmware %2</source>
     <message>
         <source>STOP report</source>
         <translation>停止报告</translation>
+    </message>
+</context>
+<context>
+    <name>dd::RunCompatibility</name>
+    <message>
+        <source>%1 (index %2) is listed twice in the tuning snapshot of %3.</source>
+        <translation>%1（索引 %2）在 %3 的调试参数快照中出现了两次。</translation>
+    </message>
+    <message>
+        <source>%1 counts</source>
+        <translation>%1 脉冲</translation>
+    </message>
+    <message>
+        <source>%1 r/min</source>
+        <translation>%1 r/min</translation>
+    </message>
+    <message>
+        <source>%1 was taken on a %2 drive, %3 on a %4 drive.</source>
+        <translation>%1 取自 %2 驱动器，%3 取自 %4 驱动器。</translation>
+    </message>
+    <message>
+        <source>%1 was taken on a %2, %3 on a %4.</source>
+        <translation>%1 取自 %2，%3 取自 %4。</translation>
+    </message>
+    <message>
+        <source>The runs were recorded with different dictionaries: index %1 is %2 (%3) in %4 and %5 (%6) in %7.</source>
+        <translation>这些运行记录使用了不同的字典：索引 %1 在 %4 中是 %2（%3），在 %7 中是 %5（%6）。</translation>
+    </message>
+    <message>
+        <source>no tuning role</source>
+        <translation>无调试角色</translation>
+    </message>
+    <message>
+        <source>%1 is a %2, %3 a %4: different tests do not compare.</source>
+        <translation>%1 是 %2，%3 是 %4：不同的测试不可比较。</translation>
+    </message>
+    <message>
+        <source>%1 and %2 are steps of different sizes (%3, %4): their metrics do not compare.</source>
+        <translation>%1 和 %2 是幅度不同的阶跃（%3，%4）：它们的指标不可比较。</translation>
     </message>
 </context>
 </TS>

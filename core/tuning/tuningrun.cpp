@@ -374,10 +374,10 @@ Error TuningRun::fromJson(const QJsonObject &root, const QString &source, Tuning
             return bad();
         if (!e.role.isEmpty() && !TuningEntry::knownRoles().contains(e.role))
             return {ErrorCode::Malformed, tr("%1: tuning role \"%2\" is unknown").arg(source, e.role)};
+        e.index = int(index); // before the check below (it compared with -1: duplicates passed)
         for (const TuningSnapshotEntry &other : std::as_const(run.tuning))
-            if (other.index == e.index)
+            if (other.index == e.index || other.key.compare(e.key, Qt::CaseInsensitive) == 0)
                 return {ErrorCode::Malformed, tr("%1: tuning lists %2 twice").arg(source, e.key)};
-        e.index = int(index);
         run.tuning.append(e);
     }
     if (!r.string(root, QStringLiteral("notes"), &run.notes, QString(), true))

@@ -399,6 +399,48 @@ private slots:
         QCOMPARE(*CapturePlot::valueAt(t, v, 0.50005), 50.0); // halfway up to the peak
     }
 
+    // Issue 26, item 5, in the GUI: "Apply this run's parameters" writes tuning parameters
+    // only; a run that also lists P4 (control mode) and P75 (station) is refused as a whole,
+    // by name, and nothing reaches the drive; the clean run is applied.
+    void applyRunRefusesWhatIsNotATuningParameter()
+    {
+        PanelRig rig;
+        QString why;
+        SimBenchOptions o;
+        o.family = Family::ServoCan;
+        o.can = QStringLiteral("virtualcan:auto");
+        QVERIFY2(rig.start(o, &why), qPrintable(why));
+        TuningPanel *tuning = rig.show<TuningPanel>(&why);
+        QVERIFY2(tuning, qPrintable(why));
+        QVERIFY(dictionaryLoaded(tuning));
+        TuningParametersEditor *editor = tuning->parametersEditor();
+        auto onDrive = [&rig](int index) {
+            return rig.sim.call([&rig, index] { return int(rig.sim.canDrive()->parameter(index)); });
+        };
+        QCOMPARE(onDrive(60), 30);
+        TuningRun run;
+        run.label = QStringLiteral("edited");
+        run.family = QStringLiteral("servo-can");
+        run.address = 1;
+        run.tuning = {{60, QStringLiteral("P60"), QStringLiteral("speed-kp"), 45},
+                      {4, QStringLiteral("P4"), QString(), 0},
+                      {75, QStringLiteral("P75"), QString(), 7}};
+        editor->applyRun(run);
+        QVERIFY2(editor->message().contains(QStringLiteral("not tuning parameters"))
+                     && editor->message().contains(QStringLiteral("P4 "))
+                     && editor->message().contains(QStringLiteral("P75 ")),
+                 qPrintable(editor->message()));
+        QVERIFY(!editor->isBusy()); // nothing was started
+        QTest::qWait(200);
+        QCOMPARE(onDrive(4), 8);
+        QCOMPARE(onDrive(60), 30);
+        QCOMPARE(onDrive(75), 1);
+        // Only the gain: applied, verified on the drive.
+        run.tuning = {{60, QStringLiteral("P60"), QStringLiteral("speed-kp"), 45}};
+        editor->applyRun(run);
+        QVERIFY(waitUntil([&] { return onDrive(60) == 45 && !editor->isBusy(); }, 5000));
+    }
+
     void spectrumOfARunListsItsPeak()
     {
         TuningRun run;
@@ -416,7 +458,15 @@ private slots:
         QVERIFY2(view.peaksText().contains(QStringLiteral("80.0 Hz")), qPrintable(view.peaksText()));
         QVERIFY(view.plot()->timeTitle().contains(QStringLiteral("Hann")));
         QVERIFY(view.plot()->timeTitle().contains(QStringLiteral("resolution 0.5 Hz")));
+        // What it cannot see (issue 26): the Nyquist frequency on the axis, the band above
+        // the usable one (90 % of Nyquist) greyed.
+        QVERIFY2(view.plot()->timeTitle().contains(QStringLiteral("Nyquist 500.0 Hz")),
+                 qPrintable(view.plot()->timeTitle()));
+        QVERIFY(view.plot()->greyedFrom().has_value());
+        QVERIFY(qAbs(*view.plot()->greyedFrom() - 450.0) < 1e-6);
+        QVERIFY2(view.peaksText().contains(QStringLiteral("Nyquist frequency 500.0 Hz")), qPrintable(view.peaksText()));
         view.setRun(nullptr);
+        QVERIFY(!view.plot()->greyedFrom().has_value());
         QVERIFY(view.spectrum().isEmpty());
     }
 

@@ -57,6 +57,7 @@ private slots:
 
     void discoveryFindsStations();
     void keepAliveKeepsDrivesConnected();
+    void motionLeaseEndsWhenTheMoveEnds();
     void readAllParameters();
     void writeReadsBackAndVerifies();
     void outOfRangeWriteSendsNothing();
@@ -209,6 +210,7 @@ void TestServoCanDrive::keepAliveKeepsDrivesConnected()
     ServoCanStationTracker *tr = m_backend->tracker();
     tr->resetStats();
     const quint64 kaBefore = m_sim7->stats().keepAlives;
+    const quint64 ka1Before = m_sim1->stats().keepAlives;
     const quint64 tripsBefore = m_sim7->stats().watchdogTrips;
     // Run the axis for longer than the drive's 2 s watchdog while the lease is renewed.
     ServoCanDrive *d = drive(7);
@@ -229,10 +231,36 @@ void TestServoCanDrive::keepAliveKeepsDrivesConnected()
     qInfo("keep-alive: %llu ticks, max gap %.1f ms", static_cast<unsigned long long>(tr->stats().keepAliveTicks),
           tr->stats().maxKeepAliveGapMs);
     QVERIFY2(tr->stats().maxKeepAliveGapMs < 500, "keep-alive gap far beyond 100 ms");
+    QVERIFY(tr->holdsMotion(7));
     QVERIFY(waitFinished(d->stop()));
+    QVERIFY(!tr->holdsMotion(7)); // the stop ends the motion lease, and with it the keep-alive
     QVERIFY(waitUntil([this] { return !m_sim7->motor().isMoving(); }, 2000));
-    // The keep-alive goes to every station heard, also to one without a Drive object.
-    QVERIFY(m_sim1->stats().keepAlives > 0);
+    // The keep-alive goes only to the station whose motion this program commands: station 1,
+    // heard but at rest, got none (issue 26: a reader must not keep another's motion alive).
+    QCOMPARE(m_sim1->stats().keepAlives, ka1Before);
+    const quint64 frames = tr->stats().keepAliveFrames;
+    QTest::qWait(300);
+    QCOMPARE(tr->stats().keepAliveFrames, frames);
+}
+
+void TestServoCanDrive::motionLeaseEndsWhenTheMoveEnds()
+{
+    // A move holds its station's motion lease (keep-alive) while it runs and gives it up
+    // when the heartbeat shows the axis at rest at its end: nobody sends a stop.
+    ServoCanStationTracker *tr = m_backend->tracker();
+    ServoCanDrive *d = drive(7);
+    QVERIFY(!tr->holdsMotion(7));
+    const quint64 ka = m_sim7->stats().keepAlives;
+    DriveReply *r = d->moveRelative(20000, 600);
+    QVERIFY(waitFinished(r));
+    QVERIFY2(r->ok(), qPrintable(errorText(r)));
+    QVERIFY(tr->holdsMotion(7));
+    QVERIFY(m_sim7->stats().keepAlives > ka);
+    QVERIFY(waitUntil([this] { return !m_sim7->motor().isMoving(); }, 5000));
+    QVERIFY(waitUntil([tr] { return !tr->holdsMotion(7); }, 1000));
+    const quint64 after = m_sim7->stats().keepAlives;
+    QTest::qWait(300);
+    QCOMPARE(m_sim7->stats().keepAlives, after);
 }
 
 void TestServoCanDrive::readAllParameters()
@@ -540,10 +568,11 @@ void TestServoCanDrive::silentStationGoesOffline()
     QCOMPARE(r->error().code, ErrorCode::DriveException);
     QVERIFY(r->error().message.contains(QStringLiteral("heartbeat")));
     QVERIFY(waitFinished(d->stop()));
-    // The keep-alive goes on while it is away; it is back with its first heartbeat.
+    // The stop ended the motion lease: no keep-alive keeps a drive this program cannot see.
+    QVERIFY(!m_backend->tracker()->holdsMotion(7));
     const quint64 frames = m_backend->tracker()->stats().keepAliveFrames;
     QTest::qWait(250);
-    QVERIFY(m_backend->tracker()->stats().keepAliveFrames >= frames + 4);
+    QCOMPARE(m_backend->tracker()->stats().keepAliveFrames, frames);
     m_sim7->faults().setSilent(false);
     QVERIFY(waitUntil([d] { return d->status().online; }, 1000));
 }
@@ -572,9 +601,11 @@ void TestServoCanDrive::watchdogStopsMotionWithoutKeepAlive()
     QVERIFY(m_sim7->motor().isEnabled()); // it holds the shaft
     QVERIFY(!m_sim7->isHostOnline());
     QCOMPARE(lost.size(), 0); // a user's close is not a lost link
-    // Reconnect: the keep-alive starts again with the first heartbeat.
+    // Reconnect: a drive at rest gets no keep-alive (no motion lease); the next motion
+    // command brings one first.
     QVERIFY(openBackend());
-    QVERIFY(waitUntil([this] { return m_sim7->isHostOnline(); }, 1000));
+    QVERIFY(waitUntil([this] { return m_backend->tracker()->isOnline(7); }, 3000));
+    QVERIFY(!m_sim7->isHostOnline());
     d->setJogLeaseMs(300);
 }
 

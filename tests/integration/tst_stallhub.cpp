@@ -2,8 +2,9 @@
 // DriveHub (the GUI's way to the drives: links and drives on its own I/O thread) talks to a
 // simulated servo-can drive whose SimBench runs on a third thread; the test thread plays the
 // GUI and is blocked on purpose (QThread::msleep: that is the point of the test).
-//  - Keep-alive: the gaps between 0x08 frames, time-stamped where the simulator receives
-//    them, stay <= 150 ms (period 100 ms) while the GUI thread sleeps for 1 s.
+//  - Keep-alive: during a move (the keep-alive goes with motion), the gaps between 0x08
+//    frames, time-stamped where the simulator receives them, stay <= 150 ms (period 100 ms)
+//    while the GUI thread sleeps for 1 s.
 //  - Jog lease: renewed every 50 ms from a GUI timer the axis turns; when the GUI thread
 //    blocks, the renewals stop and within 300 ms (+ margin) the I/O side puts a stop on the
 //    wire; the motor decelerates; jogLeaseExpired and jogEnded reach the GUI afterwards.
@@ -148,6 +149,8 @@ private slots:
 private:
     int openConnection();
     DriveResult run(int id, const DriveHub::Operation &op);
+    // run() once the drive's heartbeat was heard (the drive's status says online).
+    DriveResult runWhenOnline(int id, const DriveHub::Operation &op);
 
     std::unique_ptr<SimThread> m_sim;
     std::unique_ptr<DriveHub> m_hub;
@@ -202,11 +205,19 @@ DriveResult TestStallHub::run(int id, const DriveHub::Operation &op)
     return result;
 }
 
+DriveResult TestStallHub::runWhenOnline(int id, const DriveHub::Operation &op)
+{
+    waitUntil([&] { return run(id, [](Drive &d) { return d.readStatus(); }).status.online; }, 3000);
+    return run(id, op);
+}
+
 void TestStallHub::keepAliveSurvivesABlockedGuiThread()
 {
     const int id = openConnection();
     QVERIFY(id > 0);
-    // The keep-alive starts with the drive's first heartbeat.
+    // The keep-alive goes with a motion (the motion lease): a long move holds it.
+    const DriveResult move = runWhenOnline(id, [](Drive &d) { return d.moveRelative(50000000, 300); });
+    QVERIFY2(move.ok(), qPrintable(move.error.message));
     QVERIFY(waitUntil([this] { return m_sim->times(sc::Command::KeepAlive).size() >= 3; }, 3000));
 
     const qint64 blockStart = steadyNs();
@@ -236,13 +247,15 @@ void TestStallHub::keepAliveSurvivesABlockedGuiThread()
     QVERIFY2(prev > blockEnd, "the gap is measured across the whole block");
     QVERIFY2(maxGap <= 150, qPrintable(QStringLiteral("keep-alive gap %1 ms").arg(maxGap)));
     QVERIFY(m_sim->onDrive([](SimServoCanDrive &d) { return d.isHostOnline(); }));
+    QVERIFY(m_sim->onDrive([](SimServoCanDrive &d) { return d.motor().isMoving(); }));
+    QVERIFY(run(id, [](Drive &d) { return d.stop(); }).ok());
 }
 
 void TestStallHub::jogLeaseStopsTheAxisWhenTheGuiBlocks()
 {
     const int id = openConnection();
     QVERIFY(id > 0);
-    QVERIFY(waitUntil([this] { return m_sim->times(sc::Command::KeepAlive).size() >= 1; }, 3000));
+    QVERIFY(runWhenOnline(id, [](Drive &d) { return d.readStatus(); }).ok());
     QSignalSpy expired(m_hub.get(), &DriveHub::jogLeaseExpired);
     QSignalSpy ended(m_hub.get(), &DriveHub::jogEnded);
 

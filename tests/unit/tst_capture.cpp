@@ -1,5 +1,8 @@
+#include "core/params/parameterdictionary.h"
 #include "core/tuning/capturerecorder.h"
 #include "core/tuning/commandwatch.h"
+#include "core/tuning/runcompatibility.h"
+#include "core/tuning/runparameterapply.h"
 #include "core/tuning/spectrum.h"
 #include "core/tuning/steplimits.h"
 #include "core/tuning/stepmetrics.h"
@@ -265,6 +268,77 @@ private slots:
         QVERIFY(Spectrum::compute(t.mid(0, 10), v.mid(0, 10), 3, &error).isEmpty());
     }
 
+    // Issue 26, item 8: a 150 Hz resonance read at ~245 Hz (arrival-timed reads, their
+    // intervals uneven) gives its top peak below the 122.5 Hz Nyquist frequency; the spectrum
+    // says it may be an alias of ~150 Hz, and states the Nyquist frequency and usable band.
+    // (It used to give such a peak with no note at all.)
+    void spectrumSaysWhatItCannotSee()
+    {
+        quint32 seed = 12345;
+        auto rnd = [&seed] {
+            seed = seed * 1664525u + 1013904223u;
+            return double(seed >> 8) / double(1u << 24);
+        };
+        auto sampled = [&rnd](double rateHz, double jitter, double sineHz, int n, QVector<double> *t,
+                              QVector<double> *v) {
+            double at = 0.0;
+            for (int i = 0; i < n; ++i) {
+                at += (1.0 + jitter * (2.0 * rnd() - 1.0)) / rateHz;
+                t->append(at);
+                v->append(50.0 * std::sin(2 * Pi * sineHz * at));
+            }
+        };
+        QVector<double> t, v;
+        sampled(245.0, 0.2, 150.0, 1500, &t, &v);
+        QString error;
+        Spectrum s = Spectrum::compute(t, v, 3, &error);
+        QVERIFY2(!s.isEmpty(), qPrintable(error));
+        QVERIFY(std::abs(s.nyquistHz - 122.5) < 2.0);
+        QVERIFY(std::abs(s.usableToHz - 0.9 * s.nyquistHz) < 1e-9);
+        QVERIFY(std::abs(s.usableFromHz - 2 * s.resolutionHz) < 1e-9);
+        const Spectrum::Peak top = s.peaks.first();
+        qInfo("150 Hz read at ~245 Hz: top peak %.1f Hz, marked as an alias of %.1f Hz", top.hz, top.aliasOfHz);
+        QVERIFY(top.hz < s.nyquistHz);
+        QVERIFY2(std::abs(top.aliasOfHz - 150.0) < 3.0, qPrintable(QString::number(top.aliasOfHz)));
+        const QString notes = s.notes.join(QLatin1Char('\n'));
+        QVERIFY2(notes.contains(QLatin1String("Nyquist frequency 122.")) && notes.contains(QLatin1String("usable band"))
+                     && notes.contains(QLatin1String("may be an alias")),
+                 qPrintable(notes));
+
+        // Read fast enough, with the same unevenness, a 20 Hz sine is not suspect.
+        t.clear();
+        v.clear();
+        sampled(1000.0, 0.2, 20.0, 2000, &t, &v);
+        s = Spectrum::compute(t, v, 3, &error);
+        QVERIFY(std::abs(s.peaks.first().hz - 20.0) < s.resolutionHz);
+        QVERIFY(!s.peaks.first().isSuspect());
+        QVERIFY2(!s.notes.join(' ').contains(QLatin1String("the peak at 20.")), qPrintable(s.notes.join('\n')));
+
+        // A peak within 10 % of Nyquist is marked so.
+        t.clear();
+        v.clear();
+        sampled(245.0, 0.02, 115.0, 1500, &t, &v);
+        s = Spectrum::compute(t, v, 3, &error);
+        QVERIFY(s.peaks.first().hz > 0.9 * s.nyquistHz);
+        QVERIFY(s.peaks.first().nearNyquist);
+
+        // The gaps note stays with a stretch (--between): the overload for a time window.
+        CaptureData c;
+        c.channels = {QStringLiteral("speed")};
+        c.columns.resize(1);
+        for (int i = 0; i < 400; ++i) {
+            const double at = i * 1e-3 + (i >= 200 ? 0.05 : 0.0); // 50 ms missing after 0.2 s
+            c.time << at;
+            c.columns[0] << std::sin(2 * Pi * 30.0 * at);
+        }
+        c.gaps = CaptureGap::of(c.time);
+        QCOMPARE(c.gaps.size(), 1);
+        s = Spectrum::compute(c, QStringLiteral("speed"), 3, &error, 0.0, 0.1, 0.4);
+        QVERIFY2(s.notes.join(' ').contains(QLatin1String("bridged by interpolation")), qPrintable(s.notes.join(' ')));
+        s = Spectrum::compute(c, QStringLiteral("speed"), 3, &error, 0.0, 0.0, 0.19);
+        QVERIFY(!s.notes.join(' ').contains(QLatin1String("bridged")));
+    }
+
     void runFilesRoundTrip()
     {
         QTemporaryDir dir;
@@ -305,6 +379,9 @@ private slots:
         QTest::newRow("metric") << "metrics.riseTime" << QJsonValue("quick") << "riseTime";
         QTest::newRow("tuning role") << "tuning[0].role" << QJsonValue("speed-gain") << "speed-gain";
         QTest::newRow("tuning value") << "tuning[1].value" << QJsonValue(1.5) << "whole number";
+        // A parameter listed twice (issue 26: the index check compared with -1 and passed).
+        QTest::newRow("tuning index twice") << "tuning[1].index" << QJsonValue(60) << "twice";
+        QTest::newRow("tuning key twice") << "tuning[1].key" << QJsonValue("p60") << "twice";
         QTest::newRow("unknown field") << "extra" << QJsonValue(1) << "extra";
         QTest::newRow("created") << "created" << QJsonValue("yesterday") << "yesterday";
     }
@@ -506,6 +583,106 @@ private slots:
         // Idle after the test's own stop: nothing more is said.
         w.idle();
         QVERIFY(w.feedSample(bits).isEmpty());
+    }
+
+    // Issue 26, item 5: apply-run writes tuning parameters only, judged by the role the
+    // dictionary in force gives each parameter, never by what the file claims.
+    void applyRunWritesTuningParametersOnly()
+    {
+        const ParameterDictionary &sim = ParameterDictionary::bundledSimulator(Family::ServoCan);
+        QVERIFY(!sim.tuning().isEmpty());
+        QVERIFY(!RunParameterApply::check(sampleRun(), Family::ServoCan, sim));
+
+        // Control mode and station number slipped into the tuning list: the whole run is
+        // refused, naming both.
+        TuningRun run = sampleRun();
+        run.tuning.append({4, QStringLiteral("P4"), QString(), 0});
+        run.tuning.append({75, QStringLiteral("P75"), QString(), 7});
+        Error e = RunParameterApply::check(run, Family::ServoCan, sim);
+        QCOMPARE(e.code, ErrorCode::InvalidArgument);
+        QVERIFY2(e.message.contains(QLatin1String("P4 ")) && e.message.contains(QLatin1String("P75 "))
+                     && e.message.contains(QLatin1String("not tuning parameters"))
+                     && e.message.contains(QLatin1String("nothing was written")),
+                 qPrintable(e.message));
+        // A role written into the file does not make a setting a gain.
+        run = sampleRun();
+        run.tuning.append({4, QStringLiteral("P4"), QStringLiteral("speed-kd"), 0});
+        e = RunParameterApply::check(run, Family::ServoCan, sim);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("P4 ")), qPrintable(e.message));
+
+        // A run recorded on the simulator (its dictionary names P60, P61) applied with a
+        // dictionary that names no tuning parameters: refused with the reason.
+        e = RunParameterApply::check(sampleRun(), Family::ServoCan, ParameterDictionary::bundled(Family::ServoCan));
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("names no tuning parameters"))
+                     && e.message.contains(QLatin1String("P60 = speed-kp"))
+                     && e.message.contains(QLatin1String("simulator")),
+                 qPrintable(e.message));
+        // The GUI's roles in force (the tab's entries) are honoured the same way.
+        const QVector<TuningEntry> onlyKp{{60, QStringLiteral("speed-kp")}};
+        e = RunParameterApply::check(sampleRun(), Family::ServoCan, sim, &onlyKp);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("P61")), qPrintable(e.message));
+
+        // Listed twice (a run made in memory; files are refused by the loader).
+        run = sampleRun();
+        run.tuning.append({60, QStringLiteral("P60"), QStringLiteral("speed-kp"), 31});
+        e = RunParameterApply::check(run, Family::ServoCan, sim);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("twice")), qPrintable(e.message));
+        // Another role than the dictionary's: recorded with another dictionary.
+        run = sampleRun();
+        run.tuning[0].role = QStringLiteral("position-kp");
+        e = RunParameterApply::check(run, Family::ServoCan, sim);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("another dictionary")), qPrintable(e.message));
+        // Another drive model.
+        run = sampleRun();
+        run.model = QStringLiteral("M6505");
+        DriveIdentity id;
+        id.family = Family::ServoCan;
+        QVERIFY(!RunParameterApply::checkDrive(run, id)); // the drive's model unknown: nothing to compare
+        id.model = QStringLiteral("M4505");
+        e = RunParameterApply::checkDrive(run, id);
+        QVERIFY2(e.isError() && e.message.contains(QLatin1String("M6505"))
+                     && e.message.contains(QLatin1String("M4505")),
+                 qPrintable(e.message));
+        id.model = QStringLiteral("m6505");
+        QVERIFY(!RunParameterApply::checkDrive(run, id));
+    }
+
+    // Comparing runs that are not like for like says why, instead of "no tuning parameter
+    // differs".
+    void runsThatDoNotCompareSaySo()
+    {
+        TuningRun a = sampleRun(), b = sampleRun();
+        a.label = QStringLiteral("a");
+        b.label = QStringLiteral("b");
+        QVERIFY(RunCompatibility::differences(a, b).isEmpty());
+        QCOMPARE(RunCompatibility::stepSize(a), QStringLiteral("300 r/min"));
+        b.testParameters.insert(QStringLiteral("speed"), 500);
+        QStringList why = RunCompatibility::differences(a, b);
+        QVERIFY2(why.join(' ').contains(QLatin1String("different sizes (300 r/min, 500 r/min)")),
+                 qPrintable(why.join(' ')));
+        b = sampleRun();
+        b.label = QStringLiteral("b");
+        b.test = QStringLiteral("position-step");
+        why = RunCompatibility::differences(a, b);
+        QVERIFY2(why.join(' ').contains(QLatin1String("different tests")), qPrintable(why.join(' ')));
+        b = sampleRun();
+        b.label = QStringLiteral("b");
+        b.family = QStringLiteral("shuoke");
+        QVERIFY(RunCompatibility::differences(a, b).join(' ').contains(QLatin1String("shuoke drive")));
+        b = sampleRun();
+        b.label = QStringLiteral("b");
+        a.model = QStringLiteral("M6505");
+        b.model = QStringLiteral("M4505");
+        QVERIFY(RunCompatibility::differences(a, b).join(' ').contains(QLatin1String("M4505")));
+        a = sampleRun();
+        a.label = QStringLiteral("a");
+        b.model.clear();
+        b.tuning[1].role = QStringLiteral("position-ki");
+        why = RunCompatibility::differences(a, b);
+        QVERIFY2(why.join(' ').contains(QLatin1String("different dictionaries")), qPrintable(why.join(' ')));
+        b = sampleRun();
+        b.tuning.append(b.tuning.first());
+        QVERIFY(RunCompatibility::snapshotProblems(b).join(' ').contains(QLatin1String("twice")));
     }
 };
 

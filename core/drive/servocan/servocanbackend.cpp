@@ -135,6 +135,7 @@ void ServoCanBackend::stopAll()
             const auto station = static_cast<quint8>(s);
             m_link->send(m_emergencyHolds ? sc::stop(station) : sc::stopAndDisable(station),
                          QStringLiteral("stop all"));
+            m_tracker->releaseMotion(s);
         }
     }
 }

@@ -37,6 +37,9 @@ class ServoCanStationTracker;
 // A stop jumps the queue: it is written at once (ahead of reads waiting for the link's
 // window) and once more behind everything already queued, so that a motion command still
 // waiting in the queue cannot restart the axis after the stop.
+// Keep-alive: this drive takes its station's motion lease (ServoCanStationTracker) when it
+// sends a jog or a move and gives it up when it sends a stop or a disable; the tracker sends
+// the keep-alive only while the lease is held (docs/reliability.md).
 // Status: online / running / position come from the heartbeats (via the link's
 // ServoCanStationTracker), the alarm code from 0x05 frames and 0xAA reads.
 //
@@ -132,6 +135,7 @@ private:
     int m_motionStartMs = 300;
     int m_alarmClearMs = 300;
     int m_stopConfirmMs = 150; // five heartbeat periods
+    quint64 m_stopsSent = 0;   // stops and disables: a motion command queued before one takes no lease
 };
 
 } // namespace dd

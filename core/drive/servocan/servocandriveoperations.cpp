@@ -187,8 +187,12 @@ DriveReply *ServoCanDrive::setEnabled(bool on)
         reply->finish(e);
     });
     const auto complete = [join](const Error &e) { join->complete(e); };
-    if (!on)
+    if (!on) {
         sendCommand(sc::enable(m_station, false), QStringLiteral("disable"), complete, true);
+        ++m_stopsSent;
+        if (m_tracker)
+            m_tracker->releaseMotion(m_station); // no motion without power: no keep-alive
+    }
     sendCommand(sc::enable(m_station, on),
                 on ? QStringLiteral("enable") : QStringLiteral("disable (behind queued frames)"), complete);
     return reply;
@@ -203,6 +207,11 @@ DriveReply *ServoCanDrive::doStop(bool emergency)
         return finishedReply(linkClosedError());
     // ... and again behind it, so that a queued motion command cannot restart the axis.
     sendCommand(stopFrame(emergency), note + QStringLiteral(" (behind queued frames)"));
+    // This program no longer commands motion: its keep-alive ends, so that a drive that did
+    // not hear the stop is stopped by its own watchdog (docs/reliability.md).
+    ++m_stopsSent;
+    if (m_tracker)
+        m_tracker->releaseMotion(m_station);
     if (disables)
         setEnabledState(false);
     // Nothing acknowledges a stop; a heartbeat sent after it shows the drive heard it.
@@ -231,14 +240,23 @@ DriveReply *ServoCanDrive::startMotion(const QList<CanFrameData> &frames, const 
 {
     if (!m_link || !m_link->isConnected())
         return finishedReply(linkClosedError());
+    // The motion lease: the keep-alive goes to this station while the motion lasts (one at
+    // once, ahead of the command), and only from the program that commands it.
+    if (m_tracker)
+        m_tracker->holdMotion(m_station);
+    const quint64 stops = m_stopsSent;
     DriveReply *reply = newReply();
     for (int i = 0; i < frames.size(); ++i) {
         const bool last = i == frames.size() - 1;
-        sendCommand(frames.at(i), what, [this, reply, started, last](const Error &e) {
+        sendCommand(frames.at(i), what, [this, reply, started, last, stops](const Error &e) {
             if (e.isError()) {
                 reply->finish(e);
                 return;
             }
+            // The command left after frames queued before it: its lease counts from now
+            // (unless a stop or a disable went out meanwhile).
+            if (last && m_tracker && m_stopsSent == stops)
+                m_tracker->holdMotion(m_station);
             if (last) // the motion command is on the bus: watch the heartbeats from now on
                 awaitHeartbeat(started, m_motionStartMs, [reply](const Error &e2) { reply->finish(e2); });
         });

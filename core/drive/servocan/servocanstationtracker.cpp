@@ -61,9 +61,48 @@ void ServoCanStationTracker::setKeepAliveSuspended(bool suspended)
     m_suspended = suspended;
     if (suspended) {
         m_keepAlive.stop();
-    } else if (!m_seen.isEmpty()) {
+    } else if (!m_leases.isEmpty() && !m_keepAlive.isActive()) {
         startKeepAlive();
     }
+}
+
+void ServoCanStationTracker::holdMotion(int station)
+{
+    if (!sc::isValidStation(station))
+        return;
+    const bool isNew = !m_leases.contains(station);
+    Lease &lease = m_leases[station];
+    lease.lastCommandMs = m_clock.elapsed();
+    lease.sawRunning = false;
+    if (isNew) {
+        qCDebug(lcServoCanTracker) << "station" << station << "motion lease: keep-alive starts";
+        emit motionLeaseChanged(station, true);
+    }
+    if (!m_offlineCheck.isActive())
+        m_offlineCheck.start();
+    if (m_suspended)
+        return;
+    // One at once, ahead of the motion command: a drive that took itself offline is back
+    // before the command arrives, and its 2 s count starts now.
+    if (m_link->send(sc::keepAlive(static_cast<quint8>(station)), QStringLiteral("keep-alive (motion lease)")))
+        ++m_stats.keepAliveFrames;
+    if (!m_keepAlive.isActive())
+        startKeepAlive();
+}
+
+void ServoCanStationTracker::releaseMotion(int station)
+{
+    endLease(station, "released");
+}
+
+void ServoCanStationTracker::endLease(int station, const char *why)
+{
+    if (!m_leases.remove(station))
+        return;
+    qCDebug(lcServoCanTracker) << "station" << station << "motion lease ended (" << why << "): keep-alive stops";
+    if (m_leases.isEmpty())
+        m_keepAlive.stop();
+    emit motionLeaseChanged(station, false);
 }
 
 void ServoCanStationTracker::resetStats()
@@ -77,6 +116,10 @@ void ServoCanStationTracker::reset()
     m_keepAlive.stop();
     m_offlineCheck.stop();
     m_lastTickNs = -1;
+    const QList<int> leased = m_leases.keys();
+    m_leases.clear();
+    for (int s : leased)
+        emit motionLeaseChanged(s, false);
     const QList<int> seen = m_seen;
     m_seen.clear();
     for (int s : seen) {
@@ -110,16 +153,19 @@ void ServoCanStationTracker::onFrame(const CanFrameData &frame)
         if (!st.seen) {
             st.seen = true;
             m_seen.insert(std::lower_bound(m_seen.begin(), m_seen.end(), int(m.station)), m.station);
-            qCDebug(lcServoCanTracker) << "station" << m.station << "first heartbeat: keep-alive starts";
-            if (!m_suspended && !m_keepAlive.isActive()) {
-                startKeepAlive();
-                onKeepAliveTick(); // the first one at once
-            }
+            qCDebug(lcServoCanTracker) << "station" << m.station << "first heartbeat";
             if (!m_offlineCheck.isActive())
                 m_offlineCheck.start();
         }
         if (!wasOnline)
             emit stationOnline(m.station);
+        const auto lease = m_leases.find(m.station);
+        if (lease != m_leases.end()) {
+            if (st.running())
+                lease->sawRunning = true;
+            else if (lease->sawRunning || st.lastHeartbeatMs - lease->lastCommandMs > kLeaseStartMs)
+                endLease(m.station, "at rest");
+        }
         emit heartbeat(m.station, m.b2, m.value);
     } else if (m.command == sc::Command::Alarm) {
         ++m_stats.alarmFrames;
@@ -137,7 +183,7 @@ void ServoCanStationTracker::startKeepAlive()
 
 void ServoCanStationTracker::onKeepAliveTick()
 {
-    if (m_seen.isEmpty() || m_suspended)
+    if (m_leases.isEmpty() || m_suspended)
         return;
     const qint64 now = m_clock.nsecsElapsed();
     if (m_lastTickNs >= 0) {
@@ -147,7 +193,8 @@ void ServoCanStationTracker::onKeepAliveTick()
     }
     m_lastTickNs = now;
     ++m_stats.keepAliveTicks;
-    for (int s : std::as_const(m_seen)) {
+    const QList<int> leased = m_leases.keys();
+    for (int s : leased) {
         if (m_link->send(sc::keepAlive(static_cast<quint8>(s)), QStringLiteral("keep-alive")))
             ++m_stats.keepAliveFrames;
     }
@@ -156,12 +203,19 @@ void ServoCanStationTracker::onKeepAliveTick()
 void ServoCanStationTracker::onOfflineCheck()
 {
     const qint64 now = m_clock.elapsed();
+    // A lease on a station that shows no heartbeat (never heard, or gone) ends once its
+    // motion had time to show: nothing here can see what that drive does.
+    const QList<int> leased = m_leases.keys();
+    for (int s : leased)
+        if (!m_stations[static_cast<size_t>(s)].online && now - m_leases.value(s).lastCommandMs > kLeaseStartMs)
+            endLease(s, "no heartbeat");
     for (int s : std::as_const(m_seen)) {
         Station &st = m_stations[static_cast<size_t>(s)];
         if (st.online && now - st.lastHeartbeatMs > m_offlineMs) {
             st.online = false;
             qCDebug(lcServoCanTracker) << "station" << s << "offline: no heartbeat for" << now - st.lastHeartbeatMs
                                        << "ms";
+            endLease(s, "offline"); // DriveDesk cannot see what it does: its watchdog stops it
             emit stationOffline(s);
         }
     }

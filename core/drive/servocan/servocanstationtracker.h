@@ -4,6 +4,7 @@
 
 #include <QElapsedTimer>
 #include <QList>
+#include <QMap>
 #include <QObject>
 #include <QTimer>
 
@@ -15,18 +16,26 @@ class CanLink;
 
 // The link-wide half of the `servo-can` protocol (docs/protocols/servo-can.md): watches every
 // frame on one CanLink for heartbeats (0x10) and alarm frames (0x05), keeps per-station
-// state, and sends the keep-alive (0x08) every 100 ms to every station whose heartbeat was
-// seen.
+// state, and sends the keep-alive (0x08) every 100 ms to every station this program holds a
+// motion lease on.
 //
-// Decision (docs/protocols/servo-can.md): the keep-alive starts with a station's first heartbeat and goes on
-// until the link is closed, also while the station is offline (so that a drive that comes
-// back is kept alive at once). One tracker per link: drives and discovery share it.
+// Motion lease (docs/reliability.md, "The keep-alive belongs to whoever commands motion"):
+// the keep-alive is what keeps a drive's motion going — without it the drive's 2 s watchdog
+// stops the axis. So only the program that commands the motion sends it: holdMotion() is
+// called by the drive just before it sends a motion command (0x20 jog, 0x21 / 0x22 move) and
+// sends one keep-alive at once; the lease ends with releaseMotion() (a stop or a disable
+// went out), when the station's heartbeat shows it at rest after the motion (or shows no
+// motion 1 s after the last motion command), when the station goes offline (DriveDesk cannot
+// see what it does) and when the link closes. A program that only reads (monitor, trend,
+// capture, backup) holds no lease and sends no keep-alive, so a motion commanded by a
+// program that died is stopped by the drive's watchdog. One tracker per link: drives and
+// discovery share it.
 //
-// Timing: the keep-alive runs on a periodic Qt::PreciseTimer; every tick sends one frame to
-// each known station. The gap between ticks is measured (stats()) so tests and the benchmark
-// can prove the drive's 2 s watchdog is never near. A station is offline when no heartbeat
-// came for offlineMs() (200 ms by default: more than six missed 30 ms heartbeats); the check
-// runs every 50 ms.
+// Timing: the keep-alive runs on a periodic Qt::PreciseTimer while a lease is held; every
+// tick sends one frame to each leased station. The gap between ticks is measured (stats())
+// so tests and the benchmark can prove the drive's 2 s watchdog is never near during a
+// motion. A station is offline when no heartbeat came for offlineMs() (200 ms by default:
+// more than six missed 30 ms heartbeats); the check runs every 50 ms.
 class ServoCanStationTracker : public QObject
 {
     Q_OBJECT
@@ -74,6 +83,14 @@ public:
     void setKeepAliveSuspended(bool suspended);
     bool isKeepAliveSuspended() const { return m_suspended; }
 
+    // Motion leases (see above).
+    void holdMotion(int station);
+    void releaseMotion(int station);
+    bool holdsMotion(int station) const { return m_leases.contains(station); }
+    QList<int> motionStations() const { return m_leases.keys(); } // ascending
+    // A lease whose motion never showed in a heartbeat ends this long after its last command.
+    static constexpr int kLeaseStartMs = 1000;
+
     const Stats &stats() const { return m_stats; }
     void resetStats();
     qint64 elapsedMs() const { return m_clock.elapsed(); }
@@ -86,6 +103,7 @@ signals:
     void alarmReported(int station, int code);
     void stationOnline(int station);
     void stationOffline(int station);
+    void motionLeaseChanged(int station, bool held);
     // Any decoded servo-can frame (replies, echoes, ...), for listeners that want more.
     void messageReceived(const dd::servocan::Message &message);
 
@@ -94,10 +112,18 @@ private:
     void onKeepAliveTick();
     void onOfflineCheck();
     void startKeepAlive();
+    void endLease(int station, const char *why);
+
+    struct Lease
+    {
+        qint64 lastCommandMs = 0; // tracker clock
+        bool sawRunning = false;  // a heartbeat showed the motion since the last command
+    };
 
     CanLink *m_link;
     std::array<Station, servocan::kStationCount> m_stations{};
     QList<int> m_seen; // ascending
+    QMap<int, Lease> m_leases;
     QTimer m_keepAlive;
     QTimer m_offlineCheck;
     QElapsedTimer m_clock;

@@ -199,11 +199,28 @@ void TrendPlot::render(QPainter *painter, const QRectF &target) const
     painter->setFont(font());
     painter->fillRect(target, Qt::white);
     const Layout l = layoutFor(target);
+    paintGreyed(painter, l);
     paintAxes(painter, l);
     paintSeries(painter, l);
     paintMarkers(painter, l);
     paintLegend(painter, l);
     painter->restore();
+}
+
+void TrendPlot::setGreyedFrom(std::optional<double> fromS)
+{
+    m_greyedFrom = fromS;
+    update();
+}
+
+void TrendPlot::paintGreyed(QPainter *p, const Layout &l) const
+{
+    if (!m_greyedFrom || *m_greyedFrom >= m_tMax)
+        return;
+    const QRectF &r = l.plot;
+    const double from = std::max(*m_greyedFrom, m_tMin);
+    const double x = r.left() + (from - m_tMin) / (m_tMax - m_tMin) * r.width();
+    p->fillRect(QRectF(QPointF(x, r.top()), r.bottomRight()), QColor(0xd8, 0xd8, 0xd8));
 }
 
 void TrendPlot::paintAxes(QPainter *p, const Layout &l) const

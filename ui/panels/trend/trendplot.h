@@ -61,6 +61,11 @@ public:
     const QList<Series> &series() const { return m_series; }
     const Series *seriesById(const QString &id) const;
 
+    // A greyed stretch of the x axis from `fromS` to its right end (the spectrum's band
+    // above what it can resolve); nullopt: none.
+    void setGreyedFrom(std::optional<double> fromS);
+    std::optional<double> greyedFrom() const { return m_greyedFrom; }
+
     void setMarker(int which, std::optional<double> timeS);
     std::optional<double> marker(int which) const { return m_markers[static_cast<size_t>(which)]; }
     void setHoverTime(std::optional<double> timeS);
@@ -115,6 +120,7 @@ private:
     Layout layoutFor(const QRectF &target) const;
     void paintAxes(QPainter *p, const Layout &l) const;
     void paintSeries(QPainter *p, const Layout &l) const;
+    void paintGreyed(QPainter *p, const Layout &l) const;
     void paintLegend(QPainter *p, const Layout &l) const;
     void paintMarkers(QPainter *p, const Layout &l) const;
 
@@ -125,6 +131,7 @@ private:
     QList<Series> m_series;
     std::array<std::optional<double>, 2> m_markers;
     std::optional<double> m_hover;
+    std::optional<double> m_greyedFrom;
     // Mouse gestures.
     std::optional<QPointF> m_pressPos;
     Qt::MouseButton m_pressButton = Qt::NoButton;

@@ -1,6 +1,8 @@
 #include "ui/panels/tuning/runcomparison.h"
 #include "ui/common/displaytext.h"
 
+#include "core/tuning/runcompatibility.h"
+
 #include <QEvent>
 #include <QHeaderView>
 #include <QLabel>
@@ -119,6 +121,11 @@ QString RunComparison::metricText(const TuningRun &run, const QString &key)
 
 QString RunComparison::differenceLine(const TuningRun &a, const TuningRun &b)
 {
+    // Not like for like: say why instead of comparing parameters (RunCompatibility).
+    const QStringList why = RunCompatibility::snapshotProblems(a) + RunCompatibility::snapshotProblems(b)
+        + RunCompatibility::differences(a, b);
+    if (!why.isEmpty())
+        return tr("%1 → %2: not comparable: %3").arg(a.label, b.label, why.join(QLatin1Char(' ')));
     QStringList changes;
     for (const TuningSnapshotEntry &eb : b.tuning)
         for (const TuningSnapshotEntry &ea : a.tuning)

@@ -97,16 +97,18 @@ void SpectrumView::retranslate()
 {
     m_channelLabel->setText(tr("Channel:"));
     if (m_spectrum.isEmpty()) {
+        m_plot->setGreyedFrom(std::nullopt);
         m_plot->setSeries({});
         m_plot->setTimeTitle(tr("Frequency (Hz)"));
         m_peaks->setText(!m_haveRun ? tr("Select a run to see its spectrum.") : tr("No spectrum: %1").arg(m_error));
         return;
     }
-    m_plot->setTimeTitle(tr("Frequency (Hz) · %1 window, resolution %2 Hz, %3 points at %4 Hz")
+    m_plot->setTimeTitle(tr("Frequency (Hz) · %1 window, resolution %2 Hz, %3 points at %4 Hz, Nyquist %5 Hz")
                              .arg(m_spectrum.window)
                              .arg(m_spectrum.resolutionHz, 0, 'g', 3)
                              .arg(m_spectrum.points)
-                             .arg(m_spectrum.sampleRate, 0, 'f', 0));
+                             .arg(m_spectrum.sampleRate, 0, 'f', 0)
+                             .arg(m_spectrum.nyquistHz, 0, 'f', 1));
     TrendPlot::Series s;
     s.id = QStringLiteral("spectrum");
     s.label = tr("Amplitude of %1").arg(m_names.value(channel(), channel()));
@@ -124,9 +126,20 @@ void SpectrumView::retranslate()
     axis.title = tr("Amplitude");
     m_plot->setValueAxis(TrendPlot::Left, axis);
     m_plot->setSeries({s});
+    // Above the usable band (90 % of Nyquist) the spectrum cannot place a peak: greyed.
+    m_plot->setGreyedFrom(m_spectrum.usableToHz);
     QStringList lines{tr("Peaks:")};
-    for (const Spectrum::Peak &p : m_spectrum.peaks)
-        lines << tr("%1 Hz (%2)").arg(p.hz, 0, 'f', 1).arg(p.magnitude, 0, 'g', 3);
+    for (const Spectrum::Peak &p : m_spectrum.peaks) {
+        if (p.aliasOfHz > 0.0)
+            lines << tr("%1 Hz (%2) — may be an alias of %3 Hz")
+                         .arg(p.hz, 0, 'f', 1)
+                         .arg(p.magnitude, 0, 'g', 3)
+                         .arg(p.aliasOfHz, 0, 'f', 1);
+        else if (p.nearNyquist)
+            lines << tr("%1 Hz (%2) — near the Nyquist frequency").arg(p.hz, 0, 'f', 1).arg(p.magnitude, 0, 'g', 3);
+        else
+            lines << tr("%1 Hz (%2)").arg(p.hz, 0, 'f', 1).arg(p.magnitude, 0, 'g', 3);
+    }
     for (const QString &n : m_spectrum.notes)
         lines << n;
     m_peaks->setText(lines.join(QLatin1Char('\n')));

@@ -4,6 +4,7 @@
 #include "core/drive/drivehub.h"
 #include "core/drive/driveresult.h"
 #include "core/params/parameterdictionary.h"
+#include "core/tuning/runparameterapply.h"
 #include "ui/common/displaytext.h"
 #include "ui/common/livetext.h"
 #include "ui/workspace/driveparameters.h"
@@ -237,6 +238,18 @@ void TuningParametersEditor::writeEdited()
         writes.append({it.key(), it.value()});
     }
     writeValues(writes, QString(), 0);
+}
+
+void TuningParametersEditor::applyRun(const TuningRun &run)
+{
+    if (m_busy || !m_context.isValid() || !m_dictionary)
+        return;
+    if (Error e = RunParameterApply::check(run, m_context.family, *m_dictionary, &m_entries)) {
+        const QString why = e.message;
+        setMessage([why] { return tr("Not applied: %1").arg(why); }, true);
+        return;
+    }
+    applySnapshot(run.tuning, run.label);
 }
 
 void TuningParametersEditor::applySnapshot(const QList<TuningSnapshotEntry> &snapshot, const QString &runLabel)

@@ -52,6 +52,10 @@ public:
     // "Apply this run's parameters": reads the drive's values, writes only those that
     // differ from the snapshot, reads them back and says what it did.
     void applySnapshot(const QList<TuningSnapshotEntry> &snapshot, const QString &runLabel);
+    // applySnapshot() of a run that RunParameterApply::check() accepts against the drive's
+    // dictionary and the tuning roles this tab shows (entries()): only tuning parameters;
+    // anything else refuses the whole run, by name, with nothing sent.
+    void applyRun(const TuningRun &run);
     void writeEdited();
     bool isBusy() const { return m_busy; }
     QString message() const;

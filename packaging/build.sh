@@ -6,7 +6,9 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${DRIVEDESK_BUILD_DIR:-$here/build}"
-preset_args=(-G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo)
+# the default preset's flags (CMakePresets.json): -O2, line tables only
+preset_args=(-G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
+             "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
 if [ ! -f "$build/build.ninja" ]; then
   cmake -S "$here" -B "$build" "${preset_args[@]}" "$@"
 fi

@@ -408,7 +408,9 @@ private slots:
                 const QString p = proveStop([focus] { QTest::keyClick(focus, Qt::Key_Escape); });
                 if (!p.isEmpty())
                     m_problems << QStringLiteral("About, Esc: ") + p;
-                if (!waitUntil([dialog] { return !dialog->isVisible(); }, 5000))
+                // About deletes itself when closed: watch it through a guard.
+                const QPointer<QWidget> guard(dialog);
+                if (!waitUntil([guard] { return !guard || !guard->isVisible(); }, 5000))
                     m_problems << QStringLiteral("About: Esc did not close it");
             });
         QVERIFY2(m_problems.isEmpty(), qPrintable(m_problems.join(QLatin1Char('\n'))));

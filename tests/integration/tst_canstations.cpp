@@ -136,7 +136,7 @@ void TestCanStations::stationHeldOffTheBusIsNotTimedOut()
     for (int s = 1; s <= kStations; ++s)
         drives << new ServoCanDrive(&link, &tracker, s, this);
     // Wait until every station's heartbeat was heard (the keep-alive runs).
-    QTRY_COMPARE_WITH_TIMEOUT(tracker.seenStations().size(), kStations, 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(tracker.seenStations().size(), kStations, 5000 * dd::test::kTimingScale);
 
     QList<int> indices;
     for (int i = 0; i < kReads; ++i)

@@ -404,12 +404,17 @@ private slots:
         whileOpen(
             QStringLiteral("About"), [about] { about->trigger(); },
             [this](QWidget *dialog) {
-                QWidget *focus = dialog->focusWidget() ? dialog->focusWidget() : dialog;
-                const QString p = proveStop([focus] { QTest::keyClick(focus, Qt::Key_Escape); });
+                // About deletes itself once closed, and proveStop() runs the event loop after
+                // the key: everything of it is watched through guards taken before the key.
+                const QPointer<QWidget> guard(dialog);
+                const QPointer<QWidget> focus(dialog->focusWidget() ? dialog->focusWidget() : dialog);
+                const QString p = proveStop([focus] {
+                    QTest::keyPress(focus, Qt::Key_Escape);
+                    if (focus)
+                        QTest::keyRelease(focus, Qt::Key_Escape);
+                });
                 if (!p.isEmpty())
                     m_problems << QStringLiteral("About, Esc: ") + p;
-                // About deletes itself when closed: watch it through a guard.
-                const QPointer<QWidget> guard(dialog);
                 if (!waitUntil([guard] { return !guard || !guard->isVisible(); }, 5000))
                     m_problems << QStringLiteral("About: Esc did not close it");
             });

@@ -2,6 +2,7 @@
 
 #include "cli/clidescribe.h"
 #include "cli/clijournal.h"
+#include "cli/clivalues.h"
 #include "cli/restoredescribe.h"
 #include "core/protocol/familytraits.h"
 
@@ -15,20 +16,6 @@
 #include <QFileInfo>
 
 namespace dd {
-
-namespace {
-
-QJsonValue optionalValue(const std::optional<qint64> &v)
-{
-    return v ? QJsonValue(double(*v)) : QJsonValue();
-}
-
-QString optionalText(const std::optional<qint64> &v)
-{
-    return v ? QString::number(*v) : QStringLiteral("-");
-}
-
-} // namespace
 
 // --- backup -----------------------------------------------------------------------------
 
@@ -134,8 +121,8 @@ QJsonArray FileCommand::diffJson() const
         QJsonObject o{{QStringLiteral("index"), e.index},
                       {QStringLiteral("key"), e.key},
                       {QStringLiteral("status"), diffStatusId(e.status)},
-                      {QStringLiteral("file"), optionalValue(e.fileValue)},
-                      {QStringLiteral("drive"), optionalValue(e.driveValue)}};
+                      {QStringLiteral("file"), CliValues::json(e.fileValue)},
+                      {QStringLiteral("drive"), CliValues::json(e.driveValue)}};
         if (e.communication)
             o.insert(QStringLiteral("communication"), true);
         list.append(o);
@@ -160,8 +147,9 @@ QString FileCommand::diffText(bool onlyDifferences) const
         }
         if (e.communication)
             what += tr(" (communication setting)");
-        rows.append({dict.label(e.index),
-                     tr("file %1  drive %2  %3").arg(optionalText(e.fileValue), optionalText(e.driveValue), what)});
+        rows.append(
+            {dict.label(e.index),
+             tr("file %1  drive %2  %3").arg(CliValues::text(e.fileValue), CliValues::text(e.driveValue), what)});
     }
     return CliDescribe::table(rows);
 }

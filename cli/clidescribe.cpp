@@ -1,6 +1,7 @@
 #include "cli/clidescribe.h"
 
 #include "core/params/parameterdictionary.h"
+#include "core/tuning/stepmetrics.h"
 
 namespace dd {
 
@@ -120,6 +121,19 @@ QString CliDescribe::padRight(const QString &text, int width)
 QString CliDescribe::padLeft(const QString &text, int width)
 {
     return QString(qMax(0, width - displayWidth(text)), QLatin1Char(' ')) + text;
+}
+
+QString CliDescribe::metric(const Metric &m, const QString &key, int msDecimals)
+{
+    if (!m.value)
+        return QStringLiteral("—");
+    const double v = *m.value;
+    if (key == QLatin1String("overshoot"))
+        return QStringLiteral("%1 %").arg(v, 0, 'f', 1);
+    if (key.startsWith(QLatin1String("rise")) || key.startsWith(QLatin1String("settling"))
+        || key == QLatin1String("sampleInterval"))
+        return QStringLiteral("%1 ms").arg(v * 1000.0, 0, 'f', msDecimals);
+    return QString::number(v, 'g', 4);
 }
 
 } // namespace dd

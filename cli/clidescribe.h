@@ -10,6 +10,7 @@
 namespace dd {
 
 class ParameterDictionary;
+struct Metric;
 
 // Text and JSON forms of the Drive API's value types, shared by the commands.
 class CliDescribe
@@ -25,6 +26,8 @@ public:
     // {"index", "key", "name", "unit"[, "value"]}
     static QJsonObject parameter(const ParameterDictionary &dict, int index, std::optional<qint64> value);
     // "  Name      value" rows with the names padded to one width.
+    // "12.3 ms", "9.1 %", "—" for a metric without value; times with `msDecimals` decimals.
+    static QString metric(const Metric &m, const QString &key, int msDecimals = 1);
     static QString table(const QList<QPair<QString, QString>> &rows);
 
     // Terminal columns of `text`: East Asian wide and fullwidth characters (Chinese) take

@@ -107,4 +107,14 @@ std::optional<CliValues::PreTrigger> CliValues::preTrigger(const QString &text, 
     return p;
 }
 
+QJsonValue CliValues::json(const std::optional<qint64> &v)
+{
+    return v ? QJsonValue(double(*v)) : QJsonValue();
+}
+
+QString CliValues::text(const std::optional<qint64> &v)
+{
+    return v ? QString::number(*v) : QStringLiteral("-");
+}
+
 } // namespace dd

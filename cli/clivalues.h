@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QJsonValue>
 #include <QList>
 #include <QString>
 #include <optional>
@@ -31,6 +32,11 @@ public:
         double value = 0.0;
     };
     static std::optional<PreTrigger> preTrigger(const QString &text, double maxSeconds, QString *error);
+
+    // A value that may be missing (a parameter absent from a file or a drive): the number, or
+    // null in JSON and "-" in text.
+    static QJsonValue json(const std::optional<qint64> &v);
+    static QString text(const std::optional<qint64> &v);
 };
 
 } // namespace dd

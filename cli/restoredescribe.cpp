@@ -1,22 +1,10 @@
 #include "cli/restoredescribe.h"
 
+#include "cli/clivalues.h"
+
 #include "core/params/parameterdictionary.h"
 
 namespace dd {
-
-namespace {
-
-QJsonValue optionalValue(const std::optional<qint64> &v)
-{
-    return v ? QJsonValue(double(*v)) : QJsonValue();
-}
-
-QString optionalText(const std::optional<qint64> &v)
-{
-    return v ? QString::number(*v) : QStringLiteral("-");
-}
-
-} // namespace
 
 QJsonArray RestoreDescribe::selected(const ParameterDictionary &dict, const RestoreReport &r,
                                      QList<QPair<QString, QString>> *rows)
@@ -25,13 +13,13 @@ QJsonArray RestoreDescribe::selected(const ParameterDictionary &dict, const Rest
     for (const DiffEntry &e : r.selected) {
         QJsonObject o{{QStringLiteral("index"), e.index},
                       {QStringLiteral("key"), e.key},
-                      {QStringLiteral("from"), optionalValue(e.driveValue)},
-                      {QStringLiteral("to"), optionalValue(e.fileValue)}};
+                      {QStringLiteral("from"), CliValues::json(e.driveValue)},
+                      {QStringLiteral("to"), CliValues::json(e.fileValue)}};
         const QString state = r.dryRun ? tr("would be written") : outcome(r, e.index, &o);
         list.append(o);
         if (rows)
             rows->append({dict.label(e.index),
-                          tr("%1 -> %2  %3").arg(optionalText(e.driveValue), optionalText(e.fileValue), state)});
+                          tr("%1 -> %2  %3").arg(CliValues::text(e.driveValue), CliValues::text(e.fileValue), state)});
     }
     return list;
 }

@@ -17,20 +17,6 @@
 namespace dd {
 
 namespace {
-// "12.3 ms", "9.1 %", "—" for a metric without value.
-QString shown(const Metric &m, const QString &key)
-{
-    if (!m.value)
-        return QStringLiteral("—");
-    const double v = *m.value;
-    if (key == QLatin1String("overshoot"))
-        return QStringLiteral("%1 %").arg(v, 0, 'f', 1);
-    if (key.startsWith(QLatin1String("rise")) || key.startsWith(QLatin1String("settling"))
-        || key == QLatin1String("sampleInterval"))
-        return QStringLiteral("%1 ms").arg(v * 1000.0, 0, 'f', 1);
-    return QString::number(v, 'g', 4);
-}
-
 // The metrics a parameter change is judged by, as the example reads.
 const QStringList &comparedKeys()
 {
@@ -66,7 +52,7 @@ void RunsCommand::start()
     for (const QString &k : StepMetrics::keys()) {
         QString row = QStringLiteral("%1").arg(k, -20);
         for (const TuningRun &r : std::as_const(m_runs))
-            row += QStringLiteral("%1").arg(shown(r.metrics.byKey(k), k), -20);
+            row += QStringLiteral("%1").arg(CliDescribe::metric(r.metrics.byKey(k), k), -20);
         lines << row;
     }
     for (const TuningRun &r : std::as_const(m_runs)) {
@@ -113,7 +99,9 @@ void RunsCommand::start()
         }
         QStringList effects;
         for (const QString &k : comparedKeys())
-            effects << QStringLiteral("%1 %2 → %3").arg(k, shown(a.metrics.byKey(k), k), shown(b.metrics.byKey(k), k));
+            effects << QStringLiteral("%1 %2 → %3")
+                           .arg(k, CliDescribe::metric(a.metrics.byKey(k), k),
+                                CliDescribe::metric(b.metrics.byKey(k), k));
         const QString what = changes.isEmpty() ? tr("no tuning parameter differs") : changes.join(QStringLiteral(", "));
         lines << QStringLiteral("%1 → %2: %3: %4").arg(a.label, b.label, what, effects.join(QStringLiteral(", ")));
         difference.insert(QStringLiteral("parameters"), params);

@@ -24,11 +24,6 @@ bool isDriveSpec(const QString &text)
     return text == QLatin1String("drive") || text.startsWith(QLatin1String("drive:"));
 }
 
-QJsonValue optionalValue(const std::optional<qint64> &v)
-{
-    return v ? QJsonValue(double(*v)) : QJsonValue();
-}
-
 } // namespace
 
 bool SourceDiffCommand::namesADrive(const QStringList &arguments)
@@ -192,8 +187,8 @@ void SourceDiffCommand::compare()
         QJsonObject o{{QStringLiteral("index"), row.index},
                       {QStringLiteral("key"), row.key},
                       {QStringLiteral("status"), status},
-                      {QStringLiteral("a"), optionalValue(va)},
-                      {QStringLiteral("b"), optionalValue(vb)}};
+                      {QStringLiteral("a"), CliValues::json(va)},
+                      {QStringLiteral("b"), CliValues::json(vb)}};
         if (row.communication)
             o.insert(QStringLiteral("communication"), true);
         list.append(o);

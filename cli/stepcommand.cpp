@@ -1,5 +1,7 @@
 #include "cli/stepcommand.h"
 
+#include "cli/clidescribe.h"
+
 #include "cli/clivalues.h"
 
 #include "core/drive/drive.h"
@@ -13,20 +15,6 @@
 namespace dd {
 
 namespace {
-// "12.3 ms", "9.1 %", "—" for a metric without value (as `runs` shows them).
-QString shown(const Metric &m, const QString &key)
-{
-    if (!m.value)
-        return QStringLiteral("—");
-    const double v = *m.value;
-    if (key == QLatin1String("overshoot"))
-        return QStringLiteral("%1 %").arg(v, 0, 'f', 1);
-    if (key.startsWith(QLatin1String("rise")) || key.startsWith(QLatin1String("settling"))
-        || key == QLatin1String("sampleInterval"))
-        return QStringLiteral("%1 ms").arg(v * 1000.0, 0, 'f', 2);
-    return QString::number(v, 'g', 4);
-}
-
 // Default maximum duration when --max-duration is not given: the commanded time and 2 s to
 // stop and settle; a position step 10 s.
 constexpr double StopAllowanceS = 2.0;
@@ -292,9 +280,9 @@ void StepCommand::onFinished(const StepResult &r)
                      .arg(run.metricsChannel);
         for (const QString &k : StepMetrics::keys()) {
             const Metric &m = run.metrics.byKey(k);
-            QString line = QStringLiteral("  %1 %2").arg(k, -20).arg(shown(m, k));
+            QString line = QStringLiteral("  %1 %2").arg(k, -20).arg(CliDescribe::metric(m, k, 2));
             if (m.value && m.resolution > 0)
-                line += QStringLiteral("  (± %1)").arg(shown(Metric{m.resolution, 0.0, {}}, k));
+                line += QStringLiteral("  (± %1)").arg(CliDescribe::metric(Metric{m.resolution, 0.0, {}}, k, 2));
             else if (!m.value)
                 line += QStringLiteral("  ") + m.reason;
             lines << line;

@@ -1,5 +1,6 @@
 #include "core/link/modbuslink.h"
 
+#include "core/common/hextext.h"
 #include "core/link/modbusreplymatcher.h"
 #include "core/link/seriallink.h"
 #include "core/link/wiretime.h"
@@ -9,11 +10,6 @@
 namespace dd {
 
 namespace {
-QString hexByte(int v)
-{
-    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
-}
-
 qsizetype requestBytes(const modbusrtu::Request &pdu)
 {
     return pdu.function == modbusrtu::WriteMultipleRegisters ? 9 + 2 * pdu.values.size() : 8;
@@ -161,7 +157,7 @@ LinkReply *ModbusLink::send(const ModbusRequest &request)
         outer->finishWithError({ErrorCode::InvalidArgument,
                                 tr("Invalid Modbus request (function %1, address %2, %3 registers): nothing "
                                    "was sent.")
-                                    .arg(hexByte(fc))
+                                    .arg(hexText(fc, 2))
                                     .arg(pdu.address)
                                     .arg(fc == modbusrtu::ReadHoldingRegisters ? pdu.count : pdu.values.size())});
         return outer;
@@ -237,15 +233,15 @@ void ModbusLink::finishFrom(LinkReply *outer, LinkReply *inner, const SerialRequ
         }
         QString text = tr("The drive at address %1 rejected the request (Modbus exception %2: %3).")
                            .arg(pdu.address)
-                           .arg(hexByte(code))
+                           .arg(hexText(code, 2))
                            .arg(modbusrtu::exceptionCodeName(quint8(code)));
         if (quint8(frame.at(0)) != pdu.address)
             text = tr("The drive at address %1 rejected the request (Modbus exception %2: %3; the reply "
                       "carried address byte %4).")
                        .arg(pdu.address)
-                       .arg(hexByte(code))
+                       .arg(hexText(code, 2))
                        .arg(modbusrtu::exceptionCodeName(quint8(code)))
-                       .arg(hexByte(quint8(frame.at(0))));
+                       .arg(hexText(quint8(frame.at(0)), 2));
         outer->finishWithError({ErrorCode::DriveException, text, code});
         return;
     }

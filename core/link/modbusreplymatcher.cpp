@@ -1,14 +1,11 @@
 #include "core/link/modbusreplymatcher.h"
 
+#include "core/common/hextext.h"
 #include "core/protocol/modbus/modbusrtuparser.h"
 
 namespace dd {
 
 namespace {
-QString hexByte(int v)
-{
-    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
-}
 } // namespace
 
 ModbusReplyMatcher::ModbusReplyMatcher(const modbusrtu::Request &request, QString portName)
@@ -104,7 +101,7 @@ QString ModbusReplyMatcher::describeTimeout(int timeoutMs, const QByteArray &unm
         text += QLatin1Char(' ')
             + tr("A frame with function %1 came from that address instead, which does not answer this "
                  "request (function %2).")
-                  .arg(hexByte(quint8(stray.at(1))), hexByte(m_request.function));
+                  .arg(hexText(quint8(stray.at(1)), 2), hexText(m_request.function, 2));
     else
         text += QLatin1Char(' ')
             + tr("A frame from address %1 arrived instead: do two drives share an address, or does "

@@ -11,7 +11,7 @@ namespace dd {
 
 namespace {
 
-QJsonValue optionalNumber(const std::optional<qint64> &v)
+QJsonValue jsonNumber(const std::optional<qint64> &v)
 {
     return v ? QJsonValue(double(*v)) : QJsonValue(QJsonValue::Null);
 }
@@ -94,8 +94,8 @@ QJsonObject driveJson(const DriveRecord &d)
                                       {QStringLiteral("key"), p.key},
                                       {QStringLiteral("name"), p.name},
                                       {QStringLiteral("unit"), p.unit},
-                                      {QStringLiteral("value"), optionalNumber(p.value)},
-                                      {QStringLiteral("default"), optionalNumber(p.defaultValue)},
+                                      {QStringLiteral("value"), jsonNumber(p.value)},
+                                      {QStringLiteral("default"), jsonNumber(p.defaultValue)},
                                       {QStringLiteral("differs"), p.differsFromDefault()}});
     QJsonArray alarms;
     for (const RecordAlarm &a : d.alarms)

@@ -33,7 +33,7 @@ QString cell(const QString &text, const char *attributes = nullptr)
                       : QStringLiteral("<td>%1</td>").arg(text);
 }
 
-QString optionalNumber(const std::optional<qint64> &v)
+QString numberText(const std::optional<qint64> &v)
 {
     return v ? QString::number(*v) : QStringLiteral("—");
 }
@@ -232,8 +232,8 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
         QStringList rows;
         for (const RecordParameter &p : changed)
             rows << QStringLiteral("<tr>") + cell(QString::number(p.index)) + cell(esc(p.key)) + cell(esc(p.name))
-                    + cell(QStringLiteral("<b>%1</b>").arg(optionalNumber(p.value)))
-                    + cell(optionalNumber(p.defaultValue)) + cell(esc(p.unit)) + QStringLiteral("</tr>");
+                    + cell(QStringLiteral("<b>%1</b>").arg(numberText(p.value))) + cell(numberText(p.defaultValue))
+                    + cell(esc(p.unit)) + QStringLiteral("</tr>");
         html += chunkedTable({tr("Index"), tr("Parameter"), tr("Name"), tr("Value"), tr("Default"), tr("Unit")},
                              {8, 12, 42, 13, 13, 12}, rows);
     }
@@ -410,7 +410,7 @@ QString RecordRenderer::appendixSection() const
         rows.reserve(d.parameters.size());
         for (const RecordParameter &p : d.parameters)
             rows << QStringLiteral("<tr>") + cell(QString::number(p.index)) + cell(esc(p.key)) + cell(esc(p.name))
-                    + cell(optionalNumber(p.value)) + cell(optionalNumber(p.defaultValue)) + cell(esc(p.unit))
+                    + cell(numberText(p.value)) + cell(numberText(p.defaultValue)) + cell(esc(p.unit))
                     + cell(p.differsFromDefault() ? QStringLiteral("<b>*</b>") : QString()) + QStringLiteral("</tr>");
         html += chunkedTable(
             {tr("Index"), tr("Parameter"), tr("Name"), tr("Value"), tr("Default"), tr("Unit"), tr("Changed")},

@@ -1,4 +1,5 @@
 #include "core/tuning/spectrum.h"
+#include "core/common/mathconstants.h"
 
 #include <kiss_fftr.h>
 
@@ -9,7 +10,6 @@
 namespace dd {
 
 namespace {
-constexpr double Pi = 3.14159265358979323846;
 }
 
 Spectrum Spectrum::compute(const CaptureData &capture, const QString &channel, int peakCount, QString *error,

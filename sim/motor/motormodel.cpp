@@ -1,4 +1,5 @@
 #include "sim/motor/motormodel.h"
+#include "core/common/mathconstants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +7,7 @@
 namespace dd {
 
 namespace {
-constexpr double Pi = 3.14159265358979323846;
-constexpr double Dt = MotorModel::StepSeconds;
+constexpr double ModelDt = MotorModel::StepSeconds;
 
 // Noise channels used by the model itself.
 enum NoiseChannel { CurrentNoise = 0, VoltageNoise = 1, ErrorNoise = 2, DisturbanceNoise = 3 };
@@ -21,7 +21,7 @@ MotorModel::Config sanitized(MotorModel::Config c)
     c.acceleration = std::max(std::abs(c.acceleration), 1.0);
     c.deceleration = std::max(std::abs(c.deceleration), 1.0);
     c.inertia = std::max(c.inertia, 1e-9);
-    c.thermalTimeConstant = std::max(c.thermalTimeConstant, Dt);
+    c.thermalTimeConstant = std::max(c.thermalTimeConstant, ModelDt);
     return c;
 }
 
@@ -81,7 +81,7 @@ void MotorModel::advanceTo(double seconds)
 {
     if (!std::isfinite(seconds))
         return;
-    const qint64 target = static_cast<qint64>(std::floor(seconds / Dt + 1e-6));
+    const qint64 target = static_cast<qint64>(std::floor(seconds / ModelDt + 1e-6));
     if (target <= m_step)
         return;
     qint64 remaining = target - m_step;
@@ -99,7 +99,7 @@ void MotorModel::fastForwardIdle(qint64 steps)
     // exponential: n steps collapse into one.
     m_accel = 0.0;
     updateOutputs(); // the holding current (no acceleration term any more)
-    heat(static_cast<double>(steps) * Dt);
+    heat(static_cast<double>(steps) * ModelDt);
     m_step += steps;
 }
 
@@ -116,7 +116,7 @@ void MotorModel::step()
         const double omega = std::abs(v0) / toCounts;
         const double brakeTorque = m_config.coulombFriction + std::abs(m_config.loadTorque)
             + m_config.viscousFriction * omega;
-        const double dv = brakeTorque / m_config.inertia * toCounts * Dt;
+        const double dv = brakeTorque / m_config.inertia * toCounts * ModelDt;
         v1 = std::abs(v0) <= dv ? 0.0 : v0 - sgn(v0) * dv;
     } else {
         switch (m_mode) {
@@ -135,17 +135,17 @@ void MotorModel::step()
     if (finished) {
         m_pos = m_targetPos;
         m_speed = 0.0;
-        m_accel = -v0 / Dt;
+        m_accel = -v0 / ModelDt;
         finishMove();
     } else {
-        m_pos += 0.5 * (v0 + v1) * Dt;
+        m_pos += 0.5 * (v0 + v1) * ModelDt;
         m_speed = v1;
-        m_accel = (v1 - v0) / Dt;
+        m_accel = (v1 - v0) / ModelDt;
     }
     if (loopActive())
         stepLoop(p0, v0);
     updateOutputs();
-    heat(Dt);
+    heat(ModelDt);
 }
 
 // The shaft follows the reference the profile just moved through (linear in between).
@@ -161,7 +161,7 @@ void MotorModel::stepLoop(double pos0, double v0)
         pos0 = m_pos;
     }
     m_speedControlled = speedControl;
-    const double accel = (m_speed - v0) / Dt;
+    const double accel = (m_speed - v0) / ModelDt;
     for (int i = 1; i <= LoopSubsteps; ++i) {
         const double f = double(i) / LoopSubsteps;
         const double noise = noiseAt((m_step - 1) * LoopSubsteps + i, DisturbanceNoise);
@@ -195,10 +195,10 @@ double MotorModel::rampToward(double v, double target) const
     const bool shrinking = v != 0.0 && (target == 0.0 || (v > 0.0) != (target > 0.0) || std::abs(target) < std::abs(v));
     if (shrinking) {
         const double goal = (target != 0.0 && (v > 0.0) == (target > 0.0)) ? target : 0.0;
-        const double dv = m_config.deceleration * Dt;
+        const double dv = m_config.deceleration * ModelDt;
         return std::abs(v - goal) <= dv ? goal : v - sgn(v) * dv;
     }
-    const double dv = m_config.acceleration * Dt;
+    const double dv = m_config.acceleration * ModelDt;
     return std::abs(target - v) <= dv ? target : v + sgn(target - v) * dv;
 }
 
@@ -216,7 +216,7 @@ double MotorModel::positionStep(double v0, bool *finished)
 
     if (v0 != 0.0 && sgn(v0) != dir) {
         // Moving away from the target (overshoot after a target or limit change): brake.
-        const double dv = d * Dt;
+        const double dv = d * ModelDt;
         if (dir == 0.0 && vAbs <= dv) {
             *finished = true;
             return 0.0;
@@ -229,16 +229,16 @@ double MotorModel::positionStep(double v0, bool *finished)
         *finished = true;
         return 0.0;
     }
-    if (vAbs <= d * Dt && 0.5 * vAbs * Dt >= rAbs) {
+    if (vAbs <= d * ModelDt && 0.5 * vAbs * ModelDt >= rAbs) {
         *finished = true; // stopping within this step reaches the target
         return 0.0;
     }
 
     const double vMax = std::min(m_moveSpeed, m_config.maxSpeed);
-    const double inner = d * d * Dt * Dt + 4.0 * (2.0 * d * rAbs - d * Dt * vAbs);
-    const double brake = inner > 0.0 ? 0.5 * (-d * Dt + std::sqrt(inner)) : 0.0;
-    double vNew = std::min({vAbs + a * Dt, vMax, brake});
-    vNew = std::max({vNew, vAbs - d * Dt, 0.0});
+    const double inner = d * d * ModelDt * ModelDt + 4.0 * (2.0 * d * rAbs - d * ModelDt * vAbs);
+    const double brake = inner > 0.0 ? 0.5 * (-d * ModelDt + std::sqrt(inner)) : 0.0;
+    double vNew = std::min({vAbs + a * ModelDt, vMax, brake});
+    vNew = std::max({vNew, vAbs - d * ModelDt, 0.0});
     return dir * vNew;
 }
 

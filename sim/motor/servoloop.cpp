@@ -1,4 +1,5 @@
 #include "sim/motor/servoloop.h"
+#include "core/common/mathconstants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +7,8 @@
 namespace dd {
 
 namespace {
-constexpr double Pi = 3.14159265358979323846;
-constexpr double Dt = ServoLoop::StepSeconds;
-constexpr double ControlDt = Dt * ServoLoop::ControlDivider;
+constexpr double LoopDt = ServoLoop::StepSeconds;
+constexpr double ControlDt = LoopDt * ServoLoop::ControlDivider;
 constexpr double FrictionSmoothing = 2.0; // rad/s: Coulomb friction is tanh(ω / this)
 } // namespace
 
@@ -92,7 +92,7 @@ void ServoLoop::step(double refPosition, double refSpeed, double noise, bool pos
     ++m_substep;
 
     if (m_plant.torqueLagSeconds > 0.0)
-        m_torque += (m_applied - m_torque) * (1.0 - std::exp(-Dt / m_plant.torqueLagSeconds));
+        m_torque += (m_applied - m_torque) * (1.0 - std::exp(-LoopDt / m_plant.torqueLagSeconds));
     else
         m_torque = m_applied;
 
@@ -107,11 +107,11 @@ void ServoLoop::step(double refPosition, double refSpeed, double noise, bool pos
     const double inertia1 = m_stiffness > 0.0 ? m_plant.inertia : m_plant.inertia + m_plant.loadInertia;
     // The disturbance acts on the load when there is one (a process torque), else on the shaft.
     m_acc1 = (m_torque - friction - m_plant.loadTorque - coupling + (m_stiffness > 0.0 ? 0.0 : disturbance)) / inertia1;
-    m_vel1 += m_acc1 * Dt;
-    m_pos1 += m_vel1 * Dt;
+    m_vel1 += m_acc1 * LoopDt;
+    m_pos1 += m_vel1 * LoopDt;
     if (m_stiffness > 0.0) {
-        m_vel2 += (coupling + disturbance) / m_plant.loadInertia * Dt;
-        m_pos2 += m_vel2 * Dt;
+        m_vel2 += (coupling + disturbance) / m_plant.loadInertia * LoopDt;
+        m_pos2 += m_vel2 * LoopDt;
     } else {
         m_vel2 = m_vel1;
         m_pos2 = m_pos1;

@@ -1,5 +1,6 @@
 #include "sim/servomodbus/simservomodbusdrive.h"
 
+#include "core/common/mathconstants.h"
 #include "core/link/wiretime.h"
 #include "core/protocol/modbus/crc16.h"
 #include "sim/bus/simlogging.h"
@@ -12,7 +13,6 @@ namespace dd {
 
 namespace {
 constexpr int PolePairs = 4; // electrical angle for the phase currents and UVW
-constexpr double Pi = 3.14159265358979323846;
 constexpr double DemoRpm = 1000.0;
 
 quint16 s16(double v)

@@ -56,7 +56,7 @@ using namespace dd;
 namespace {
 
 template <typename Cond>
-bool waitUntil(Cond cond, int timeoutMs)
+bool pollUntil(Cond cond, int timeoutMs)
 {
     QDeadlineTimer deadline(timeoutMs);
     while (!cond() && !deadline.hasExpired())
@@ -117,7 +117,7 @@ class TestStopEverywhere : public QObject
                 [&started](const DriveResult &r) { started += r.ok() ? 1 : 0; });
         }
         DriveDirectory *dir = w().directory();
-        return waitUntil(
+        return pollUntil(
             [&] {
                 return started == 2 && dir->info(m_can, DemoBench::Address).status.running
                     && dir->info(m_shuoke, DemoBench::Address).status.running;
@@ -186,7 +186,7 @@ class TestStopEverywhere : public QObject
         });
         poll.start();
         open();
-        if (!waitUntil([&] { return done; }, 30000))
+        if (!pollUntil([&] { return done; }, 30000))
             m_problems << what + QStringLiteral(": the check did not finish");
     }
 
@@ -214,7 +214,7 @@ class TestStopEverywhere : public QObject
             QTest::mouseClick(button, Qt::LeftButton);
             if (triggered.count() != 1)
                 m_problems << what + QStringLiteral(": its STOP button did not trigger STOP");
-            if (!waitUntil([this] { return !w().stopReporter()->isRunning(); }, 10000))
+            if (!pollUntil([this] { return !w().stopReporter()->isRunning(); }, 10000))
                 m_problems << what + QStringLiteral(": the STOP report of the button never finished");
         };
     }
@@ -258,7 +258,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w()));
         DriveDirectory *dir = w().directory();
         QVERIFY(w().startDemo());
-        QVERIFY(waitUntil(
+        QVERIFY(pollUntil(
             [&] {
                 int n = 0;
                 for (int id : dir->connections())
@@ -415,7 +415,7 @@ private slots:
                 });
                 if (!p.isEmpty())
                     m_problems << QStringLiteral("About, Esc: ") + p;
-                if (!waitUntil([guard] { return !guard || !guard->isVisible(); }, 5000))
+                if (!pollUntil([guard] { return !guard || !guard->isVisible(); }, 5000))
                     m_problems << QStringLiteral("About: Esc did not close it");
             });
         QVERIFY2(m_problems.isEmpty(), qPrintable(m_problems.join(QLatin1Char('\n'))));

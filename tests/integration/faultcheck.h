@@ -22,14 +22,7 @@ namespace dd::faultcheck {
 // Waits for a reply; false if it did not finish within `ms` (the operation hangs).
 using test::waitFinished;
 
-inline bool waitUntil(const std::function<bool()> &cond, int ms)
-{
-    QElapsedTimer t;
-    t.start();
-    while (!cond() && t.elapsed() < ms)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    return cond();
-}
+using test::waitUntil;
 
 inline QByteArray fileBytes(const QString &path)
 {

@@ -24,7 +24,7 @@ namespace sc = dd::servocan;
 
 namespace {
 
-enum class Misbehaviour { None, OtherStation, OtherType, OtherIndex, Short, Extended, Empty, OtherCommand };
+enum class CanMisbehaviour { None, OtherStation, OtherType, OtherIndex, Short, Extended, Empty, OtherCommand };
 
 class MisbehavingCanDrive : public SimCanDevice
 {
@@ -33,7 +33,7 @@ public:
         : m_drive(station)
     {
     }
-    Misbehaviour mode = Misbehaviour::None;
+    CanMisbehaviour mode = CanMisbehaviour::None;
     quint64 rewritten = 0;
     SimServoCanDrive &drive() { return m_drive; }
 
@@ -41,7 +41,7 @@ public:
     {
         QList<CanFrameData> out;
         for (CanFrameData f : m_drive.onCanFrame(frame, nowUs)) {
-            if (mode != Misbehaviour::None && f.data.size() == 8 && quint8(f.data.at(1)) == 0x12) {
+            if (mode != CanMisbehaviour::None && f.data.size() == 8 && quint8(f.data.at(1)) == 0x12) {
                 ++rewritten;
                 rewrite(f);
             }
@@ -57,16 +57,16 @@ private:
     void rewrite(CanFrameData &f) const
     {
         switch (mode) {
-        case Misbehaviour::None: break;
-        case Misbehaviour::OtherStation: // a second drive with the same ID, another station byte
+        case CanMisbehaviour::None: break;
+        case CanMisbehaviour::OtherStation: // a second drive with the same ID, another station byte
             f.data[0] = char(quint8(f.data.at(0)) + 1);
             break;
-        case Misbehaviour::OtherType: f.data[2] = char(0xFE); break;
-        case Misbehaviour::OtherIndex: f.data[3] = char(quint8(f.data.at(3)) ^ 0x80); break;
-        case Misbehaviour::Short: f.data.chop(1); break;
-        case Misbehaviour::Extended: f.extended = true; break;
-        case Misbehaviour::Empty: f.data.clear(); break;
-        case Misbehaviour::OtherCommand: f.data[1] = char(0x15); break;
+        case CanMisbehaviour::OtherType: f.data[2] = char(0xFE); break;
+        case CanMisbehaviour::OtherIndex: f.data[3] = char(quint8(f.data.at(3)) ^ 0x80); break;
+        case CanMisbehaviour::Short: f.data.chop(1); break;
+        case CanMisbehaviour::Extended: f.extended = true; break;
+        case CanMisbehaviour::Empty: f.data.clear(); break;
+        case CanMisbehaviour::OtherCommand: f.data[1] = char(0x15); break;
         }
     }
     SimServoCanDrive m_drive;
@@ -74,7 +74,7 @@ private:
 
 } // namespace
 
-Q_DECLARE_METATYPE(Misbehaviour)
+Q_DECLARE_METATYPE(CanMisbehaviour)
 
 class TestFaultFramesCan : public QObject
 {
@@ -119,19 +119,19 @@ void TestFaultFramesCan::cleanupTestCase()
 
 void TestFaultFramesCan::badReplies_data()
 {
-    QTest::addColumn<Misbehaviour>("mode");
-    QTest::newRow("other station") << Misbehaviour::OtherStation;
-    QTest::newRow("other read type") << Misbehaviour::OtherType;
-    QTest::newRow("other index") << Misbehaviour::OtherIndex;
-    QTest::newRow("7 bytes") << Misbehaviour::Short;
-    QTest::newRow("extended id") << Misbehaviour::Extended;
-    QTest::newRow("no data") << Misbehaviour::Empty;
-    QTest::newRow("other command") << Misbehaviour::OtherCommand;
+    QTest::addColumn<CanMisbehaviour>("mode");
+    QTest::newRow("other station") << CanMisbehaviour::OtherStation;
+    QTest::newRow("other read type") << CanMisbehaviour::OtherType;
+    QTest::newRow("other index") << CanMisbehaviour::OtherIndex;
+    QTest::newRow("7 bytes") << CanMisbehaviour::Short;
+    QTest::newRow("extended id") << CanMisbehaviour::Extended;
+    QTest::newRow("no data") << CanMisbehaviour::Empty;
+    QTest::newRow("other command") << CanMisbehaviour::OtherCommand;
 }
 
 void TestFaultFramesCan::badReplies()
 {
-    QFETCH(Misbehaviour, mode);
+    QFETCH(CanMisbehaviour, mode);
     ServoCanDrive *d = m_backend->servoDrive(3);
     const auto before = m_dev->drive().parameters();
     m_dev->mode = mode;
@@ -158,7 +158,7 @@ void TestFaultFramesCan::badReplies()
     QCOMPARE(errorCodeName(w->error().code), errorCodeName(ErrorCode::Timeout));
     QVERIFY2(w->error().message.startsWith(QStringLiteral("P20: ")), qPrintable(w->error().message));
     // Recovery.
-    m_dev->mode = Misbehaviour::None;
+    m_dev->mode = CanMisbehaviour::None;
     r = d->readParameters({10, 11, 12});
     QVERIFY(waitFinished(r, 3000));
     QVERIFY2(r->ok(), qPrintable(r->error().message));

@@ -29,14 +29,7 @@ namespace sc = dd::servocan;
 
 namespace {
 
-bool waitUntil(const std::function<bool()> &cond, int ms)
-{
-    QElapsedTimer t;
-    t.start();
-    while (!cond() && t.elapsed() < ms)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    return cond();
-}
+using dd::test::waitUntil;
 
 bool waitFinished(DriveReply *r, int ms = 3000)
 {

@@ -29,7 +29,7 @@ using namespace dd::faultcheck;
 
 namespace {
 
-struct Bench
+struct FaultBench
 {
     PtyEndpoint *pty = nullptr;
     std::unique_ptr<SimSerialBus> bus;
@@ -58,7 +58,7 @@ struct Bench
         }
         return true;
     }
-    ~Bench()
+    ~FaultBench()
     {
         backend.reset();
         bus.reset();
@@ -77,7 +77,7 @@ void scramble(SimServoModbusDrive *sim, std::mt19937 &rng)
 
 // A backup of the drive (taken while all is well) with ten parameters changed, apart from
 // each other so that each is its own 0x10 request; `old` gets the drive's values.
-BackupFile restoreFile(Bench &b, QMap<int, qint64> *old)
+BackupFile restoreFile(FaultBench &b, QMap<int, qint64> *old)
 {
     const BackupOutcome base = backupToFile(b.drive(), QDir::temp().filePath(QStringLiteral("dd-fault-base.json")));
     QFile::remove(QDir::temp().filePath(QStringLiteral("dd-fault-base.json")));
@@ -134,7 +134,7 @@ void TestFaultServoModbus::backupUnderFaults()
     QFETCH(QString, faults);
     QFETCH(int, rounds);
     QFETCH(int, minComplete);
-    Bench b;
+    FaultBench b;
     QVERIFY(b.open(30));
     b.sim->faults().setSettings(*FaultSettings::parse(faults));
     ModbusLink *link = b.backend->link();
@@ -186,7 +186,7 @@ void TestFaultServoModbus::backupUnderFaults()
 
 void TestFaultServoModbus::silentMidBackup()
 {
-    Bench b;
+    FaultBench b;
     // An allowance a loaded machine does not exceed by itself: the exact outcome below needs
     // every reply before the silence in time (at 30 ms, replies came late without any fault
     // while other builds ran, and a late acknowledgement made a write "not written").
@@ -211,7 +211,7 @@ void TestFaultServoModbus::silentMidBackup()
 
 void TestFaultServoModbus::silentMidRestore()
 {
-    Bench b;
+    FaultBench b;
     // An allowance a loaded machine does not exceed by itself: the exact outcome below needs
     // every reply before the silence in time (at 30 ms, replies came late without any fault
     // while other builds ran, and a late acknowledgement made a write "not written").
@@ -251,7 +251,7 @@ void TestFaultServoModbus::silentMidRestore()
 
 void TestFaultServoModbus::adapterGoneMidBackup()
 {
-    Bench b;
+    FaultBench b;
     QVERIFY(b.open());
     const QString path = m_dir.filePath(QStringLiteral("unplugged.json"));
     const QByteArray old = "{\"an older backup\": true}\n";
@@ -284,7 +284,7 @@ void TestFaultServoModbus::adapterGoneMidBackup()
 
 void TestFaultServoModbus::adapterGoneMidRestore()
 {
-    Bench b;
+    FaultBench b;
     QVERIFY(b.open());
     QMap<int, qint64> old;
     const BackupFile file = restoreFile(b, &old);

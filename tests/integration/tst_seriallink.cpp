@@ -41,7 +41,7 @@ QByteArray reply(char first, quint8 value)
     return r;
 }
 
-bool waitFinished(LinkReply *r, int ms = 3000)
+bool waitSerial(LinkReply *r, int ms = 3000)
 {
     if (r->isFinished())
         return true;
@@ -187,7 +187,7 @@ private:
             replies << link.send(q);
         }
         for (LinkReply *r : replies) {
-            QVERIFY(waitFinished(r));
+            QVERIFY(waitSerial(r));
             QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
         }
         QCOMPARE(commandAt->size(), count);
@@ -226,7 +226,7 @@ private slots:
         q.bytes = "Q1";
         q.matcher = replyOf('Q');
         LinkReply *r = link.send(q);
-        QVERIFY(waitFinished(r));
+        QVERIFY(waitSerial(r));
         QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
         QCOMPARE(r->frame(), reply('Q', 0x22));
     }
@@ -262,7 +262,7 @@ private slots:
             q.bytes = QByteArray("Q") + char(i & 0x7F);
             q.matcher = replyOf('Q');
             LinkReply *r = link.send(q);
-            QVERIFY(waitFinished(r));
+            QVERIFY(waitSerial(r));
             QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
             QCOMPARE(r->frame(), reply('Q', quint8(i & 0x7F)));
             ++answered;
@@ -306,7 +306,7 @@ private slots:
         QElapsedTimer clock;
         clock.start();
         LinkReply *r = link.send(q);
-        QVERIFY(waitFinished(r));
+        QVERIFY(waitSerial(r));
         const qint64 tookMs = clock.elapsed();
         QCOMPARE(r->error().code, ErrorCode::Timeout);
         // What to do about it; not "raise the timeout" (bytes did come after it, but none answered).
@@ -341,7 +341,7 @@ private slots:
         q.bytes = "Q1";
         q.matcher = replyOf('Q');
         LinkReply *r = link.send(q);
-        QVERIFY(waitFinished(r));
+        QVERIFY(waitSerial(r));
         QCOMPARE(r->error().code, ErrorCode::LinkClosed);
         QTRY_COMPARE(closed.count(), 1);
         QVERIFY(!link.isOpen());
@@ -451,7 +451,7 @@ private slots:
             q.matcher = replyOf('M');
             q.peer = 7;
             LinkReply *r = link.send(q);
-            QVERIFY(waitFinished(r));
+            QVERIFY(waitSerial(r));
             QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
             if (link.samePeerGapDropped())
                 --more;
@@ -504,7 +504,7 @@ private slots:
             replies << link.send(q);
         }
         for (LinkReply *r : replies) {
-            QVERIFY(waitFinished(r));
+            QVERIFY(waitSerial(r));
             QVERIFY2(!r->error().isError(), qPrintable(r->error().message));
         }
         QCOMPARE(gaps.size(), 9);

@@ -26,7 +26,7 @@ using namespace dd;
 
 namespace {
 
-struct Bench
+struct ChecksumBench
 {
     SimSerialBus *bus = nullptr;
     PtyEndpoint *pty = nullptr;
@@ -34,7 +34,7 @@ struct Bench
     TrafficTap tap;
     std::unique_ptr<ServoModbusBackend> backend;
 
-    explicit Bench(const QList<int> &addresses)
+    explicit ChecksumBench(const QList<int> &addresses)
     {
         pty = new PtyEndpoint;
         if (pty->open().isError())
@@ -48,7 +48,7 @@ struct Bench
             drives << static_cast<SimServoModbusDrive *>(bus->addDevice(std::make_unique<SimServoModbusDrive>(c)));
         }
     }
-    ~Bench()
+    ~ChecksumBench()
     {
         backend.reset();
         delete bus;
@@ -95,7 +95,7 @@ class TestServoModbusChecksumReply : public QObject
 private slots:
     void damagedReadIsAskedAgain()
     {
-        Bench b({5});
+        ChecksumBench b({5});
         QVERIFY(b.open());
         b.drives[0]->damageIncomingRequests(1);
         Error e;
@@ -108,7 +108,7 @@ private slots:
 
     void damagedReadWithoutRetriesReportsTheException()
     {
-        Bench b({5});
+        ChecksumBench b({5});
         QVERIFY(b.open(-1, 0));
         b.drives[0]->damageIncomingRequests(1);
         Error e;
@@ -121,7 +121,7 @@ private slots:
 
     void damagedProbeFindsTheProbedDrive()
     {
-        Bench b({5});
+        ChecksumBench b({5});
         QVERIFY(b.open());
         b.drives[0]->damageIncomingRequests(1);
         ScanOptions o;
@@ -140,7 +140,7 @@ private slots:
 
     void lateErrorReplyIsNotDriveOnesAnswer()
     {
-        Bench b({1, 5});
+        ChecksumBench b({1, 5});
         QVERIFY(b.open(30, 0));
         // Drive 5's reply comes 60 ms late: after the 30 ms the host waits.
         b.drives[0]->setParameter(5, 4321);

@@ -10,6 +10,8 @@
 //    wire; the motor decelerates; jogLeaseExpired and jogEnded reach the GUI afterwards.
 #include <QtTest>
 
+#include "tests/support/replywait.h"
+
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
 #include "core/protocol/servocan/servocan.h"
@@ -125,14 +127,7 @@ signals:
     void done();
 };
 
-bool waitUntil(const std::function<bool()> &cond, int timeoutMs)
-{
-    QElapsedTimer t;
-    t.start();
-    while (!cond() && t.elapsed() < timeoutMs)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    return cond();
-}
+using dd::test::waitUntil;
 
 } // namespace
 

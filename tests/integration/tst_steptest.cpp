@@ -24,14 +24,7 @@ using namespace dd;
 
 namespace {
 
-bool waitUntil(const std::function<bool()> &cond, int ms)
-{
-    QElapsedTimer t;
-    t.start();
-    while (!cond() && t.elapsed() < ms)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    return cond();
-}
+using dd::test::waitUntil;
 
 StepLimits limits(double maxSpeed = 1000, qint64 maxTravel = 100000, double maxDuration = 3)
 {

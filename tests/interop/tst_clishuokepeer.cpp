@@ -1,4 +1,4 @@
-// Interop: drivedesk-cli against a Shuoke drive that is not our simulator — a small Python
+// Interop: drivedesk-cli against a Shuoke drive that is not our simulator — a small PeerPython
 // peer written from the seed alone (tests/interop/shuoke_peer.py: its own CRC, framing and
 // command set, nothing imported from DriveDesk) on a socat pseudo-terminal pair. It answers
 // every request at once, without wire pacing (issue 11: "a peer with no wire pacing for each
@@ -20,8 +20,8 @@ using namespace dd;
 using namespace dd::test;
 
 namespace {
-const QString Python = QStringLiteral("/usr/bin/python3");
-constexpr int Address = 3;
+const QString PeerPython = QStringLiteral("/usr/bin/python3");
+constexpr int PeerAddress = 3;
 } // namespace
 
 class TestCliShuokePeer : public QObject
@@ -44,7 +44,7 @@ class TestCliShuokePeer : public QObject
                               QStringLiteral("--framing"), m_framing,
                               QStringLiteral("--port"),    port(),
                               QStringLiteral("--baud"),    QStringLiteral("9600"),
-                              QStringLiteral("--address"), QString::number(Address),
+                              QStringLiteral("--address"), QString::number(PeerAddress),
                               QStringLiteral("--json")};
         return runCli(all + args, 30000);
     }
@@ -82,7 +82,7 @@ class TestCliShuokePeer : public QObject
         QTRY_VERIFY2_WITH_TIMEOUT(QFile::exists(port()) && QFile::exists(peerEnd), "socat made no pty pair", 5000);
         dieWithParent(m_peer);
         m_peer.setProcessChannelMode(QProcess::MergedChannels);
-        m_peer.start(Python, {m_script, peerEnd, QString::number(Address), framing});
+        m_peer.start(PeerPython, {m_script, peerEnd, QString::number(PeerAddress), framing});
         QVERIFY2(m_peer.waitForStarted(5000), "python3 did not start");
         QTRY_VERIFY2_WITH_TIMEOUT(peerLog().contains("ready") || m_peer.state() == QProcess::NotRunning,
                                   "the peer did not start", 10000);
@@ -121,7 +121,7 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
         const QJsonArray drives = r.json().value(QLatin1String("drives")).toArray();
         QCOMPARE(drives.size(), 1);
-        QCOMPARE(drives.at(0)[QLatin1String("address")].toInt(), Address);
+        QCOMPARE(drives.at(0)[QLatin1String("address")].toInt(), PeerAddress);
 
         r = cli({QStringLiteral("info")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.text()));

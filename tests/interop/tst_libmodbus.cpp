@@ -20,7 +20,7 @@ using namespace dd;
 namespace {
 
 constexpr int Slave = 17;
-constexpr int Baud = 19200;
+constexpr int LibmodbusBaud = 19200;
 
 template <typename R>
 bool waitDone(R *r, int ms = 5000)
@@ -60,7 +60,7 @@ class TestLibmodbus : public QObject
     {
         SerialSettings s;
         s.portName = m_hostEnd->clientPath();
-        s.baud = Baud;
+        s.baud = LibmodbusBaud;
         s.responseTimeoutMs = 200;
         s.retries = 1;
         return s;
@@ -88,7 +88,7 @@ private slots:
         connect(m_server, &QProcess::readyReadStandardOutput, this,
                 [this] { m_serverOut += m_server->readAllStandardOutput(); });
         m_server->start(QStringLiteral(DD_MODBUS_SERVER),
-                        {m_serverEnd->clientPath(), QString::number(Slave), QString::number(Baud)});
+                        {m_serverEnd->clientPath(), QString::number(Slave), QString::number(LibmodbusBaud)});
         QVERIFY2(m_server->waitForStarted(5000), qPrintable(m_server->errorString()));
         QTRY_VERIFY_WITH_TIMEOUT(m_serverOut.contains("LISTENING"), 5000);
 #endif

@@ -16,8 +16,8 @@
 using namespace dd;
 
 namespace {
-constexpr int Address = 5;
-constexpr int Baud = 19200;
+constexpr int MbpollAddress = 5;
+constexpr int MbpollBaud = 19200;
 } // namespace
 
 class TestMbpoll : public QObject
@@ -34,9 +34,9 @@ class TestMbpoll : public QObject
     QString mbpoll(const QStringList &args, int *exitCode)
     {
         QProcess p;
-        QStringList all{QStringLiteral("-m"),     QStringLiteral("rtu"),  QStringLiteral("-a"),
-                        QString::number(Address), QStringLiteral("-b"),   QString::number(Baud),
-                        QStringLiteral("-P"),     QStringLiteral("none"), QStringLiteral("-1")};
+        QStringList all{QStringLiteral("-m"),           QStringLiteral("rtu"),  QStringLiteral("-a"),
+                        QString::number(MbpollAddress), QStringLiteral("-b"),   QString::number(MbpollBaud),
+                        QStringLiteral("-P"),           QStringLiteral("none"), QStringLiteral("-1")};
         all += args;
         p.start(m_mbpoll, all);
         if (!p.waitForStarted(5000))
@@ -80,8 +80,8 @@ private slots:
         QVERIFY(!m_pty->open().isError());
         m_bus = new SimSerialBus(m_pty, this);
         SimServoModbusDrive::Config c;
-        c.address = Address;
-        c.baud = Baud;
+        c.address = MbpollAddress;
+        c.baud = MbpollBaud;
         c.firmware = 7051;
         m_drive = static_cast<SimServoModbusDrive *>(m_bus->addDevice(std::make_unique<SimServoModbusDrive>(c)));
     }

@@ -1,10 +1,13 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QEventLoop>
 #include <QObject>
 #include <QSignalSpy>
 #include <QTimer>
+
+#include <functional>
 
 namespace dd::test {
 
@@ -49,6 +52,16 @@ bool waitFinished(Reply *reply, int ms)
     }
     QSignalSpy done(reply, &Reply::finished);
     return done.wait(ms);
+}
+
+// Processes events until `cond` holds, at most `ms`; returns cond() at the end.
+inline bool waitUntil(const std::function<bool()> &cond, int ms)
+{
+    QElapsedTimer t;
+    t.start();
+    while (!cond() && t.elapsed() < ms)
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    return cond();
 }
 
 } // namespace dd::test

@@ -78,7 +78,7 @@ private:
     QList<QPair<QPointer<DriveReply>, int>> m_queue;
 };
 
-using Samples = QMap<QString, double>;
+using SamplerSamples = QMap<QString, double>;
 
 // Runs a real event loop for `ms` (QTest::qWait sleeps between event passes).
 void spin(int ms)
@@ -122,7 +122,7 @@ void TestChannelSampler::samplesAtTheRate()
         const double t = args.at(0).toDouble();
         QVERIFY(t > last);
         last = t;
-        QVERIFY(args.at(1).value<Samples>().contains(QStringLiteral("speed")));
+        QVERIFY(args.at(1).value<SamplerSamples>().contains(QStringLiteral("speed")));
     }
     // The following ones every 20 ms (never sooner).
     QVERIFY(spy.at(4).at(0).toDouble() >= 0.06);
@@ -190,7 +190,7 @@ void TestChannelSampler::slowLinkGetsTwoReadsPipelined()
     // In order: read n answers n * 10; times never go backwards.
     double lastT = -1;
     for (int k = 0; k < spy.count(); ++k) {
-        QCOMPARE(spy.at(k).at(1).value<Samples>().value(QStringLiteral("speed")), (k + 1) * 10.0);
+        QCOMPARE(spy.at(k).at(1).value<SamplerSamples>().value(QStringLiteral("speed")), (k + 1) * 10.0);
         const double t = spy.at(k).at(0).toDouble();
         QVERIFY(t >= lastT);
         lastT = t;
@@ -216,7 +216,7 @@ void TestChannelSampler::continuousKeepsTheLinkBusyWhateverTheRate()
     QCOMPARE(drive.maxOutstanding, 2);
     QCOMPARE(drive.idleGaps, 0);
     for (int k = 0; k < spy.count(); ++k)
-        QCOMPARE(spy.at(k).at(1).value<Samples>().value(QStringLiteral("speed")), (k + 1) * 10.0);
+        QCOMPARE(spy.at(k).at(1).value<SamplerSamples>().value(QStringLiteral("speed")), (k + 1) * 10.0);
 }
 
 void TestChannelSampler::overtakingReplyWaitsForTheEarlierRead()
@@ -235,8 +235,8 @@ void TestChannelSampler::overtakingReplyWaitsForTheEarlierRead()
     }
     s.stop();
     QVERIFY(spy.count() >= 2);
-    QCOMPARE(spy.at(0).at(1).value<Samples>().value(QStringLiteral("speed")), 10.0);
-    QCOMPARE(spy.at(1).at(1).value<Samples>().value(QStringLiteral("speed")), 20.0);
+    QCOMPARE(spy.at(0).at(1).value<SamplerSamples>().value(QStringLiteral("speed")), 10.0);
+    QCOMPARE(spy.at(1).at(1).value<SamplerSamples>().value(QStringLiteral("speed")), 20.0);
     QVERIFY(spy.at(0).at(0).toDouble() >= 0.2);
     QVERIFY(spy.at(1).at(0).toDouble() >= spy.at(0).at(0).toDouble());
 }

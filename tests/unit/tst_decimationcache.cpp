@@ -13,7 +13,7 @@ using namespace dd;
 
 namespace {
 
-using Samples = QList<TrendSample>;
+using CacheSamples = QList<TrendSample>;
 constexpr double Gap = std::numeric_limits<double>::quiet_NaN();
 
 // Noisy values with ties, a spike now and then, and gap markers (NaN).
@@ -26,7 +26,7 @@ double noisy(QRandomGenerator &rng)
     return double(rng.bounded(50));
 }
 
-bool sameSamples(const Samples &a, const Samples &b)
+bool sameSamples(const CacheSamples &a, const CacheSamples &b)
 {
     if (a.size() != b.size())
         return false;
@@ -68,8 +68,8 @@ private slots:
         // Buckets of 5 µs: [0,4] [5,9] [10,14] [15,19]; the window [3, 16] cuts the first
         // and the last: [3,4] -> 3@3, 4@4; [5,9] -> max 6@6, min 0@7 (in time order);
         // [10,14] -> 6@13, 0@14; [15,16] -> 1@15, 2@16.
-        const Samples out = Decimator::minMaxAligned(b, 3, 16, 5);
-        QCOMPARE(out, (Samples{{3, 3}, {4, 4}, {6, 6}, {7, 0}, {13, 6}, {14, 0}, {15, 1}, {16, 2}}));
+        const CacheSamples out = Decimator::minMaxAligned(b, 3, 16, 5);
+        QCOMPARE(out, (CacheSamples{{3, 3}, {4, 4}, {6, 6}, {7, 0}, {13, 6}, {14, 0}, {15, 1}, {16, 2}}));
         QCOMPARE(Decimator::alignedBucket(-1, 5), -1);
         QCOMPARE(Decimator::alignedBucket(-5, 5), -1);
         QCOMPARE(Decimator::alignedBucket(-6, 5), -2);
@@ -101,8 +101,8 @@ private slots:
             }
             const qint64 to = b.lastTimeUs();
             const qint64 from = to - window;
-            const Samples cached = cache.minMax(b, from, to, bucket);
-            const Samples fresh = Decimator::minMaxAligned(b, from, to, bucket);
+            const CacheSamples cached = cache.minMax(b, from, to, bucket);
+            const CacheSamples fresh = Decimator::minMaxAligned(b, from, to, bucket);
             QVERIFY2(sameSamples(cached, fresh), qPrintable(QStringLiteral("update %1").arg(step)));
             if (step > 0) {
                 // The partial first and last bucket, and the one or two that just finished.

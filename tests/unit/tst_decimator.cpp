@@ -10,13 +10,13 @@
 
 using namespace dd;
 
-using Samples = QList<TrendSample>;
+using DecimatorSamples = QList<TrendSample>;
 
 class TestDecimator : public QObject
 {
     Q_OBJECT
 private:
-    static SampleBuffer bufferOf(const Samples &samples, qsizetype capacity = 1 << 20)
+    static SampleBuffer bufferOf(const DecimatorSamples &samples, qsizetype capacity = 1 << 20)
     {
         SampleBuffer b(capacity);
         for (const TrendSample &s : samples)
@@ -24,10 +24,10 @@ private:
         return b;
     }
 
-    static Samples noisy(int n, quint32 seed)
+    static DecimatorSamples noisy(int n, quint32 seed)
     {
         QRandomGenerator rng(seed);
-        Samples s;
+        DecimatorSamples s;
         qint64 t = 0;
         for (int i = 0; i < n; ++i) {
             t += 1 + rng.bounded(3); // irregular spacing
@@ -39,11 +39,11 @@ private:
 private slots:
     void exactSmallInput()
     {
-        const Samples in{{0, 5},  {2, 1},  {4, 9},  {6, 3},   // bucket 0: min 1 then max 9
-                         {10, 4},                             // bucket 1: one sample
-                         {20, 7}, {25, 7},                    // bucket 2: flat -> earliest only
-                         {40, 2}, {41, 8}, {42, 0}, {43, 8}}; // bucket 4: max first, then min
-        const Samples expected{{2, 1}, {4, 9}, {10, 4}, {20, 7}, {41, 8}, {42, 0}};
+        const DecimatorSamples in{{0, 5},  {2, 1},  {4, 9},  {6, 3},   // bucket 0: min 1 then max 9
+                                  {10, 4},                             // bucket 1: one sample
+                                  {20, 7}, {25, 7},                    // bucket 2: flat -> earliest only
+                                  {40, 2}, {41, 8}, {42, 0}, {43, 8}}; // bucket 4: max first, then min
+        const DecimatorSamples expected{{2, 1}, {4, 9}, {10, 4}, {20, 7}, {41, 8}, {42, 0}};
         QCOMPARE(Decimator::minMax(in, 0, 99, 10), expected);
         const SampleBuffer b = bufferOf(in);
         QCOMPARE(Decimator::minMax(b, 0, 99, 10), expected);
@@ -60,17 +60,17 @@ private slots:
         QCOMPARE(Decimator::bucketOf(-1, 0, 9, 4), -1);
         QCOMPARE(Decimator::bucketOf(10, 0, 9, 4), -1);
         // One sample per tick: bucket sizes 3, 2, 3, 2 -> min/max of each.
-        Samples in;
+        DecimatorSamples in;
         const QList<double> v{3, 1, 2, 5, 4, 0, 9, 9, 7, 8};
         for (int t = 0; t < 10; ++t)
             in.append({t, v.at(t)});
-        const Samples out{{0, 3}, {1, 1}, {3, 5}, {4, 4}, {5, 0}, {6, 9}, {8, 7}, {9, 8}};
+        const DecimatorSamples out{{0, 3}, {1, 1}, {3, 5}, {4, 4}, {5, 0}, {6, 9}, {8, 7}, {9, 8}};
         QCOMPARE(Decimator::minMax(in, 0, 9, 4), out);
         // Offset window and same layout.
-        Samples shifted;
+        DecimatorSamples shifted;
         for (const auto &s : in)
             shifted.append({s.timeUs + 1000000, s.value});
-        Samples shiftedOut;
+        DecimatorSamples shiftedOut;
         for (const auto &s : out)
             shiftedOut.append({s.timeUs + 1000000, s.value});
         QCOMPARE(Decimator::minMax(shifted, 1000000, 1000009, 4), shiftedOut);
@@ -78,29 +78,29 @@ private slots:
 
     void windowClipsAndEdgeCases()
     {
-        const Samples in{{-5, 100}, {0, 1}, {5, 2}, {9, 3}, {10, -100}};
-        QCOMPARE(Decimator::minMax(in, 0, 9, 1), (Samples{{0, 1}, {9, 3}}));
-        QCOMPARE(Decimator::minMax(in, 0, 9, 0), (Samples{{0, 1}, {9, 3}})); // buckets < 1 -> 1
-        QCOMPARE(Decimator::minMax(in, 0, 9, -7), (Samples{{0, 1}, {9, 3}}));
-        QCOMPARE(Decimator::minMax(in, 9, 0, 4), Samples{});   // reversed window
-        QCOMPARE(Decimator::minMax(in, 20, 30, 4), Samples{}); // nothing inside
-        QCOMPARE(Decimator::minMax(Samples{}, 0, 9, 4), Samples{});
-        QCOMPARE(Decimator::minMax(in, 5, 5, 3), (Samples{{5, 2}})); // one-tick window
+        const DecimatorSamples in{{-5, 100}, {0, 1}, {5, 2}, {9, 3}, {10, -100}};
+        QCOMPARE(Decimator::minMax(in, 0, 9, 1), (DecimatorSamples{{0, 1}, {9, 3}}));
+        QCOMPARE(Decimator::minMax(in, 0, 9, 0), (DecimatorSamples{{0, 1}, {9, 3}})); // buckets < 1 -> 1
+        QCOMPARE(Decimator::minMax(in, 0, 9, -7), (DecimatorSamples{{0, 1}, {9, 3}}));
+        QCOMPARE(Decimator::minMax(in, 9, 0, 4), DecimatorSamples{});   // reversed window
+        QCOMPARE(Decimator::minMax(in, 20, 30, 4), DecimatorSamples{}); // nothing inside
+        QCOMPARE(Decimator::minMax(DecimatorSamples{}, 0, 9, 4), DecimatorSamples{});
+        QCOMPARE(Decimator::minMax(in, 5, 5, 3), (DecimatorSamples{{5, 2}})); // one-tick window
         const SampleBuffer empty;
-        QCOMPARE(Decimator::minMax(empty, 0, 9, 4), Samples{});
+        QCOMPARE(Decimator::minMax(empty, 0, 9, 4), DecimatorSamples{});
     }
 
     void skipsNan()
     {
         const double nan = std::numeric_limits<double>::quiet_NaN();
-        const Samples in{{0, nan}, {1, 4}, {2, nan}, {3, 2}, {5, nan}, {6, nan}};
-        QCOMPARE(Decimator::minMax(in, 0, 7, 2), (Samples{{1, 4}, {3, 2}}));
+        const DecimatorSamples in{{0, nan}, {1, 4}, {2, nan}, {3, 2}, {5, nan}, {6, nan}};
+        QCOMPARE(Decimator::minMax(in, 0, 7, 2), (DecimatorSamples{{1, 4}, {3, 2}}));
     }
 
     void sparseDataIsLossless()
     {
         // At most two samples per bucket: the output is the input window unchanged.
-        Samples in;
+        DecimatorSamples in;
         for (int i = 0; i < 500; ++i)
             in.append({i * 5, std::sin(i * 0.1)});
         QCOMPARE(Decimator::minMax(in, 0, 2499, 1000), in); // 2.5 ticks per bucket
@@ -120,10 +120,10 @@ private slots:
     {
         QFETCH(int, samples);
         QFETCH(int, buckets);
-        const Samples in = noisy(samples, 42);
+        const DecimatorSamples in = noisy(samples, 42);
         const qint64 from = in.first().timeUs + 17;
         const qint64 to = in.last().timeUs - 23;
-        const Samples out = Decimator::minMax(in, from, to, buckets);
+        const DecimatorSamples out = Decimator::minMax(in, from, to, buckets);
         QVERIFY(out.size() <= 2 * buckets);
         QList<int> perBucket(buckets, 0);
         for (qsizetype i = 0; i < out.size(); ++i) {
@@ -161,13 +161,13 @@ private slots:
     {
         // A flat 1 kHz signal with a one-sample spike and a one-sample dip: both survive a
         // 600x reduction, at their exact times.
-        Samples in;
+        DecimatorSamples in;
         for (int i = 0; i < 600000; ++i)
             in.append({qint64(i) * 1000, 10.0});
         in[123457].value = 5000.0;
         in[400001].value = -3000.0;
         const SampleBuffer b = bufferOf(in);
-        const Samples out = Decimator::minMax(b, 0, in.last().timeUs, 1000);
+        const DecimatorSamples out = Decimator::minMax(b, 0, in.last().timeUs, 1000);
         QCOMPARE(Decimator::minMax(b, 0, in.last().timeUs, 1000, Decimator::Strategy::Scan), out);
         QVERIFY(out.size() <= 2000);
         QVERIFY(out.contains(TrendSample{123457000, 5000.0}));
@@ -193,7 +193,7 @@ private slots:
         QFETCH(int, samples);
         QFETCH(int, levels);
         QRandomGenerator rng(capacity ^ samples);
-        Samples all;
+        DecimatorSamples all;
         qint64 t = 0;
         for (int i = 0; i < samples; ++i) {
             t += rng.bounded(4); // repeated times too
@@ -207,15 +207,15 @@ private slots:
         SampleBuffer ring(capacity);
         for (const auto &s : all)
             QVERIFY(ring.append(s.timeUs, s.value));
-        const Samples kept = all.mid(all.size() - ring.size());
+        const DecimatorSamples kept = all.mid(all.size() - ring.size());
         QCOMPARE(ring.size(), std::min(capacity, samples));
         for (int round = 0; round < 40; ++round) {
             const qint64 a = kept.first().timeUs - 5
                 + rng.bounded(qint64(kept.last().timeUs - kept.first().timeUs + 10));
             const qint64 b = a + rng.bounded(qint64(kept.last().timeUs - kept.first().timeUs + 10));
             const int buckets = 1 + rng.bounded(3000);
-            const Samples fast = Decimator::minMax(ring, a, b, buckets, Decimator::Strategy::Summaries);
-            const Samples scan = Decimator::minMax(kept, a, b, buckets);
+            const DecimatorSamples fast = Decimator::minMax(ring, a, b, buckets, Decimator::Strategy::Summaries);
+            const DecimatorSamples scan = Decimator::minMax(kept, a, b, buckets);
             QCOMPARE(Decimator::minMax(ring, a, b, buckets, Decimator::Strategy::Scan), scan);
             QCOMPARE(fast.size(), scan.size());
             for (qsizetype k = 0; k < fast.size(); ++k) {
@@ -225,18 +225,18 @@ private slots:
         }
         // After shrinking the bound the summaries are rebuilt.
         ring.setCapacity(std::max(1, capacity / 3));
-        const Samples kept2 = all.mid(all.size() - ring.size());
+        const DecimatorSamples kept2 = all.mid(all.size() - ring.size());
         QCOMPARE(Decimator::minMax(ring, kept2.first().timeUs, kept2.last().timeUs, 97, Decimator::Strategy::Summaries),
                  Decimator::minMax(kept2, kept2.first().timeUs, kept2.last().timeUs, 97));
     }
 
     void ringBufferAgreesWithList()
     {
-        const Samples all = noisy(20000, 7);
+        const DecimatorSamples all = noisy(20000, 7);
         SampleBuffer ring(5000); // wraps: keeps the newest 5000
         for (const auto &s : all)
             ring.append(s.timeUs, s.value);
-        const Samples kept = all.mid(all.size() - 5000);
+        const DecimatorSamples kept = all.mid(all.size() - 5000);
         QCOMPARE(ring.samples(), kept);
         const qint64 from = kept.at(100).timeUs;
         const qint64 to = kept.at(4900).timeUs;

@@ -7,7 +7,7 @@
 
 using namespace dd;
 using namespace dd::servomodbus;
-namespace rtu = dd::modbusrtu;
+namespace mbrtu = dd::modbusrtu;
 
 namespace {
 
@@ -112,20 +112,21 @@ private slots:
     {
         const auto plan = servomodbus::planReads(range(0, 59));
         QCOMPARE(plan.size(), 3);
-        QCOMPARE(rtu::encodeReadHoldingRequest(5, plan[0].start, plan[0].count).toHex(' '),
+        QCOMPARE(mbrtu::encodeReadHoldingRequest(5, plan[0].start, plan[0].count).toHex(' '),
                  hex("05 03 00 64 00 14 05 9E").toHex(' '));
-        QCOMPARE(rtu::encodeReadHoldingRequest(5, plan[1].start, plan[1].count).toHex(' '),
+        QCOMPARE(mbrtu::encodeReadHoldingRequest(5, plan[1].start, plan[1].count).toHex(' '),
                  hex("05 03 00 78 00 14 C4 58").toHex(' '));
-        QCOMPARE(rtu::encodeReadHoldingRequest(5, plan[2].start, plan[2].count).toHex(' '),
+        QCOMPARE(mbrtu::encodeReadHoldingRequest(5, plan[2].start, plan[2].count).toHex(' '),
                  hex("05 03 00 8C 00 14 85 AA").toHex(' '));
         // Reply: byte count = 2 x registers, big-endian register values.
         QList<quint16> values(20, 0);
         values[0] = 1;
         values[1] = 0xFFFE;
-        const QByteArray reply = rtu::encodeReadHoldingReply(5, values);
+        const QByteArray reply = mbrtu::encodeReadHoldingReply(5, values);
         QCOMPARE(reply.left(7).toHex(' '), hex("05 03 28 00 01 FF FE").toHex(' '));
         QCOMPARE(reply.size(), 45);
-        const auto d = rtu::decodeReply(reply, rtu::decodeRequest(hex("05 03 00 64 00 14 05 9E"), 20).value.value());
+        const auto d = mbrtu::decodeReply(reply,
+                                          mbrtu::decodeRequest(hex("05 03 00 64 00 14 05 9E"), 20).value.value());
         QVERIFY2(d.ok(), qPrintable(d.error));
         QCOMPARE(qint16(d.value->values[1]), qint16(-2));
     }
@@ -136,39 +137,39 @@ private slots:
             all.append(m.reg);
         const auto plan = planRegisterReads(all);
         QCOMPARE(planText(plan), QStringLiteral("0+20 14+4"));
-        QCOMPARE(rtu::encodeReadHoldingRequest(5, plan[0].start, plan[0].count).toHex(' '),
+        QCOMPARE(mbrtu::encodeReadHoldingRequest(5, plan[0].start, plan[0].count).toHex(' '),
                  hex("05 03 00 00 00 14 44 41").toHex(' '));
-        QCOMPARE(rtu::encodeReadHoldingRequest(5, plan[1].start, plan[1].count).toHex(' '),
+        QCOMPARE(mbrtu::encodeReadHoldingRequest(5, plan[1].start, plan[1].count).toHex(' '),
                  hex("05 03 00 14 00 04 05 89").toHex(' '));
     }
     void seedWriteParameters()
     {
         const auto plan = servomodbus::planWrites({{0, 1}, {1, 0xFFFE}});
         QCOMPARE(plan.size(), 1);
-        const QByteArray req = rtu::encodeWriteMultipleRequest(5, plan[0].start, plan[0].values);
+        const QByteArray req = mbrtu::encodeWriteMultipleRequest(5, plan[0].start, plan[0].values);
         QCOMPARE(req.toHex(' '), hex("05 10 00 64 00 02 04 00 01 FF FE 70 F4").toHex(' '));
-        const auto dq = rtu::decodeRequest(req, MaxRegistersPerRequest);
+        const auto dq = mbrtu::decodeRequest(req, MaxRegistersPerRequest);
         QVERIFY(dq.ok());
         QVERIFY(validateRequest(*dq.value).isEmpty());
-        const QByteArray ack = rtu::encodeWriteMultipleReply(5, 0x64, 2);
+        const QByteArray ack = mbrtu::encodeWriteMultipleReply(5, 0x64, 2);
         QCOMPARE(ack.toHex(' '), hex("05 10 00 64 00 02 01 93").toHex(' '));
-        QVERIFY(rtu::decodeReply(ack, *dq.value).ok());
+        QVERIFY(mbrtu::decodeReply(ack, *dq.value).ok());
     }
     void seedEeLegacy()
     {
         QCOMPARE(encodeEeRequest(5, EeOp::Set, EeFormat::Legacy).toHex(' '), hex("05 06 00 00 00 01 49 8E").toHex(' '));
         QCOMPARE(encodeEeRequest(1, EeOp::Defaults, EeFormat::Legacy).toHex(' '),
                  hex("01 06 00 00 00 05 49 C9").toHex(' '));
-        const rtu::Request req = eeRequest(5, EeOp::Set, EeFormat::Legacy);
+        const mbrtu::Request req = eeRequest(5, EeOp::Set, EeFormat::Legacy);
         QVERIFY(validateRequest(req).isEmpty());
         // Reply value 0: still running; == op: finished; else failed.
-        auto d = rtu::decodeReply(hex("05 06 00 00 00 00 88 4E"), req);
+        auto d = mbrtu::decodeReply(hex("05 06 00 00 00 00 88 4E"), req);
         QVERIFY2(d.ok(), qPrintable(d.error));
         QCOMPARE(interpretLegacyEeReply(d.value->values[0], EeOp::Set), EeProgress::Running);
-        d = rtu::decodeReply(hex("05 06 00 00 00 01 49 8E"), req);
+        d = mbrtu::decodeReply(hex("05 06 00 00 00 01 49 8E"), req);
         QVERIFY(d.ok());
         QCOMPARE(interpretLegacyEeReply(d.value->values[0], EeOp::Set), EeProgress::Finished);
-        d = rtu::decodeReply(hex("05 06 00 00 00 03 C8 4F"), req);
+        d = mbrtu::decodeReply(hex("05 06 00 00 00 03 C8 4F"), req);
         QVERIFY(d.ok());
         QCOMPARE(interpretLegacyEeReply(d.value->values[0], EeOp::Set), EeProgress::Failed);
         QCOMPARE(interpretLegacyEeReply(5, EeOp::Defaults), EeProgress::Finished);
@@ -180,9 +181,9 @@ private slots:
                  hex("05 10 00 3A 00 01 02 00 01 50 0A").toHex(' '));
         QCOMPARE(encodeEeRequest(1, EeOp::Defaults, EeFormat::New).toHex(' '),
                  hex("01 10 00 3A 00 01 02 00 05 63 09").toHex(' '));
-        const rtu::Request req = eeRequest(5, EeOp::Set, EeFormat::New);
+        const mbrtu::Request req = eeRequest(5, EeOp::Set, EeFormat::New);
         QVERIFY(validateRequest(req).isEmpty());
-        const auto d = rtu::decodeReply(hex("05 10 00 3A 00 01 20 40"), req);
+        const auto d = mbrtu::decodeReply(hex("05 10 00 3A 00 01 20 40"), req);
         QVERIFY2(d.ok(), qPrintable(d.error));
         QCOMPARE(d.value->start, EeNewRegister);
         QCOMPARE(d.value->count, quint16(1));
@@ -190,27 +191,27 @@ private slots:
     void seedExceptionFromAddress1()
     {
         // Request to address 5; the drive answers an error with address byte 0x01.
-        const rtu::Request read = rtu::decodeRequest(hex("05 03 00 64 00 14 05 9E"), 20).value.value();
-        auto d = rtu::decodeReply(hex("01 83 04 40 F3"), read);
+        const mbrtu::Request read = mbrtu::decodeRequest(hex("05 03 00 64 00 14 05 9E"), 20).value.value();
+        auto d = mbrtu::decodeReply(hex("01 83 04 40 F3"), read);
         QVERIFY2(d.ok(), qPrintable(d.error));
         QVERIFY(d.value->isException);
         QCOMPARE(d.value->exceptionCode, quint8(0x04));
-        QCOMPARE(rtu::encodeExceptionReply(0x01, rtu::ReadHoldingRegisters, 0x04).toHex(' '),
+        QCOMPARE(mbrtu::encodeExceptionReply(0x01, mbrtu::ReadHoldingRegisters, 0x04).toHex(' '),
                  hex("01 83 04 40 F3").toHex(' '));
 
-        d = rtu::decodeReply(hex("01 90 04 4D C3"), eeRequest(5, EeOp::Set, EeFormat::New));
+        d = mbrtu::decodeReply(hex("01 90 04 4D C3"), eeRequest(5, EeOp::Set, EeFormat::New));
         QVERIFY(d.ok());
         QVERIFY(d.value->isException);
-        d = rtu::decodeReply(hex("01 86 04 43 A3"), eeRequest(5, EeOp::Set, EeFormat::Legacy));
+        d = mbrtu::decodeReply(hex("01 86 04 43 A3"), eeRequest(5, EeOp::Set, EeFormat::Legacy));
         QVERIFY(d.ok());
         QVERIFY(d.value->isException);
     }
     void driveLimitOf20()
     {
-        rtu::DecodeError why = rtu::DecodeError::None;
-        QVERIFY(!rtu::decodeRequest(rtu::encodeReadHoldingRequest(5, 0x64, 21), MaxRegistersPerRequest, &why).ok());
-        QCOMPARE(why, rtu::DecodeError::CountOutOfRange);
-        QVERIFY(rtu::decodeRequest(rtu::encodeReadHoldingRequest(5, 0x64, 20), MaxRegistersPerRequest).ok());
+        mbrtu::DecodeError why = mbrtu::DecodeError::None;
+        QVERIFY(!mbrtu::decodeRequest(mbrtu::encodeReadHoldingRequest(5, 0x64, 21), MaxRegistersPerRequest, &why).ok());
+        QCOMPARE(why, mbrtu::DecodeError::CountOutOfRange);
+        QVERIFY(mbrtu::decodeRequest(mbrtu::encodeReadHoldingRequest(5, 0x64, 20), MaxRegistersPerRequest).ok());
     }
 
     // ---- request planning ----
@@ -422,8 +423,8 @@ private slots:
     {
         QTest::addColumn<QByteArray>("adu");
         QTest::addColumn<bool>("ok");
-        auto rd = [](quint8 a, quint16 s, quint16 c) { return rtu::encodeReadHoldingRequest(a, s, c); };
-        auto wr = [](quint16 s, int n) { return rtu::encodeWriteMultipleRequest(5, s, QList<quint16>(n, 1)); };
+        auto rd = [](quint8 a, quint16 s, quint16 c) { return mbrtu::encodeReadHoldingRequest(a, s, c); };
+        auto wr = [](quint16 s, int n) { return mbrtu::encodeWriteMultipleRequest(5, s, QList<quint16>(n, 1)); };
         QTest::newRow("read PA0..19") << rd(5, 0x64, 20) << true;
         QTest::newRow("read PA59") << rd(5, 0x9F, 1) << true;
         QTest::newRow("read past PA59") << rd(5, 0x9F, 2) << false;
@@ -438,32 +439,32 @@ private slots:
         QTest::newRow("EE new op 6") << withCrc16(hex("05 10 00 3A 00 01 02 00 06")) << false;
         QTest::newRow("EE new 2 regs") << wr(0x3A, 2) << false;
         QTest::newRow("EE legacy op 1 broadcast") << encodeEeRequest(0, EeOp::Set, EeFormat::Legacy) << true;
-        QTest::newRow("EE legacy op 0") << rtu::encodeWriteSingleRequest(5, 0, 0) << false;
-        QTest::newRow("0x06 to a PA") << rtu::encodeWriteSingleRequest(5, 0x64, 1) << false;
+        QTest::newRow("EE legacy op 0") << mbrtu::encodeWriteSingleRequest(5, 0, 0) << false;
+        QTest::newRow("0x06 to a PA") << mbrtu::encodeWriteSingleRequest(5, 0x64, 1) << false;
     }
     void validate()
     {
         QFETCH(QByteArray, adu);
         QFETCH(bool, ok);
-        const auto d = rtu::decodeRequest(adu);
+        const auto d = mbrtu::decodeRequest(adu);
         QVERIFY2(d.ok(), qPrintable(d.error));
-        const rtu::Request r = *d.value;
+        const mbrtu::Request r = *d.value;
         const QString why = validateRequest(r);
         QVERIFY2(why.isEmpty() == ok, qPrintable(why));
     }
     void validateOddRequests()
     {
-        rtu::Request r;
+        mbrtu::Request r;
         r.address = 5;
         r.function = 0x04;
         r.count = 1;
         QVERIFY(!validateRequest(r).isEmpty());
-        r.function = rtu::WriteMultipleRegisters;
+        r.function = mbrtu::WriteMultipleRegisters;
         r.start = 0x64;
         r.count = 2;
         r.values = {1};
         QVERIFY(!validateRequest(r).isEmpty());
-        r.function = rtu::WriteSingleRegister;
+        r.function = mbrtu::WriteSingleRegister;
         r.start = 0;
         r.values = {};
         QVERIFY(!validateRequest(r).isEmpty());

@@ -12,7 +12,7 @@ using dd::Decoded;
 namespace {
 
 using dd::test::hex;
-QByteArray data(int n, int seed)
+QByteArray asciiData(int n, int seed)
 {
     QByteArray d;
     for (int i = 0; i < n; ++i)
@@ -31,18 +31,18 @@ AsciiOptions twos()
     return o;
 }
 
-QList<Frame> everyFrame()
+QList<Frame> everyAsciiFrame()
 {
     QList<Frame> out;
     int seed = 0;
     for (const CommandInfo &c : commandTable()) {
         for (int n = 0; n < 16; ++n)
             if (c.allowsRequestLength(n))
-                out.append(Frame::make(9, c.code, data(n, seed++)));
+                out.append(Frame::make(9, c.code, asciiData(n, seed++)));
         for (const quint8 reply : c.replyCommands)
             for (int n = 0; reply && n < 16; ++n)
                 if (c.allowsReplyLength(n))
-                    out.append(Frame::make(9, reply, data(n, seed++)));
+                    out.append(Frame::make(9, reply, asciiData(n, seed++)));
         out.append(Frame::failureReply(9, c.code, static_cast<quint8>(1 + seed++ % 5)));
     }
     return out;
@@ -110,7 +110,7 @@ private slots:
 
     void roundTripEveryCommand()
     {
-        for (const Frame &f : everyFrame()) {
+        for (const Frame &f : everyAsciiFrame()) {
             for (const AsciiOptions &o : {AsciiOptions{}, twos()}) {
                 const QByteArray wire = ascii(f, o);
                 QCOMPARE(wire.size(), 1 + 2 * (3 + f.payload().size() + 1) + 2);
@@ -122,10 +122,10 @@ private slots:
         }
     }
 
-    // Decision (docs/protocols/shuoke.md): len = data + 1 is also accepted (the seed's "one less than RTU").
+    // Decision (docs/protocols/shuoke.md): len = asciiData + 1 is also accepted (the seed's "one less than RTU").
     void lengthPlusOne()
     {
-        // 01 22 02 02: len 2 for 1 data byte; sum 0x27
+        // 01 22 02 02: len 2 for 1 asciiData byte; sum 0x27
         const QByteArray wire(":0122020227\r\n");
         const Decoded<Frame> d = decodeAscii(wire);
         QVERIFY2(d.ok(), qPrintable(d.error));
@@ -135,9 +135,9 @@ private slots:
         QVERIFY(!decodeAscii(wire, strict).ok());
         // Failure reply with len 2
         QCOMPARE(*decodeAscii(":01A50204AC\r\n").value, Frame::failureReply(1, 0x25, 4));
-        // len = data + 2 is not accepted
+        // len = asciiData + 2 is not accepted
         QVERIFY(!decodeAscii(":0122030228\r\n").ok());
-        // len = data - 1 neither
+        // len = asciiData - 1 neither
         QVERIFY(!decodeAscii(":0122000224\r\n").ok());
     }
 
@@ -164,7 +164,7 @@ private slots:
         QTest::newRow("too short") << QByteArray(":010203\r\n") << "too short";
         QTest::newRow("nothing") << QByteArray(":\r\n") << "too short";
         QTest::newRow("wrong length") << QByteArray(":012205022A\r\n") << "length";
-        QTest::newRow("failure, 2 data bytes") << QByteArray(":01A5020400AC\r\n") << "failure";
+        QTest::newRow("failure, 2 asciiData bytes") << QByteArray(":01A5020400AC\r\n") << "failure";
     }
     void malformed()
     {
@@ -180,7 +180,7 @@ private slots:
     void streamWholeTable()
     {
         QByteArray stream;
-        const QList<Frame> frames = everyFrame();
+        const QList<Frame> frames = everyAsciiFrame();
         for (const Frame &f : frames)
             stream += ascii(f);
         AsciiStreamParser parser;
@@ -251,7 +251,7 @@ private slots:
         QCOMPARE(parser.feed(longLine + ":0122010226\r\n"), (QList<Frame>{Frame::make(1, 0x22, hex("02"))}));
         QCOMPARE(parser.rejectedFrames(), quint64(1));
         QVERIFY(parser.lastError().contains(QLatin1String("longer")));
-        // A frame of exactly the maximum length is still read (16 data bytes).
+        // A frame of exactly the maximum length is still read (16 asciiData bytes).
         const QByteArray maxFrame = ascii(Frame::make(1, 0x70, QByteArray(16, '\x01')));
         QCOMPARE(maxFrame.size(), AsciiStreamParser::kMaxFrameChars);
         QCOMPARE(parser.feed(maxFrame).size(), 1);
@@ -281,7 +281,7 @@ private slots:
             state = state * 1103515245u + 12345u;
             return static_cast<quint8>(state >> 16);
         };
-        const QList<Frame> frames = everyFrame();
+        const QList<Frame> frames = everyAsciiFrame();
         QByteArray stream;
         for (const Frame &f : frames) {
             const int noise = next() % 10;

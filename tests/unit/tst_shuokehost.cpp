@@ -15,7 +15,7 @@ using namespace dd;
 using namespace dd::shuoke;
 
 namespace {
-QByteArray rtu(const Frame &f)
+QByteArray hostRtu(const Frame &f)
 {
     return *encodeRtu(f).value;
 }
@@ -124,7 +124,7 @@ private slots:
     {
         const Frame request = Frame::make(3, CmdGetMaxSpeed);
         const ReplyMatcher m = ShuokeSerialTransport::rtuMatcher(request);
-        const QByteArray reply = rtu(Frame::make(3, CmdGetMaxSpeed, encodeUInt32(1234)));
+        const QByteArray reply = hostRtu(Frame::make(3, CmdGetMaxSpeed, encodeUInt32(1234)));
         // in pieces
         QCOMPARE(m(reply.left(2)).status, FrameMatch::Status::Incomplete);
         QCOMPARE(m(reply.left(8)).status, FrameMatch::Status::Incomplete);
@@ -134,13 +134,13 @@ private slots:
         QCOMPARE(r.frame, reply);
         // noise, another drive's reply, another command, the echo of the request
         QCOMPARE(m(QByteArray::fromHex("ff") + reply).status, FrameMatch::Status::Garbage);
-        QCOMPARE(m(rtu(Frame::make(4, CmdGetMaxSpeed, encodeUInt32(1)))).status, FrameMatch::Status::Garbage);
-        QCOMPARE(m(rtu(Frame::make(3, CmdGetStartSpeed, encodeUInt32(1)))).status, FrameMatch::Status::Garbage);
-        r = m(rtu(request));
+        QCOMPARE(m(hostRtu(Frame::make(4, CmdGetMaxSpeed, encodeUInt32(1)))).status, FrameMatch::Status::Garbage);
+        QCOMPARE(m(hostRtu(Frame::make(3, CmdGetStartSpeed, encodeUInt32(1)))).status, FrameMatch::Status::Garbage);
+        r = m(hostRtu(request));
         QCOMPARE(r.status, FrameMatch::Status::Garbage);
         QCOMPARE(r.consumed, 5);
         // a failure reply matches
-        const QByteArray failure = rtu(Frame::failureReply(3, CmdGetMaxSpeed, FailureOutOfRange));
+        const QByteArray failure = hostRtu(Frame::failureReply(3, CmdGetMaxSpeed, FailureOutOfRange));
         QCOMPARE(m(failure).status, FrameMatch::Status::Match);
         // a reply with a bad CRC is corrupt (the link retries at once)
         QByteArray bad = reply;
@@ -158,18 +158,18 @@ private slots:
     void rtuMatcherBroadcastAndAddressChange()
     {
         const ReplyMatcher any = ShuokeSerialTransport::rtuMatcher(Frame::make(0, CmdQueryAddress));
-        QCOMPARE(any(rtu(Frame::make(42, CmdQueryAddress))).status, FrameMatch::Status::Match);
+        QCOMPARE(any(hostRtu(Frame::make(42, CmdQueryAddress))).status, FrameMatch::Status::Match);
         const ReplyMatcher change = ShuokeSerialTransport::rtuMatcher(
             Frame::make(1, CmdChangeAddress, QByteArray(1, '\x09')));
-        QCOMPARE(change(rtu(Frame::make(1, CmdChangeAddress, QByteArray(1, '\x09')))).status,
+        QCOMPARE(change(hostRtu(Frame::make(1, CmdChangeAddress, QByteArray(1, '\x09')))).status,
                  FrameMatch::Status::Match);
-        QCOMPARE(change(rtu(Frame::make(9, CmdChangeAddress, QByteArray(1, '\x09')))).status,
+        QCOMPARE(change(hostRtu(Frame::make(9, CmdChangeAddress, QByteArray(1, '\x09')))).status,
                  FrameMatch::Status::Match);
-        QCOMPARE(change(rtu(Frame::make(5, CmdChangeAddress, QByteArray(1, '\x09')))).status,
+        QCOMPARE(change(hostRtu(Frame::make(5, CmdChangeAddress, QByteArray(1, '\x09')))).status,
                  FrameMatch::Status::Garbage);
         // 0x42 may be answered with 0x41 (the seed's example)
         const ReplyMatcher inputs = ShuokeSerialTransport::rtuMatcher(Frame::make(1, CmdReadInputs));
-        QCOMPARE(inputs(rtu(Frame::make(1, CmdReadIoSubstitution, QByteArray(5, '\0')))).status,
+        QCOMPARE(inputs(hostRtu(Frame::make(1, CmdReadIoSubstitution, QByteArray(5, '\0')))).status,
                  FrameMatch::Status::Match);
     }
 

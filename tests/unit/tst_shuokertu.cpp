@@ -13,34 +13,34 @@ using dd::Decoded;
 namespace {
 
 using dd::test::hex;
-QByteArray data(int n, int seed) // distinct, non-trivial bytes
+QByteArray rtuData(int n, int seed) // distinct, non-trivial bytes
 {
     QByteArray d;
     for (int i = 0; i < n; ++i)
         d.append(static_cast<char>(0x11 * (i + 1) + seed));
     return d;
 }
-QByteArray rtu(const Frame &f, const RtuOptions &o = {})
+QByteArray rtuBytes(const Frame &f, const RtuOptions &o = {})
 {
     const auto e = encodeRtu(f, o);
     return e.ok() ? *e.value : QByteArray("encode failed");
 }
 
 // Every request and every success reply of the table, and a failure reply per command.
-QList<Frame> everyFrame()
+QList<Frame> everyRtuFrame()
 {
     QList<Frame> out;
     int seed = 0;
     for (const CommandInfo &c : commandTable()) {
         for (int n = 0; n < 16; ++n)
             if (c.allowsRequestLength(n))
-                out.append(Frame::make(7, c.code, data(n, seed++)));
+                out.append(Frame::make(7, c.code, rtuData(n, seed++)));
         for (const quint8 reply : c.replyCommands) {
             if (reply == 0)
                 continue;
             for (int n = 0; n < 16; ++n)
                 if (c.allowsReplyLength(n))
-                    out.append(Frame::make(7, reply, data(n, seed++)));
+                    out.append(Frame::make(7, reply, rtuData(n, seed++)));
         }
         out.append(Frame::failureReply(7, c.code, static_cast<quint8>(1 + seed++ % 5)));
     }
@@ -109,7 +109,7 @@ private slots:
     {
         QFETCH(Frame, frame);
         QFETCH(QByteArray, wire);
-        QCOMPARE(rtu(frame).toHex(' '), wire.toHex(' '));
+        QCOMPARE(rtuBytes(frame).toHex(' '), wire.toHex(' '));
         RtuLayout layout = RtuLayout::FixedLength;
         const Decoded<Frame> d = decodeRtu(wire, {}, &layout);
         QVERIFY2(d.ok(), qPrintable(d.error));
@@ -125,19 +125,19 @@ private slots:
         QCOMPARE(f.failureCode, quint8(FailureOutOfRange));
         QVERIFY(f.data.isEmpty());
         QCOMPARE(f.commandByte(), quint8(0xA5));
-        // data of a failure Frame is not sent: the code is
+        // rtuData of a failure Frame is not sent: the code is
         Frame g = Frame::failureReply(1, 0xA5, 4);
         g.data = hex("99");
-        QCOMPARE(rtu(g).toHex(), QByteArray("01a5010411a8"));
+        QCOMPARE(rtuBytes(g).toHex(), QByteArray("01a5010411a8"));
     }
 
     void roundTripEveryCommand()
     {
-        for (const Frame &f : everyFrame()) {
+        for (const Frame &f : everyRtuFrame()) {
             for (const bool padded : {false, true}) {
                 RtuOptions o;
                 o.padToFixedLength = padded;
-                const QByteArray wire = rtu(f, o);
+                const QByteArray wire = rtuBytes(f, o);
                 const int n = static_cast<int>(f.payload().size());
                 QCOMPARE(wire.size(), padded && n < kFixedDataSize ? kFixedFrameSize : n + kRtuOverhead);
                 RtuLayout layout;
@@ -179,7 +179,7 @@ private slots:
     }
     void lengthCountsCrcNeedsKnownLayout()
     {
-        // 0x3B with len 5 counting the CRC would carry 3 data bytes: no command does that.
+        // 0x3B with len 5 counting the CRC would carry 3 rtuData bytes: no command does that.
         const QByteArray wire = withCrcOf(hex("013b05010001"));
         QVERIFY(!decodeRtu(wire).ok());
         // A CRC-correct frame whose len fits no reading.
@@ -188,7 +188,7 @@ private slots:
         QVERIFY2(d.error.contains(QLatin1String("length byte")), qPrintable(d.error));
     }
 
-    // 0x49 (M4505S): fixed 10-byte frames, data zero-padded to 5 bytes.
+    // 0x49 (M4505S): fixed 10-byte frames, rtuData zero-padded to 5 bytes.
     void fixedLength_data()
     {
         QTest::addColumn<QByteArray>("wire");
@@ -205,7 +205,7 @@ private slots:
         QFETCH(Frame, frame);
         RtuOptions pad;
         pad.padToFixedLength = true;
-        QCOMPARE(rtu(frame, pad).toHex(' '), wire.toHex(' '));
+        QCOMPARE(rtuBytes(frame, pad).toHex(' '), wire.toHex(' '));
         RtuLayout layout;
         const Decoded<Frame> d = decodeRtu(wire, {}, &layout);
         QVERIFY2(d.ok(), qPrintable(d.error));
@@ -215,7 +215,7 @@ private slots:
         strict.acceptFixedLength = false;
         QVERIFY(!decodeRtu(wire, strict).ok());
         // A 5-byte status reply is the same in both layouts.
-        QCOMPARE(rtu(Frame::make(1, 0x3B, hex("0100010001")), pad).toHex(), QByteArray("013b050100010001a691"));
+        QCOMPARE(rtuBytes(Frame::make(1, 0x3B, hex("0100010001")), pad).toHex(), QByteArray("013b050100010001a691"));
     }
 
     void handshakeWithoutCrc()
@@ -239,8 +239,8 @@ private slots:
         QTest::newRow("bad crc") << hex("01200039c1") << "CRC";
         QTest::newRow("crc swapped") << hex("012000c039") << "CRC";
         QTest::newRow("len too big") << hex("01200439c0") << "length byte";
-        QTest::newRow("failure, 2 data bytes") << withCrcOf(hex("01a5020400")) << "failure reply";
-        QTest::newRow("failure, no data") << withCrcOf(hex("01a500")) << "failure reply";
+        QTest::newRow("failure, 2 rtuData bytes") << withCrcOf(hex("01a5020400")) << "failure reply";
+        QTest::newRow("failure, no rtuData") << withCrcOf(hex("01a500")) << "failure reply";
     }
     void malformed()
     {
@@ -272,9 +272,9 @@ private slots:
     void streamWholeTable()
     {
         QByteArray stream;
-        const QList<Frame> frames = everyFrame();
+        const QList<Frame> frames = everyRtuFrame();
         for (const Frame &f : frames)
-            stream += rtu(f);
+            stream += rtuBytes(f);
         RtuStreamParser parser;
         const QList<Frame> got = parser.feed(stream);
         QCOMPARE(got, frames);
@@ -285,9 +285,9 @@ private slots:
     void streamByteAtATime()
     {
         QByteArray stream;
-        QList<Frame> frames = everyFrame();
+        QList<Frame> frames = everyRtuFrame();
         for (const Frame &f : frames)
-            stream += rtu(f);
+            stream += rtuBytes(f);
         RtuStreamParser parser;
         QList<Frame> got;
         for (const char c : stream) {
@@ -395,13 +395,13 @@ private slots:
         // Frames separated by random noise, fed in random chunk sizes: every frame comes
         // out, in order (noise here never forms a frame with a valid CRC by chance).
         Lcg rng{12345};
-        const QList<Frame> frames = everyFrame();
+        const QList<Frame> frames = everyRtuFrame();
         QByteArray stream;
         for (const Frame &f : frames) {
             const int noise = rng.next() % 12;
             for (int i = 0; i < noise; ++i)
                 stream.append(static_cast<char>(rng.next()));
-            stream += rtu(f);
+            stream += rtuBytes(f);
         }
         RtuStreamParser parser;
         QList<Frame> got;
@@ -424,7 +424,7 @@ private slots:
                 chunk.append(static_cast<char>(rng.next()));
             const QList<Frame> frames = parser.feed(chunk);
             for (const Frame &f : frames) // anything that comes out re-encodes to a frame that checks
-                QVERIFY(decodeRtu(rtu(f)).ok());
+                QVERIFY(decodeRtu(rtuBytes(f)).ok());
             QVERIFY(parser.bufferedSize() <= parser.capacity());
         }
     }

@@ -17,7 +17,7 @@ QByteArray adu(const char *hexWithoutCrc)
     return withCrc16(QByteArray::fromHex(hexWithoutCrc));
 }
 
-SimServoModbusDrive::Config config(int address = 1, quint16 firmware = 7051)
+SimServoModbusDrive::Config modbusConfig(int address = 1, quint16 firmware = 7051)
 {
     SimServoModbusDrive::Config c;
     c.address = address;
@@ -44,7 +44,7 @@ private slots:
 
     void readsParameters()
     {
-        SimServoModbusDrive d(config(1));
+        SimServoModbusDrive d(modbusConfig(1));
         const auto r = send(d, adu("010300640003"));
         QCOMPARE(r.size(), 1);
         QCOMPARE(r[0], adu("010306013b00651b8b")); // PA0 315, PA1 101, PA2 7051
@@ -52,7 +52,7 @@ private slots:
 
     void ignoresOtherAddresses()
     {
-        SimServoModbusDrive d(config(3));
+        SimServoModbusDrive d(modbusConfig(3));
         QVERIFY(send(d, adu("010300640001")).isEmpty());
         QCOMPARE(send(d, adu("030300640001")).size(), 1);
         QCOMPARE(d.requestsAnswered(), quint64(1));
@@ -64,7 +64,7 @@ private slots:
     // broadcast is not. Bytes by hand (read PA5 = register 0x0069 of drive 5: CRC 55 92).
     void damagedRequestGetsTheSeedsErrorReply()
     {
-        SimServoModbusDrive d(config(5));
+        SimServoModbusDrive d(modbusConfig(5));
         const QList<QByteArray> none;
         QCOMPARE(send(d, QByteArray::fromHex("05 03 00 69 00 01 55 93")),
                  QList<QByteArray>{QByteArray::fromHex("01 83 04 40 F3")});
@@ -97,7 +97,7 @@ private slots:
 
     void exceptionsCarryAddressOneAndCodeFour()
     {
-        SimServoModbusDrive d(config(7));
+        SimServoModbusDrive d(modbusConfig(7));
         QCOMPARE(send(d, adu("070300640015")), QList<QByteArray>{adu("018304")});       // 21 registers
         QCOMPARE(send(d, adu("070300180001")), QList<QByteArray>{adu("018304")});       // past DP-rES
         QCOMPARE(send(d, adu("070300100010")), QList<QByteArray>{adu("018304")});       // DP into the gap
@@ -110,7 +110,7 @@ private slots:
 
     void writesAndReadOnlyFirmware()
     {
-        SimServoModbusDrive d(config(1));
+        SimServoModbusDrive d(modbusConfig(1));
         QCOMPARE(send(d, adu("0110006500020404d2fffb")), QList<QByteArray>{adu("011000650002")});
         QCOMPARE(d.parameter(1), quint16(1234));
         QCOMPARE(d.parameter(2), quint16(7051)); // PA2 ignores writes
@@ -118,7 +118,7 @@ private slots:
 
     void broadcastActsWithoutReply()
     {
-        SimServoModbusDrive d(config(4));
+        SimServoModbusDrive d(modbusConfig(4));
         QVERIFY(send(d, adu("00100070000102002a")).isEmpty());
         QCOMPARE(d.parameter(12), quint16(42));
         QVERIFY(send(d, adu("000300640001")).isEmpty());
@@ -127,7 +127,7 @@ private slots:
 
     void legacyEeReportsProgress()
     {
-        SimServoModbusDrive::Config c = config(1, 7041);
+        SimServoModbusDrive::Config c = modbusConfig(1, 7041);
         c.eeBusyUs = 300000;
         SimServoModbusDrive d(c);
         d.setParameter(30, 77);
@@ -146,7 +146,7 @@ private slots:
 
     void newEeFormatAndEveryOperation()
     {
-        SimServoModbusDrive d(config(1, 7051));
+        SimServoModbusDrive d(modbusConfig(1, 7051));
         QCOMPARE(send(d, adu("010600000001")), QList<QByteArray>{adu("018604")}); // legacy refused
         d.setParameter(20, 5);
         QCOMPARE(send(d, adu("0110003a0001020003")), QList<QByteArray>{adu("0110003a0001")}); // EE-bA
@@ -168,7 +168,7 @@ private slots:
 
     void addressChangeTakesEffectAfterSaveAndPowerCycle()
     {
-        SimServoModbusDrive d(config(1));
+        SimServoModbusDrive d(modbusConfig(1));
         send(d, adu("011000970001020009")); // PA51 = 9
         QCOMPARE(d.address(), 1);
         send(d, adu("0110003a0001020001")); // EE-Set
@@ -179,7 +179,7 @@ private slots:
 
     void framesSplitOrJoinedAndResyncAfterSilence()
     {
-        SimServoModbusDrive d(config(1));
+        SimServoModbusDrive d(modbusConfig(1));
         const QByteArray req = adu("010300640001");
         QVERIFY(send(d, req.left(3)).isEmpty());
         QCOMPARE(send(d, req.mid(3), 500).size(), 1); // the rest, right after
@@ -191,7 +191,7 @@ private slots:
 
     void monitorFollowsTheMotor()
     {
-        SimServoModbusDrive d(config(1));
+        SimServoModbusDrive d(modbusConfig(1));
         d.motor().enable();
         d.motor().setPosition(-70000);
         d.setAlarm(0);
@@ -209,7 +209,7 @@ private slots:
     {
         // The demo profile runs only while SON is on; off, the shaft coasts to rest and the
         // monitor says so (DP-SPd 0, DP-oUt "servo ready" clear), also after the alarm.
-        SimServoModbusDrive::Config c = config(1);
+        SimServoModbusDrive::Config c = modbusConfig(1);
         c.demoMotion = true;
         SimServoModbusDrive d(c);
         d.advanceTo(1000000); // 1 s into the forward phase
@@ -231,7 +231,7 @@ private slots:
 
     void stateRoundTrip()
     {
-        SimServoModbusDrive a(config(6));
+        SimServoModbusDrive a(modbusConfig(6));
         a.setParameter(33, 3333);
         send(a, adu("0610003a0001020001")); // EE-Set
         a.setParameter(33, 4444);
@@ -239,7 +239,7 @@ private slots:
         const QJsonObject state = a.saveState();
         const QByteArray json = QJsonDocument(state).toJson();
 
-        SimServoModbusDrive b(config(1));
+        SimServoModbusDrive b(modbusConfig(1));
         QString error;
         QVERIFY2(b.loadState(QJsonDocument::fromJson(json).object(), &error), qPrintable(error));
         QCOMPARE(b.address(), 6);

@@ -21,9 +21,9 @@ using namespace dd;
 using namespace dd::shuoke;
 
 namespace {
-constexpr qint64 Ms = 1000;
+constexpr qint64 SeedMs = 1000;
 
-SimShuokeDrive::Config config()
+SimShuokeDrive::Config seedConfig()
 {
     SimShuokeDrive::Config c;
     c.model = Model::M6505;
@@ -38,16 +38,16 @@ Frame ask(SimShuokeDrive &d, quint8 cmd, const QByteArray &data, qint64 atUs)
     return f ? *f : Frame{};
 }
 
-// What the drive sends back on RS485 for the bytes `hex` arriving at `atUs`.
-QByteArray wire(SimShuokeSerialDevice &dev, const char *hex, qint64 atUs)
+// What the drive sends back on RS485 for the bytes `seedHex` arriving at `atUs`.
+QByteArray wire(SimShuokeSerialDevice &dev, const char *seedHex, qint64 atUs)
 {
     QByteArray out;
-    for (const QByteArray &frame : dev.onBusBytes(QByteArray::fromHex(hex), atUs))
+    for (const QByteArray &frame : dev.onBusBytes(QByteArray::fromHex(seedHex), atUs))
         out += frame;
     return out;
 }
 
-QByteArray hex(const char *text)
+QByteArray seedHex(const char *text)
 {
     return QByteArray::fromHex(text);
 }
@@ -78,13 +78,13 @@ private slots:
     void speedIsReportedAsItsMagnitude()
     {
         QFETCH(int, speed);
-        SimShuokeDrive d(config());
+        SimShuokeDrive d(seedConfig());
         QVERIFY(ask(d, CmdRunSpeed, encodeInt32(speed), 0).command == CmdRunSpeed);
-        const Frame f = ask(d, CmdQuerySpeed, {}, 2000 * Ms); // at speed by now
+        const Frame f = ask(d, CmdQuerySpeed, {}, 2000 * SeedMs); // at speed by now
         QVERIFY(!f.failure);
         QCOMPARE(f.data, encodeUInt32(1000)); // E8 03 00 00 both ways
         // The position (0x37) keeps its sign.
-        const Frame p = ask(d, CmdQueryAbsolutePosition, {}, 2000 * Ms);
+        const Frame p = ask(d, CmdQueryAbsolutePosition, {}, 2000 * SeedMs);
         QVERIFY(speed < 0 ? qint32(*decodeUInt32(p.data)) < 0 : qint32(*decodeUInt32(p.data)) > 0);
     }
 
@@ -106,7 +106,7 @@ private slots:
         QFETCH(int, get);
         QFETCH(quint32, value);
         QFETCH(quint32, kept);
-        SimShuokeDrive d(config());
+        SimShuokeDrive d(seedConfig());
         const Frame ack = ask(d, quint8(set), encodeUInt32(value), 0);
         QVERIFY2(!ack.failure, "the drive takes it (no error 4)");
         QCOMPARE(ask(d, quint8(get), {}, 0).data, encodeUInt32(kept));
@@ -115,7 +115,7 @@ private slots:
     // A denominator whose low 16 bits are 0 is still refused (error 4): 0 is no divisor.
     void gearDenominatorWithZeroLowBitsIsRefused()
     {
-        SimShuokeDrive d(config());
+        SimShuokeDrive d(seedConfig());
         const Frame f = ask(d, CmdSetGearDenominator, encodeUInt32(0x10000), 0);
         QVERIFY(f.failure);
         QCOMPARE(int(f.failureCode), 4);
@@ -126,89 +126,89 @@ private slots:
     // 0x86A0 = 34464, along with the gear values).
     void speedsAbove65535AreKeptWhole()
     {
-        SimShuokeSerialDevice dev(config());
-        QCOMPARE(wire(dev, "01 27 04 A0 86 01 00 3E AE", 0), hex("01 27 00 3B F0"));
-        QCOMPARE(wire(dev, "01 28 00 3E 00", 100 * Ms), hex("01 28 04 A0 86 01 00 3E 51"));
+        SimShuokeSerialDevice dev(seedConfig());
+        QCOMPARE(wire(dev, "01 27 04 A0 86 01 00 3E AE", 0), seedHex("01 27 00 3B F0"));
+        QCOMPARE(wire(dev, "01 28 00 3E 00", 100 * SeedMs), seedHex("01 28 04 A0 86 01 00 3E 51"));
     }
 
     // The worked example of the ASCII and CAN chapters: 发送 01 22 01 02, 应答 02 22 01 02 —
     // the reply comes from the new address; the drive answers the old one until it restarts.
     void changeAddressIsAnsweredFromTheNewAddress()
     {
-        SimShuokeSerialDevice dev(config());
-        QCOMPARE(wire(dev, "01 22 01 02 21 83", 0), hex("02 22 01 02 21 C7"));
-        QCOMPARE(wire(dev, "01 20 00 39 C0", 100 * Ms), hex("01 20 00 39 C0"));
+        SimShuokeSerialDevice dev(seedConfig());
+        QCOMPARE(wire(dev, "01 22 01 02 21 83", 0), seedHex("02 22 01 02 21 C7"));
+        QCOMPARE(wire(dev, "01 20 00 39 C0", 100 * SeedMs), seedHex("01 20 00 39 C0"));
         dev.powerCycle();
-        QCOMPARE(wire(dev, "02 20 00 C9 C0", 200 * Ms), hex("02 20 00 C9 C0"));
+        QCOMPARE(wire(dev, "02 20 00 C9 C0", 200 * SeedMs), seedHex("02 20 00 C9 C0"));
     }
 
     // The seed prints reply command 0x41 for 0x42 and 0x43 (and 0x44..0x46).
     void inputQueriesAnswerWithTheCommandTheSeedPrints()
     {
-        SimShuokeSerialDevice dev(config());
-        QCOMPARE(wire(dev, "01 42 00 10 A0", 0), hex("01 41 05 00 00 00 00 00 D0 96"));
+        SimShuokeSerialDevice dev(seedConfig());
+        QCOMPARE(wire(dev, "01 42 00 10 A0", 0), seedHex("01 41 05 00 00 00 00 00 D0 96"));
         // 0x43: 脉冲pu/方向dr/使能en/f1/f2; the enable input is on.
-        QCOMPARE(wire(dev, "01 43 00 11 30", 100 * Ms), hex("01 41 05 00 00 01 00 00 81 56"));
+        QCOMPARE(wire(dev, "01 43 00 11 30", 100 * SeedMs), seedHex("01 41 05 00 00 01 00 00 81 56"));
     }
 
     // 自动查找原点命令3 (0x4F, one byte): answered 0x3E, like command 1 but without
     // "自动将相对位置和绝对位置清零": the counters keep counting.
     void homingVariant3KeepsTheCounters()
     {
-        SimShuokeSerialDevice dev(config());
+        SimShuokeSerialDevice dev(seedConfig());
         dev.drive().axis().placeAt(-5000); // counters zeroed 5000 pulses before the origin
-        QCOMPARE(wire(dev, "01 4F 01 01 F0 5F", 0), hex("01 3E 00 30 60"));
-        dev.advanceTo(5000 * Ms);
+        QCOMPARE(wire(dev, "01 4F 01 01 F0 5F", 0), seedHex("01 3E 00 30 60"));
+        dev.advanceTo(5000 * SeedMs);
         QVERIFY(!dev.drive().axis().isRunning());
         QVERIFY(dev.drive().axis().origin());
-        QCOMPARE(wire(dev, "01 37 00 36 30", 5000 * Ms), hex("01 37 04 88 13 00 00 24 22")); // 5000
+        QCOMPARE(wire(dev, "01 37 00 36 30", 5000 * SeedMs), seedHex("01 37 04 88 13 00 00 24 22")); // 5000
     }
 
     // 自动查找原点命令2 (0x4E, one byte): "先到限位，然后反方向查找" — to the limit first, then
     // back to the origin, zeroing the counters; answered 0x3E.
     void homingVariant2GoesToTheLimitFirst()
     {
-        SimShuokeDrive::Config c = config();
+        SimShuokeDrive::Config c = seedConfig();
         c.switches.rightLimit = 20000;
         SimShuokeSerialDevice dev(c);
         dev.drive().axis().placeAt(-5000);
-        QCOMPARE(wire(dev, "01 4E 01 01 A1 9F", 0), hex("01 3E 00 30 60"));
-        dev.advanceTo(3000 * Ms); // 0x3E would have stopped at the origin after ~1 s
+        QCOMPARE(wire(dev, "01 4E 01 01 A1 9F", 0), seedHex("01 3E 00 30 60"));
+        dev.advanceTo(3000 * SeedMs); // 0x3E would have stopped at the origin after ~1 s
         QVERIFY(dev.drive().axis().isRunning());
         QVERIFY(dev.drive().axis().motorPosition() > 5000);
-        dev.advanceTo(15000 * Ms);
+        dev.advanceTo(15000 * SeedMs);
         QVERIFY(!dev.drive().axis().isRunning());
         QVERIFY(!dev.drive().axis().homingFailed());
         QVERIFY(dev.drive().axis().origin());
-        QCOMPARE(wire(dev, "01 37 00 36 30", 15000 * Ms), hex("01 37 04 00 00 00 00 FE 47"));
+        QCOMPARE(wire(dev, "01 37 00 36 30", 15000 * SeedMs), seedHex("01 37 04 00 00 00 00 FE 47"));
     }
 
     // 0x45 "运动中定量改变速度（加）": 运动速度 = 当前运动速度 + F during a move keeps the move's
     // target (it used to turn the move into an endless jog); at rest nothing starts.
     void speedStepKeepsAMoveAndStartsNothingAtRest()
     {
-        SimShuokeDrive::Config c = config();
+        SimShuokeDrive::Config c = seedConfig();
         c.model = Model::M4505S;
         SimShuokeSerialDevice dev(c);
-        QCOMPARE(wire(dev, "01 45 00 12 90", 0), hex("01 41 00 10 50"));
-        dev.advanceTo(1000 * Ms);
+        QCOMPARE(wire(dev, "01 45 00 12 90", 0), seedHex("01 41 00 10 50"));
+        dev.advanceTo(1000 * SeedMs);
         QVERIFY(!dev.drive().axis().isRunning());
-        QCOMPARE(wire(dev, "01 44 04 E8 03 00 00 30 E4", 1000 * Ms), hex("01 41 00 10 50")); // F = 1000
-        QCOMPARE(wire(dev, "01 31 04 20 4E 00 00 95 F6", 1100 * Ms), hex("01 31 00 35 90")); // +20000
-        QCOMPARE(wire(dev, "01 45 00 12 90", 1600 * Ms), hex("01 41 00 10 50"));
+        QCOMPARE(wire(dev, "01 44 04 E8 03 00 00 30 E4", 1000 * SeedMs), seedHex("01 41 00 10 50")); // F = 1000
+        QCOMPARE(wire(dev, "01 31 04 20 4E 00 00 95 F6", 1100 * SeedMs), seedHex("01 31 00 35 90")); // +20000
+        QCOMPARE(wire(dev, "01 45 00 12 90", 1600 * SeedMs), seedHex("01 41 00 10 50"));
         QCOMPARE(dev.drive().axis().motor().moveSpeed(), 11000.0); // 10000 + F
-        dev.advanceTo(10000 * Ms);
+        dev.advanceTo(10000 * SeedMs);
         QVERIFY(!dev.drive().axis().isRunning());
-        QCOMPARE(wire(dev, "01 37 00 36 30", 10000 * Ms), hex("01 37 04 20 4E 00 00 95 90"));
+        QCOMPARE(wire(dev, "01 37 00 36 30", 10000 * SeedMs), seedHex("01 37 04 20 4E 00 00 95 90"));
     }
 
     // 0x56: "最高支持数据为运算后的实际反馈脉冲数为31位": 0x10000 x 65535 / 1 is beyond 31 bits:
     // error 0x04, no motion.
     void gearedMoveBeyond31BitsIsOutOfRange()
     {
-        SimShuokeSerialDevice dev(config());
-        QCOMPARE(wire(dev, "01 5F 04 FF FF 00 00 F6 8B", 0), hex("01 5F 00 19 F0"));
-        QCOMPARE(wire(dev, "01 56 04 00 00 01 00 F7 A6", 100 * Ms), hex("01 D6 01 04 E0 73"));
+        SimShuokeSerialDevice dev(seedConfig());
+        QCOMPARE(wire(dev, "01 5F 04 FF FF 00 00 F6 8B", 0), seedHex("01 5F 00 19 F0"));
+        QCOMPARE(wire(dev, "01 56 04 00 00 01 00 F7 A6", 100 * SeedMs), seedHex("01 D6 01 04 E0 73"));
         QVERIFY(!dev.drive().axis().isRunning());
     }
 
@@ -216,17 +216,17 @@ private slots:
     // zero-padded to 5, CRC over the 8) is taken (it drew a checksum error 0x02).
     void paddedRequestIsTaken()
     {
-        SimShuokeSerialDevice dev(config());
-        QCOMPARE(wire(dev, "01 28 00 00 00 00 00 00 29 C5", 0), hex("01 28 04 10 27 00 00 48 E3"));
+        SimShuokeSerialDevice dev(seedConfig());
+        QCOMPARE(wire(dev, "01 28 00 00 00 00 00 00 29 C5", 0), seedHex("01 28 04 10 27 00 00 48 E3"));
         QCOMPARE(dev.checksumErrors(), quint64(0));
         // A short frame with a bad CRC is still a checksum error.
-        QCOMPARE(wire(dev, "01 28 00 3E 01", 100 * Ms), hex("01 A8 01 02 00 69"));
+        QCOMPARE(wire(dev, "01 28 00 3E 01", 100 * SeedMs), seedHex("01 A8 01 02 00 69"));
     }
 
     // The CAN filter: "CAN的数据长度 = 8"; identifiers 251..255 reserved, 0 the broadcast.
     void canFilterTakesEightByteFramesAndBroadcastZeroOnly()
     {
-        SimShuokeCanDevice dev(config());
+        SimShuokeCanDevice dev(seedConfig());
         QCOMPARE(can(dev, 0x001, "01 28 00 00 00 00 00 00"), QByteArray("1:01 28 04 10 27 00 00 00"));
         QCOMPARE(can(dev, 0x001, "01 28 00"), QByteArray("none"));
         QCOMPARE(can(dev, 0x000, "00 21 00 00 00 00 00 00"), QByteArray("1:01 21 00 00 00 00 00 00"));

@@ -8,7 +8,7 @@ namespace {
 
 enum class Kind { Signed, Unsigned, Pair, Centi };
 
-struct ChannelDef
+struct ModbusChannelDef
 {
     const char *id;
     const char *name; // QT_TRANSLATE_NOOP in "dd::ServoModbusDrive"
@@ -20,9 +20,9 @@ struct ChannelDef
 
 // Units are this drive class's usual ones (the seed gives none): r/min, % of rated torque,
 // 0.01 A per count for the currents, encoder counts for positions.
-const QList<ChannelDef> &channelDefs()
+const QList<ModbusChannelDef> &channelDefs()
 {
-    static const QList<ChannelDef> defs = {
+    static const QList<ModbusChannelDef> defs = {
         {"speed", QT_TRANSLATE_NOOP("dd::ServoModbusDrive", "Speed (DP-SPd)"), "r/min", 0, 0x00, Kind::Signed},
         {"position", QT_TRANSLATE_NOOP("dd::ServoModbusDrive", "Position (DP-PoS)"), "pulse", 0, 0x01, Kind::Pair},
         {"position-low", QT_TRANSLATE_NOOP("dd::ServoModbusDrive", "Position, low register (DP-PoS)"), "", 0, 0x01,
@@ -70,9 +70,9 @@ const QList<ChannelDef> &channelDefs()
     return defs;
 }
 
-const ChannelDef *channelDef(const QString &id)
+const ModbusChannelDef *modbusChannelDef(const QString &id)
 {
-    for (const ChannelDef &d : channelDefs())
+    for (const ModbusChannelDef &d : channelDefs())
         if (id == QLatin1String(d.id))
             return &d;
     return nullptr;
@@ -83,7 +83,7 @@ const ChannelDef *channelDef(const QString &id)
 QList<ChannelInfo> ServoModbusChannels::channels()
 {
     QList<ChannelInfo> out;
-    for (const ChannelDef &d : channelDefs())
+    for (const ModbusChannelDef &d : channelDefs())
         out.append({QLatin1String(d.id), QCoreApplication::translate("dd::ServoModbusDrive", d.name),
                     QString::fromUtf8(d.unit), d.decimals});
     return out;
@@ -92,14 +92,14 @@ QList<ChannelInfo> ServoModbusChannels::channels()
 QStringList ServoModbusChannels::ids()
 {
     QStringList out;
-    for (const ChannelDef &d : channelDefs())
+    for (const ModbusChannelDef &d : channelDefs())
         out << QLatin1String(d.id);
     return out;
 }
 
 QList<quint16> ServoModbusChannels::registers(const QString &channelId)
 {
-    const ChannelDef *d = channelDef(channelId);
+    const ModbusChannelDef *d = modbusChannelDef(channelId);
     if (!d)
         return {};
     if (d->kind == Kind::Pair)
@@ -110,7 +110,7 @@ QList<quint16> ServoModbusChannels::registers(const QString &channelId)
 double ServoModbusChannels::value(const QString &channelId, const QHash<quint16, quint16> &registers,
                                   servomodbus::PositionPairRule rule)
 {
-    const ChannelDef *d = channelDef(channelId);
+    const ModbusChannelDef *d = modbusChannelDef(channelId);
     if (!d)
         return 0.0;
     const quint16 v = registers.value(d->reg);

@@ -18,7 +18,7 @@ using namespace shuoke;
 
 namespace {
 
-struct ChannelDef
+struct ShuokeChannelDef
 {
     const char *id;
     const char *name; // translated in context dd::ShuokeDrive
@@ -27,7 +27,7 @@ struct ChannelDef
     quint8 command2; // second command of a derived channel; 0 none
 };
 
-const ChannelDef kChannels[] = {
+const ShuokeChannelDef kChannels[] = {
     {"speed", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Speed"), "pulse/s", CmdQuerySpeed, 0},
     {"position", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Absolute position"), "pulse", CmdQueryAbsolutePosition, 0},
     {"relative-position", QT_TRANSLATE_NOOP("dd::ShuokeDrive", "Relative position"), "pulse", CmdQueryRelativePosition,
@@ -45,9 +45,9 @@ const ChannelDef kChannels[] = {
      CmdQueryAbsolutePosition, CmdClosedLoopGetAbsolute},
 };
 
-const ChannelDef *channelDef(const QString &id)
+const ShuokeChannelDef *shuokeChannelDef(const QString &id)
 {
-    for (const ChannelDef &c : kChannels)
+    for (const ShuokeChannelDef &c : kChannels)
         if (id == QLatin1String(c.id))
             return &c;
     return nullptr;
@@ -57,7 +57,7 @@ const ChannelDef *channelDef(const QString &id)
 
 bool ShuokeDrive::channelAvailable(const QString &id) const
 {
-    const ChannelDef *c = channelDef(id);
+    const ShuokeChannelDef *c = shuokeChannelDef(id);
     if (!c)
         return false;
     if (!commandUnavailable(c->command, 0).isEmpty())
@@ -68,7 +68,7 @@ bool ShuokeDrive::channelAvailable(const QString &id) const
 QList<ChannelInfo> ShuokeDrive::channels() const
 {
     QList<ChannelInfo> out;
-    for (const ChannelDef &c : kChannels) {
+    for (const ShuokeChannelDef &c : kChannels) {
         const QString id = QLatin1String(c.id);
         if (!channelAvailable(id))
             continue;
@@ -85,7 +85,7 @@ QList<quint8> ShuokeDrive::channelCommands(const QStringList &ids) const
 {
     QList<quint8> out;
     for (const QString &id : ids) {
-        const ChannelDef *c = channelDef(id);
+        const ShuokeChannelDef *c = shuokeChannelDef(id);
         if (!c)
             continue;
         if (!out.contains(c->command))
@@ -103,7 +103,7 @@ void ShuokeDrive::fillSamples(DriveReply *reply, const QStringList &ids, const Q
         return it == data.cend() ? std::nullopt : decodeInt(*it);
     };
     for (const QString &id : ids) {
-        const ChannelDef *c = channelDef(id);
+        const ShuokeChannelDef *c = shuokeChannelDef(id);
         if (!c || !data.contains(c->command) || (c->command2 && !data.contains(c->command2)))
             continue;
         if (c->command == CmdQueryStatus) {
@@ -163,7 +163,7 @@ DriveReply *ShuokeDrive::readChannels(const QStringList &channelIds)
         for (const ChannelInfo &c : channels())
             ids.append(c.id);
     for (const QString &id : std::as_const(ids)) {
-        const ChannelDef *c = channelDef(id);
+        const ShuokeChannelDef *c = shuokeChannelDef(id);
         if (!c)
             return finishedReply({ErrorCode::InvalidArgument, tr("\"%1\" is not a Shuoke channel.").arg(id)});
         if (!channelAvailable(id)) {

@@ -1,5 +1,6 @@
 #include "core/protocol/modbus/modbusrtu.h"
 
+#include "core/common/hextext.h"
 #include "core/protocol/modbus/crc16.h"
 
 #include <algorithm>
@@ -31,15 +32,6 @@ QByteArray header(quint8 address, quint8 function)
     out.append(static_cast<char>(address));
     out.append(static_cast<char>(function));
     return out;
-}
-
-QString hex2(quint32 v)
-{
-    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
-}
-QString hex4(quint32 v)
-{
-    return QStringLiteral("0x%1").arg(v, 4, 16, QLatin1Char('0'));
 }
 
 // A caller's limit never widens the Modbus one: 124 or 125 registers of 0x10 would not fit
@@ -98,7 +90,7 @@ QString exceptionCodeName(quint8 code)
     case MemoryParityError: return QStringLiteral("memory parity error");
     case GatewayPathUnavailable: return QStringLiteral("gateway path unavailable");
     case GatewayTargetFailedToRespond: return QStringLiteral("gateway target failed to respond");
-    default: return QStringLiteral("exception ") + hex2(code);
+    default: return QStringLiteral("exception ") + hexText(code, 2);
     }
 }
 
@@ -215,12 +207,12 @@ Decoded<Request> decodeRequest(const QByteArray &adu, int maxCount, DecodeError 
     r.address = byteAt(adu, 0);
     r.function = byteAt(adu, 1);
     if (!isKnownFunction(r.function))
-        return fail<R>(reason, DecodeError::UnknownFunction, QStringLiteral("function %1").arg(hex2(r.function)));
+        return fail<R>(reason, DecodeError::UnknownFunction, QStringLiteral("function %1").arg(hexText(r.function, 2)));
 
     if (r.function == ReadHoldingRegisters || r.function == WriteSingleRegister) {
         if (n != 8)
             return fail<R>(reason, DecodeError::WrongLength,
-                           QStringLiteral("function %1 request is 8 bytes, got %2").arg(hex2(r.function)).arg(n));
+                           QStringLiteral("function %1 request is 8 bytes, got %2").arg(hexText(r.function, 2)).arg(n));
         r.start = wordAt(adu, 2);
         if (r.function == WriteSingleRegister) {
             r.count = 1;
@@ -262,7 +254,7 @@ Decoded<Reply> decodeReply(const QByteArray &adu, const Request &request, Decode
         return fail<R>(reason, DecodeError::BadCrc, QStringLiteral("CRC mismatch over %1 bytes").arg(n));
     if (request.address == BroadcastAddress)
         return fail<R>(reason, DecodeError::AddressMismatch,
-                       QStringLiteral("reply from %1 to a broadcast request").arg(hex2(byteAt(adu, 0))));
+                       QStringLiteral("reply from %1 to a broadcast request").arg(hexText(byteAt(adu, 0), 2)));
 
     Reply r;
     r.address = byteAt(adu, 0);
@@ -280,13 +272,15 @@ Decoded<Reply> decodeReply(const QByteArray &adu, const Request &request, Decode
     if (fc & ExceptionFlag) // an exception, also not judged by its address, to another function
         return fail<R>(reason, DecodeError::FunctionMismatch,
                        QStringLiteral("exception reply for function %1, request function %2")
-                           .arg(hex2(fc & 0x7F), hex2(request.function)));
+                           .arg(hexText(fc & 0x7F, 2), hexText(request.function, 2)));
     if (r.address != request.address)
-        return fail<R>(reason, DecodeError::AddressMismatch,
-                       QStringLiteral("reply from %1, request to %2").arg(hex2(r.address), hex2(request.address)));
+        return fail<R>(
+            reason, DecodeError::AddressMismatch,
+            QStringLiteral("reply from %1, request to %2").arg(hexText(r.address, 2), hexText(request.address, 2)));
     if (fc != request.function)
-        return fail<R>(reason, DecodeError::FunctionMismatch,
-                       QStringLiteral("reply function %1, request function %2").arg(hex2(fc), hex2(request.function)));
+        return fail<R>(
+            reason, DecodeError::FunctionMismatch,
+            QStringLiteral("reply function %1, request function %2").arg(hexText(fc, 2), hexText(request.function, 2)));
     r.function = fc;
 
     switch (fc) {
@@ -310,11 +304,12 @@ Decoded<Reply> decodeReply(const QByteArray &adu, const Request &request, Decode
     case WriteMultipleRegisters: {
         if (n != 8)
             return fail<R>(reason, DecodeError::WrongLength,
-                           QStringLiteral("function %1 reply is 8 bytes, got %2").arg(hex2(fc)).arg(n));
+                           QStringLiteral("function %1 reply is 8 bytes, got %2").arg(hexText(fc, 2)).arg(n));
         r.start = wordAt(adu, 2);
         if (r.start != request.start)
-            return fail<R>(reason, DecodeError::EchoMismatch,
-                           QStringLiteral("register %1 echoed, %2 sent").arg(hex4(r.start), hex4(request.start)));
+            return fail<R>(
+                reason, DecodeError::EchoMismatch,
+                QStringLiteral("register %1 echoed, %2 sent").arg(hexText(r.start, 4), hexText(request.start, 4)));
         if (fc == WriteSingleRegister) {
             r.count = 1;
             r.values = {wordAt(adu, 4)};
@@ -326,7 +321,7 @@ Decoded<Reply> decodeReply(const QByteArray &adu, const Request &request, Decode
                            QStringLiteral("count %1 echoed, %2 sent").arg(r.count).arg(request.count));
         return succeed(reason, r);
     }
-    default: return fail<R>(reason, DecodeError::UnknownFunction, QStringLiteral("function %1").arg(hex2(fc)));
+    default: return fail<R>(reason, DecodeError::UnknownFunction, QStringLiteral("function %1").arg(hexText(fc, 2)));
     }
 }
 

@@ -1,4 +1,5 @@
 #include "core/protocol/servomodbus/servomodbus.h"
+#include "core/common/hextext.h"
 
 #include <QCoreApplication>
 
@@ -38,11 +39,6 @@ qint64 floorDiv(qint64 a, qint64 b)
     if ((a % b != 0) && ((a < 0) != (b < 0)))
         --q;
     return q;
-}
-
-QString hex4(quint32 v)
-{
-    return QStringLiteral("0x%1").arg(v, 4, 16, QLatin1Char('0'));
 }
 
 } // namespace
@@ -334,7 +330,7 @@ QString validateRequest(const modbusrtu::Request &r)
         if (!isReadableRange(r.start, r.count))
             return QStringLiteral("cannot read %1 registers at %2 (1..20 within 0x0000..0x0017 or 0x0064..0x009F)")
                 .arg(r.count)
-                .arg(hex4(r.start));
+                .arg(hexText(r.start, 4));
         return {};
     case WriteMultipleRegisters:
         if (r.values.size() != r.count)
@@ -347,14 +343,14 @@ QString validateRequest(const modbusrtu::Request &r)
         if (!isWritableRange(r.start, r.count))
             return QStringLiteral("cannot write %1 registers at %2 (1..20 within 0x0064..0x009F)")
                 .arg(r.count)
-                .arg(hex4(r.start));
+                .arg(hexText(r.start, 4));
         return {};
     case WriteSingleRegister:
         if (r.values.size() != 1)
             return QStringLiteral("function 0x06 carries exactly one value");
         if (r.start != EeLegacyRegister)
             return QStringLiteral("function 0x06 is only for EE operations at register 0x0000, not %1")
-                .arg(hex4(r.start));
+                .arg(hexText(r.start, 4));
         if (!eeOpFromCode(r.values.first()))
             return QStringLiteral("EE operation code %1 is not 1..5").arg(r.values.first());
         return {};

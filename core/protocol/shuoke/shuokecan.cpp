@@ -3,7 +3,7 @@
 namespace dd::shuoke {
 
 namespace {
-Decoded<Frame> fail(const QString &why)
+Decoded<Frame> canFailure(const QString &why)
 {
     return Decoded<Frame>::failure(QStringLiteral("CAN: ") + why);
 }
@@ -33,24 +33,24 @@ Decoded<Frame> decodeCan(const CanFrameData &can)
 {
     const QByteArray &d = can.data;
     if (d.size() > kCanFrameBytes)
-        return fail(QStringLiteral("%1 data bytes (at most 8)").arg(d.size()));
+        return canFailure(QStringLiteral("%1 data bytes (at most 8)").arg(d.size()));
     if (d.size() < 3)
-        return fail(QStringLiteral("%1 data bytes is too short").arg(d.size()));
+        return canFailure(QStringLiteral("%1 data bytes is too short").arg(d.size()));
     const quint8 address = static_cast<quint8>(d.at(0));
     const quint8 commandByte = static_cast<quint8>(d.at(1));
     const int len = static_cast<quint8>(d.at(2));
     if (can.extended) {
         if (can.id != address && can.id != 0)
-            return fail(
+            return canFailure(
                 QStringLiteral("extended id 0x%1 is neither the address %2 nor 0").arg(can.id, 0, 16).arg(address));
     } else if (can.id != address) {
-        return fail(QStringLiteral("id 0x%1 does not match the address byte %2").arg(can.id, 0, 16).arg(address));
+        return canFailure(QStringLiteral("id 0x%1 does not match the address byte %2").arg(can.id, 0, 16).arg(address));
     }
     if (len > kCanMaxData || 3 + len > d.size())
-        return fail(QStringLiteral("length byte %1 does not fit %2 data bytes").arg(len).arg(d.size()));
+        return canFailure(QStringLiteral("length byte %1 does not fit %2 data bytes").arg(len).arg(d.size()));
     if (commandByte & 0x80) {
         if (len != 1)
-            return fail(QStringLiteral("failure reply with length %1 (one code byte expected)").arg(len));
+            return canFailure(QStringLiteral("failure reply with length %1 (one code byte expected)").arg(len));
         return Decoded<Frame>::success(Frame::failureReply(address, commandByte, static_cast<quint8>(d.at(3))));
     }
     return Decoded<Frame>::success(Frame::make(address, commandByte, d.mid(3, len)));

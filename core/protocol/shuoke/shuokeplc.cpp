@@ -1,5 +1,6 @@
 #include "core/protocol/shuoke/shuokeplc.h"
 
+#include "core/common/hextext.h"
 #include "core/protocol/modbus/crc16.h"
 #include "core/protocol/shuoke/shuokecommands.h"
 
@@ -7,13 +8,8 @@ namespace dd::shuoke {
 
 namespace {
 
-QString hex2(quint8 v)
-{
-    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
-}
-
 template <typename T>
-Decoded<T> fail(const QString &why)
+Decoded<T> plcFailure(const QString &why)
 {
     return Decoded<T>::failure(QStringLiteral("PLC: ") + why);
 }
@@ -35,18 +31,19 @@ Decoded<PlcRequestLayout> plcRequestLayout(const Frame &request, const PlcOption
 {
     const CommandInfo *info = commandInfo(request.command);
     if (!info || info->plcAccess == PlcAccess::None)
-        return fail<PlcRequestLayout>(QStringLiteral("command %1 has no PLC mapping").arg(hex2(request.command)));
+        return plcFailure<PlcRequestLayout>(
+            QStringLiteral("command %1 has no PLC mapping").arg(hexText(request.command, 2)));
     if (request.failure)
-        return fail<PlcRequestLayout>(QStringLiteral("a failure reply is not a request"));
+        return plcFailure<PlcRequestLayout>(QStringLiteral("a failure reply is not a request"));
     const int reg = options.base + request.command;
     if (reg > 0xFFFF)
-        return fail<PlcRequestLayout>(QStringLiteral("base 0x%1 + command %2 exceeds the register range")
-                                          .arg(options.base, 4, 16, QLatin1Char('0'))
-                                          .arg(hex2(request.command)));
+        return plcFailure<PlcRequestLayout>(QStringLiteral("base 0x%1 + command %2 exceeds the register range")
+                                                .arg(options.base, 4, 16, QLatin1Char('0'))
+                                                .arg(hexText(request.command, 2)));
     if (!info->allowsRequestLength(static_cast<int>(request.data.size())))
-        return fail<PlcRequestLayout>(QStringLiteral("command %1 does not take %2 data bytes")
-                                          .arg(hex2(request.command))
-                                          .arg(request.data.size()));
+        return plcFailure<PlcRequestLayout>(QStringLiteral("command %1 does not take %2 data bytes")
+                                                .arg(hexText(request.command, 2))
+                                                .arg(request.data.size()));
     PlcRequestLayout layout;
     layout.registerAddress = static_cast<quint16>(reg);
     layout.registerCount = info->plcRegisters;
@@ -56,9 +53,9 @@ Decoded<PlcRequestLayout> plcRequestLayout(const Frame &request, const PlcOption
         layout.function = PlcWriteRegisters;
         const int bytes = 2 * info->plcRegisters;
         if (request.data.size() > bytes)
-            return fail<PlcRequestLayout>(QStringLiteral("%1 data bytes do not fit %2 registers")
-                                              .arg(request.data.size())
-                                              .arg(info->plcRegisters));
+            return plcFailure<PlcRequestLayout>(QStringLiteral("%1 data bytes do not fit %2 registers")
+                                                    .arg(request.data.size())
+                                                    .arg(info->plcRegisters));
         layout.values = request.data + QByteArray(bytes - request.data.size(), '\0');
     }
     return Decoded<PlcRequestLayout>::success(layout);
@@ -98,10 +95,10 @@ Decoded<QByteArray> plcReplyData(quint8 command, const QByteArray &registerBytes
 {
     const CommandInfo *info = commandInfo(command);
     if (!info || info->plcAccess != PlcAccess::Read)
-        return fail<QByteArray>(QStringLiteral("command %1 is not a PLC read").arg(hex2(command)));
+        return plcFailure<QByteArray>(QStringLiteral("command %1 is not a PLC read").arg(hexText(command, 2)));
     const int n = info->maxReplyLength();
     if (registerBytes.size() < n)
-        return fail<QByteArray>(
+        return plcFailure<QByteArray>(
             QStringLiteral("%1 register bytes hold no %2-byte reply").arg(registerBytes.size()).arg(n));
     return Decoded<QByteArray>::success(registerBytes.left(n));
 }
@@ -112,30 +109,31 @@ Decoded<Frame> decodePlcReply(const QByteArray &adu, const Frame &request, const
     if (!layout.ok())
         return Decoded<Frame>::failure(layout.error);
     if (adu.size() < 5)
-        return fail<Frame>(QStringLiteral("reply of %1 bytes is too short").arg(adu.size()));
+        return plcFailure<Frame>(QStringLiteral("reply of %1 bytes is too short").arg(adu.size()));
     if (!hasValidCrc16(adu))
-        return fail<Frame>(QStringLiteral("CRC mismatch"));
+        return plcFailure<Frame>(QStringLiteral("CRC mismatch"));
     const quint8 address = static_cast<quint8>(adu.at(0));
     if (!isReplyAddress(address, request))
-        return fail<Frame>(
+        return plcFailure<Frame>(
             QStringLiteral("reply from address %1 to a request for %2").arg(address).arg(request.address));
     const quint8 function = static_cast<quint8>(adu.at(1));
     const quint8 expected = layout.value->function;
     if (function == (expected | 0x80)) {
         if (adu.size() != 5)
-            return fail<Frame>(QStringLiteral("exception reply of %1 bytes (5 expected)").arg(adu.size()));
+            return plcFailure<Frame>(QStringLiteral("exception reply of %1 bytes (5 expected)").arg(adu.size()));
         return Decoded<Frame>::success(Frame::failureReply(address, request.command, static_cast<quint8>(adu.at(2))));
     }
     if (function != expected)
-        return fail<Frame>(QStringLiteral("function %1 in reply, %2 expected").arg(hex2(function), hex2(expected)));
+        return plcFailure<Frame>(
+            QStringLiteral("function %1 in reply, %2 expected").arg(hexText(function, 2), hexText(expected, 2)));
 
     if (expected == PlcReadRegisters) {
         const int byteCount = static_cast<quint8>(adu.at(2));
         if (byteCount != 2 * layout.value->registerCount)
-            return fail<Frame>(
+            return plcFailure<Frame>(
                 QStringLiteral("byte count %1, %2 expected").arg(byteCount).arg(2 * layout.value->registerCount));
         if (adu.size() != 5 + byteCount)
-            return fail<Frame>(
+            return plcFailure<Frame>(
                 QStringLiteral("reply of %1 bytes for a byte count of %2").arg(adu.size()).arg(byteCount));
         const Decoded<QByteArray> data = plcReplyData(request.command, adu.mid(3, byteCount));
         if (!data.ok())
@@ -143,22 +141,22 @@ Decoded<Frame> decodePlcReply(const QByteArray &adu, const Frame &request, const
         return Decoded<Frame>::success(Frame::make(address, request.command, *data.value));
     }
     if (adu.size() != 8)
-        return fail<Frame>(QStringLiteral("write reply of %1 bytes (8 expected)").arg(adu.size()));
+        return plcFailure<Frame>(QStringLiteral("write reply of %1 bytes (8 expected)").arg(adu.size()));
     if (word(adu, 2) != layout.value->registerAddress || word(adu, 4) != layout.value->registerCount)
-        return fail<Frame>(QStringLiteral("write reply echoes register 0x%1 count %2, sent 0x%3 count %4")
-                               .arg(word(adu, 2), 4, 16, QLatin1Char('0'))
-                               .arg(word(adu, 4))
-                               .arg(layout.value->registerAddress, 4, 16, QLatin1Char('0'))
-                               .arg(layout.value->registerCount));
+        return plcFailure<Frame>(QStringLiteral("write reply echoes register 0x%1 count %2, sent 0x%3 count %4")
+                                     .arg(word(adu, 2), 4, 16, QLatin1Char('0'))
+                                     .arg(word(adu, 4))
+                                     .arg(layout.value->registerAddress, 4, 16, QLatin1Char('0'))
+                                     .arg(layout.value->registerCount));
     return Decoded<Frame>::success(Frame::make(address, request.command));
 }
 
 Decoded<Frame> decodePlcRequest(const QByteArray &adu, const PlcOptions &options)
 {
     if (adu.size() < 8)
-        return fail<Frame>(QStringLiteral("request of %1 bytes is too short").arg(adu.size()));
+        return plcFailure<Frame>(QStringLiteral("request of %1 bytes is too short").arg(adu.size()));
     if (!hasValidCrc16(adu))
-        return fail<Frame>(QStringLiteral("CRC mismatch"));
+        return plcFailure<Frame>(QStringLiteral("CRC mismatch"));
     const quint8 address = static_cast<quint8>(adu.at(0));
     const quint8 function = static_cast<quint8>(adu.at(1));
     const quint16 reg = word(adu, 2);
@@ -166,25 +164,26 @@ Decoded<Frame> decodePlcRequest(const QByteArray &adu, const PlcOptions &options
     const int command = reg - options.base;
     const CommandInfo *info = (command >= 0 && command <= 0xFF) ? commandInfo(static_cast<quint8>(command)) : nullptr;
     if (!info || info->plcAccess == PlcAccess::None)
-        return fail<Frame>(QStringLiteral("register 0x%1 maps to no command (base 0x%2)")
-                               .arg(reg, 4, 16, QLatin1Char('0'))
-                               .arg(options.base, 4, 16, QLatin1Char('0')));
+        return plcFailure<Frame>(QStringLiteral("register 0x%1 maps to no command (base 0x%2)")
+                                     .arg(reg, 4, 16, QLatin1Char('0'))
+                                     .arg(options.base, 4, 16, QLatin1Char('0')));
     const bool read = info->plcAccess == PlcAccess::Read;
     if (function != (read ? PlcReadRegisters : PlcWriteRegisters))
-        return fail<Frame>(QStringLiteral("function %1 for command %2").arg(hex2(function), hex2(info->code)));
+        return plcFailure<Frame>(
+            QStringLiteral("function %1 for command %2").arg(hexText(function, 2), hexText(info->code, 2)));
     if (count != info->plcRegisters)
-        return fail<Frame>(QStringLiteral("%1 registers for command %2 (%3 expected)")
-                               .arg(count)
-                               .arg(hex2(info->code))
-                               .arg(info->plcRegisters));
+        return plcFailure<Frame>(QStringLiteral("%1 registers for command %2 (%3 expected)")
+                                     .arg(count)
+                                     .arg(hexText(info->code, 2))
+                                     .arg(info->plcRegisters));
     if (read) {
         if (adu.size() != 8)
-            return fail<Frame>(QStringLiteral("read request of %1 bytes (8 expected)").arg(adu.size()));
+            return plcFailure<Frame>(QStringLiteral("read request of %1 bytes (8 expected)").arg(adu.size()));
         return Decoded<Frame>::success(Frame::make(address, info->code));
     }
     const int byteCount = static_cast<quint8>(adu.at(6));
     if (byteCount != 2 * count || adu.size() != 9 + byteCount)
-        return fail<Frame>(
+        return plcFailure<Frame>(
             QStringLiteral("write request with byte count %1 in %2 bytes").arg(byteCount).arg(adu.size()));
     return Decoded<Frame>::success(Frame::make(address, info->code, adu.mid(7, info->maxRequestLength())));
 }
@@ -205,9 +204,9 @@ Decoded<QByteArray> encodePlcReply(const Frame &reply, const Frame &request, con
     if (layout.value->function == PlcReadRegisters) {
         const int bytes = 2 * layout.value->registerCount;
         if (reply.data.size() > bytes)
-            return fail<QByteArray>(QStringLiteral("%1 reply bytes do not fit %2 registers")
-                                        .arg(reply.data.size())
-                                        .arg(layout.value->registerCount));
+            return plcFailure<QByteArray>(QStringLiteral("%1 reply bytes do not fit %2 registers")
+                                              .arg(reply.data.size())
+                                              .arg(layout.value->registerCount));
         adu.append(static_cast<char>(bytes));
         adu.append(reply.data);
         adu.append(QByteArray(bytes - reply.data.size(), '\0'));

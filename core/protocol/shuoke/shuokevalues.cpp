@@ -1,5 +1,6 @@
 #include "core/protocol/shuoke/shuokevalues.h"
 
+#include "core/common/hextext.h"
 #include "core/protocol/shuoke/shuokecommands.h"
 
 namespace dd::shuoke {
@@ -24,11 +25,6 @@ quint32 decodeUnsigned(const char *p, int bytes, ByteOrder order)
         value |= static_cast<quint32>(static_cast<quint8>(p[index])) << (8 * i);
     }
     return value;
-}
-
-QString hex2(quint8 v)
-{
-    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
 }
 
 QString checkFlag(const QByteArray &data, const char *what)
@@ -98,11 +94,11 @@ QString validateRequestData(quint8 command, const QByteArray &data, ByteOrder or
 {
     const CommandInfo *info = commandInfo(command);
     if (!info)
-        return QStringLiteral("unknown command %1").arg(hex2(command));
+        return QStringLiteral("unknown command %1").arg(hexText(command, 2));
     const int n = static_cast<int>(data.size());
     if (!info->allowsRequestLength(n))
         return QStringLiteral("command %1 (%2) does not take %3 data bytes")
-            .arg(hex2(command), QLatin1String(info->name))
+            .arg(hexText(command, 2), QLatin1String(info->name))
             .arg(n);
     if (n == 0)
         return QString();

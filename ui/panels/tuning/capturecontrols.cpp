@@ -26,7 +26,7 @@ const QList<CaptureSettings::Mode> &modes()
                                                 CaptureSettings::Mode::Auto};
     return m;
 }
-QDoubleSpinBox *spin(QWidget *parent, const char *name, double min, double max, double value, int decimals)
+QDoubleSpinBox *captureSpin(QWidget *parent, const char *name, double min, double max, double value, int decimals)
 {
     auto *s = new QDoubleSpinBox(parent);
     s->setObjectName(QLatin1String(name));
@@ -41,11 +41,11 @@ CaptureControls::CaptureControls(QWidget *parent)
     : QWidget(parent)
     , m_kind(new QComboBox(this))
     , m_channel(new QComboBox(this))
-    , m_level(spin(this, "triggerLevel", -1e9, 1e9, 0.0, 3))
-    , m_pre(spin(this, "preTrigger", 0.0, 100.0, 20.0, 0))
-    , m_length(spin(this, "recordLength", 0.01, 60.0, 0.5, 2))
+    , m_level(captureSpin(this, "triggerLevel", -1e9, 1e9, 0.0, 3))
+    , m_pre(captureSpin(this, "preTrigger", 0.0, 100.0, 20.0, 0))
+    , m_length(captureSpin(this, "recordLength", 0.01, 60.0, 0.5, 2))
     , m_mode(new QComboBox(this))
-    , m_timeout(spin(this, "autoTimeout", 0.1, 3600.0, 1.0, 1))
+    , m_timeout(captureSpin(this, "autoTimeout", 0.1, 3600.0, 1.0, 1))
     , m_arm(new QPushButton(this))
     , m_force(new QPushButton(this))
     , m_stop(new QPushButton(this))

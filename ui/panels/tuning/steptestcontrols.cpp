@@ -13,7 +13,7 @@
 namespace dd {
 
 namespace {
-QDoubleSpinBox *spin(QWidget *parent, const char *name, double max, double value, int decimals)
+QDoubleSpinBox *stepSpin(QWidget *parent, const char *name, double max, double value, int decimals)
 {
     auto *s = new QDoubleSpinBox(parent);
     s->setObjectName(QLatin1String(name));
@@ -26,13 +26,13 @@ QDoubleSpinBox *spin(QWidget *parent, const char *name, double max, double value
 
 StepTestControls::StepTestControls(QWidget *parent)
     : QWidget(parent)
-    , m_maxSpeed(spin(this, "maxSpeed", 10000.0, 0.0, 0))
-    , m_maxTravel(spin(this, "maxTravel", 1e9, 0.0, 0))
-    , m_maxDuration(spin(this, "maxDuration", 600.0, 0.0, 1))
+    , m_maxSpeed(stepSpin(this, "maxSpeed", 10000.0, 0.0, 0))
+    , m_maxTravel(stepSpin(this, "maxTravel", 1e9, 0.0, 0))
+    , m_maxDuration(stepSpin(this, "maxDuration", 600.0, 0.0, 1))
     , m_test(new QComboBox(this))
-    , m_speed(spin(this, "stepSpeed", 10000.0, 300.0, 0))
-    , m_duration(spin(this, "stepDuration", 600.0, 0.3, 2))
-    , m_distance(spin(this, "stepDistance", 1e9, 10000.0, 0))
+    , m_speed(stepSpin(this, "stepSpeed", 10000.0, 300.0, 0))
+    , m_duration(stepSpin(this, "stepDuration", 600.0, 0.3, 2))
+    , m_distance(stepSpin(this, "stepDistance", 1e9, 10000.0, 0))
     , m_return(new QCheckBox(this))
     , m_run(new QPushButton(this))
     , m_reason(new QLabel(this))

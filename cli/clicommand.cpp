@@ -3,6 +3,7 @@
 #include "core/drive/drive.h"
 #include "core/drive/driveconnection.h"
 #include "core/drive/familybackend.h" // driveconnection.h needs it complete (QPointer)
+#include "core/protocol/familytraits.h"
 
 namespace dd {
 
@@ -64,6 +65,10 @@ void CliCommand::succeed(const QJsonObject &json, const QString &text, CliExit c
         doc.insert(QStringLiteral("exitCode"), int(code));
     for (auto it = json.begin(); it != json.end(); ++it)
         doc.insert(it.key(), it.value());
+    if (m_motionSwitchesPowerOn) {
+        doc.insert(QStringLiteral("powerStageOn"), true);
+        out()->note(powerStaysOnNote());
+    }
     out()->result(doc, text);
     finish(code);
 }
@@ -76,6 +81,8 @@ void CliCommand::fail(const Error &error, const QJsonObject &partial, std::optio
     Error shown = error;
     if (error.code == ErrorCode::Timeout && m_name != QLatin1String("scan"))
         shown.message += QLatin1Char(' ') + tr("If the address or baud rate may be wrong, try: drivedesk-cli ... scan");
+    if (m_motionSwitchesPowerOn)
+        out()->note(powerStaysOnNote());
     out()->failure(m_name, int(c), shown, partial);
     finish(c);
 }
@@ -114,6 +121,32 @@ void CliCommand::onFinished(DriveReply *reply, std::function<void(DriveReply *)>
         handler(reply);
         reply->deleteLater();
     });
+}
+
+bool CliCommand::motionMaySwitchPowerOn(bool enableGiven)
+{
+    const FamilyTraits &t = familyTraits(context()->globals.connection.family);
+    if (!t.motionEnables || drive()->status().enabled)
+        return true;
+    if (!enableGiven) {
+        fail({ErrorCode::InvalidArgument,
+              tr("On %1 drives a motion command switches the power stage on by itself, and whether it is on "
+                 "cannot be read back. Add --enable to allow it: the power stage is then on, and stays on "
+                 "afterwards (the motor holds its position) until `enable off`. Nothing was sent after "
+                 "identifying the drive.")
+                  .arg(t.displayName())},
+             {}, CliExit::Usage);
+        return false;
+    }
+    m_motionSwitchesPowerOn = true;
+    out()->note(tr("--enable: this command switches the power stage on."));
+    return true;
+}
+
+QString CliCommand::powerStaysOnNote() const
+{
+    return tr("The power stage may be on (this command was allowed to switch it on) and stays so, the motor "
+              "holding its position; `enable off` switches it off.");
 }
 
 } // namespace dd

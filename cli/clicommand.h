@@ -85,6 +85,15 @@ protected:
     // Checks the number of arguments; false with a message when it does not fit.
     bool expectArguments(const CliInvocation &inv, int min, int max, const QString &what, QString *error) const;
 
+    // A motion command on a family whose motion switches the power stage on by itself
+    // (FamilyTraits::motionEnables: servo-can) runs only with --enable, since nobody can see
+    // whether the stage is on. False, with the command failed (exit 2, nothing sent), when it
+    // may not run; true when it may, noting that the stage will be on.
+    bool motionMaySwitchPowerOn(bool enableGiven);
+    // Once allowed, every result says that the stage may be on and stays so (a note; JSON
+    // "powerStageOn": true on success).
+    QString powerStaysOnNote() const;
+
     // Call `handler` when `reply` finishes (from the event loop), then delete the reply.
     void onFinished(DriveReply *reply, std::function<void(DriveReply *)> handler);
 
@@ -92,6 +101,7 @@ private:
     QString m_name;
     CliContext *m_ctx;
     bool m_done = false;
+    bool m_motionSwitchesPowerOn = false;
 };
 
 } // namespace dd

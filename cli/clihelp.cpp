@@ -72,8 +72,8 @@ QString CliHelp::commandList()
               "  ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them\n"
               "  monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]\n"
               "                                 sample live values (Ctrl-C ends)\n"
-              "  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once\n"
-              "  move (--by N | --to N) [--speed V] [--no-wait]\n"
+              "  jog SPEED [--duration S] [--enable]  run, then stop; Ctrl-C or any error stops at once\n"
+              "  move (--by N | --to N) [--speed V] [--no-wait] [--enable]\n"
               "                                 move, and wait until the axis is at rest\n"
               "  stop [--emergency]             stop (emergency stop where the family has one)\n"
               "  enable on|off                  servo enable on or off\n"
@@ -132,7 +132,7 @@ QString CliHelp::examples()
                          "  drivedesk-cli --port /dev/ttyUSB0 --address 3 set PA12=300 PA13=50\n"
                          "  drivedesk-cli --can socketcan:can0 --address 1 backup -o axis1.ddbackup\n"
                          "  drivedesk-cli --family shuoke --port COM3 --json monitor speed,position --rate 20\n"
-                         "  drivedesk-cli --sim --family servo-can jog 100 --duration 2\n"
+                         "  drivedesk-cli --sim --family servo-can jog 100 --duration 2 --enable\n"
                          "  drivedesk-cli --lang zh_CN --sim get PA0 PA1\n");
 }
 
@@ -196,16 +196,19 @@ QString CliHelp::command(const QString &name)
                   "-o writes CSV: a header of channel names with units, time in seconds.\n"
                   "See `channels` for the channel names of a drive.\n");
     if (name == QLatin1String("jog"))
-        return tr("Usage: drivedesk-cli [OPTIONS] jog SPEED [--duration S]\n"
+        return tr("Usage: drivedesk-cli [OPTIONS] jog SPEED [--duration S] [--enable]\n"
                   "Run at SPEED (negative: the other way) until --duration ends, Ctrl-C, SIGTERM\n"
                   "or any error, then stop. Without --duration it runs until Ctrl-C. A second\n"
-                  "Ctrl-C sends an emergency stop where the family has one.\n");
+                  "Ctrl-C sends an emergency stop where the family has one.\n"
+                  "--enable: servo-can's motion commands switch the power stage on by themselves\n"
+                  "and nobody can read whether it is on, so jog, move and step on servo-can run\n"
+                  "only with --enable (exit 2, nothing sent, without it); the stage stays on.\n");
     if (name == QLatin1String("move"))
-        return tr("Usage: drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait]\n"
+        return tr("Usage: drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait] [--enable]\n"
                   "Relative (--by) or absolute (--to) move, in the drive's position units, at\n"
                   "--speed (the family's unit). Waits until the axis is at rest again (the link\n"
                   "and its keep-alives stay up meanwhile); --no-wait returns once the drive has\n"
-                  "started. Ctrl-C stops the axis.\n");
+                  "started. Ctrl-C stops the axis. --enable: as for jog (servo-can needs it).\n");
     if (name == QLatin1String("stop"))
         return tr("Usage: drivedesk-cli [OPTIONS] stop [--emergency]\n"
                   "Stop the axis; --emergency: an emergency stop where the family has one.\n");
@@ -243,7 +246,7 @@ QString CliHelp::command(const QString &name)
                   "       drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]\n"
                   "       drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N\n"
                   "          [--max-duration S] [--record S] [--pre 0.1s|25%] [--channels CH,...]\n"
-                  "          [--no-return] [--counts-per-rev N] [--notes TEXT] [-o RUN.ddrun]\n"
+                  "          [--no-return] [--counts-per-rev N] [--enable] [--notes TEXT] [-o RUN.ddrun]\n"
                   "velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.\n"
                   "reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.\n"
                   "The limits are required (exit 2, nothing sent, without them): --max-speed (the\n"
@@ -262,7 +265,8 @@ QString CliHelp::command(const QString &name)
                   "A completed test returns to its start position, announced, under the same\n"
                   "limits and STOP (--no-return: it stays), prints\n"
                   "the metrics with their resolution or why they cannot be resolved, and saves the\n"
-                  "run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).\n");
+                  "run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).\n"
+                  "--enable: as for jog (servo-can needs it).\n");
     if (name == QLatin1String("runs"))
         return tr("Usage: drivedesk-cli runs RUN.ddrun [RUN2.ddrun ...]\n"
                   "The runs' metrics side by side, and the tuning parameters that differ between\n"

@@ -52,11 +52,14 @@ bool JogCommand::prepare(const CliInvocation &inv, QString *error)
             return false;
         m_durationS = *d;
     }
+    m_enable = inv.has(QStringLiteral("enable"));
     return true;
 }
 
 void JogCommand::start()
 {
+    if (!motionMaySwitchPowerOn(m_enable))
+        return;
     Drive *d = drive();
     connect(d, &Drive::jogLeaseExpired, this, [this] {
         // The drive stopped itself; report it (the stop is already underway).
@@ -331,6 +334,7 @@ bool MoveCommand::prepare(const CliInvocation &inv, QString *error)
             return false;
         m_speed = qint32(*s);
     }
+    m_enable = inv.has(QStringLiteral("enable"));
     return prepareWait(inv);
 }
 
@@ -341,6 +345,8 @@ void MoveCommand::start()
         DriveReply *r = m_relative ? d->moveRelative(m_target, m_speed) : d->moveAbsolute(m_target, m_speed);
         return follow(r, {}, QString(), MotionGoal::move(d->family(), 0, m_target));
     }
+    if (!motionMaySwitchPowerOn(m_enable))
+        return;
     // Where the axis is first: a relative move's target, and which side of it is "short".
     onFinished(drive()->readStatus(), [this](DriveReply *status) {
         const QJsonObject json{{m_relative ? QStringLiteral("by") : QStringLiteral("to"), double(m_target)},

@@ -37,6 +37,7 @@ private:
     QElapsedTimer m_clock;
     bool m_stopping = false;
     bool m_emergencySent = false;
+    bool m_enable = false; // --enable: the motion may switch the power stage on
     Reason m_reason = Reason::Duration;
     Error m_error;
     std::optional<JogEnd> m_end; // what stops the axis, once the drive has said
@@ -91,6 +92,7 @@ private:
     bool m_relative = true;
     qint64 m_target = 0;
     qint32 m_speed = 0;
+    bool m_enable = false; // --enable: the motion may switch the power stage on
 };
 
 // home [--positive] [--no-wait]

@@ -31,6 +31,7 @@ StepCommand::StepCommand(CliContext *c)
 
 bool StepCommand::prepare(const CliInvocation &inv, QString *error)
 {
+    m_enable = inv.has(QStringLiteral("enable"));
     if (!expectArguments(inv, 2, 2, tr("velocity SPEED | position DISTANCE | reversal SPEED"), error))
         return false;
     const auto kind = StepSpec::kindFromId(inv.positionals.at(0));
@@ -173,6 +174,8 @@ bool StepCommand::prepare(const CliInvocation &inv, QString *error)
 
 void StepCommand::start()
 {
+    if (!motionMaySwitchPowerOn(m_enable))
+        return;
     m_test = new StepTest(drive(), this);
     connect(m_test, &StepTest::progress, this, [this](StepTest::Phase phase, const QString &message) {
         if (phase != StepTest::Phase::Done)

@@ -33,6 +33,7 @@ private:
     QString m_notes;
     StepTest *m_test = nullptr;
     bool m_interrupted = false;
+    bool m_enable = false; // --enable: the motion may switch the power stage on
 };
 
 } // namespace dd

@@ -6,7 +6,8 @@
 #            as one test)
 #   default  build/       RelWithDebInfo build, the whole ctest suite
 #   asan     build-asan/  AddressSanitizer + UndefinedBehaviorSanitizer (LeakSanitizer on),
-#                         the whole ctest suite again; the layers are shared libraries here
+#                         the whole ctest suite again but for the layering tests (they only
+#                         compile, which the default tree proved); the layers are shared libraries here
 #                         (DRIVEDESK_SHARED_LAYERS), which keeps this tree near 2 GB instead
 #                         of 13 GB of statically linked test programs
 #   fuzz     build-fuzz/  clang libFuzzer targets (tests/fuzz), each fuzzed for a bounded
@@ -42,7 +43,7 @@ while [ $# -gt 0 ]; do
     --stage=*) stages="${1#--stage=}"; shift ;;
     --fuzz-seconds) fuzz_seconds="${2:-}"; shift 2 ;;
     --fuzz-seconds=*) fuzz_seconds="${1#--fuzz-seconds=}"; shift ;;
-    -h|--help) sed -n '2,27p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
 done

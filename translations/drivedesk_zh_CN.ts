@@ -4590,31 +4590,6 @@ See `channels` for the channel names of a drive.
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] jog SPEED [--duration S]
-Run at SPEED (negative: the other way) until --duration ends, Ctrl-C, SIGTERM
-or any error, then stop. Without --duration it runs until Ctrl-C. A second
-Ctrl-C sends an emergency stop where the family has one.
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] jog SPEED [--duration S]
-以 SPEED 点动运行（负值：反方向），直到 --duration 结束、Ctrl-C、SIGTERM
-或出现任何错误，然后停止。未给出 --duration 时一直运行到按下 Ctrl-C。
-再按一次 Ctrl-C 会发送急停（该系列支持时）。
-</translation>
-    </message>
-    <message>
-        <source>Usage: drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait]
-Relative (--by) or absolute (--to) move, in the drive&apos;s position units, at
---speed (the family&apos;s unit). Waits until the axis is at rest again (the link
-and its keep-alives stay up meanwhile); --no-wait returns once the drive has
-started. Ctrl-C stops the axis.
-</source>
-        <translation>用法：drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait]
-相对（--by）或绝对（--to）定位，单位为驱动器的位置单位，速度为 --speed
-（该系列的速度单位）。等待轴重新静止（期间保持连接及保活报文）；
---no-wait 在驱动器开始运动后即返回。Ctrl-C 停止轴。
-</translation>
-    </message>
-    <message>
         <source>Usage: drivedesk-cli [OPTIONS] clear-alarm
 Clear the alarm and read it again; exit code 1 if it is still there.
 </source>
@@ -5026,6 +5001,39 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
 </translation>
     </message>
     <message>
+        <source>Usage: drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre 25%|0.1s]
+          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
+EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
+      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now (default)
+Samples as fast as the link allows; --pre is the part of the record before the
+trigger, with its unit: a percentage (25%) or seconds (0.1s) (default 0), as in
+step; --duration the record (default 1 s); auto captures anyway
+after --timeout seconds (default 1). Saves the samples and the drive&apos;s tuning
+parameters (read from it) to RUN.ddrun (docs/tuning.md).
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre 25%|0.1s]
+          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
+EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
+      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now（默认）
+以连接允许的最快速度采样；--pre 为记录中触发之前的部分，须带单位：百分比（25%）
+或秒（0.1s）（默认 0），与 step 相同；--duration 为记录时长（默认 1 s）；auto
+模式在 --timeout 秒（默认 1）后即使未触发也会采集。将采样数据和驱动器的整定参数
+（从驱动器读取）保存到 RUN.ddrun（docs/tuning.md）。
+</translation>
+    </message>
+    <message>
+        <source>--pre needs its unit: a percentage of the record (e.g. --pre 25%) or seconds before the trigger (e.g. --pre 0.1s), not &quot;%1&quot;.</source>
+        <translation>--pre 需要带单位：记录的百分比（例如 --pre 25%）或触发前的秒数（例如 --pre 0.1s），而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>--pre: &quot;%1&quot; must be a percentage from 0%% to %2%%.</source>
+        <translation>--pre：“%1”必须是 0%% 到 %2%% 之间的百分比。</translation>
+    </message>
+    <message>
+        <source>--pre: &quot;%1&quot; must be seconds from 0s to %2s.</source>
+        <translation>--pre：“%1”必须是 0s 到 %2s 之间的秒数。</translation>
+    </message>
+    <message>
         <source>Commands:
   scan [--from A] [--to B] [--bauds 9600,19200,...]
                                  find drives: family, address, baud, firmware, state
@@ -5043,8 +5051,8 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
   ee set|rd|ba|rs|def            servo-modbus EEPROM operations; waits for them
   monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
                                  sample live values (Ctrl-C ends)
-  jog SPEED [--duration S]       run, then stop; Ctrl-C or any error stops at once
-  move (--by N | --to N) [--speed V] [--no-wait]
+  jog SPEED [--duration S] [--enable]  run, then stop; Ctrl-C or any error stops at once
+  move (--by N | --to N) [--speed V] [--no-wait] [--enable]
                                  move, and wait until the axis is at rest
   stop [--emergency]             stop (emergency stop where the family has one)
   enable on|off                  servo enable on or off
@@ -5081,8 +5089,8 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
   ee set|rd|ba|rs|def            servo-modbus EEPROM 操作；等待其完成
   monitor CHANNEL,... [--rate HZ] [--duration S] [-o FILE.csv]
                                  采样实时值（Ctrl-C 结束）
-  jog SPEED [--duration S]       点动运行后停止；Ctrl-C 或任何错误立即停止
-  move (--by N | --to N) [--speed V] [--no-wait]
+  jog SPEED [--duration S] [--enable]  点动运行后停止；Ctrl-C 或任何错误立即停止
+  move (--by N | --to N) [--speed V] [--no-wait] [--enable]
                                  定位运动，并等待轴静止
   stop [--emergency]             停止（该系列支持时可急停）
   enable on|off                  伺服使能开或关
@@ -5104,24 +5112,34 @@ PDF 中印有该 JSON 的 SHA-256（docs/record.md）。
 </translation>
     </message>
     <message>
-        <source>Usage: drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre 25%|0.1s]
-          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
-EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
-      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now (default)
-Samples as fast as the link allows; --pre is the part of the record before the
-trigger, with its unit: a percentage (25%) or seconds (0.1s) (default 0), as in
-step; --duration the record (default 1 s); auto captures anyway
-after --timeout seconds (default 1). Saves the samples and the drive&apos;s tuning
-parameters (read from it) to RUN.ddrun (docs/tuning.md).
+        <source>Usage: drivedesk-cli [OPTIONS] jog SPEED [--duration S] [--enable]
+Run at SPEED (negative: the other way) until --duration ends, Ctrl-C, SIGTERM
+or any error, then stop. Without --duration it runs until Ctrl-C. A second
+Ctrl-C sends an emergency stop where the family has one.
+--enable: servo-can&apos;s motion commands switch the power stage on by themselves
+and nobody can read whether it is on, so jog, move and step on servo-can run
+only with --enable (exit 2, nothing sent, without it); the stage stays on.
 </source>
-        <translation>用法：drivedesk-cli [OPTIONS] capture CHANNEL,... [--trigger EXPR] [--pre 25%|0.1s]
-          [--duration S] [--mode single|auto] [--timeout S] [--notes TEXT] -o RUN.ddrun
-EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
-      | above:CHANNEL:VALUE | below:CHANNEL:VALUE | alarm | now（默认）
-以连接允许的最快速度采样；--pre 为记录中触发之前的部分，须带单位：百分比（25%）
-或秒（0.1s）（默认 0），与 step 相同；--duration 为记录时长（默认 1 s）；auto
-模式在 --timeout 秒（默认 1）后即使未触发也会采集。将采样数据和驱动器的整定参数
-（从驱动器读取）保存到 RUN.ddrun（docs/tuning.md）。
+        <translation>用法：drivedesk-cli [OPTIONS] jog SPEED [--duration S] [--enable]
+以 SPEED 点动运行（负值：反方向），直到 --duration 结束、Ctrl-C、SIGTERM
+或出现任何错误，然后停止。未给出 --duration 时一直运行到按下 Ctrl-C。
+再按一次 Ctrl-C 会发送急停（该系列支持时）。
+--enable：servo-can 的运动指令会自行打开功率级（伺服使能），且无法读出其是否
+已打开，因此 servo-can 上的 jog、move 和 step 只有加 --enable 才会运行（否则退出码 2，
+不发送任何内容）；功率级此后保持打开。
+</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait] [--enable]
+Relative (--by) or absolute (--to) move, in the drive&apos;s position units, at
+--speed (the family&apos;s unit). Waits until the axis is at rest again (the link
+and its keep-alives stay up meanwhile); --no-wait returns once the drive has
+started. Ctrl-C stops the axis. --enable: as for jog (servo-can needs it).
+</source>
+        <translation>用法：drivedesk-cli [OPTIONS] move (--by N | --to N) [--speed V] [--no-wait] [--enable]
+相对（--by）或绝对（--to）定位，单位为驱动器的位置单位，速度为 --speed
+（该系列的速度单位）。等待轴重新静止（期间保持连接及保活报文）；
+--no-wait 在驱动器开始运动后即返回。Ctrl-C 停止轴。 --enable：同 jog（servo-can 需要）。
 </translation>
     </message>
     <message>
@@ -5129,7 +5147,7 @@ EXPR: rise:CHANNEL:VALUE | fall:CHANNEL:VALUE | either:CHANNEL:VALUE
        drivedesk-cli [OPTIONS] step position DISTANCE --speed V --max-travel N [--max-speed V]
        drivedesk-cli [OPTIONS] step reversal SPEED --duration S --max-speed V --max-travel N
           [--max-duration S] [--record S] [--pre 0.1s|25%] [--channels CH,...]
-          [--no-return] [--counts-per-rev N] [--notes TEXT] [-o RUN.ddrun]
+          [--no-return] [--counts-per-rev N] [--enable] [--notes TEXT] [-o RUN.ddrun]
 velocity: run at SPEED for S seconds, then stop. position: move by DISTANCE at V.
 reversal: run at +SPEED for S seconds, then at -SPEED for S seconds, then stop.
 The limits are required (exit 2, nothing sent, without them): --max-speed (the
@@ -5149,12 +5167,13 @@ A completed test returns to its start position, announced, under the same
 limits and STOP (--no-return: it stays), prints
 the metrics with their resolution or why they cannot be resolved, and saves the
 run to RUN.ddrun with the tuning parameters read from the drive (docs/tuning.md).
+--enable: as for jog (servo-can needs it).
 </source>
         <translation>用法：drivedesk-cli [选项] step velocity SPEED --duration S --max-speed V --max-travel N
       drivedesk-cli [选项] step position DISTANCE --speed V --max-travel N [--max-speed V]
       drivedesk-cli [选项] step reversal SPEED --duration S --max-speed V --max-travel N
           [--max-duration S] [--record S] [--pre 0.1s|25%] [--channels CH,...]
-          [--no-return] [--counts-per-rev N] [--notes TEXT] [-o RUN.ddrun]
+          [--no-return] [--counts-per-rev N] [--enable] [--notes TEXT] [-o RUN.ddrun]
 velocity：以 SPEED 运行 S 秒后停止。position：以速度 V 相对移动 DISTANCE。
 reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止。
 限值为必填（缺少时退出码 2，不发送任何内容）：--max-speed（速度单位；定位阶跃
@@ -5171,19 +5190,8 @@ reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止�
 留在原处），打印
 各项指标及其分辨率或无法分辨的原因，并将运行记录连同从驱动器读取的调谐参数
 保存到 RUN.ddrun（docs/tuning.md）。
+--enable：同 jog（servo-can 需要）。
 </translation>
-    </message>
-    <message>
-        <source>--pre needs its unit: a percentage of the record (e.g. --pre 25%) or seconds before the trigger (e.g. --pre 0.1s), not &quot;%1&quot;.</source>
-        <translation>--pre 需要带单位：记录的百分比（例如 --pre 25%）或触发前的秒数（例如 --pre 0.1s），而不是“%1”。</translation>
-    </message>
-    <message>
-        <source>--pre: &quot;%1&quot; must be a percentage from 0%% to %2%%.</source>
-        <translation>--pre：“%1”必须是 0%% 到 %2%% 之间的百分比。</translation>
-    </message>
-    <message>
-        <source>--pre: &quot;%1&quot; must be seconds from 0s to %2s.</source>
-        <translation>--pre：“%1”必须是 0s 到 %2s 之间的秒数。</translation>
     </message>
 </context>
 <context>
@@ -5215,6 +5223,18 @@ reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止�
     <message>
         <source>&quot;%1&quot;: unexpected argument &quot;%2&quot;. See: drivedesk-cli %1 --help</source>
         <translation>“%1”：多余的参数“%2”。参见：drivedesk-cli %1 --help</translation>
+    </message>
+    <message>
+        <source>On %1 drives a motion command switches the power stage on by itself, and whether it is on cannot be read back. Add --enable to allow it: the power stage is then on, and stays on afterwards (the motor holds its position) until `enable off`. Nothing was sent after identifying the drive.</source>
+        <translation>在 %1 驱动器上，运动指令会自行打开功率级，且无法读出其是否已打开。加 --enable 表示允许：功率级随即打开，并在之后保持打开（电机保持位置），直到执行 `enable off`。识别驱动器之后未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>--enable: this command switches the power stage on.</source>
+        <translation>--enable：此命令会打开功率级。</translation>
+    </message>
+    <message>
+        <source>The power stage may be on (this command was allowed to switch it on) and stays so, the motor holding its position; `enable off` switches it off.</source>
+        <translation>功率级可能已打开（此命令被允许打开它）并保持打开，电机保持位置；`enable off` 可将其关闭。</translation>
     </message>
 </context>
 <context>

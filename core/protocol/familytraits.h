@@ -68,6 +68,11 @@ struct FamilyTraits
     ParameterAddressing parameterAddressing = ParameterAddressing::Index;
     // A frame describer for one connection (the frame monitor, traffic logs).
     std::unique_ptr<FrameDescriber> (*describer)(const QString &framing, const QVariantMap &options) = nullptr;
+    // A motion command switches the power stage on by itself, and whether it is on cannot be
+    // read back (servo-can: 0x20, 0x21 and 0x22 enable the servo; nothing reports the enable).
+    // The CLI then moves only when told it may switch it on (--enable); the GUI only once its
+    // own Enable switched it on.
+    bool motionEnables = false;
 
     QString id() const { return familyId(family); }
     QString displayName() const;      // translated: "Servo (CAN)"

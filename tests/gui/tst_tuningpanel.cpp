@@ -425,7 +425,7 @@ private slots:
         run.tuning = {{60, QStringLiteral("P60"), QStringLiteral("speed-kp"), 45},
                       {4, QStringLiteral("P4"), QString(), 0},
                       {75, QStringLiteral("P75"), QString(), 7}};
-        editor->applyRun(run);
+        editor->applyRun(run, tuning->driveInfo().identity);
         QVERIFY2(editor->message().contains(QStringLiteral("not tuning parameters"))
                      && editor->message().contains(QStringLiteral("P4 "))
                      && editor->message().contains(QStringLiteral("P75 ")),
@@ -437,8 +437,22 @@ private slots:
         QCOMPARE(onDrive(75), 1);
         // Only the gain: applied, verified on the drive.
         run.tuning = {{60, QStringLiteral("P60"), QStringLiteral("speed-kp"), 45}};
-        editor->applyRun(run);
+        editor->applyRun(run, tuning->driveInfo().identity);
         QVERIFY(waitUntil([&] { return onDrive(60) == 45 && !editor->isBusy(); }, 5000));
+
+        // Issue 26: a run taken on another model is refused as the CLI's apply-run refuses
+        // it (servo-can reports no model: the drive's identity is given one here).
+        DriveIdentity other = tuning->driveInfo().identity;
+        other.model = QStringLiteral("M-200");
+        run.model = QStringLiteral("M-100");
+        run.tuning = {{60, QStringLiteral("P60"), QStringLiteral("speed-kp"), 50}};
+        editor->applyRun(run, other);
+        QVERIFY2(editor->message().contains(QStringLiteral("M-100"))
+                     && editor->message().contains(QStringLiteral("M-200")),
+                 qPrintable(editor->message()));
+        QVERIFY(!editor->isBusy());
+        QTest::qWait(200);
+        QCOMPARE(onDrive(60), 45);
     }
 
     void spectrumOfARunListsItsPeak()

@@ -320,7 +320,7 @@ void TestCliServoCan::jogStopsWhenItsDurationEnds()
     const quint64 trips = m_sim1->stats().watchdogTrips;
     QElapsedTimer t;
     t.start();
-    QProcess *p = startCli(args({"--json", "jog", "300", "--duration", "0.6"}));
+    QProcess *p = startCli(args({"--json", "jog", "300", "--duration", "0.6", "--enable"}));
     QVERIFY(QTest::qWaitFor([&] { return m_sim1->motor().isMoving(); }, 3000));
     const CliRun r = waitCli(p);
     delete p;
@@ -338,7 +338,7 @@ void TestCliServoCan::jogSaysTheWatchdogStopsASilentDrive()
 {
     // The drive loses power mid-jog: the stop cannot be confirmed, and the CLI says that
     // the drive's own watchdog stops the axis (servo-can has one), exit 1.
-    QProcess *p = startCli(args({"--json", "jog", "300", "--duration", "0.5"}));
+    QProcess *p = startCli(args({"--json", "jog", "300", "--duration", "0.5", "--enable"}));
     QVERIFY(QTest::qWaitFor([&] { return m_sim1->motor().isMoving(); }, 3000));
     m_sim1->faults().setSilent(true);
     const CliRun r = waitCli(p);
@@ -366,7 +366,7 @@ void TestCliServoCan::jogStopsOnSignal()
 {
     QFETCH(int, signalNumber);
     const quint64 trips = m_sim1->stats().watchdogTrips;
-    QProcess *p = startCli(args({"--json", "jog", "-200"}));
+    QProcess *p = startCli(args({"--json", "jog", "-200", "--enable"}));
     QByteArray seen;
     QVERIFY2(waitForOutput(p, "Ctrl-C", 5000, &seen), seen.constData());
     QVERIFY(QTest::qWaitFor([&] { return m_sim1->motor().isMoving(); }, 3000));
@@ -385,13 +385,13 @@ void TestCliServoCan::jogStopsOnSignal()
 void TestCliServoCan::moveWaitsForTheEnd()
 {
     const qint64 start = m_sim1->motor().position();
-    CliRun r = runCli(args({"--json", "move", "--by", "20000", "--speed", "600"}));
+    CliRun r = runCli(args({"--json", "move", "--by", "20000", "--speed", "600", "--enable"}));
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QVERIFY(!m_sim1->motor().isMoving());
     QCOMPARE(m_sim1->motor().position(), start + 20000);
     QCOMPARE(r.json().value("position").toInt(), int(start + 20000));
 
-    r = runCli(args({"move", "--to", "-5000", "--speed", "600"}));
+    r = runCli(args({"move", "--to", "-5000", "--speed", "600", "--enable"}));
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QCOMPARE(m_sim1->motor().position(), qint64(-5000));
 }
@@ -402,7 +402,7 @@ void TestCliServoCan::moveWaitsForTheEnd()
 void TestCliServoCan::moveStoppedByAnotherProgramIsNotDone()
 {
     const qint64 start = m_sim1->motor().position();
-    std::unique_ptr<QProcess> move(startCli(args({"--json", "move", "--by", "3000000", "--speed", "300"})));
+    std::unique_ptr<QProcess> move(startCli(args({"--json", "move", "--by", "3000000", "--speed", "300", "--enable"})));
     QVERIFY(move->waitForStarted(10000));
     QVERIFY(QTest::qWaitFor([&] { return m_sim1->motor().isMoving(); }, 15000));
     // Both processes talk to the simulated drive of this process: its event loop must run.
@@ -466,7 +466,7 @@ void TestCliServoCan::unsupportedOperationsExit2()
     r = runCli(args({"ee", "set"}));
     QCOMPARE(r.exitCode, 2);
     // A move needs a positioning speed on this family.
-    r = runCli(args({"move", "--by", "100"}));
+    r = runCli(args({"move", "--by", "100", "--enable"}));
     QCOMPARE(r.exitCode, 2);
     QVERIFY(!m_sim1->motor().isMoving());
 }

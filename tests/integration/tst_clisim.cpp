@@ -15,6 +15,8 @@ private slots:
     void info();
     void scanFindsSimulatedDrives();
     void jogRunsAndStops();
+    void servoCanMotionNeedsEnable_data();
+    void servoCanMotionNeedsEnable();
     void monitorTextColumnsLineUp();
     void monitorDefaultsToTheLinksRate();
     void backupOfASimulatedDrive();
@@ -55,11 +57,39 @@ void TestCliSim::scanFindsSimulatedDrives()
 
 void TestCliSim::jogRunsAndStops()
 {
-    const CliRun r = runCli({"--sim", "--family", "servo-can", "--json", "--trace", "jog", "100", "--duration", "0.3"});
+    const CliRun r = runCli(
+        {"--sim", "--family", "servo-can", "--json", "--trace", "jog", "100", "--duration", "0.3", "--enable"});
     QVERIFY2(r.exitCode == 0, r.err.constData());
     QCOMPARE(r.json().value("stoppedBy").toString(), QStringLiteral("duration"));
     QVERIFY(r.err.contains("065#01 20 00 64 00 00 00 FF")); // "speed mode +100" (the seed's example, station 1)
     QVERIFY(r.err.contains("(stop)"));
+    QVERIFY(r.json().value("powerStageOn").toBool()); // said, since --enable allowed it
+    QVERIFY(r.err.contains("enable off"));
+}
+
+// Issue #26: servo-can's 0x20..0x22 switch the power stage on by themselves and nothing reads
+// back whether it is on, so jog, move and step run only with --enable: without it they are
+// refused before any motion frame (only the identification reads go out).
+void TestCliSim::servoCanMotionNeedsEnable_data()
+{
+    QTest::addColumn<QStringList>("command");
+    QTest::newRow("jog") << QStringList{"jog", "100", "--duration", "0.3"};
+    QTest::newRow("move") << QStringList{"move", "--by", "1000", "--speed", "300"};
+    QTest::newRow("step") << QStringList{"step",        "velocity", "300",          "--duration", "0.2",
+                                         "--max-speed", "500",      "--max-travel", "100000"};
+}
+
+void TestCliSim::servoCanMotionNeedsEnable()
+{
+    QFETCH(QStringList, command);
+    const CliRun r = runCli(QStringList{"--sim", "--family", "servo-can", "--json", "--trace"} + command);
+    QCOMPARE(r.exitCode, 2);
+    QCOMPARE(r.json().value("error").toObject().value("code").toString(), QStringLiteral("invalid-argument"));
+    QVERIFY2(r.json().value("error").toObject().value("message").toString().contains("--enable"), r.out.constData());
+    // No speed-mode, relative, absolute or positioning-speed frame (command bytes 0x20..0x23).
+    static const QRegularExpression motion(QStringLiteral("#[0-9A-F]{2} 2[0-3] "));
+    QVERIFY2(!QString::fromUtf8(r.err).contains(motion), r.err.constData());
+    QVERIFY(r.err.contains("#01 12 ")); // the identification did go out: the trace is there
 }
 
 void TestCliSim::monitorTextColumnsLineUp()

@@ -276,7 +276,8 @@ private slots:
         QVERIFY2(speed.waitFor([](double) { return true; }, 20000),
                  monitor->readAllStandardError().constData()); // the monitor reads
 
-        std::unique_ptr<QProcess> jog(test::startCli(link + QStringList{QStringLiteral("jog"), QStringLiteral("300")}));
+        std::unique_ptr<QProcess> jog(test::startCli(
+            link + QStringList{QStringLiteral("jog"), QStringLiteral("300"), QStringLiteral("--enable")}));
         QByteArray seen;
         QVERIFY2(test::waitForOutput(jog.get(), "Ctrl-C", 20000, &seen), seen.constData());
         QVERIFY2(speed.waitFor([](double v) { return qAbs(v - 300) < 3; }, 20000), "the jog does not run");

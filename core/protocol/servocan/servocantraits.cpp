@@ -26,6 +26,7 @@ const FamilyTraits &traits()
         [](const QString &, const QVariantMap &) -> std::unique_ptr<FrameDescriber> {
             return std::make_unique<ServoCanDescriber>();
         },
+        true, // 0x20..0x22 enable the servo
     };
     return t;
 }

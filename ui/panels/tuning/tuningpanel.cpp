@@ -522,7 +522,7 @@ void TuningPanel::applySelectedRun()
     const TuningRun *run = m_runs->selectedRun();
     if (!run || run->tuning.isEmpty())
         return;
-    m_editor->applyRun(*run);
+    m_editor->applyRun(*run, driveInfo().identity);
 }
 
 void TuningPanel::loadDictionary()

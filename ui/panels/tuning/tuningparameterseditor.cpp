@@ -240,11 +240,14 @@ void TuningParametersEditor::writeEdited()
     writeValues(writes, QString(), 0);
 }
 
-void TuningParametersEditor::applyRun(const TuningRun &run)
+void TuningParametersEditor::applyRun(const TuningRun &run, const DriveIdentity &drive)
 {
     if (m_busy || !m_context.isValid() || !m_dictionary)
         return;
-    if (Error e = RunParameterApply::check(run, m_context.family, *m_dictionary, &m_entries)) {
+    Error e = RunParameterApply::check(run, m_context.family, *m_dictionary, &m_entries);
+    if (!e)
+        e = RunParameterApply::checkDrive(run, drive);
+    if (e) {
         const QString why = e.message;
         setMessage([why] { return tr("Not applied: %1").arg(why); }, true);
         return;

@@ -55,7 +55,9 @@ public:
     // applySnapshot() of a run that RunParameterApply::check() accepts against the drive's
     // dictionary and the tuning roles this tab shows (entries()): only tuning parameters;
     // anything else refuses the whole run, by name, with nothing sent.
-    void applyRun(const TuningRun &run);
+    // Writes the run's tuning parameters to the drive, after the checks apply-run makes
+    // (RunParameterApply::check and ::checkDrive: family, model, tuning roles only).
+    void applyRun(const TuningRun &run, const DriveIdentity &drive);
     void writeEdited();
     bool isBusy() const { return m_busy; }
     QString message() const;

@@ -209,7 +209,10 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
     row(tr("Model"), orDash(d.model));
     row(tr("Link"), orDash(d.link));
     row(tr("Link settings"), orDash(settings.join(QLatin1String(", "))));
+    row(tr("Journal identity"), orDash(d.identification));
     html += QStringLiteral("</table>");
+    if (!d.journalError.isEmpty())
+        html += QStringLiteral("<p class=\"fail\">%1</p>").arg(esc(d.journalError));
     if (!d.readError.isEmpty())
         html += QStringLiteral("<p class=\"fail\">%1</p>")
                     .arg(esc(tr("Parameters not (all) read: %1").arg(d.readError)));
@@ -285,6 +288,13 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
             html += QStringLiteral("</table>");
         }
     }
+
+    const RecordEeOperation &ee = d.eeOperation;
+    if (!ee.isEmpty())
+        html += QStringLiteral("<p>%1 <span class=\"%2\">%3</span></p>")
+                    .arg(esc(tr("Last EEPROM operation: %1 on %2:").arg(ee.operation, timeText(ee.when))),
+                         ee.ok ? QStringLiteral("ok") : QStringLiteral("fail"),
+                         esc(ee.ok ? tr("done.") : tr("FAILED: %1").arg(ee.message)));
 
     // Alarms.
     html += QStringLiteral("<h3>%1</h3>").arg(esc(tr("Alarms")));

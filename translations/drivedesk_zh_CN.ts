@@ -6342,10 +6342,6 @@ then log out and log in again (or restart the computer).</source>
         <translation>结果</translation>
     </message>
     <message>
-        <source>written (write-only)</source>
-        <translation>已写入（只写参数）</translation>
-    </message>
-    <message>
         <source>No alarm was recorded.</source>
         <translation>没有报警记录。</translation>
     </message>
@@ -6528,6 +6524,14 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>FAILED: %1</source>
         <translation>失败：%1</translation>
+    </message>
+    <message>
+        <source>%1 parameter(s) written and verified, %2 written (not read back: write-only).</source>
+        <translation>%1 个参数已写入并校验，%2 个已写入（未回读：只写参数）。</translation>
+    </message>
+    <message>
+        <source>written (not read back: write-only)</source>
+        <translation>已写入（未回读：只写参数）</translation>
     </message>
 </context>
 <context>

@@ -669,6 +669,27 @@ private slots:
             QCOMPARE(verdicts.first(), QByteArray("valid"));
     }
 
+    void writeOnlyParametersAreNotCalledVerified()
+    {
+        // Issue 27: a write-only parameter (no read-back) was listed as "verified".
+        ParameterDictionary dict;
+        QVERIFY(!dict.loadBundled(Family::ServoModbus));
+        ParameterWriteResult writeOnly = writeOf(6, 7);
+        writeOnly.readable = false;
+        writeOnly.verified = false;
+        writeOnly.outcome = WriteOutcome::WriteOnly;
+        CommissioningRecord c = test::fixtureRecord(1, 4);
+        c.drives[0].verification = VerificationJournal::fromWrites({writeOf(5, 3), writeOnly}, dict);
+        const QString pdf = path(QStringLiteral("writeonly.pdf"));
+        QVERIFY(!write(c, pdf).isEmpty());
+        const QString t = text(pdf).simplified();
+        QVERIFY2(
+            t.contains(QStringLiteral("1 parameter(s) written and verified, 1 written (not read back: write-only).")),
+            qPrintable(t));
+        QVERIFY(t.contains(QStringLiteral("written (not read back: write-only)")));
+        QVERIFY(!t.contains(QStringLiteral("2 parameter(s) written and verified")));
+    }
+
     void aDamagedJournalIsReportedAndLeftAsItIs()
     {
         VerificationJournal journal(path(QStringLiteral("damaged")));

@@ -242,11 +242,7 @@ void RestoreCommand::report(const Error &error)
                      {QStringLiteral("forced"), m_options.force},
                      {QStringLiteral("selected"), RestoreDescribe::selected(dict, r, &rows)}};
     RestoreDescribe::insertOutcomes(dict, r, &json);
-    if (!r.dryRun && !r.selected.isEmpty()) {
-        const QString checksum = BackupFile::checksum(m_file.values());
-        CliJournal::verification(context(), VerificationJournal::fromRestore(r, dict, m_path, checksum));
-        CliJournal::backup(context(), QStringLiteral("restore"), m_path, checksum);
-    }
+    CliJournal::restore(context(), CliJournal::key(context()), r, dict, m_path, BackupFile::checksum(m_file.values()));
 
     if (error) {
         if (!r.selected.isEmpty() && !out()->isJson()) {

@@ -21,6 +21,7 @@ QList<CliOptionSpec> CliGlobals::optionSpecs()
         {QStringLiteral("json"), false, {}},
         {QStringLiteral("trace"), false, {}},
         {QStringLiteral("dictionary"), true, {}},
+        {QStringLiteral("machine"), true, {}},
         {QStringLiteral("option"), true, {}, true},
         {QStringLiteral("sim"), false, {}},
         {QStringLiteral("sim-drives"), true, {}},
@@ -74,6 +75,11 @@ bool CliGlobals::loadFlags(const CliInvocation &inv, QString *error)
     simStateFile = inv.value(QStringLiteral("sim-state"));
     if (inv.has(QStringLiteral("sim-state")) && simStateFile.isEmpty()) {
         *error = tr("--sim-state needs a file name.");
+        return false;
+    }
+    machine = inv.value(QStringLiteral("machine")).trimmed();
+    if (inv.has(QStringLiteral("machine")) && (machine.isEmpty() || machine.size() > 200)) {
+        *error = tr("--machine needs a name of 1 to 200 characters, e.g. --machine \"Press line 3\".");
         return false;
     }
     dictionaryFile = inv.value(QStringLiteral("dictionary"));

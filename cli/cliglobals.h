@@ -24,6 +24,7 @@ public:
     bool json = false;
     bool trace = false;
     QString dictionaryFile;
+    QString machine; // --machine NAME: keys the verification journal (JournalKey::machine)
     bool sim = false;
     // --sim-drives ADDR[@BAUD],...: the simulated drives (empty: one at `address`).
     struct SimDrive

@@ -36,7 +36,10 @@ QString CliHelp::linkOptions()
               "                                 servo-modbus.positionRule=decimal10000 (repeatable;\n"
               "                                 see docs/cli.md)\n"
               "  --sim                          use the built-in simulator instead of hardware\n"
-              "                                 (see \"Simulator\" below)\n");
+              "                                 (see \"Simulator\" below)\n")
+        + tr("  --machine NAME                 the machine or project the drives belong to: the\n"
+             "                                 verification journal keeps each machine's drives\n"
+             "                                 apart (docs/record.md)\n");
 }
 
 QString CliHelp::outputOptions()

@@ -1,7 +1,9 @@
 #include "cli/eecommand.h"
 
+#include "cli/clijournal.h"
 #include "core/drive/drive.h"
 #include "core/protocol/familytraits.h"
+#include "core/report/verificationjournal.h"
 
 namespace dd {
 
@@ -31,6 +33,7 @@ void EeCommand::start()
     out()->note(tr("%1: %2 ...").arg(eeMnemonic(m_op), eeMeaning(m_op)));
     onFinished(drive()->eeOperation(m_op), [this](DriveReply *r) {
         const QJsonObject json{{QStringLiteral("operation"), eeMnemonic(m_op)}, {QStringLiteral("code"), int(m_op)}};
+        CliJournal::ee(context(), VerificationJournal::fromEe(m_op, r->error())); // for the commissioning record
         if (!r->ok())
             return fail(r->error(), json);
         succeed(json, tr("%1 done.").arg(eeMnemonic(m_op)));

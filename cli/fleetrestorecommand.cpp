@@ -2,11 +2,14 @@
 
 #include "cli/backupcommands.h"
 #include "cli/clidescribe.h"
+#include "cli/clijournal.h"
 #include "cli/fleetbackupcommand.h"
 #include "cli/restoredescribe.h"
 
 #include "core/fleet/fleettransfer.h"
+#include "core/params/backupfile.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/journalkey.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -150,6 +153,12 @@ void FleetRestoreCommand::report()
         o.insert(QStringLiteral("selected"), RestoreDescribe::selected(dict, r.report, &rows));
         RestoreDescribe::insertOutcomes(dict, r.report, &o);
         drives.append(o);
+        if (r.state != FleetDriveResult::State::NotAttempted) { // for the commissioning record
+            const bool each = position < m_files.size();
+            const QString path = each ? QDir(m_path).filePath(m_fileNames.at(position)) : m_path;
+            CliJournal::restore(context(), CliJournal::key(context(), r.identity, r.address), r.report, dict, path,
+                                BackupFile::checksum((each ? m_files.at(position) : m_file).values()));
+        }
 
         QString head;
         if (r.state == FleetDriveResult::State::Done) {

@@ -1,5 +1,6 @@
 #include "cli/reportcommand.h"
 
+#include "cli/clijournal.h"
 #include "cli/clivalues.h"
 #include "core/drive/drive.h"
 #include "core/drive/driveconnection.h"
@@ -159,7 +160,7 @@ void ReportCommand::start()
     const ConnectionSettings &settings = context()->connection->settings();
     m_health = new LinkHealthCounter(context()->connection->tap(), settings.isCan() ? 0 : settings.baud, this);
     m_collector = new RecordCollector(QLocale(), this);
-    m_collector->setJournal(&m_journal);
+    m_collector->setJournal(&m_journal, CliJournal::link(context()->globals), context()->globals.machine);
     connect(m_collector, &RecordCollector::operationFailed, m_health, [this] {
         if (!m_addresses.isEmpty())
             m_health->countError(m_addresses.first());
@@ -228,6 +229,8 @@ void ReportCommand::writeRecord()
     CommissioningRecord record;
     record.locale = QLocale();
     record.header = m_header;
+    if (record.header.machine.isEmpty())
+        record.header.machine = context()->globals.machine;
     record.header.stamp();
     m_health->closeOutstanding(); // every read has finished: a request still out timed out
     for (DriveRecord &d : m_drives) {

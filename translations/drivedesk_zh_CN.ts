@@ -5193,6 +5193,31 @@ reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止�
 --enable：同 jog（servo-can 需要）。
 </translation>
     </message>
+    <message>
+        <source>--pre needs its unit: a percentage of the record (e.g. --pre 25%) or seconds before the trigger (e.g. --pre 0.1s), not &quot;%1&quot;.</source>
+        <translation>--pre 需要带单位：记录的百分比（例如 --pre 25%）或触发前的秒数（例如 --pre 0.1s），而不是“%1”。</translation>
+    </message>
+    <message>
+        <source>--pre: &quot;%1&quot; must be a percentage from 0%% to %2%%.</source>
+        <translation>--pre：“%1”必须是 0%% 到 %2%% 之间的百分比。</translation>
+    </message>
+    <message>
+        <source>--pre: &quot;%1&quot; must be seconds from 0s to %2s.</source>
+        <translation>--pre：“%1”必须是 0s 到 %2s 之间的秒数。</translation>
+    </message>
+    <message>
+        <source>--machine needs a name of 1 to 200 characters, e.g. --machine &quot;Press line 3&quot;.</source>
+        <translation>--machine 需要 1 到 200 个字符的名称，例如 --machine &quot;Press line 3&quot;。</translation>
+    </message>
+    <message>
+        <source>  --machine NAME                 the machine or project the drives belong to: the
+                                 verification journal keeps each machine&apos;s drives
+                                 apart (docs/record.md)
+</source>
+        <translation>  --machine NAME                 驱动器所属的机器或项目：校验日志按机器分开
+                                 记录各驱动器（docs/record.md）
+</translation>
+    </message>
 </context>
 <context>
     <name>dd::CliCommand</name>
@@ -6349,10 +6374,6 @@ then log out and log in again (or restart the computer).</source>
         <translation>结果</translation>
     </message>
     <message>
-        <source>written (write-only)</source>
-        <translation>已写入（只写参数）</translation>
-    </message>
-    <message>
         <source>No alarm was recorded.</source>
         <translation>没有报警记录。</translation>
     </message>
@@ -6520,6 +6541,30 @@ then log out and log in again (or restart the computer).</source>
             <numerusform>%n 个请求是在一直不静默的线路上发出的：总线上有另一个主站，或有驱动器在自行发送。</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Journal identity</source>
+        <translation>日志识别依据</translation>
+    </message>
+    <message>
+        <source>Last EEPROM operation: %1 on %2:</source>
+        <translation>最近一次 EEPROM 操作：%1（%2）：</translation>
+    </message>
+    <message>
+        <source>done.</source>
+        <translation>已完成。</translation>
+    </message>
+    <message>
+        <source>FAILED: %1</source>
+        <translation>失败：%1</translation>
+    </message>
+    <message>
+        <source>%1 parameter(s) written and verified, %2 written (not read back: write-only).</source>
+        <translation>%1 个参数已写入并校验，%2 个已写入（未回读：只写参数）。</translation>
+    </message>
+    <message>
+        <source>written (not read back: write-only)</source>
+        <translation>已写入（未回读：只写参数）</translation>
+    </message>
 </context>
 <context>
     <name>dd::VerificationJournal</name>
@@ -6534,6 +6579,42 @@ then log out and log in again (or restart the computer).</source>
     <message>
         <source>not attempted: the restore stopped before this parameter</source>
         <translation>未尝试：恢复在此参数之前已停止</translation>
+    </message>
+    <message>
+        <source>The verification journal %1 is damaged (%2): it is left as it is and its history is not used.</source>
+        <translation>校验日志 %1 已损坏（%2）：文件保持原样，其中的历史不予采用。</translation>
+    </message>
+    <message numerus="yes">
+        <source>larger than %n MiB</source>
+        <translation>
+            <numerusform>大于 %n MiB</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not JSON at byte %1: %2</source>
+        <translation>第 %1 字节处不是 JSON：%2</translation>
+    </message>
+    <message>
+        <source>not a drivedesk-journal</source>
+        <translation>不是 drivedesk-journal 文件</translation>
+    </message>
+    <message>
+        <source>it names another drive</source>
+        <translation>它属于另一台驱动器</translation>
+    </message>
+    <message>
+        <source>The verification journal %1 is locked by another DriveDesk process (%2); nothing was noted in it.</source>
+        <translation>校验日志 %1 被另一个 DriveDesk 进程锁定（%2）；未记入任何内容。</translation>
+    </message>
+    <message numerus="yes">
+        <source>still busy after %n s</source>
+        <translation>
+            <numerusform>%n 秒后仍被占用</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the lock file cannot be made</source>
+        <translation>无法创建锁文件</translation>
     </message>
 </context>
 <context>
@@ -7509,6 +7590,10 @@ firmware %2</source>
     <message>
         <source>No record was made: %1</source>
         <translation>未生成记录：%1</translation>
+    </message>
+    <message>
+        <source>Also keeps this machine&apos;s drives apart in the verification journal: the writes, restores and EEPROM operations made from now on are noted under this name, and a record shows those noted under the name it is made with.</source>
+        <translation>同时用于在校验日志中区分本机器的驱动器：此后的写入、恢复和 EEPROM 操作都记在此名称下，调试记录只显示记在生成时所用名称下的内容。</translation>
     </message>
 </context>
 <context>
@@ -9206,6 +9291,65 @@ firmware %2</source>
     <message>
         <source>%1 and %2 are steps of different sizes (%3, %4): their metrics do not compare.</source>
         <translation>%1 和 %2 是幅度不同的阶跃（%3，%4）：它们的指标不可比较。</translation>
+    </message>
+</context>
+<context>
+    <name>dd::JournalKey</name>
+    <message>
+        <source>machine “%1”</source>
+        <translation>机器“%1”</translation>
+    </message>
+    <message>
+        <source>%1 address %2 on %3</source>
+        <translation>%3 上地址 %2 的 %1</translation>
+    </message>
+    <message>
+        <source>an unnamed link</source>
+        <translation>未命名的连接</translation>
+    </message>
+    <message>
+        <source>firmware %1</source>
+        <translation>固件 %1</translation>
+    </message>
+    <message>
+        <source>model %1</source>
+        <translation>型号 %1</translation>
+    </message>
+    <message>
+        <source>Identified by %1.</source>
+        <translation>识别依据：%1。</translation>
+    </message>
+    <message>
+        <source>link</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <source>model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>This family reports no serial number: two drives with the same %1 cannot be told apart.</source>
+        <translation>该系列驱动器不报告序列号：%1均相同的两台驱动器无法区分。</translation>
+    </message>
+    <message>
+        <source>%1 and %2</source>
+        <translation>%1和%2</translation>
+    </message>
+    <message>
+        <source>The drive reported no firmware version.</source>
+        <translation>驱动器未报告固件版本。</translation>
+    </message>
+    <message>
+        <source>No machine name was set: drives of different machines reached the same way share one journal.</source>
+        <translation>未设置机器名称：以相同方式连接的不同机器上的驱动器共用一份校验日志。</translation>
     </message>
 </context>
 </TS>

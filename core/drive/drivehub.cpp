@@ -172,8 +172,10 @@ void DriveHub::run(int id, int address, Operation op, Done done, Progress progre
         if (progress)
             connect(reply, &DriveReply::progress, reply,
                     [this, progress](int n, int total) { post(this, [progress, n, total] { progress(n, total); }); });
-        connect(reply, &DriveReply::finished, reply, [this, reply, done] {
-            const DriveResult r = DriveResult::from(*reply);
+        connect(reply, &DriveReply::finished, reply, [this, reply, done, drive = QPointer<Drive>(d)] {
+            DriveResult r = DriveResult::from(*reply);
+            if (drive)
+                r.identity = drive->identity();
             reply->deleteLater();
             post(this, [done, r] {
                 if (done)

@@ -21,6 +21,9 @@ struct DriveResult
     qint64 sampleTimeUs = 0;
     DriveStatus status;
     QVariantMap info;
+    // DriveHub::run: the drive's identity when the operation finished (for the verification
+    // journal's key); empty from DriveResult::from.
+    DriveIdentity identity;
 
     bool ok() const { return !error.isError(); }
     static DriveResult from(const DriveReply &reply);

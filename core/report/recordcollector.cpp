@@ -97,11 +97,8 @@ void RecordCollector::onAlarm(DriveReply *reply)
 
 void RecordCollector::done(const Error &error)
 {
-    if (!error && m_journal) {
-        const auto entry = m_journal->read(m_record.family, m_record.address);
-        m_record.verification = entry.verification;
-        m_record.backups = entry.backups;
-    }
+    if (!error && m_journal)
+        m_journal->attach(JournalKey::of(m_drive->identity(), m_journalLink, m_machine), &m_record);
     emit finished(error);
 }
 

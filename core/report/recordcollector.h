@@ -27,7 +27,14 @@ class RecordCollector : public QObject
 public:
     explicit RecordCollector(const QLocale &locale, QObject *parent = nullptr);
 
-    void setJournal(const VerificationJournal *journal) { m_journal = journal; }
+    // The journal to read, with what the journal key takes besides the drive's identity:
+    // the link's name (JournalKey::link) and the engineer's machine name.
+    void setJournal(const VerificationJournal *journal, const QString &link, const QString &machine)
+    {
+        m_journal = journal;
+        m_journalLink = link;
+        m_machine = machine;
+    }
     void collect(Drive *drive, const QJsonObject &linkSettings);
     const DriveRecord &record() const { return m_record; }
 
@@ -47,6 +54,8 @@ private:
 
     QLocale m_locale;
     const VerificationJournal *m_journal = nullptr;
+    QString m_journalLink;
+    QString m_machine;
     Drive *m_drive = nullptr;
     DriveRecord m_record;
 };

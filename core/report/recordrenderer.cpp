@@ -209,7 +209,10 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
     row(tr("Model"), orDash(d.model));
     row(tr("Link"), orDash(d.link));
     row(tr("Link settings"), orDash(settings.join(QLatin1String(", "))));
+    row(tr("Journal identity"), orDash(d.identification));
     html += QStringLiteral("</table>");
+    if (!d.journalError.isEmpty())
+        html += QStringLiteral("<p class=\"fail\">%1</p>").arg(esc(d.journalError));
     if (!d.readError.isEmpty())
         html += QStringLiteral("<p class=\"fail\">%1</p>")
                     .arg(esc(tr("Parameters not (all) read: %1").arg(d.readError)));
@@ -258,10 +261,18 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
     } else {
         const QString kind = v.kind == QLatin1String("restore") ? tr("Restore") : tr("Parameter write");
         QString line = tr("%1 on %2: ").arg(kind, timeText(v.when));
+        // Write-only parameters are written, never read back: not "verified" (issue 27).
+        const int notReadBack = int(std::count_if(v.entries.cbegin(), v.entries.cend(), [](const auto &e) {
+            return e.outcome == QLatin1String("written-only");
+        }));
+        const QString passed = notReadBack == 0
+            ? tr("%n parameter(s) written and verified.", nullptr, int(v.entries.size()))
+            : tr("%1 parameter(s) written and verified, %2 written (not read back: write-only).")
+                  .arg(v.entries.size() - notReadBack)
+                  .arg(notReadBack);
         line = esc(line)
             + (v.passed()
-                   ? QStringLiteral("<span class=\"ok\">%1</span>")
-                         .arg(esc(tr("%n parameter(s) written and verified.", nullptr, int(v.entries.size()))))
+                   ? QStringLiteral("<span class=\"ok\">%1</span>").arg(esc(passed))
                    : QStringLiteral("<span class=\"fail\">%1</span>")
                          .arg(esc(
                              tr("%1 of %2 parameter(s) NOT verified.").arg(v.failedCount()).arg(v.entries.size()))));
@@ -274,8 +285,8 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
             for (const RecordVerification::Entry &e : v.entries) {
                 const QString result = e.isVerified()
                     ? QStringLiteral("<span class=\"ok\">%1</span>")
-                          .arg(
-                              esc(e.outcome == QLatin1String("verified") ? tr("verified") : tr("written (write-only)")))
+                          .arg(esc(e.outcome == QLatin1String("verified") ? tr("verified")
+                                                                          : tr("written (not read back: write-only)")))
                     : QStringLiteral("<span class=\"fail\">%1</span> %2")
                           .arg(esc(tr("FAILED (%1)").arg(e.outcome)), esc(e.message));
                 html += QStringLiteral("<tr>") + cell(esc(e.key)) + cell(QString::number(e.requested))
@@ -285,6 +296,13 @@ QString RecordRenderer::driveSection(const DriveRecord &d, int number) const
             html += QStringLiteral("</table>");
         }
     }
+
+    const RecordEeOperation &ee = d.eeOperation;
+    if (!ee.isEmpty())
+        html += QStringLiteral("<p>%1 <span class=\"%2\">%3</span></p>")
+                    .arg(esc(tr("Last EEPROM operation: %1 on %2:").arg(ee.operation, timeText(ee.when))),
+                         ee.ok ? QStringLiteral("ok") : QStringLiteral("fail"),
+                         esc(ee.ok ? tr("done.") : tr("FAILED: %1").arg(ee.message)));
 
     // Alarms.
     html += QStringLiteral("<h3>%1</h3>").arg(esc(tr("Alarms")));

@@ -3,12 +3,16 @@
 #include "core/drive/drivetypes.h"
 #include "core/drive/restorereport.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/driverecord.h"
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QJsonParseError>
+#include <QLockFile>
 #include <QSaveFile>
 #include <QStandardPaths>
 
@@ -69,20 +73,38 @@ QString VerificationJournal::defaultDirectory()
     return QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation) + QStringLiteral("/drivedesk/journal");
 }
 
-QString VerificationJournal::path(Family family, int address) const
+QString VerificationJournal::path(const JournalKey &key) const
 {
-    return QStringLiteral("%1/%2-%3.json").arg(m_directory, familyId(family)).arg(address);
+    return m_directory + QLatin1Char('/') + key.fileName();
 }
 
-VerificationJournal::Entry VerificationJournal::read(Family family, int address) const
+VerificationJournal::Entry VerificationJournal::read(const JournalKey &key, Error *error) const
 {
     Entry entry;
-    QFile file(path(family, address));
-    if (file.size() > MaxJournalSize || !file.open(QIODevice::ReadOnly))
+    QFile file(path(key));
+    if (!file.exists())
         return entry;
-    const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+    auto damaged = [&](const QString &why) {
+        if (error)
+            *error = {ErrorCode::FileError,
+                      tr("The verification journal %1 is damaged (%2): it is left as it is and its history is "
+                         "not used.")
+                          .arg(QDir::toNativeSeparators(file.fileName()), why)};
+        return Entry();
+    };
+    if (file.size() > MaxJournalSize)
+        return damaged(tr("larger than %n MiB", nullptr, int(MaxJournalSize / (1024 * 1024))));
+    if (!file.open(QIODevice::ReadOnly))
+        return damaged(file.errorString());
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &parseError);
+    if (parseError.error != QJsonParseError::NoError)
+        return damaged(tr("not JSON at byte %1: %2").arg(parseError.offset).arg(parseError.errorString()));
+    const QJsonObject root = doc.object();
     if (root.value(QStringLiteral("format")).toString() != QLatin1String("drivedesk-journal"))
-        return entry;
+        return damaged(tr("not a drivedesk-journal"));
+    if (JournalKey::fromJson(root.value(QStringLiteral("drive")).toObject()) != key)
+        return damaged(tr("it names another drive"));
     const QJsonObject v = root.value(QStringLiteral("verification")).toObject();
     if (!v.isEmpty()) {
         RecordVerification &r = entry.verification;
@@ -105,6 +127,11 @@ VerificationJournal::Entry VerificationJournal::read(Family family, int address)
         if (r.kind != QLatin1String("restore") && r.kind != QLatin1String("write"))
             r = RecordVerification();
     }
+    const QJsonObject ee = root.value(QStringLiteral("ee")).toObject();
+    entry.ee.operation = ee.value(QStringLiteral("operation")).toString();
+    entry.ee.when = timeFrom(ee.value(QStringLiteral("when")));
+    entry.ee.ok = ee.value(QStringLiteral("ok")).toBool();
+    entry.ee.message = ee.value(QStringLiteral("message")).toString();
     for (const QJsonValue &item : root.value(QStringLiteral("backups")).toArray()) {
         const QJsonObject o = item.toObject();
         entry.backups.append({o.value(QStringLiteral("role")).toString(), o.value(QStringLiteral("path")).toString(),
@@ -114,9 +141,11 @@ VerificationJournal::Entry VerificationJournal::read(Family family, int address)
     return entry;
 }
 
-Error VerificationJournal::write(Family family, int address, const Entry &entry)
+Error VerificationJournal::write(const JournalKey &key, const Entry &entry)
 {
-    QJsonObject root{{QStringLiteral("format"), QStringLiteral("drivedesk-journal")}, {QStringLiteral("version"), 1}};
+    QJsonObject root{{QStringLiteral("format"), QStringLiteral("drivedesk-journal")},
+                     {QStringLiteral("version"), 2},
+                     {QStringLiteral("drive"), key.toJson()}};
     const RecordVerification &r = entry.verification;
     if (!r.isEmpty()) {
         QJsonArray entries;
@@ -142,10 +171,14 @@ Error VerificationJournal::write(Family family, int address, const Entry &entry)
                                    {QStringLiteral("checksum"), b.checksum},
                                    {QStringLiteral("when"), timeText(b.when)}});
     root.insert(QStringLiteral("backups"), backups);
+    if (!entry.ee.isEmpty())
+        root.insert(QStringLiteral("ee"),
+                    QJsonObject{{QStringLiteral("operation"), entry.ee.operation},
+                                {QStringLiteral("when"), timeText(entry.ee.when)},
+                                {QStringLiteral("ok"), entry.ee.ok},
+                                {QStringLiteral("message"), entry.ee.message}});
 
-    if (!QDir().mkpath(m_directory))
-        return {ErrorCode::FileError, tr("Cannot create the folder %1 for the verification journal.").arg(m_directory)};
-    QSaveFile file(path(family, address));
+    QSaveFile file(path(key));
     const QByteArray bytes = QJsonDocument(root).toJson();
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
         return {ErrorCode::FileError,
@@ -153,20 +186,73 @@ Error VerificationJournal::write(Family family, int address, const Entry &entry)
     return {};
 }
 
-Error VerificationJournal::recordVerification(Family family, int address, const RecordVerification &verification)
+void VerificationJournal::attach(const JournalKey &key, DriveRecord *record) const
 {
-    Entry entry = read(family, address);
-    entry.verification = verification;
-    return write(family, address, entry);
+    Error error;
+    const Entry entry = read(key, &error);
+    record->verification = entry.verification;
+    record->backups = entry.backups;
+    record->eeOperation = entry.ee;
+    record->identification = key.identifiedBy() + QLatin1Char(' ') + key.cannotTellApart();
+    record->journalError = error.message;
 }
 
-Error VerificationJournal::recordBackup(Family family, int address, const BackupReference &backup)
+Error VerificationJournal::update(const JournalKey &key, const std::function<void(Entry &)> &change)
 {
-    Entry entry = read(family, address);
-    entry.backups.prepend(backup);
-    while (entry.backups.size() > MaxBackups)
-        entry.backups.removeLast();
-    return write(family, address, entry);
+    if (!QDir().mkpath(m_directory))
+        return {ErrorCode::FileError, tr("Cannot create the folder %1 for the verification journal.").arg(m_directory)};
+    QLockFile lock(path(key) + QStringLiteral(".lock"));
+    if (!lock.tryLock(LockTimeoutMs))
+        return {ErrorCode::FileError,
+                tr("The verification journal %1 is locked by another DriveDesk process (%2); nothing was noted in it.")
+                    .arg(QDir::toNativeSeparators(path(key)),
+                         lock.error() == QLockFile::LockFailedError
+                             ? tr("still busy after %n s", nullptr, LockTimeoutMs / 1000)
+                             : tr("the lock file cannot be made"))};
+    Error damaged;
+    Entry entry = read(key, &damaged);
+    if (damaged)
+        return damaged;
+    change(entry);
+    return write(key, entry);
+}
+
+Error VerificationJournal::recordVerification(const JournalKey &key, const RecordVerification &verification)
+{
+    return update(key, [&verification](Entry &entry) { entry.verification = verification; });
+}
+
+Error VerificationJournal::recordRestore(const JournalKey &key, const RestoreReport &report,
+                                         const ParameterDictionary &dictionary, const QString &file,
+                                         const QString &checksum)
+{
+    if (report.dryRun || report.selected.isEmpty())
+        return {};
+    const RecordVerification verification = fromRestore(report, dictionary, file, checksum);
+    const BackupReference backup{QStringLiteral("restore"), QFileInfo(file).absoluteFilePath(), checksum,
+                                 QDateTime::currentDateTimeUtc()};
+    return update(key, [&](Entry &entry) {
+        entry.verification = verification;
+        if (file.isEmpty()) // from another drive (GUI fleet apply): no file to refer to
+            return;
+        entry.backups.prepend(backup);
+        while (entry.backups.size() > MaxBackups)
+            entry.backups.removeLast();
+    });
+}
+
+Error VerificationJournal::recordEeOperation(const JournalKey &key, const RecordEeOperation &operation)
+{
+    return update(key, [&operation](Entry &entry) { entry.ee = operation; });
+}
+
+Error VerificationJournal::recordBackup(const JournalKey &key, const BackupReference &backup)
+{
+    return update(key, [&backup](Entry &entry) {
+        entry.backups.prepend(backup);
+        while (entry.backups.size() > MaxBackups)
+            entry.backups.removeLast();
+    });
 }
 
 RecordVerification VerificationJournal::fromWrites(const QList<ParameterWriteResult> &writes,
@@ -178,6 +264,11 @@ RecordVerification VerificationJournal::fromWrites(const QList<ParameterWriteRes
     for (const ParameterWriteResult &w : writes)
         v.entries.append(entryFrom(w, dictionary));
     return v;
+}
+
+RecordEeOperation VerificationJournal::fromEe(EeOperation operation, const Error &error)
+{
+    return {eeMnemonic(operation), QDateTime::currentDateTimeUtc(), !error.isError(), error.message};
 }
 
 RecordVerification VerificationJournal::fromRestore(const RestoreReport &report, const ParameterDictionary &dictionary,

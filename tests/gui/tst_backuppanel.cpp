@@ -4,6 +4,7 @@
 // is sent.
 #include "core/params/backupfile.h"
 #include "core/params/parameterdictionary.h"
+#include "tests/gui/journaldatahome.h"
 #include "tests/gui/simdrivefixture.h"
 #include "ui/panels/backup/backupdifftable.h"
 #include "ui/panels/backup/backuppanel.h"
@@ -76,6 +77,7 @@ private slots:
 
     void backupChangeCompareRestore()
     {
+        test::JournalDataHome data;
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         SimDriveFixture fx;
@@ -143,6 +145,15 @@ private slots:
         QCOMPARE(report->table()->item(0, 3)->data(Qt::UserRole).toString(), QStringLiteral("verified"));
         QVERIFY2(report->summary().contains(QLatin1String("1 written, 1 verified, 0 failed, 0 not attempted")),
                  qPrintable(report->summary()));
+        // The save and the restore are in this drive's verification journal.
+        const VerificationJournal::Entry journal = data.read(&fx.hub, fx.connectionId, fx.address, fx.info.identity);
+        QCOMPARE(journal.verification.kind, QStringLiteral("restore"));
+        QCOMPARE(journal.verification.sourceFile, path);
+        QCOMPARE(journal.verification.entries.size(), 1);
+        QCOMPARE(journal.verification.entries.first().key, QStringLiteral("PA10"));
+        QCOMPARE(journal.backups.size(), 2);
+        QCOMPARE(journal.backups.at(0).role, QStringLiteral("restore"));
+        QCOMPARE(journal.backups.at(1).role, QStringLiteral("backup"));
 
         // Compared again afterwards: PA10 is the same now, PA20 still differs.
         QVERIFY(compared.wait(10000));

@@ -2,6 +2,7 @@
 // drive reports completion (legacy format, polled), a destructive operation that asks
 // first (cancel: nothing sent; yes: done), a drive without EE operations, and which tabs a
 // drive gets.
+#include "tests/gui/journaldatahome.h"
 #include "tests/gui/simdrivefixture.h"
 #include "ui/panels/ee/eepanel.h"
 #include "ui/workspace/drivepanel.h"
@@ -50,6 +51,7 @@ private slots:
 
     void saveShowsProgressUntilTheDriveIsDone()
     {
+        test::JournalDataHome data;
         SimDriveFixture fx;
         QVERIFY(fx.start([](SimServoModbusDrive *d) {
             d->setFirmware(7000); // the legacy format: started, then polled until done
@@ -90,6 +92,11 @@ private slots:
         QCOMPARE(fx.drive()->eeOperationsCompleted(), 1);
         QCOMPARE(fx.drive()->eepromParameter(10), quint16(321));
         QVERIFY(fx.sentWithFunction(0x06) >= 2); // started and polled
+        // The EE-Set is in this drive's verification journal (issue 27: it was not).
+        const VerificationJournal::Entry journal = data.read(&fx.hub, fx.connectionId, fx.address, fx.info.identity);
+        QCOMPARE(journal.ee.operation, QStringLiteral("EE-Set"));
+        QVERIFY(journal.ee.ok);
+        QVERIFY(journal.ee.message.isEmpty());
     }
 
     void destructiveOperationAsksFirst()

@@ -7,6 +7,7 @@
 #include "sim/bench/simbench.h"
 #include "sim/bus/simserialbus.h"
 #include "sim/servomodbus/simservomodbusdrive.h"
+#include "tests/gui/journaldatahome.h"
 #include "ui/bus/bustreewidget.h"
 #include "ui/bus/drivedirectory.h"
 #include "ui/fleet/fleetapplydialog.h"
@@ -72,6 +73,7 @@ void TestFleetApply::initTestCase()
 
 void TestFleetApply::copyPlansThenWritesOnlyDifferences()
 {
+    test::JournalDataHome data;
     sim(1)->setParameter(12, 1212);
     sim(1)->setParameter(13, 1313);
     sim(3)->setParameter(13, 1313); // already has one of them
@@ -105,6 +107,20 @@ void TestFleetApply::copyPlansThenWritesOnlyDifferences()
     QCOMPARE(sim(3)->parameter(51), quint16(3));
     QCOMPARE(sim(2)->parameter(14), writes2);
     QVERIFY(d.message().contains(QLatin1String("2 verified")));
+    // Each target's verification journal holds its own restore (issue 27: none was noted).
+    for (int a : {2, 3}) {
+        const VerificationJournal::Entry journal = data.read(&m_hub, m_id, a, m_directory->info(m_id, a).identity);
+        QCOMPARE(journal.verification.kind, QStringLiteral("restore"));
+        QStringList keys;
+        for (const RecordVerification::Entry &e : journal.verification.entries)
+            keys << e.key;
+        QCOMPARE(keys,
+                 a == 2 ? QStringList({QStringLiteral("PA12"), QStringLiteral("PA13")})
+                        : QStringList({QStringLiteral("PA12")}));
+        QVERIFY(journal.verification.passed());
+        QVERIFY(journal.verification.sourceFile.isEmpty()); // from drive 1, no file
+        QVERIFY(journal.backups.isEmpty());
+    }
 }
 
 void TestFleetApply::enabledDriveNeedsConfirmation()

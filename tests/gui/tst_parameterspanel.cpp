@@ -5,6 +5,7 @@
 #include "core/drive/drive.h"
 #include "core/drive/drivereply.h"
 #include "core/params/parameterdictionary.h"
+#include "tests/gui/journaldatahome.h"
 #include "tests/gui/simdrivefixture.h"
 #include "ui/panels/backup/backuppanel.h"
 #include "ui/panels/ee/eepanel.h"
@@ -84,6 +85,7 @@ private slots:
 
     void editAndWriteChangesTheDrive()
     {
+        test::JournalDataHome data;
         SimDriveFixture fx;
         QVERIFY(fx.start([](SimServoModbusDrive *d) {
             d->setParameter(10, 10);
@@ -136,6 +138,12 @@ private slots:
         QVERIFY(panel.model()->changedIndices().isEmpty());
         QVERIFY(!panel.findChild<QPushButton *>(QStringLiteral("writeChangedButton"))->isEnabled());
         QVERIFY2(panel.message().contains(QLatin1String("1 written and verified")), qPrintable(panel.message()));
+        // The write is in this drive's verification journal, for the commissioning record.
+        const VerificationJournal::Entry journal = data.read(&fx.hub, fx.connectionId, fx.address, fx.info.identity);
+        QCOMPARE(journal.verification.kind, QStringLiteral("write"));
+        QCOMPARE(journal.verification.entries.size(), 1);
+        QCOMPARE(journal.verification.entries.first().key, QStringLiteral("PA10"));
+        QCOMPARE(journal.verification.entries.first().requested, qint64(1234));
     }
 
     // Issue #10: the table's context menu — copy, reset to default where the dictionary knows

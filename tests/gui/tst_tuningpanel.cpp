@@ -7,6 +7,7 @@
 #include "core/drive/drive.h"
 #include "core/drive/driveresult.h"
 #include "core/params/parameterdictionary.h"
+#include "tests/gui/journaldatahome.h"
 #include "tests/gui/panelrig.h"
 #include "ui/panels/parameters/parameterspanel.h"
 #include "ui/panels/trend/trendplot.h"
@@ -18,6 +19,8 @@
 #include "ui/panels/tuning/steptestcontrols.h"
 #include "ui/panels/tuning/tuningpanel.h"
 #include "ui/panels/tuning/tuningparameterseditor.h"
+#include "ui/report/recordgatherer.h"
+#include "ui/report/recordsession.h"
 #include "ui/shell/languagemanager.h"
 #include "ui/workspace/driveparameters.h"
 
@@ -62,6 +65,32 @@ bool captureOnce(TuningPanel *tuning, QString *why)
         return false;
     }
     return true;
+}
+
+// The last verification the journal holds for the rig's drive, as the record gathers it.
+DriveRecord tuningRecordOf(PanelRig &rig)
+{
+    RecordSession session(rig.hub.get(), rig.directory.get());
+    RecordGatherer gatherer(rig.directory.get(), &session);
+    QList<DriveRecord> records;
+    bool finished = false;
+    QObject::connect(&gatherer, &RecordGatherer::finished, [&](const QList<DriveRecord> &r, const QStringList &) {
+        records = r;
+        finished = true;
+    });
+    gatherer.gather({{rig.id, 1}});
+    if (!waitUntil([&] { return finished; }, 20000) || records.size() != 1)
+        return {};
+    return records.first();
+}
+
+// "PA5=60" per entry of the drive's last verification.
+QStringList tuningWritesOf(const DriveRecord &record)
+{
+    QStringList w;
+    for (const RecordVerification::Entry &e : record.verification.entries)
+        w << QStringLiteral("%1=%2").arg(e.key).arg(e.requested);
+    return w;
 }
 
 bool dictionaryLoaded(TuningPanel *tuning)
@@ -117,6 +146,7 @@ private slots:
 
     void editGainThenCompareTwoRuns()
     {
+        test::JournalDataHome data; // the verification journal of this test only
         PanelRig rig;
         QString why;
         QVERIFY2(rig.start(SimBenchOptions{}, &why), qPrintable(why));
@@ -134,6 +164,8 @@ private slots:
         editor->writeEdited();
         QVERIFY(waitUntil([&] { return !editor->isBusy() && !editor->hasEdits(); }, 5000));
         QVERIFY2(editor->message().contains(QStringLiteral("1 written and read back")), qPrintable(editor->message()));
+        // The gain edit is in the drive's journal and so in its record (issue 27: it was not).
+        QCOMPARE(tuningWritesOf(tuningRecordOf(rig)), QStringList{QStringLiteral("PA5=60")});
         // The Parameters tab's shared values follow.
         DrivePanel *parametersTab = nullptr;
         for (DrivePanel *p : rig.workspace->panelsFor(rig.id, 1))
@@ -162,6 +194,11 @@ private slots:
         QVERIFY(
             waitUntil([&] { return parametersTab->parameters()->value(pa5).value == 40 && !editor->isBusy(); }, 5000));
         QVERIFY2(editor->message().contains(QStringLiteral("1 written and read back")), qPrintable(editor->message()));
+        const DriveRecord applied = tuningRecordOf(rig); // the applied run too
+        QCOMPARE(tuningWritesOf(applied), QStringList{QStringLiteral("PA5=40")});
+        QVERIFY(applied.verification.passed());
+        QVERIFY2(applied.identification.contains(QStringLiteral("servo-modbus address 1 on ")),
+                 qPrintable(applied.identification));
 
         // Saved and opened again, a run round-trips into the list.
         QTemporaryDir dir;

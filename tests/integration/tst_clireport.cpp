@@ -32,6 +32,31 @@ private:
         QFile f(path);
         return f.open(QIODevice::ReadOnly) ? QJsonDocument::fromJson(f.readAll()).object() : QJsonObject();
     }
+    // The journal files (not their locks) under the data folder `data`.
+    static QStringList journalFiles(const QString &data)
+    {
+        QStringList files;
+        const QDir dir(data + "/drivedesk/journal");
+        for (const QString &name : dir.entryList({"*.json"}, QDir::Files))
+            files << dir.filePath(name);
+        return files;
+    }
+    // The record (JSON) of the drive at `address` on the bench `state` as `machine` (empty:
+    // none) knows it, with the data folder `data`.
+    QJsonObject recordOf(const QString &data, const QString &state, int address, const QString &machine = QString())
+    {
+        QStringList args{"--family",    "servo-modbus", "--sim-drives", "1,2",
+                         "--sim-state", state,          "--address",    QString::number(address)};
+        if (!machine.isEmpty())
+            args << "--machine" << machine;
+        const QString json = file(QStringLiteral("recordof-%1.json").arg(++m_records));
+        const CliRun r = runCli(args + QStringList{"report", "-o", file("recordof.pdf"), "--json-out", json},
+                                {{"XDG_DATA_HOME", data}});
+        if (r.exitCode != 0)
+            qWarning() << r.text();
+        return readJson(json).value("drives").toArray().at(0).toObject();
+    }
+    int m_records = 0;
     static QString text(const QString &pdf, int first = 0, int last = 0)
     {
         QString error;
@@ -46,6 +71,8 @@ private slots:
     void chineseRecord();
     void aFailedVerificationIsOnTheFirstPage();
     void tuningRunsAreInTheRecordOfTheirDrive();
+    void eachDriveKeepsItsOwnHistory();
+    void everyCliWritePathIsJournaled();
     void badInputIsRefusedBeforeAnythingIsSent_data();
     void badInputIsRefusedBeforeAnythingIsSent();
 };
@@ -165,19 +192,25 @@ void TestCliReport::chineseRecord()
 
 void TestCliReport::aFailedVerificationIsOnTheFirstPage()
 {
-    // A restore whose read-back differed, as the journal keeps it.
-    const QString dir = file("failed/drivedesk/journal");
-    QVERIFY(QDir().mkpath(dir));
-    QFile journal(dir + "/servo-modbus-1.json");
-    QVERIFY(journal.open(QIODevice::WriteOnly));
-    journal.write(R"({"format": "drivedesk-journal", "version": 1, "backups": [],
-        "verification": {"kind": "restore", "when": "2026-11-25T10:00:00Z", "sourceFile": "/tmp/a.json",
-        "sourceChecksum": "sha256:00", "entries": [
+    // A restore whose read-back differed, as the journal keeps it: the drive's journal (made
+    // by a write, so that it is keyed by the drive) with that restore put in.
+    CliRun r = runCli(sim() + QStringList{"--address", "1", "set", "PA5=10"}, {{"XDG_DATA_HOME", file("failed")}});
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    const QStringList made = journalFiles(file("failed"));
+    QCOMPARE(made.size(), 1);
+    QJsonObject doc = readJson(made.first());
+    doc.insert("verification",
+               QJsonDocument::fromJson(R"({"kind": "restore", "when": "2026-11-25T10:00:00Z",
+        "sourceFile": "/tmp/a.json", "sourceChecksum": "sha256:00", "entries": [
         {"index": 5, "key": "PA5", "requested": 10, "readBack": 11, "outcome": "mismatch", "message": "read back 11"},
-        {"index": 6, "key": "PA6", "requested": 20, "readBack": 20, "outcome": "verified", "message": ""}]}})");
+        {"index": 6, "key": "PA6", "requested": 20, "readBack": 20, "outcome": "verified", "message": ""}]})")
+                   .object());
+    QFile journal(made.first());
+    QVERIFY(journal.open(QIODevice::WriteOnly));
+    journal.write(QJsonDocument(doc).toJson());
     journal.close();
-    const CliRun r = runCli(sim() + QStringList{"--address", "1", "report", "-o", file("failed.pdf")},
-                            {{"XDG_DATA_HOME", file("failed")}});
+    r = runCli(sim() + QStringList{"--address", "1", "report", "-o", file("failed.pdf")},
+               {{"XDG_DATA_HOME", file("failed")}});
     QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
     QVERIFY(r.text().contains("failed their last verification"));
     const QString first = text(file("failed.pdf"), 1, 1);
@@ -185,6 +218,149 @@ void TestCliReport::aFailedVerificationIsOnTheFirstPage()
     QVERIFY2(QRegularExpression("1\\s+of\\s+2\\s+parameter\\(s\\)\\s+not\\s+verified").match(first).hasMatch(),
              qPrintable(first));
     QVERIFY(first.contains("FAILED (1)"));
+}
+
+void TestCliReport::eachDriveKeepsItsOwnHistory()
+{
+    // Two machines each with a servo-modbus drive at address 1 (two simulated benches: two
+    // links), and the same bench under two machine names, in one data folder.
+    const QString data = file("history");
+    const QHash<QString, QString> env{{"XDG_DATA_HOME", data}};
+    const QString benchA = file("history-a.json");
+    const QString benchB = file("history-b.json");
+    auto bench = [](const QString &state, int address = 1) {
+        return QStringList{"--family",    "servo-modbus", "--sim-drives", "1,2",
+                           "--sim-state", state,          "--address",    QString::number(address)};
+    };
+    CliRun r = runCli(bench(benchA) + QStringList{"set", "PA10=111"}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    r = runCli(bench(benchB) + QStringList{"set", "PA10=222"}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    r = runCli(bench(benchA) + QStringList{"--machine", "Press 3", "set", "PA12=33"}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    QCOMPARE(journalFiles(data).size(), 3);
+
+    auto written = [](const QJsonObject &drive) {
+        QStringList w;
+        for (const QJsonValue &e : drive.value("verification").toObject().value("entries").toArray())
+            w << QStringLiteral("%1=%2")
+                     .arg(e.toObject().value("key").toString())
+                     .arg(e.toObject().value("requested").toInt());
+        return w;
+    };
+    const QJsonObject a = recordOf(data, benchA, 1);
+    QCOMPARE(written(a), QStringList{"PA10=111"});
+    QVERIFY2(a.value("identification")
+                 .toString()
+                 .contains(QStringLiteral("servo-modbus address 1 on sim:%1, firmware ")
+                               .arg(QFileInfo(benchA).absoluteFilePath())),
+             qPrintable(a.value("identification").toString()));
+    QVERIFY(a.value("identification").toString().contains("No machine name was set"));
+    QCOMPARE(written(recordOf(data, benchB, 1)), QStringList{"PA10=222"});
+    const QJsonObject press = recordOf(data, benchA, 1, "Press 3");
+    QCOMPARE(written(press), QStringList{"PA12=33"});
+    QVERIFY(press.value("identification").toString().contains(QStringLiteral("machine “Press 3”")));
+    QVERIFY(recordOf(data, benchA, 1, "Press 4").value("verification").isNull());
+    QVERIFY(recordOf(data, benchA, 2).value("verification").isNull()); // drive 2 of bench A: nothing written
+
+    // A journal of the old form (family-address) is nobody's: left alone, never in a record.
+    QFile legacy(data + "/drivedesk/journal/servo-modbus-2.json");
+    QVERIFY(legacy.open(QIODevice::WriteOnly));
+    legacy.write(R"({"format": "drivedesk-journal", "version": 1, "backups": [],
+        "verification": {"kind": "restore", "when": "2026-11-25T08:03:01Z", "sourceFile": "mcap_edit.ddrun",
+        "sourceChecksum": "sha256:00", "entries": [
+        {"index": 5, "key": "PA5", "requested": 60, "readBack": 60, "outcome": "verified", "message": ""}]}})");
+    legacy.close();
+    r = runCli(bench(benchA, 2) + QStringList{"report", "-o", file("legacy.pdf")}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    const QString t = text(file("legacy.pdf"));
+    QVERIFY(!t.contains("mcap_edit"));
+    QVERIFY(t.contains("No restore or parameter write of this drive is recorded."));
+
+    // A damaged journal is said, in the record and when writing, and left as it is.
+    const QStringList before = journalFiles(data);
+    QString aFile;
+    for (const QString &f : before)
+        if (readJson(f).value("drive").toObject().value("link").toString().endsWith("history-b.json"))
+            aFile = f;
+    QVERIFY(!aFile.isEmpty());
+    QFile bad(aFile);
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("not json");
+    bad.close();
+    r = runCli(bench(benchB) + QStringList{"set", "PA10=223"}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData()); // the write itself happened
+    QVERIFY2(r.text().contains("is damaged (not JSON at byte"), r.text().toUtf8().constData());
+    QVERIFY(bad.open(QIODevice::ReadOnly));
+    QCOMPARE(bad.readAll(), QByteArray("not json"));
+    bad.close();
+    const QJsonObject b = recordOf(data, benchB, 1);
+    QVERIFY(b.value("verification").isNull());
+    QVERIFY2(b.value("journalError").toString().contains("is damaged"), qPrintable(b.value("journalError").toString()));
+}
+
+void TestCliReport::everyCliWritePathIsJournaled()
+{
+    const QString data = file("paths");
+    const QHash<QString, QString> env{{"XDG_DATA_HOME", data}};
+    const QString state = file("paths-bench.json");
+    const QStringList bench{"--family", "servo-modbus", "--sim-drives", "1,2", "--sim-state", state};
+    auto one = [&](int address) { return bench + QStringList{"--address", QString::number(address)}; };
+    auto verification = [&](int address) { return recordOf(data, state, address).value("verification").toObject(); };
+
+    // set
+    CliRun r = runCli(one(1) + QStringList{"set", "PA10=5"}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    QCOMPARE(verification(1).value("kind").toString(), QStringLiteral("write"));
+
+    // backup, then restore of a changed value
+    r = runCli(one(1) + QStringList{"backup", "-o", file("paths-1.json")}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    r = runCli(one(1) + QStringList{"set", "PA10=6"}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    r = runCli(one(1) + QStringList{"restore", file("paths-1.json")}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    QJsonObject v = verification(1);
+    QCOMPARE(v.value("kind").toString(), QStringLiteral("restore"));
+    QVERIFY(v.value("sourceFile").toString().endsWith("paths-1.json"));
+    QCOMPARE(v.value("entries").toArray().at(0).toObject().value("key").toString(), QStringLiteral("PA10"));
+
+    // apply-run: a capture's tuning snapshot written back after PA5 changed
+    r = runCli(one(1) + QStringList{"capture", "speed", "--duration", "0.1", "-o", file("paths.ddrun")}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    r = runCli(one(1) + QStringList{"--json", "get", "PA5"}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    const int pa5 = r.json().value("parameters").toArray().at(0).toObject().value("value").toInt();
+    r = runCli(one(1) + QStringList{"set", QStringLiteral("PA5=%1").arg(pa5 + 1)}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    r = runCli(one(1) + QStringList{"apply-run", file("paths.ddrun")}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    v = verification(1);
+    QCOMPARE(v.value("kind").toString(), QStringLiteral("restore"));
+    QVERIFY(v.value("sourceFile").toString().endsWith("paths.ddrun"));
+    QCOMPARE(v.value("entries").toArray().size(), 1);
+    QCOMPARE(v.value("entries").toArray().at(0).toObject().value("key").toString(), QStringLiteral("PA5"));
+    QCOMPARE(v.value("entries").toArray().at(0).toObject().value("requested").toInt(), pa5);
+
+    // EE operation: noted apart, the last verification stays
+    r = runCli(one(1) + QStringList{"ee", "set"}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    const QJsonObject d1 = recordOf(data, state, 1);
+    QCOMPARE(d1.value("eeOperation").toObject().value("operation").toString(), QStringLiteral("EE-Set"));
+    QCOMPARE(d1.value("eeOperation").toObject().value("ok").toBool(), true);
+    QCOMPARE(d1.value("verification").toObject().value("sourceFile").toString(), v.value("sourceFile").toString());
+
+    // fleet restore (a backup folder of both drives)
+    r = runCli(bench + QStringList{"--address", "1,2", "backup", "-o", file("paths-fleet")}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    r = runCli(one(2) + QStringList{"set", "PA11=7"}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    r = runCli(bench + QStringList{"--address", "1,2", "restore", file("paths-fleet")}, env);
+    QVERIFY2(r.exitCode == 0, r.text().toUtf8().constData());
+    v = verification(2);
+    QCOMPARE(v.value("kind").toString(), QStringLiteral("restore"));
+    QVERIFY2(v.value("sourceFile").toString().contains("paths-fleet"), qPrintable(v.value("sourceFile").toString()));
+    QCOMPARE(v.value("entries").toArray().at(0).toObject().value("key").toString(), QStringLiteral("PA11"));
 }
 
 void TestCliReport::tuningRunsAreInTheRecordOfTheirDrive()

@@ -3,6 +3,7 @@
 #include "core/drive/drivetypes.h"
 #include "core/link/trafficrecord.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/journalkey.h"
 #include "core/report/linkhealthcounter.h"
 #include "core/report/recordheader.h"
 #include "core/report/recordjson.h"
@@ -10,16 +11,21 @@
 #include "core/report/recordruns.h"
 #include "core/report/runplot.h"
 #include "core/report/verificationjournal.h"
+#include "tests/support/clirun.h"
 #include "tests/support/pdftext.h"
 #include "tests/support/recordfixture.h"
 
+#include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSet>
 #include <QTemporaryDir>
+#include <QThread>
 #include <QtTest>
+#include <memory>
 
 using namespace dd;
 
@@ -52,6 +58,40 @@ private:
         if (t.isEmpty())
             qWarning() << error;
         return t;
+    }
+
+    static JournalKey journalKey(const QString &link, int address, const QString &firmware)
+    {
+        DriveIdentity id;
+        id.family = Family::ServoModbus;
+        id.address = address;
+        id.firmware = firmware;
+        return JournalKey::of(id, link, QString());
+    }
+    static ParameterWriteResult writeOf(int index, qint64 value)
+    {
+        ParameterWriteResult w;
+        w.index = index;
+        w.requested = w.readBack = value;
+        w.readable = w.written = w.verified = true;
+        w.outcome = WriteOutcome::Verified;
+        return w;
+    }
+    static QList<ParameterWriteResult> okAndMismatch()
+    {
+        ParameterWriteResult ok = writeOf(5, 123);
+        ParameterWriteResult bad = ok;
+        bad.index = 6;
+        bad.readBack = 12;
+        bad.verified = false;
+        bad.outcome = WriteOutcome::Mismatch;
+        bad.error = QStringLiteral("read back 12");
+        return {ok, bad};
+    }
+    static BackupReference backupRef(const QString &file)
+    {
+        return {QStringLiteral("backup"), file, QStringLiteral("sha256:") + QString(64, QLatin1Char('1')),
+                QDateTime::currentDateTimeUtc()};
     }
 
     // Each file's verdict against docs/record-schema.json: "valid" or "invalid: <why>".
@@ -520,27 +560,16 @@ private slots:
     void journalKeepsTheLastVerificationAndBackups()
     {
         VerificationJournal journal(path(QStringLiteral("journal")));
-        QVERIFY(journal.read(Family::ServoModbus, 3).verification.isEmpty());
+        const JournalKey key = journalKey(QStringLiteral("/dev/ttyUSB0"), 3, QStringLiteral("7051"));
+        QVERIFY(journal.read(key).verification.isEmpty());
         ParameterDictionary dict;
         QVERIFY(!dict.loadBundled(Family::ServoModbus));
-        ParameterWriteResult ok;
-        ok.index = 5;
-        ok.requested = 123;
-        ok.readBack = 123;
-        ok.written = ok.verified = true;
-        ok.outcome = WriteOutcome::Verified;
-        ParameterWriteResult bad = ok;
-        bad.index = 6;
-        bad.readBack = 12;
-        bad.verified = false;
-        bad.outcome = WriteOutcome::Mismatch;
-        bad.error = QStringLiteral("read back 12");
-        QVERIFY(!journal.recordVerification(Family::ServoModbus, 3, VerificationJournal::fromWrites({ok, bad}, dict)));
-        QVERIFY(!journal.recordBackup(Family::ServoModbus, 3,
-                                      {QStringLiteral("backup"), QStringLiteral("/x/a.json"),
-                                       QStringLiteral("sha256:") + QString(64, QLatin1Char('1')),
-                                       QDateTime::currentDateTimeUtc()}));
-        const VerificationJournal::Entry e = journal.read(Family::ServoModbus, 3);
+        QVERIFY(!journal.recordVerification(key, VerificationJournal::fromWrites(okAndMismatch(), dict)));
+        QVERIFY(!journal.recordBackup(key, backupRef(QStringLiteral("/x/a.json"))));
+        QVERIFY(!journal.recordEeOperation(key, VerificationJournal::fromEe(EeOperation::Save, {})));
+        Error error;
+        const VerificationJournal::Entry e = journal.read(key, &error);
+        QVERIFY2(!error, qPrintable(error.message));
         QCOMPARE(e.verification.kind, QStringLiteral("write"));
         QCOMPARE(e.verification.entries.size(), 2);
         QCOMPARE(e.verification.entries.at(0).key, QStringLiteral("PA5"));
@@ -549,9 +578,215 @@ private slots:
         QCOMPARE(e.verification.failedCount(), 1);
         QCOMPARE(e.backups.size(), 1);
         QCOMPARE(e.backups.first().path, QStringLiteral("/x/a.json"));
+        // An EE-Set after the write keeps the write (it is noted apart).
+        QCOMPARE(e.ee.operation, QStringLiteral("EE-Set"));
+        QVERIFY(e.ee.ok);
         // another drive's journal is its own
-        QVERIFY(journal.read(Family::ServoModbus, 4).verification.isEmpty());
-        QVERIFY(journal.read(Family::ServoCan, 3).backups.isEmpty());
+        QVERIFY(
+            journal.read(journalKey(QStringLiteral("/dev/ttyUSB0"), 4, QStringLiteral("7051"))).verification.isEmpty());
+        JournalKey can = key;
+        can.family = Family::ServoCan;
+        QVERIFY(journal.read(can).backups.isEmpty());
+    }
+
+    void journalIsKeptPerDriveIdentityNotPerAddress()
+    {
+        // Two machines, each with a servo-modbus drive at address 1: the engineer's laptop
+        // reaches them on different ports, or on the same port under different machine names.
+        VerificationJournal journal(path(QStringLiteral("identity")));
+        ParameterDictionary dict;
+        QVERIFY(!dict.loadBundled(Family::ServoModbus));
+        const JournalKey usb0 = journalKey(QStringLiteral("/dev/ttyUSB0"), 1, QStringLiteral("7051"));
+        const JournalKey usb1 = journalKey(QStringLiteral("/dev/ttyUSB1"), 1, QStringLiteral("7051"));
+        JournalKey press3 = usb0;
+        press3.machine = QStringLiteral("Press 3");
+        JournalKey otherFirmware = usb0;
+        otherFirmware.firmware = QStringLiteral("7052");
+        const QList<JournalKey> keys{usb0, usb1, press3, otherFirmware};
+        for (int i = 0; i < keys.size(); ++i)
+            QVERIFY(
+                !journal.recordVerification(keys.at(i), VerificationJournal::fromWrites({writeOf(5, 100 + i)}, dict)));
+        QSet<QString> files;
+        for (int i = 0; i < keys.size(); ++i) {
+            const VerificationJournal::Entry e = journal.read(keys.at(i));
+            QCOMPARE(e.verification.entries.size(), 1);
+            QCOMPARE(e.verification.entries.first().requested, qint64(100 + i)); // its own write, no other
+            files << keys.at(i).fileName();
+        }
+        QCOMPARE(files.size(), keys.size());
+
+        // The record says how the drive was told apart and what it cannot tell apart.
+        DriveRecord record;
+        journal.attach(press3, &record);
+        QCOMPARE(record.verification.entries.first().requested, qint64(102));
+        QVERIFY2(record.identification.contains(QStringLiteral(
+                     "Identified by machine “Press 3”, servo-modbus address 1 on /dev/ttyUSB0, firmware 7051.")),
+                 qPrintable(record.identification));
+        QVERIFY2(record.identification.contains(QStringLiteral(
+                     "This family reports no serial number: two drives with the same link, address and firmware "
+                     "cannot be told apart.")),
+                 qPrintable(record.identification));
+        QVERIFY(record.journalError.isEmpty());
+        DriveRecord unnamed;
+        journal.attach(usb0, &unnamed);
+        QVERIFY2(unnamed.identification.contains(QStringLiteral("No machine name was set")),
+                 qPrintable(unnamed.identification));
+
+        // A journal of the old form (family-address, before drives were told apart) is no
+        // drive's: never read into a record.
+        QFile legacy(journal.directory() + QStringLiteral("/servo-modbus-9.json"));
+        QVERIFY(legacy.open(QIODevice::WriteOnly));
+        legacy.write(R"({"format": "drivedesk-journal", "version": 1, "backups": [],
+            "verification": {"kind": "write", "when": "2026-11-25T10:00:00Z", "sourceFile": "", "sourceChecksum": "",
+            "entries": [{"index": 5, "key": "PA5", "requested": 60, "readBack": 60, "outcome": "verified", "message": ""}]}})");
+        legacy.close();
+        DriveRecord nine;
+        journal.attach(journalKey(QStringLiteral("/dev/ttyUSB0"), 9, QStringLiteral("7051")), &nine);
+        QVERIFY(nine.verification.isEmpty());
+        QVERIFY(nine.journalError.isEmpty());
+
+        // The record shows it (PDF and JSON, which the schema takes).
+        CommissioningRecord c = test::fixtureRecord(1, 4);
+        c.drives[0].identification = record.identification;
+        c.drives[0].eeOperation = VerificationJournal::fromEe(EeOperation::FactoryDefaults,
+                                                              {ErrorCode::Timeout, QStringLiteral("no completion")});
+        c.drives[0].journalError = QStringLiteral("journal trouble");
+        const QString pdf = path(QStringLiteral("identity.pdf"));
+        QByteArray json;
+        QVERIFY(!write(c, pdf, QPageSize::A4, &json).isEmpty());
+        const QString t = text(pdf).simplified();
+        QVERIFY2(t.contains(QStringLiteral("Journal identity")), qPrintable(t.left(2000)));
+        QVERIFY(t.contains(QStringLiteral("cannot be told apart")));
+        QVERIFY(t.contains(QStringLiteral("Last EEPROM operation: EE-dEF")));
+        QVERIFY(t.contains(QStringLiteral("FAILED: no completion")));
+        QVERIFY(t.contains(QStringLiteral("journal trouble")));
+        QFile jf(path(QStringLiteral("identity.json")));
+        QVERIFY(jf.open(QIODevice::WriteOnly));
+        jf.write(json);
+        jf.close();
+        const QList<QByteArray> verdicts = schemaVerdicts({jf.fileName()});
+        if (!verdicts.isEmpty())
+            QCOMPARE(verdicts.first(), QByteArray("valid"));
+    }
+
+    void writeOnlyParametersAreNotCalledVerified()
+    {
+        // Issue 27: a write-only parameter (no read-back) was listed as "verified".
+        ParameterDictionary dict;
+        QVERIFY(!dict.loadBundled(Family::ServoModbus));
+        ParameterWriteResult writeOnly = writeOf(6, 7);
+        writeOnly.readable = false;
+        writeOnly.verified = false;
+        writeOnly.outcome = WriteOutcome::WriteOnly;
+        CommissioningRecord c = test::fixtureRecord(1, 4);
+        c.drives[0].verification = VerificationJournal::fromWrites({writeOf(5, 3), writeOnly}, dict);
+        const QString pdf = path(QStringLiteral("writeonly.pdf"));
+        QVERIFY(!write(c, pdf).isEmpty());
+        const QString t = text(pdf).simplified();
+        QVERIFY2(
+            t.contains(QStringLiteral("1 parameter(s) written and verified, 1 written (not read back: write-only).")),
+            qPrintable(t));
+        QVERIFY(t.contains(QStringLiteral("written (not read back: write-only)")));
+        QVERIFY(!t.contains(QStringLiteral("2 parameter(s) written and verified")));
+    }
+
+    void aDamagedJournalIsReportedAndLeftAsItIs()
+    {
+        VerificationJournal journal(path(QStringLiteral("damaged")));
+        ParameterDictionary dict;
+        QVERIFY(!dict.loadBundled(Family::ServoModbus));
+        const JournalKey key = journalKey(QStringLiteral("/dev/ttyUSB0"), 2, QStringLiteral("7051"));
+        QVERIFY(QDir().mkpath(journal.directory()));
+        const QByteArray garbage("{\"format\": \"drivedesk-journal\", \"verif");
+        QFile f(journal.path(key));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(garbage);
+        f.close();
+        Error error;
+        QVERIFY(journal.read(key, &error).verification.isEmpty());
+        QVERIFY2(error.message.contains(QStringLiteral("is damaged (not JSON at byte")), qPrintable(error.message));
+        const Error written = journal.recordVerification(key, VerificationJournal::fromWrites({writeOf(5, 1)}, dict));
+        QVERIFY(written);
+        QVERIFY2(written.message.contains(QStringLiteral("is damaged")), qPrintable(written.message));
+        QVERIFY(journal.recordBackup(key, backupRef(QStringLiteral("/x/b.json"))));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), garbage); // changed nothing
+        f.close();
+        DriveRecord record;
+        journal.attach(key, &record);
+        QVERIFY(record.verification.isEmpty());
+        QVERIFY2(record.journalError.contains(QStringLiteral("is damaged")), qPrintable(record.journalError));
+
+        // Another drive's journal copied over this one's name is not taken for it.
+        const JournalKey other = journalKey(QStringLiteral("/dev/ttyUSB1"), 2, QStringLiteral("7051"));
+        QVERIFY(!journal.recordVerification(other, VerificationJournal::fromWrites({writeOf(5, 2)}, dict)));
+        QVERIFY(QFile::remove(journal.path(key)));
+        QVERIFY(QFile::copy(journal.path(other), journal.path(key)));
+        error = {};
+        QVERIFY(journal.read(key, &error).verification.isEmpty());
+        QVERIFY2(error.message.contains(QStringLiteral("names another drive")), qPrintable(error.message));
+    }
+
+    void twoProcessesWritingTheJournalLoseNothing()
+    {
+        // The CLI (its own process: `set` on a simulated drive) and this process (backups,
+        // one after another) change the same drive's journal at the same time. Every change
+        // of each must survive the other's, and the file must always parse.
+        if (!QFile::exists(test::cliPath()))
+            QSKIP("drivedesk-cli is not built");
+        const QString data = path(QStringLiteral("twowriters"));
+        const QString state = path(QStringLiteral("twowriters-bench.json"));
+        const QStringList sim{QStringLiteral("--sim"),
+                              QStringLiteral("--family"),
+                              QStringLiteral("servo-modbus"),
+                              QStringLiteral("--sim-state"),
+                              state,
+                              QStringLiteral("--address"),
+                              QStringLiteral("1")};
+        const QHash<QString, QString> env{{QStringLiteral("XDG_DATA_HOME"), data}};
+        test::CliRun first = test::runCli(sim + QStringList{QStringLiteral("set"), QStringLiteral("PA10=100")}, env);
+        QVERIFY2(first.exitCode == 0, qPrintable(first.text()));
+        VerificationJournal journal(data + QStringLiteral("/drivedesk/journal"));
+        const QStringList files = QDir(journal.directory()).entryList({QStringLiteral("*.json")}, QDir::Files);
+        QCOMPARE(files.size(), 1);
+        QFile made(journal.directory() + QLatin1Char('/') + files.first());
+        QVERIFY(made.open(QIODevice::ReadOnly));
+        const JournalKey key = JournalKey::fromJson(
+            QJsonDocument::fromJson(made.readAll()).object().value(QStringLiteral("drive")).toObject());
+        made.close();
+        QCOMPARE(key.fileName(), files.first());
+
+        int mine = 0; // this process's backups so far: "/bN.json"
+        for (int round = 1; round <= 6; ++round) {
+            const qint64 value = 100 + round;
+            std::unique_ptr<QProcess> cli(
+                test::startCli(sim + QStringList{QStringLiteral("set"), QStringLiteral("PA10=%1").arg(value)}, env));
+            bool running = true;
+            while (running) {
+                running = cli->state() != QProcess::NotRunning;
+                Error error;
+                const VerificationJournal::Entry before = journal.read(key, &error);
+                QVERIFY2(!error, qPrintable(error.message));
+                if (mine > 0) { // my last backup is still the newest one
+                    QVERIFY(!before.backups.isEmpty());
+                    QCOMPARE(before.backups.first().path, QStringLiteral("/b%1.json").arg(mine));
+                }
+                const Error e = journal.recordBackup(key, backupRef(QStringLiteral("/b%1.json").arg(++mine)));
+                QVERIFY2(!e, qPrintable(e.message));
+                QCoreApplication::processEvents();
+                QThread::msleep(2); // a busy writer, not one that never lets go of the lock
+            }
+            const test::CliRun r = test::waitCli(cli.get());
+            QVERIFY2(r.exitCode == 0, qPrintable(r.text()));
+            QVERIFY2(!r.text().contains(QStringLiteral("journal")), qPrintable(r.text()));
+            const VerificationJournal::Entry after = journal.read(key);
+            QCOMPARE(after.verification.entries.size(), 1);
+            QCOMPARE(after.verification.entries.first().requested, value); // the CLI's write survived mine
+            QCOMPARE(after.backups.first().path, QStringLiteral("/b%1.json").arg(mine)); // and mine the CLI's
+            QCOMPARE(after.backups.size(), qMin(mine, VerificationJournal::MaxBackups));
+        }
+        QVERIFY(mine > 6);
+        QVERIFY(QDir(journal.directory()).entryList({QStringLiteral("*.lock")}, QDir::Files).isEmpty());
     }
 };
 

@@ -73,7 +73,7 @@ void FleetActions::applyBackup(int connectionId, const QList<int> &addresses)
     }
     auto *dialog = new FleetApplyDialog(m_directory, connectionId, addresses, m_window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->setSourceFile(file, QFileInfo(path).fileName());
+    dialog->setSourceFile(file, QFileInfo(path).fileName(), path);
     dialog->show();
 }
 

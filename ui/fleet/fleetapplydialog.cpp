@@ -1,8 +1,10 @@
 #include "ui/fleet/fleetapplydialog.h"
 
 #include "core/params/parameterdictionary.h"
+#include "core/report/verificationjournal.h"
 #include "ui/bus/drivedirectory.h"
 #include "ui/panels/backup/transferoperation.h"
+#include "ui/report/guijournal.h"
 
 #include <QCheckBox>
 #include <QEvent>
@@ -69,10 +71,11 @@ FleetApplyDialog::FleetApplyDialog(DriveDirectory *directory, int connectionId, 
 
 FleetApplyDialog::~FleetApplyDialog() = default;
 
-void FleetApplyDialog::setSourceFile(const BackupFile &file, const QString &name)
+void FleetApplyDialog::setSourceFile(const BackupFile &file, const QString &name, const QString &path)
 {
     m_file = file;
     m_sourceName = name;
+    m_sourcePath = path;
     m_hasSource = true;
     retranslate();
     plan();
@@ -86,6 +89,7 @@ void FleetApplyDialog::setSourceDrive(int address)
             delete m_tree->takeTopLevelItem(i);
     m_states.remove(address);
     m_sourceName = tr("drive %1").arg(address);
+    m_sourcePath.clear();
     retranslate();
     m_message->setText(tr("Reading drive %1…").arg(address));
     auto out = std::make_shared<TransferOutcome>();
@@ -230,7 +234,16 @@ void FleetApplyDialog::startWrite(int address)
     updateItem(address);
     auto out = std::make_shared<TransferOutcome>();
     m_directory->hub()->run(m_connectionId, address, TransferOperation::restore(m_file, {}, out),
-                            [this, out, address](const DriveResult &r) { onWritten(address, r.error, out->report); });
+                            [this, out, address](const DriveResult &r) {
+                                // For the commissioning record (ui/report/guijournal.h).
+                                const ParameterDictionary &dict = ParameterDictionary::bundled(
+                                    m_directory->connectionSettings(m_connectionId).family);
+                                if (Error e = VerificationJournal().recordRestore(
+                                        GuiJournal::key(m_directory->hub(), m_connectionId, address, r.identity),
+                                        out->report, dict, m_sourcePath, BackupFile::checksum(m_file.values())))
+                                    m_journalError = e.message;
+                                onWritten(address, r.error, out->report);
+                            });
 }
 
 void FleetApplyDialog::onWritten(int address, const Error &error, const RestoreReport &report)
@@ -264,7 +277,9 @@ void FleetApplyDialog::finishIfDone()
     m_applying = false;
     m_done = true;
     m_message->setText(
-        tr("Done: %1 verified, %2 failed, %3 not attempted.").arg(verified).arg(failed).arg(notAttempted));
+        (tr("Done: %1 verified, %2 failed, %3 not attempted.").arg(verified).arg(failed).arg(notAttempted)
+         + QLatin1Char(' ') + m_journalError)
+            .trimmed());
     updateButtons();
     emit applied();
 }

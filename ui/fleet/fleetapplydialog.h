@@ -36,7 +36,8 @@ public:
     ~FleetApplyDialog() override;
 
     // The source; the plan starts at once.
-    void setSourceFile(const BackupFile &file, const QString &name);
+    // `path`: the file's path, for the verification journal (ui/report/guijournal.h).
+    void setSourceFile(const BackupFile &file, const QString &name, const QString &path = QString());
     void setSourceDrive(int address); // reads it, then plans
 
     bool isPlanned() const;
@@ -77,6 +78,8 @@ private:
     QList<int> m_targets;
     BackupFile m_file;
     QString m_sourceName;
+    QString m_sourcePath;   // the source file's path; empty when the source is a drive
+    QString m_journalError; // the last verification journal that could not be written
     bool m_hasSource = false;
     bool m_applying = false;
     bool m_done = false;

@@ -176,6 +176,9 @@ void RecordDialog::retranslate()
         m_runs->item(i)->setToolTip(QDir::toNativeSeparators(m_runFiles.at(i).path));
     }
     m_machineLabel->setText(tr("Machine / project:"));
+    m_machine->setToolTip(tr("Also keeps this machine's drives apart in the verification journal: the writes, "
+                             "restores and EEPROM operations made from now on are noted under this name, and a "
+                             "record shows those noted under the name it is made with."));
     m_customerLabel->setText(tr("Customer:"));
     m_siteLabel->setText(tr("Site:"));
     m_engineerLabel->setText(tr("Engineer:"));

@@ -9,6 +9,7 @@
 #include "core/report/recordcollector.h"
 #include "core/report/verificationjournal.h"
 #include "ui/bus/drivedirectory.h"
+#include "ui/report/guijournal.h"
 #include "ui/report/recordsession.h"
 
 namespace dd {
@@ -78,7 +79,7 @@ void RecordGatherer::readAlarm(const QPair<int, int> &drive, DriveRecord record)
     record.alarms = m_session->alarms(drive.first, drive.second);
     record.linkHealth = m_session->linkHealth(drive.first, drive.second);
     if (!m_directory->info(drive.first, drive.second).capabilities.testFlag(Capability::ReadAlarm))
-        return done(record);
+        return done(drive, record);
     m_directory->hub()->run(
         drive.first, drive.second, [](Drive &d) { return d.readAlarm(); },
         [this, drive, record](const DriveResult &result) mutable {
@@ -96,16 +97,15 @@ void RecordGatherer::readAlarm(const QPair<int, int> &drive, DriveRecord record)
                     record.alarms.append(a);
                 }
             }
-            done(record);
+            done(drive, record);
         });
 }
 
-void RecordGatherer::done(const DriveRecord &record)
+void RecordGatherer::done(const QPair<int, int> &drive, const DriveRecord &record)
 {
     DriveRecord r = record;
-    const VerificationJournal::Entry entry = VerificationJournal().read(r.family, r.address);
-    r.verification = entry.verification;
-    r.backups = entry.backups;
+    const DriveInfo info = m_directory->info(drive.first, drive.second);
+    VerificationJournal().attach(GuiJournal::key(m_directory->hub(), drive.first, drive.second, info.identity), &r);
     m_records.append(r);
     next();
 }

@@ -34,7 +34,7 @@ signals:
 private:
     void next();
     void readAlarm(const QPair<int, int> &drive, DriveRecord record);
-    void done(const DriveRecord &record);
+    void done(const QPair<int, int> &drive, const DriveRecord &record);
 
     DriveDirectory *m_directory;
     RecordSession *m_session;

@@ -8,7 +8,7 @@
 namespace dd {
 
 namespace {
-const QString SettingKey = QStringLiteral("recentFiles");
+const QString RecentFilesSettingKey = QStringLiteral("recentFiles");
 }
 
 RecentFiles::RecentFiles(QObject *parent)
@@ -54,7 +54,7 @@ void RecentFiles::clear()
 void RecentFiles::load()
 {
     QSettings s;
-    m_files = s.value(SettingKey).toStringList();
+    m_files = s.value(RecentFilesSettingKey).toStringList();
     while (m_files.size() > MaxFiles)
         m_files.removeLast();
     rebuildMenu();
@@ -64,7 +64,7 @@ void RecentFiles::load()
 void RecentFiles::save() const
 {
     QSettings s;
-    s.setValue(SettingKey, m_files);
+    s.setValue(RecentFilesSettingKey, m_files);
 }
 
 void RecentFiles::rebuildMenu()

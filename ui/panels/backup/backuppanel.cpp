@@ -7,6 +7,7 @@
 #include "ui/panels/backup/backupdifftable.h"
 #include "ui/panels/backup/restorereportdialog.h"
 #include "ui/panels/backup/transferoperation.h"
+#include "ui/report/guijournal.h"
 #include "ui/workspace/driveparameters.h"
 
 #include <QCheckBox>
@@ -185,13 +186,16 @@ void BackupPanel::onBackedUp(const DriveResult &result, const TransferOutcome &o
     }
     if (Error e = backup.save(path, *outcome.dictionary))
         return fail(e, [] { return tr("No backup was saved:"); });
-    // For the commissioning record (core/report/verificationjournal.h): best effort.
-    VerificationJournal().recordBackup(context().family, context().address,
-                                       {QStringLiteral("backup"), QFileInfo(path).absoluteFilePath(),
-                                        BackupFile::checksum(backup.values()), QDateTime::currentDateTimeUtc()});
-    setMessage([n = int(backup.values().size()),
-                path] { return tr("Saved %n parameter(s) to %1.", nullptr, n).arg(QDir::toNativeSeparators(path)); },
-               MessageKind::Success);
+    // For the commissioning record (ui/report/guijournal.h).
+    const Error journal = GuiJournal::backup(context(), result.identity, QStringLiteral("backup"), path,
+                                             BackupFile::checksum(backup.values()));
+    setMessage(
+        [n = int(backup.values().size()), path, journal = journal.message] {
+            return (tr("Saved %n parameter(s) to %1.", nullptr, n).arg(QDir::toNativeSeparators(path))
+                    + QLatin1Char(' ') + journal)
+                .trimmed();
+        },
+        journal ? MessageKind::Problem : MessageKind::Success);
     emit fileUsed(path);
     emit backupSaved(path);
 }
@@ -362,15 +366,10 @@ void BackupPanel::onRestored(const DriveResult &result, const TransferOutcome &o
 {
     setBusy(false);
     m_report = outcome.report;
-    if (!m_report.dryRun && !m_report.selected.isEmpty()) { // for the commissioning record
-        const QString checksum = BackupFile::checksum(m_file.values());
-        VerificationJournal journal;
-        journal.recordVerification(context().family, context().address,
-                                   VerificationJournal::fromRestore(m_report, *m_dictionary, m_path, checksum));
-        journal.recordBackup(context().family, context().address,
-                             {QStringLiteral("restore"), QFileInfo(m_path).absoluteFilePath(), checksum,
-                              QDateTime::currentDateTimeUtc()});
-    }
+    // For the commissioning record (ui/report/guijournal.h).
+    const Error journal = VerificationJournal().recordRestore(GuiJournal::key(context(), result.identity), m_report,
+                                                              *m_dictionary, m_path,
+                                                              BackupFile::checksum(m_file.values()));
     if (m_report.selected.isEmpty() || m_report.results.isEmpty()) {
         if (!result.ok())
             return fail(result.error, [] { return tr("Nothing was restored:"); });
@@ -383,8 +382,11 @@ void BackupPanel::onRestored(const DriveResult &result, const TransferOutcome &o
     const bool complete = m_report.isComplete();
     // Every view of the drive's parameters shows what the restore wrote.
     parameters()->reportWrites(m_report.results, this);
-    setMessage([report = m_report] { return RestoreReportDialog::summaryOf(report); },
-               complete ? MessageKind::Success : MessageKind::Problem);
+    setMessage(
+        [report = m_report, journal = journal.message] {
+            return (RestoreReportDialog::summaryOf(report) + QLatin1Char(' ') + journal).trimmed();
+        },
+        complete && !journal ? MessageKind::Success : MessageKind::Problem);
     if (!result.ok())
         reportError(result.error);
     emit restored(complete);

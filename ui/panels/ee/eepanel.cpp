@@ -2,6 +2,8 @@
 
 #include "core/drive/drive.h"
 #include "core/drive/drivehub.h"
+#include "core/report/verificationjournal.h"
+#include "ui/report/guijournal.h"
 #include "ui/workspace/driveparameters.h"
 
 #include <QGridLayout>
@@ -158,9 +160,12 @@ void EePanel::onFinished(EeOperation op, const DriveResult &result)
     m_tick.stop();
     m_progress->hide();
     const double seconds = m_clock.elapsed() / 1000.0;
+    // For the commissioning record (ui/report/guijournal.h).
+    const Error journal = GuiJournal::eeOperation(context(), result.identity,
+                                                  VerificationJournal::fromEe(op, result.error));
     // Made again after a language switch (LiveText).
     if (!reportResult(result)) {
-        const QString error = result.error.message;
+        const QString error = (result.error.message + QLatin1Char(' ') + journal.message).trimmed();
         showMessage(
             m_message,
             [op, seconds, error] {
@@ -172,15 +177,17 @@ void EePanel::onFinished(EeOperation op, const DriveResult &result)
             || op == EeOperation::FactoryDefaults;
         showMessage(
             m_message,
-            [op, seconds, replaces] {
+            [op, seconds, replaces, journal = journal.message] {
                 QString text = tr("%1 done (%2 s): %3.")
                                    .arg(eeMnemonic(op), QLocale().toString(seconds, 'f', 1), eeMeaning(op));
                 if (replaces)
                     text += QLatin1Char(' ')
                         + tr("The drive now works with other values: the Parameters tab reads them again.");
+                if (!journal.isEmpty())
+                    text += QLatin1Char(' ') + journal;
                 return text;
             },
-            MessageKind::Success);
+            journal ? MessageKind::Problem : MessageKind::Success);
         if (replaces)
             parameters()->reportValuesReplaced(op == EeOperation::Reload); // EE-rd: values = EEPROM
         else if (op == EeOperation::Save)

@@ -9,6 +9,7 @@
 #include "ui/panels/parameters/parametercontextmenu.h"
 #include "ui/panels/parameters/parametertablemodel.h"
 #include "ui/panels/parameters/parametervaluedelegate.h"
+#include "ui/report/guijournal.h"
 #include "ui/workspace/driveparameters.h"
 
 #include <QAction>
@@ -475,10 +476,10 @@ void ParametersPanel::onWritten(const DriveResult &result, const QList<int> &req
     setBusy(false);
     m_model->applyWriteResults(result.writes, requested);
     parameters()->reportWrites(result.writes, this);
-    if (!result.writes.isEmpty()) // for the commissioning record (core/report/verificationjournal.h)
-        VerificationJournal().recordVerification(
-            context().family, context().address,
-            VerificationJournal::fromWrites(result.writes, *m_model->dictionary()));
+    Error journal; // for the commissioning record (ui/report/guijournal.h)
+    if (!result.writes.isEmpty())
+        journal = GuiJournal::verification(context(), result.identity,
+                                           VerificationJournal::fromWrites(result.writes, *m_model->dictionary()));
     int verified = 0;
     int writtenOnly = 0;
     int failed = 0;
@@ -490,7 +491,9 @@ void ParametersPanel::onWritten(const DriveResult &result, const QList<int> &req
         }
     }
     const bool ok = result.ok() && failed == 0;
-    const QString error = result.ok() ? QString() : result.error.message;
+    QString error = result.ok() ? QString() : result.error.message;
+    if (journal)
+        error = (error + QLatin1Char(' ') + journal.message).trimmed();
     showMessage(
         m_message,
         [verified, writtenOnly, failed, error] {

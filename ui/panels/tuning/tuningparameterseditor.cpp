@@ -4,9 +4,11 @@
 #include "core/drive/drivehub.h"
 #include "core/drive/driveresult.h"
 #include "core/params/parameterdictionary.h"
+#include "core/report/verificationjournal.h"
 #include "core/tuning/runparameterapply.h"
 #include "ui/common/displaytext.h"
 #include "ui/common/livetext.h"
+#include "ui/report/guijournal.h"
 #include "ui/workspace/driveparameters.h"
 
 #include <QEvent>
@@ -330,8 +332,17 @@ void TuningParametersEditor::writeValues(const QList<ParameterWrite> &writes, co
             self->setBusy(false);
             if (self->m_context.parameters)
                 self->m_context.parameters->reportWrites(r.writes, self);
+            Error journal; // gain edits and applied runs, for the commissioning record
+            if (!r.writes.isEmpty())
+                journal = GuiJournal::verification(
+                    self->m_context, r.identity,
+                    VerificationJournal::fromWrites(
+                        r.writes,
+                        self->m_names ? *self->m_names : ParameterDictionary::bundled(self->m_context.family)));
             self->refreshValues();
-            const QString error = r.ok() ? QString() : r.error.message;
+            QString error = r.ok() ? QString() : r.error.message;
+            if (journal)
+                error = (error + QLatin1Char(' ') + journal.message).trimmed();
             const bool problem = !failed.isEmpty() || !error.isEmpty();
             self->setMessage(
                 [verified, failed, error, runLabel, alreadyEqual] {

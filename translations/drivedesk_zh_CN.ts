@@ -5194,18 +5194,6 @@ reversal：以 +SPEED 运行 S 秒，再以 -SPEED 运行 S 秒，然后停止�
 </translation>
     </message>
     <message>
-        <source>--pre needs its unit: a percentage of the record (e.g. --pre 25%) or seconds before the trigger (e.g. --pre 0.1s), not &quot;%1&quot;.</source>
-        <translation>--pre 需要带单位：记录的百分比（例如 --pre 25%）或触发前的秒数（例如 --pre 0.1s），而不是“%1”。</translation>
-    </message>
-    <message>
-        <source>--pre: &quot;%1&quot; must be a percentage from 0%% to %2%%.</source>
-        <translation>--pre：“%1”必须是 0%% 到 %2%% 之间的百分比。</translation>
-    </message>
-    <message>
-        <source>--pre: &quot;%1&quot; must be seconds from 0s to %2s.</source>
-        <translation>--pre：“%1”必须是 0s 到 %2s 之间的秒数。</translation>
-    </message>
-    <message>
         <source>--machine needs a name of 1 to 200 characters, e.g. --machine &quot;Press line 3&quot;.</source>
         <translation>--machine 需要 1 到 200 个字符的名称，例如 --machine &quot;Press line 3&quot;。</translation>
     </message>
